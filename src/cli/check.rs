@@ -1,0 +1,95 @@
+//! `tether check SCENE`: what the scene is, in numbers.
+
+use std::fmt::Write as _;
+use tether::physics::body::Support;
+use tether::physics::coupling::{CouplingKind, ElasticLaw, Endpoint};
+use tether::physics::world::World;
+use tether::physics::{Mat3, Vec3};
+use tether::scene::Scene;
+
+pub fn run(scene: &Scene) -> anyhow::Result<()> {
+    super::print(&report(&scene.world, &scene.path.display().to_string()))
+}
+
+fn report(world: &World, label: &str) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "{label}: ok — {} bodies, {} couplings, dt = {} s, integrator {:?}", world.bodies.len(), world.couplings.len(), world.dt(), world.integrator);
+    let _ = writeln!(out, "gravity {} m/s²", v(&world.gravity));
+    for body in &world.bodies {
+        let p = &body.mass_properties;
+        let _ = writeln!(out, "\nbody \"{}\" ({})", body.name, support(&body.support));
+        let _ = writeln!(out, "  mass               {:.6} kg", p.mass);
+        let _ = writeln!(out, "  centre of mass     {} m", v(&p.center_of_mass));
+        let _ = writeln!(out, "  inertia about G    {} kg·m²", m(&p.inertia_about_g));
+        let _ = writeln!(out, "  principal moments  {} kg·m²", v(&p.principal_moments));
+        let axes = p.principal_axes.to_rotation_matrix().into_inner();
+        for i in 0..3 {
+            let _ = writeln!(out, "  principal axis {}   {}", i + 1, v(&axes.column(i).into_owned()));
+        }
+        if !body.slave_nodes.is_empty() {
+            let _ = writeln!(out, "  slave nodes        {}", body.slave_nodes.len());
+        }
+    }
+    for (coupling, forces) in world.couplings.iter().zip(world.coupling_forces()) {
+        let [end1, end2] = coupling.ends();
+        let _ = writeln!(out, "\ncoupling \"{}\" ({})", coupling.name, coupling.kind_name());
+        let _ = writeln!(out, "  end 1 {}   end 2 {}", end(world, &end1), end(world, &end2));
+        match &coupling.kind {
+            CouplingKind::SpringDamper(spring) => {
+                let _ = writeln!(out, "  law {}, damping {} N·s/m", law(&spring.law), spring.damping);
+            }
+        }
+        let length = (forces.point2 - forces.point1).norm();
+        let _ = writeln!(out, "  length {length:.6} m, tension {:.6} N", forces.tension);
+    }
+    let e = world.energy();
+    let _ = writeln!(
+        out,
+        "\ninitial energy: kinetic {:.6} J, gravity {:.6} J, elastic {:.6} J, total {:.6} J",
+        e.kinetic, e.gravity, e.elastic, e.total()
+    );
+    out
+}
+
+fn v(x: &Vec3) -> String {
+    format!("({:.6}, {:.6}, {:.6})", x.x, x.y, x.z)
+}
+
+fn m(x: &Mat3) -> String {
+    let rows: Vec<String> = (0..3).map(|r| v(&x.row(r).transpose())).collect();
+    format!("[{}]", rows.join(", "))
+}
+
+fn support(s: &Support) -> String {
+    match s {
+        Support::Free => "free".into(),
+        Support::Fixed { translation, rotation } => {
+            let axes: String = ["x", "y", "z"].iter().zip(translation).filter(|(_, f)| **f).map(|(a, _)| *a).collect();
+            format!("fixed translation [{axes}]{}", if *rotation { ", fixed rotation" } else { "" })
+        }
+        Support::Kinematic(_) => "kinematic".into(),
+    }
+}
+
+fn end(world: &World, e: &Endpoint) -> String {
+    match e {
+        Endpoint::World(p) => format!("world {} m", v(p)),
+        Endpoint::Body { body, point } => {
+            let b = &world.bodies[*body];
+            let reference = b.reference_in_principal.inverse_transform_point(&(*point).into()).coords;
+            format!("body \"{}\" at {} m", b.name, v(&reference))
+        }
+    }
+}
+
+fn law(l: &ElasticLaw) -> String {
+    match l {
+        ElasticLaw::Linear { stiffness, rest_length } => format!("linear k = {stiffness} N/m, x0 = {rest_length} m"),
+        ElasticLaw::Polynomial { a, b, c, rest_length } => format!("polynomial k_eff = {a} + {b} s + {c} s² N/m, x0 = {rest_length} m"),
+        ElasticLaw::ForceCurve { curve } => format!("force curve ({} points), x0 = {:.6} m", curve.points().len(), l.rest_length()),
+        ElasticLaw::StiffnessCurve { stiffness, rest_length } => format!("stiffness curve ({} points), x0 = {rest_length} m", stiffness.points().len()),
+        ElasticLaw::ReferenceForce { stiffness, reference_length, reference_force, .. } => {
+            format!("reference force f_r = {reference_force} N at x_r = {reference_length} m, stiffness curve ({} points)", stiffness.points().len())
+        }
+    }
+}

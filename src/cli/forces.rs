@@ -1,0 +1,67 @@
+//! `tether forces SCENE --json`: the forces of the initial state.
+
+use serde::Serialize;
+use tether::physics::world::World;
+use tether::physics::Vec3;
+use tether::scene::Scene;
+
+#[derive(Serialize)]
+struct Report<'a> {
+    couplings: Vec<CouplingReport<'a>>,
+    bodies: Vec<BodyReport<'a>>,
+}
+
+/// Forces exerted by the coupling on end 1 and end 2 [N], world frame.
+#[derive(Serialize)]
+struct CouplingReport<'a> {
+    name: &'a str,
+    kind: &'a str,
+    f1: [f64; 3],
+    f2: [f64; 3],
+}
+
+/// Total force [N] and moment about G [N·m] on a body, world frame.
+#[derive(Serialize)]
+struct BodyReport<'a> {
+    name: &'a str,
+    force: [f64; 3],
+    moment: [f64; 3],
+}
+
+fn a(v: &Vec3) -> [f64; 3] {
+    [v.x, v.y, v.z]
+}
+
+fn report(world: &World) -> Report<'_> {
+    Report {
+        couplings: world
+            .couplings
+            .iter()
+            .zip(world.coupling_forces())
+            .map(|(c, f)| CouplingReport { name: &c.name, kind: c.kind_name(), f1: a(&f.f1), f2: a(&f.f2) })
+            .collect(),
+        bodies: world
+            .bodies
+            .iter()
+            .enumerate()
+            .map(|(i, b)| BodyReport { name: &b.name, force: a(&world.load(i).force), moment: a(&world.load(i).moment) })
+            .collect(),
+    }
+}
+
+pub fn run(scene: &Scene, json: bool) -> anyhow::Result<()> {
+    let report = report(&scene.world);
+    let text = if json {
+        serde_json::to_string_pretty(&report)? + "\n"
+    } else {
+        let mut out = String::new();
+        for c in &report.couplings {
+            out += &format!("coupling {:<20} f1 {:?} N  f2 {:?} N\n", c.name, c.f1, c.f2);
+        }
+        for b in &report.bodies {
+            out += &format!("body     {:<20} force {:?} N  moment {:?} N·m\n", b.name, b.force, b.moment);
+        }
+        out
+    };
+    super::print(&text)
+}

@@ -1,0 +1,54 @@
+//! Accelerations of a rigid body from its load (PHYSICS.md §1, seed 003 [13]–[16]).
+//!
+//! `γ = F/m` [m/s²]; Euler's equations in the principal frame
+//! `I1 α1 = M1 − (I3 − I2) ω2 ω3`, `I2 α2 = M2 − (I1 − I3) ω3 ω1`, `I3 α3 = M3 − (I2 − I1) ω1 ω2`
+//! [rad/s²], which is `α = I⁻¹ (M − ω × Iω)`. Master-node supports then remove the accelerations
+//! of the fixed components.
+
+use super::body::{RigidBody, Support};
+use super::coupling::Load;
+use super::{Rotation, Vec3};
+
+/// Linear acceleration of G (world) and angular acceleration (principal frame).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Acceleration {
+    /// `γ` [m/s²], world.
+    pub linear: Vec3,
+    /// `α` [rad/s²], principal frame.
+    pub angular: Vec3,
+}
+
+/// `α = I⁻¹ (M − ω × Iω)` in the principal frame, for moment `moment` and angular velocity
+/// `omega` (both principal frame). The integrator chooses at which instant `omega` is taken.
+pub fn euler_angular_acceleration(body: &RigidBody, moment: &Vec3, omega: &Vec3) -> Vec3 {
+    let inertia = body.principal_moments();
+    let gyroscopic = omega.cross(&inertia.component_mul(omega));
+    (moment - gyroscopic).component_mul(&body.inverse_principal_moments)
+}
+
+/// Accelerations of `body` with orientation `orientation` under `load` (world axes), with the
+/// gyroscopic term evaluated at `omega` (principal frame), after its supports.
+pub fn accelerations(body: &RigidBody, orientation: &Rotation, load: &Load, omega: &Vec3) -> Acceleration {
+    match &body.support {
+        Support::Kinematic(_) => Acceleration::default(),
+        Support::Free => free_accelerations(body, orientation, load, omega),
+        Support::Fixed { translation, rotation } => {
+            let mut acceleration = if *rotation {
+                Acceleration { linear: load.force / body.mass(), angular: Vec3::zeros() }
+            } else {
+                free_accelerations(body, orientation, load, omega)
+            };
+            for axis in 0..3 {
+                if translation[axis] {
+                    acceleration.linear[axis] = 0.0;
+                }
+            }
+            acceleration
+        }
+    }
+}
+
+fn free_accelerations(body: &RigidBody, orientation: &Rotation, load: &Load, omega: &Vec3) -> Acceleration {
+    let moment = orientation.inverse_transform_vector(&load.moment);
+    Acceleration { linear: load.force / body.mass(), angular: euler_angular_acceleration(body, &moment, omega) }
+}

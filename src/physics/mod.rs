@@ -1,0 +1,25 @@
+//! Pure rigid-body physics: no GUI, no viewer, no file format.
+//!
+//! - [`mass_properties`]: mass, centre of mass and principal inertia from master + slave nodes (§1).
+//! - [`body`]: a rigid body's constant properties, its state, and its master-node support (§1).
+//! - [`coupling`]: the forces between bodies and the world (§2).
+//! - [`integrator`]: how a state advances in time (§1, time integration).
+//! - [`world`]: bodies + couplings + time, and the named stages of one step.
+//! - [`energy`]: the energy balance that checks it all (§5).
+//! - [`table`]: piecewise-linear tables with exact integrals, for curve-defined laws.
+
+pub mod body;
+pub mod coupling;
+pub mod dynamics;
+pub mod energy;
+pub mod integrator;
+pub mod mass_properties;
+pub mod table;
+pub mod world;
+
+/// 3-vector of `f64` (positions in m, forces in N, …).
+pub type Vec3 = nalgebra::Vector3<f64>;
+/// 3×3 matrix of `f64` (inertia tensors in kg·m², rotations).
+pub type Mat3 = nalgebra::Matrix3<f64>;
+/// Unit quaternion: a body's orientation, principal frame → world frame.
+pub type Rotation = nalgebra::UnitQuaternion<f64>;

@@ -1,0 +1,196 @@
+//! The world: gravity, bodies, couplings and time, and the stages of one step.
+//!
+//! [`World::step`] runs, in order (the integrator decides how velocities enter):
+//! 1. *advance*: the integrator moves positions and orientations by `dt`;
+//! 2. *prescribe*: kinematic bodies are put where their motion says;
+//! 3. *clear* the loads; 4. *gravity*; 5. *couplings*: each coupling's forces, kept per coupling
+//!    and summed into the bodies' loads;
+//! 6. *accelerations* from Euler's equations in the principal frame;
+//! 7. *ledger*: dissipated and external work advance by the trapezoid rule.
+
+use super::body::{BodyState, RigidBody, Support, prescribed_state};
+use super::coupling::{BodyFrame, Coupling, CouplingForces, Load};
+use super::dynamics::Acceleration;
+use super::energy::{EnergyLedger, EnergyReport};
+use super::integrator::{Integrator, leapfrog};
+use super::Vec3;
+
+/// Bodies, couplings and time.
+#[derive(Debug, Clone)]
+pub struct World {
+    /// Gravity vector [m/s²].
+    pub gravity: Vec3,
+    pub bodies: Vec<RigidBody>,
+    pub couplings: Vec<Coupling>,
+    pub integrator: Integrator,
+    dt: f64,
+    time: f64,
+    steps: u64,
+    /// States at t = 0 (start of prescribed motions, and reset).
+    initial_states: Vec<BodyState>,
+    /// The integrator's state: for the leapfrog, positions at t and velocities at t − ½dt.
+    pub(crate) states: Vec<BodyState>,
+    /// Body kinematics at the last force evaluation (t), world axes.
+    pub(crate) frames: Vec<BodyFrame>,
+    pub(crate) loads: Vec<Load>,
+    pub(crate) accelerations: Vec<Acceleration>,
+    pub(crate) coupling_forces: Vec<CouplingForces>,
+    pub(crate) ledger: EnergyLedger,
+}
+
+impl World {
+    /// A world at t = 0 with `initial_states` (synchronised: velocities at t = 0) and time step
+    /// `dt` [s] > 0. Forces and accelerations at t = 0 are evaluated here.
+    pub fn new(
+        gravity: Vec3,
+        bodies: Vec<RigidBody>,
+        couplings: Vec<Coupling>,
+        initial_states: Vec<BodyState>,
+        dt: f64,
+        integrator: Integrator,
+    ) -> Self {
+        let n = bodies.len();
+        let mut world = Self {
+            gravity,
+            bodies,
+            couplings,
+            integrator,
+            dt,
+            time: 0.0,
+            steps: 0,
+            states: initial_states.clone(),
+            initial_states,
+            frames: vec![BodyFrame { position: Vec3::zeros(), rotation: super::Mat3::identity(), velocity: Vec3::zeros(), angular_velocity: Vec3::zeros() }; n],
+            loads: vec![Load::default(); n],
+            accelerations: vec![Acceleration::default(); n],
+            coupling_forces: Vec::new(),
+            ledger: EnergyLedger::default(),
+        };
+        world.coupling_forces = vec![CouplingForces::default(); world.couplings.len()];
+        match world.integrator {
+            Integrator::Leapfrog => leapfrog::start(&mut world),
+        }
+        world
+    }
+
+    /// Advances the world by one time step `dt`.
+    pub fn step(&mut self) {
+        match self.integrator {
+            Integrator::Leapfrog => leapfrog::step(self),
+        }
+    }
+
+    /// Restarts from t = 0 with the current parameters.
+    pub fn reset(&mut self) {
+        *self = Self::new(
+            self.gravity,
+            std::mem::take(&mut self.bodies),
+            std::mem::take(&mut self.couplings),
+            self.initial_states.clone(),
+            self.dt,
+            self.integrator,
+        );
+    }
+
+    /// Simulated time [s].
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// Steps taken since t = 0.
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+
+    /// Time step [s].
+    pub fn dt(&self) -> f64 {
+        self.dt
+    }
+
+    /// State of body `index` at the current time, velocities included.
+    pub fn state(&self, index: usize) -> BodyState {
+        match self.integrator {
+            Integrator::Leapfrog => leapfrog::synchronized_state(self, index),
+        }
+    }
+
+    /// Load (force and moment about G, world) on body `index` at the current time: couplings,
+    /// plus gravity for bodies that respond to forces.
+    pub fn load(&self, index: usize) -> &Load {
+        &self.loads[index]
+    }
+
+    /// What each coupling did at the current time, in the order of [`World::couplings`].
+    pub fn coupling_forces(&self) -> &[CouplingForces] {
+        &self.coupling_forces
+    }
+
+    /// Index of the body named `name`.
+    pub fn body_index(&self, name: &str) -> Option<usize> {
+        self.bodies.iter().position(|b| b.name == name)
+    }
+
+    /// Energies at the current time (PHYSICS.md §5).
+    pub fn energy(&self) -> EnergyReport {
+        let mut report = EnergyReport { dissipated: self.ledger.dissipated, external_work: self.ledger.external_work, ..Default::default() };
+        for (index, body) in self.bodies.iter().enumerate().filter(|(_, b)| !b.is_kinematic()) {
+            let state = self.state(index);
+            let inertia = body.principal_moments();
+            report.kinetic += 0.5 * body.mass() * state.velocity.norm_squared()
+                + 0.5 * state.angular_velocity.dot(&inertia.component_mul(&state.angular_velocity));
+            report.gravity -= body.mass() * self.gravity.dot(&state.position);
+        }
+        report.elastic = self.couplings.iter().map(|c| c.potential_energy(&self.frames)).sum();
+        report
+    }
+
+    // ----- stages, shared by the integrators -----
+
+    /// Stage *prescribe*: kinematic bodies to their pose and velocity at the current time.
+    pub(crate) fn prescribe_kinematic_bodies(&mut self) {
+        for (index, body) in self.bodies.iter().enumerate() {
+            if let Support::Kinematic(motion) = &body.support {
+                self.states[index] = prescribed_state(motion, &self.initial_states[index], self.time);
+            }
+        }
+    }
+
+    /// Stages *clear*, *gravity* and *couplings*: loads at kinematics `self.frames`.
+    pub(crate) fn evaluate_loads(&mut self) {
+        self.loads.fill(Load::default());
+        for (load, body) in self.loads.iter_mut().zip(&self.bodies) {
+            if !body.is_kinematic() {
+                load.force = self.gravity * body.mass();
+            }
+        }
+        for (coupling, out) in self.couplings.iter_mut().zip(self.coupling_forces.iter_mut()) {
+            *out = coupling.forces(&self.frames);
+            let [end1, end2] = coupling.ends();
+            for (end, force, at) in [(end1, out.f1, out.point1), (end2, out.f2, out.point2)] {
+                if let Some(body) = end.body() {
+                    self.loads[body].apply(&force, &at, &self.frames[body]);
+                }
+            }
+        }
+    }
+
+    /// Power dissipated by all couplings [W].
+    pub(crate) fn dissipated_power(&self) -> f64 {
+        self.coupling_forces.iter().map(|f| f.dissipated_power).sum()
+    }
+
+    /// Power the prescribed motions put into the system, `−Σ (F_k·v_k + M_k·ω_k)` [W].
+    pub(crate) fn external_power(&self) -> f64 {
+        self.bodies
+            .iter()
+            .zip(self.loads.iter().zip(&self.frames))
+            .filter(|(b, _)| b.is_kinematic())
+            .map(|(_, (load, frame))| -(load.force.dot(&frame.velocity) + load.moment.dot(&frame.angular_velocity)))
+            .sum()
+    }
+
+    pub(crate) fn advance_clock(&mut self) {
+        self.steps += 1;
+        self.time += self.dt;
+    }
+}

@@ -1,0 +1,119 @@
+//! The Rerun adapter: reads a [`World`] and logs it. Nothing in `physics` knows about it.
+//!
+//! Recording layout (timelines `sim_time` [s] and `step`; view coordinates z-up):
+//! - `world/bodies/<name>`: temporal `Transform3D` (G and the principal axes);
+//!   `…/shape`: static display shape, with a static transform from the principal frame to the
+//!   shape; `…/nodes`: static slave nodes (principal frame);
+//! - `world/couplings/<name>`: `LineStrips3D` between the ends, each frame;
+//! - `plots/energy/<kinetic|gravity|elastic|dissipated|external_work|total|balance>` [J];
+//! - `plots/couplings/<name>/tension` [N].
+
+use crate::physics::body::{RigidBody, Shape};
+use crate::physics::world::World;
+use crate::physics::{Rotation, Vec3};
+use rerun::RecordingStream;
+use std::path::Path;
+
+/// The Rerun application id of Tether recordings.
+pub const APPLICATION_ID: &str = "tether";
+
+/// Logs a world, frame after frame, to a recording stream.
+pub struct Recorder {
+    stream: RecordingStream,
+    body_paths: Vec<String>,
+    coupling_paths: Vec<String>,
+    tension_paths: Vec<String>,
+}
+
+/// Energy plots, in the order logged.
+const ENERGY_PLOTS: [&str; 7] = ["kinetic", "gravity", "elastic", "dissipated", "external_work", "total", "balance"];
+
+impl Recorder {
+    /// A recorder writing to the `.rrd` file `path`; the file is created now, so an unwritable
+    /// path fails before any simulation.
+    pub fn to_file(path: &Path, world: &World) -> Result<Self, rerun::RecordingStreamError> {
+        let stream = rerun::RecordingStreamBuilder::new(APPLICATION_ID).save(path)?;
+        Self::new(stream, world)
+    }
+
+    /// A recorder on an existing stream; logs the static scene (view coordinates, shapes, nodes).
+    pub fn new(stream: RecordingStream, world: &World) -> Result<Self, rerun::RecordingStreamError> {
+        stream.log_static("world", &rerun::ViewCoordinates::RIGHT_HAND_Z_UP())?;
+        let body_paths: Vec<String> = world.bodies.iter().map(|b| format!("world/bodies/{}", b.name)).collect();
+        for (body, path) in world.bodies.iter().zip(&body_paths) {
+            log_static_body(&stream, body, path)?;
+        }
+        let coupling_paths = world.couplings.iter().map(|c| format!("world/couplings/{}", c.name)).collect();
+        let tension_paths = world.couplings.iter().map(|c| format!("plots/couplings/{}/tension", c.name)).collect();
+        Ok(Self { stream, body_paths, coupling_paths, tension_paths })
+    }
+
+    /// Logs the world's current state at its `sim_time` and `step`.
+    pub fn log_frame(&self, world: &World) -> Result<(), rerun::RecordingStreamError> {
+        self.stream.set_duration_secs("sim_time", world.time());
+        self.stream.set_time_sequence("step", world.steps() as i64);
+        for (index, path) in self.body_paths.iter().enumerate() {
+            let state = world.state(index);
+            self.stream.log(path.as_str(), &pose(&state.position, &state.orientation))?;
+        }
+        for ((path, tension_path), forces) in self.coupling_paths.iter().zip(&self.tension_paths).zip(world.coupling_forces()) {
+            self.stream.log(path.as_str(), &rerun::LineStrips3D::new([[f32x3(&forces.point1), f32x3(&forces.point2)]]))?;
+            self.stream.log(tension_path.as_str(), &rerun::Scalars::single(forces.tension))?;
+        }
+        let energy = world.energy();
+        let values = [energy.kinetic, energy.gravity, energy.elastic, energy.dissipated, energy.external_work, energy.total(), energy.balance()];
+        for (name, value) in ENERGY_PLOTS.iter().zip(values) {
+            self.stream.log(format!("plots/energy/{name}"), &rerun::Scalars::single(value))?;
+        }
+        Ok(())
+    }
+
+    /// Flushes everything to the sink and closes the stream (writes the `.rrd` footer).
+    pub fn finish(self) -> Result<(), rerun::sink::SinkFlushError> {
+        self.stream.flush_blocking()
+    }
+}
+
+fn f32x3(v: &Vec3) -> [f32; 3] {
+    [v.x as f32, v.y as f32, v.z as f32]
+}
+
+fn pose(translation: &Vec3, rotation: &Rotation) -> rerun::Transform3D {
+    let q = rotation.quaternion();
+    rerun::Transform3D::from_translation_rotation(
+        f32x3(translation),
+        rerun::Quaternion::from_xyzw([q.i as f32, q.j as f32, q.k as f32, q.w as f32]),
+    )
+}
+
+/// Static shape (placed in the principal frame) and slave nodes of a body.
+fn log_static_body(stream: &RecordingStream, body: &RigidBody, path: &str) -> Result<(), rerun::RecordingStreamError> {
+    let shape_path = format!("{path}/shape");
+    let to_principal = body.reference_in_principal;
+    let (center, axis_rotation) = match &body.shape {
+        Shape::Box { center, .. } | Shape::Sphere { center, .. } => (*center, Rotation::identity()),
+        Shape::Cylinder { center, axis, .. } => {
+            // Rerun's cylinders lie along z: turn z onto the axis.
+            (*center, Rotation::rotation_between(&Vec3::z(), axis).unwrap_or_else(|| Rotation::from_axis_angle(&Vec3::x_axis(), std::f64::consts::PI)))
+        }
+    };
+    let placement = to_principal * nalgebra::Isometry3::from_parts(center.into(), axis_rotation);
+    stream.log_static(shape_path.as_str(), &pose(&placement.translation.vector, &placement.rotation))?;
+    let color = rerun::Color::from_rgb(120, 160, 210);
+    match &body.shape {
+        Shape::Box { size, .. } => {
+            stream.log_static(shape_path.as_str(), &rerun::Boxes3D::from_half_sizes([f32x3(&(size * 0.5))]).with_colors([color]))?
+        }
+        Shape::Sphere { radius, .. } => {
+            stream.log_static(shape_path.as_str(), &rerun::Ellipsoids3D::from_radii([*radius as f32]).with_colors([color]))?
+        }
+        Shape::Cylinder { radius, length, .. } => stream.log_static(
+            shape_path.as_str(),
+            &rerun::Cylinders3D::from_lengths_and_radii([*length as f32], [*radius as f32]).with_colors([color]),
+        )?,
+    }
+    if !body.slave_nodes.is_empty() {
+        stream.log_static(format!("{path}/nodes"), &rerun::Points3D::new(body.slave_nodes.iter().map(f32x3)))?;
+    }
+    Ok(())
+}

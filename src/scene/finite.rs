@@ -1,0 +1,44 @@
+//! Deserializers that refuse NaN and infinities where the number is read, so the parser reports
+//! the exact line and column of the bad value.
+
+use serde::de::{Deserialize, Deserializer, Error};
+
+fn check<E: Error>(value: f64) -> Result<f64, E> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(E::custom(format!("number must be finite, got {value}")))
+    }
+}
+
+pub fn finite<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    check(f64::deserialize(d)?)
+}
+
+pub fn finite3<'de, D: Deserializer<'de>>(d: D) -> Result<[f64; 3], D::Error> {
+    let v = <[f64; 3]>::deserialize(d)?;
+    for x in v {
+        check::<D::Error>(x)?;
+    }
+    Ok(v)
+}
+
+pub fn finite_pairs<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<(f64, f64)>, D::Error> {
+    let v = Vec::<(f64, f64)>::deserialize(d)?;
+    for &(a, b) in &v {
+        check::<D::Error>(a)?;
+        check::<D::Error>(b)?;
+    }
+    Ok(v)
+}
+
+pub fn finite_velocity_table<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<(f64, [f64; 3])>, D::Error> {
+    let v = Vec::<(f64, [f64; 3])>::deserialize(d)?;
+    for (t, w) in &v {
+        check::<D::Error>(*t)?;
+        for &x in w {
+            check::<D::Error>(x)?;
+        }
+    }
+    Ok(v)
+}

@@ -1,0 +1,76 @@
+//! Scene files: RON text → [`SceneFile`] (what the file says) → [`World`] (what runs).
+//!
+//! Every failure is a [`SceneError`] that prints as one line `path:line:col: message`, naming
+//! the body or coupling at fault. Loading never panics.
+
+pub mod build;
+pub mod file;
+mod finite;
+pub mod source;
+
+use crate::physics::world::World;
+use build::{Place, Problem};
+pub use file::SceneFile;
+use source::Source;
+use std::path::{Path, PathBuf};
+
+/// A scene file that could not be loaded, with the place of the fault.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{path}:{line}:{col}: {message}")]
+pub struct SceneError {
+    pub path: String,
+    pub line: usize,
+    pub col: usize,
+    pub message: String,
+}
+
+/// A loaded scene: the file's data, the world built from it, and warnings.
+pub struct Scene {
+    pub path: PathBuf,
+    pub file: SceneFile,
+    pub world: World,
+    pub warnings: Vec<String>,
+}
+
+/// Reads and builds the scene at `path`.
+pub fn load(path: &Path) -> Result<Scene, SceneError> {
+    let text = std::fs::read_to_string(path).map_err(|e| SceneError {
+        path: path.display().to_string(),
+        line: 1,
+        col: 1,
+        message: format!("cannot read scene file: {e}"),
+    })?;
+    parse(&text, path)
+}
+
+/// Parses and builds scene text; `path` only labels errors.
+pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
+    let source = Source::new(text);
+    let label = path.display().to_string();
+    let file: SceneFile = ron::Options::default().from_str(text).map_err(|e| syntax_error(&source, &label, &e))?;
+    let built = build::build(&file).map_err(|p| placed(&source, &label, p))?;
+    Ok(Scene { path: path.to_path_buf(), file, world: built.world, warnings: built.warnings })
+}
+
+/// A parser error, with the body or coupling it falls in when there is one.
+fn syntax_error(source: &Source, label: &str, error: &ron::error::SpannedError) -> SceneError {
+    let (line, col) = (error.position.line.max(1), error.position.col.max(1));
+    let mut message = error.code.to_string();
+    if let Some((kind, name)) = source.enclosing_item(source.offset(line, col)) {
+        message = format!("{} \"{name}\": {message}", kind.label());
+    }
+    SceneError { path: label.to_string(), line, col, message }
+}
+
+/// A build problem, placed in the text.
+fn placed(source: &Source, label: &str, problem: Problem) -> SceneError {
+    let offset = match &problem.place {
+        Place::Top(field) => source.field(0, field),
+        Place::Item { kind, name, occurrence, field, literal } => source.item(*kind, name, *occurrence).map(|item| {
+            let at_field = field.and_then(|f| source.field(item, f)).unwrap_or(item);
+            literal.as_deref().and_then(|l| source.literal(at_field, l)).unwrap_or(at_field)
+        }),
+    };
+    let (line, col) = source.line_col(offset.unwrap_or(0));
+    SceneError { path: label.to_string(), line, col, message: problem.message }
+}

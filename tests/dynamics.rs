@@ -1,0 +1,140 @@
+//! Closed-form and invariant checks of the leapfrog world (issue 2's real numbers).
+
+mod common;
+
+use approx::assert_relative_eq;
+use common::{oscillator, scene};
+
+/// `x(t)` of the spring-mass-damper m = 1, k = 100, ζ = 0.05 released at rest from 0.01 m:
+/// at dt the leapfrog error is second order, so halving dt divides it by 4.
+#[test]
+fn spring_mass_damper_matches_the_closed_form_to_second_order() {
+    let (omega0, zeta, x0) = (10.0_f64, 0.05_f64, 0.01_f64);
+    let omega_d = omega0 * (1.0 - zeta * zeta).sqrt();
+    let exact = |t: f64| (-zeta * omega0 * t).exp() * (x0 * (omega_d * t).cos() + zeta * omega0 * x0 / omega_d * (omega_d * t).sin());
+    // The issue's reference values, checked against the formula first.
+    assert_relative_eq!(exact(0.5), 1.787858062988e-3, max_relative = 1e-11);
+    assert_relative_eq!(exact(1.0), -5.292088189070e-3, max_relative = 1e-11);
+
+    let error_at = |dt: f64| -> [f64; 2] {
+        let mut world = oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", 2.0 * zeta * omega0, 1.0 + x0, 0.0, dt).world;
+        let mut errors = [0.0; 2];
+        for (slot, t) in [(0, 0.5), (1, 1.0)] {
+            while world.time() < t - 0.5 * dt {
+                world.step();
+            }
+            errors[slot] = world.state(0).position.x - 1.0 - exact(t);
+        }
+        errors
+    };
+    let coarse = error_at(1e-3);
+    let fine = error_at(5e-4);
+    for i in 0..2 {
+        // Tolerance at dt = 1e-3: (ω dt)² x0 = 1e-6 m; measured |error| ≈ 1e-7 m.
+        assert!(coarse[i].abs() < 1e-6, "error {} at dt = 1e-3", coarse[i]);
+        let order = (coarse[i] / fine[i]).abs().log2();
+        assert!((order - 2.0).abs() < 0.1, "observed order {order}");
+    }
+}
+
+/// Duffing oscillator `f = −x − x³` (polynomial law a = 1, c = 1), m = 1, amplitude 1:
+/// period 4.76802202910 s, from upward zero crossings.
+#[test]
+fn duffing_period() {
+    let dt = 1e-4;
+    let mut world = oscillator("Polynomial(a: 1.0, b: 0.0, c: 1.0, rest_length: 2.0)", 0.0, 3.0, 0.0, dt).world;
+    let mut crossings = Vec::new();
+    let mut previous = world.state(0).position.x - 2.0;
+    while crossings.len() < 4 {
+        world.step();
+        let s = world.state(0).position.x - 2.0;
+        if previous < 0.0 && s >= 0.0 {
+            crossings.push(world.time() - dt * s / (s - previous));
+        }
+        previous = s;
+    }
+    let period = (crossings[3] - crossings[0]) / 3.0;
+    assert_relative_eq!(period, 4.76802202910, max_relative = 1e-7);
+}
+
+/// Undamped spring, ω dt = 0.1, 10⁴ periods: the leapfrog's energy error oscillates, bounded
+/// by (ω dt)²/8 of the energy, and is no larger at the end than in the first periods.
+#[test]
+fn leapfrog_energy_has_no_trend_over_ten_thousand_periods() {
+    let dt = 0.01;
+    let mut world = oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", 0.0, 1.1, 0.0, dt).world;
+    let e0 = world.energy().balance();
+    let period = 2.0 * std::f64::consts::PI / 10.0;
+    let steps = (1e4 * period / dt) as usize;
+    let early_window = (10.0 * period / dt) as usize;
+    let (mut early, mut late) = (0.0_f64, 0.0_f64);
+    for step in 0..steps {
+        world.step();
+        let deviation = (world.energy().balance() - e0).abs() / e0;
+        if step < early_window {
+            early = early.max(deviation);
+        } else if step >= steps - early_window {
+            late = late.max(deviation);
+        }
+    }
+    assert!(early > 0.0 && early <= 0.1 * 0.1 / 8.0, "early deviation {early}");
+    assert!(late <= 1.05 * early, "energy drifted: early {early}, late {late}");
+}
+
+/// Two free spinning bodies joined by a damped spring: total linear momentum is conserved to
+/// round-off, and energy + dissipated work is conserved to the scheme's accuracy.
+#[test]
+fn two_bodies_conserve_momentum_and_energy_balance() {
+    let mut world = scene(
+        "Scene(gravity: (0.0, 0.0, 0.0), dt: 1e-4, bodies: [
+            Body(name: \"a\", master: Node(position: (0, 0, 0), mass: 2.0, inertia: Inertia(xx: 0.1, yy: 0.2, zz: 0.3)),
+                 velocity: (0.3, -0.2, 0.1), angular_velocity: (1.0, 2.0, -0.5), shape: Box(size: (0.2, 0.3, 0.4))),
+            Body(name: \"b\", master: Node(position: (1.0, 0.2, 0.1), mass: 3.0, inertia: Inertia(xx: 0.2, yy: 0.2, zz: 0.1)),
+                 velocity: (-0.1, 0.4, 0.0), angular_velocity: (0.0, -1.0, 3.0), shape: Sphere(radius: 0.2)),
+        ], couplings: [
+            SpringDamper(name: \"s\", end1: Body(body: \"a\", point: (0.1, 0.1, 0.0)), end2: Body(body: \"b\", point: (-0.1, 0.0, 0.1)),
+                         law: Linear(stiffness: 500.0, rest_length: 0.8), damping: 3.0),
+        ])",
+    )
+    .world;
+    let momentum = |w: &tether::physics::world::World| -> nalgebra::Vector3<f64> {
+        (0..2).map(|i| w.state(i).velocity * w.bodies[i].mass()).sum()
+    };
+    let p0 = momentum(&world);
+    let e0 = world.energy().balance();
+    for _ in 0..20_000 {
+        world.step();
+    }
+    assert_relative_eq!(momentum(&world), p0, epsilon = 1e-13);
+    let energy = world.energy();
+    assert!(energy.dissipated > 0.01, "the damper worked: {}", energy.dissipated);
+    // Balance error at dt = 1e-4 over 2 s of spinning bodies: measured ≈ 1e-5 of e0.
+    assert_relative_eq!(energy.balance(), e0, max_relative = 1e-4);
+}
+
+/// Kinematic body pulling a mass through a spring: the driver's work enters the balance.
+#[test]
+fn prescribed_motion_work_closes_the_energy_balance() {
+    let mut world = scene(
+        "Scene(gravity: (0.0, 0.0, -9.81), dt: 1e-4, bodies: [
+            Body(name: \"tug\", master: Node(position: (0, 0, 0), mass: 1.0, inertia: Inertia(xx: 1, yy: 1, zz: 1)),
+                 support: Kinematic(velocity: Table([(0.0, (0, 0, 0)), (1.0, (1.0, 0, 0.5))]), angular_velocity: (0, 0, 0.3)),
+                 shape: Box(size: (1, 1, 1))),
+            Body(name: \"load\", master: Node(position: (-1.0, 0, -0.5), mass: 5.0, inertia: Inertia(xx: 0.5, yy: 0.5, zz: 0.5)),
+                 shape: Sphere(radius: 0.2)),
+        ], couplings: [
+            SpringDamper(name: \"rope\", end1: Body(body: \"tug\", point: (0.5, 0, 0)), end2: Body(body: \"load\"),
+                         law: Linear(stiffness: 2000.0, rest_length: 1.0), damping: 10.0),
+        ])",
+    )
+    .world;
+    let e0 = world.energy().balance();
+    for _ in 0..30_000 {
+        world.step();
+    }
+    let energy = world.energy();
+    assert!(energy.external_work > 1.0, "the tug did work: {}", energy.external_work);
+    assert_relative_eq!(energy.balance(), e0, epsilon = 1e-3 * energy.external_work);
+    // The tug is where its table says: x = ∫v = 0.5 + 2·1 m at t = 3 s.
+    assert_relative_eq!(world.state(0).position.x, 2.5, epsilon = 1e-9);
+}

@@ -44,7 +44,7 @@ fn a_bad_scene_exits_1_with_one_line() {
 fn record_refuses_bad_flags_and_unwritable_paths_before_running() {
     let scene = common::repo("scenes/spring_mass.ron");
     let scene = scene.to_str().unwrap();
-    let out = tether(&["record", scene, "-o", "/tmp/x.rrd", "--duration", "-1"]);
+    let out = tether(&["record", scene, "-o", "/tmp/x.rrd", "--duration=-1"]);
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--duration must be a positive number of seconds, got -1"));
     let out = tether(&["record", scene, "-o", "/tmp/x.rrd", "--log-hz", "0"]);

@@ -58,7 +58,8 @@ fn duffing_period() {
 }
 
 /// Undamped spring, ω dt = 0.1, 10⁴ periods: the leapfrog's energy error oscillates, bounded
-/// by (ω dt)²/8 of the energy, and is no larger at the end than in the first periods.
+/// by (ω dt)²/4 of the energy (it conserves ½v² + ½ω²x²(1 − (ω dt)²/4) exactly), and is no
+/// larger at the end than in the first periods.
 #[test]
 fn leapfrog_energy_has_no_trend_over_ten_thousand_periods() {
     let dt = 0.01;
@@ -77,7 +78,7 @@ fn leapfrog_energy_has_no_trend_over_ten_thousand_periods() {
             late = late.max(deviation);
         }
     }
-    assert!(early > 0.0 && early <= 0.1 * 0.1 / 8.0, "early deviation {early}");
+    assert!(early > 0.0 && early <= 1.001 * 0.1 * 0.1 / 4.0, "early deviation {early}");
     assert!(late <= 1.05 * early, "energy drifted: early {early}, late {late}");
 }
 

@@ -46,13 +46,14 @@ fn report(world: &World, label: &str) -> String {
     let _ = writeln!(
         out,
         "\ninitial energy: kinetic {:.6} J, gravity {:.6} J, elastic {:.6} J, total {:.6} J",
-        e.kinetic, e.gravity, e.elastic, e.total()
+        e.kinetic + 0.0, e.gravity + 0.0, e.elastic + 0.0, e.total() + 0.0
     );
     out
 }
 
+/// `(x, y, z)` with 6 decimals; `+ 0.0` prints −0 as 0.
 fn v(x: &Vec3) -> String {
-    format!("({:.6}, {:.6}, {:.6})", x.x, x.y, x.z)
+    format!("({:.6}, {:.6}, {:.6})", x.x + 0.0, x.y + 0.0, x.z + 0.0)
 }
 
 fn m(x: &Mat3) -> String {

@@ -25,13 +25,18 @@ pub struct Node {
 pub enum MassError {
     #[error("total mass must be > 0 kg, got {0} kg")]
     NonPositiveMass(f64),
-    #[error("node {index} has negative mass {mass} kg")]
+    #[error("{} has negative mass {mass} kg", node_label(*index))]
     NegativeNodeMass { index: usize, mass: f64 },
     #[error(
         "inertia tensor about G is not positive definite (principal moments {0:?} kg·m²): \
          all the mass lies on a point or a line; give the nodes an inertia or spread them"
     )]
     NotPositiveDefinite([f64; 3]),
+}
+
+/// "the master node" for index 0, "slave node i" (1-based) after it.
+fn node_label(index: usize) -> String {
+    if index == 0 { "the master node".into() } else { format!("slave node {index}") }
 }
 
 /// Mass, centre of mass and principal inertia of a rigid body.

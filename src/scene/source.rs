@@ -132,10 +132,10 @@ mod tests {
         let second = s.item(ItemKind::Body, "a", 1).unwrap();
         assert_eq!(s.line_col(second), (5, 16));
         let first = s.item(ItemKind::Body, "a", 0).unwrap();
-        assert_eq!(s.line_col(s.field(first, "mass").unwrap()), (4, 35));
+        assert_eq!(s.line_col(s.field(first, "mass").unwrap()), (4, 34));
         assert_eq!(s.line_col(s.field(0, "dt").unwrap()), (2, 3));
         let coupling = s.item(ItemKind::Coupling, "s", 0).unwrap();
-        assert_eq!(s.line_col(s.literal(coupling + 3, "a").unwrap()), (7, 54));
+        assert_eq!(s.line_col(s.literal(coupling + 3, "a").unwrap()), (7, 57));
         assert_eq!(s.offset(5, 16), second);
         assert_eq!(s.enclosing_item(s.offset(7, 60)), Some((ItemKind::Coupling, "s".into())));
         assert_eq!(s.enclosing_item(s.offset(4, 40)), Some((ItemKind::Body, "a".into())));

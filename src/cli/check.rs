@@ -73,11 +73,11 @@ fn support(s: &Support) -> String {
 }
 
 fn end(world: &World, e: &Endpoint) -> String {
-    match e {
-        Endpoint::World(p) => format!("world {} m", v(p)),
-        Endpoint::Body { body, point } => {
-            let b = &world.bodies[*body];
-            let reference = b.reference_in_principal.inverse_transform_point(&(*point).into()).coords;
+    match e.body() {
+        None => format!("world {} m", v(&e.point())),
+        Some(body) => {
+            let b = &world.bodies[body];
+            let reference = b.reference_in_principal.inverse_transform_point(&e.point().into()).coords;
             format!("body \"{}\" at {} m", b.name, v(&reference))
         }
     }

@@ -84,6 +84,8 @@ pub enum Support {
 pub struct RigidBody {
     pub name: String,
     pub mass_properties: MassProperties,
+    /// `1/m` [1/kg] (the step multiplies; it never divides).
+    pub inverse_mass: f64,
     /// `1/I1, 1/I2, 1/I3` [1/(kg·m²)].
     pub inverse_principal_moments: Vec3,
     /// Pose of the reference frame in the principal frame (constant: the body is rigid).
@@ -112,7 +114,8 @@ impl RigidBody {
         let reference_in_principal = principal_to_world.inverse() * reference_to_world;
         let slave_nodes = slave_positions.iter().map(|p| principal_to_world.inverse_transform_point(&(*p).into()).coords).collect();
         let inverse_principal_moments = mass_properties.principal_moments.map(|m| 1.0 / m);
-        Self { name, mass_properties, inverse_principal_moments, reference_in_principal, slave_nodes, support, shape }
+        let inverse_mass = mass_properties.mass.recip();
+        Self { name, mass_properties, inverse_mass, inverse_principal_moments, reference_in_principal, slave_nodes, support, shape }
     }
 
     /// `m` [kg].

@@ -7,7 +7,7 @@
 
 use super::body::{RigidBody, Support};
 use super::coupling::Load;
-use super::{Rotation, Vec3};
+use super::{Mat3, Vec3};
 
 /// Linear acceleration of G (world) and angular acceleration (principal frame).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -26,17 +26,17 @@ pub fn euler_angular_acceleration(body: &RigidBody, moment: &Vec3, omega: &Vec3)
     (moment - gyroscopic).component_mul(&body.inverse_principal_moments)
 }
 
-/// Accelerations of `body` with orientation `orientation` under `load` (world axes), with the
-/// gyroscopic term evaluated at `omega` (principal frame), after its supports.
-pub fn accelerations(body: &RigidBody, orientation: &Rotation, load: &Load, omega: &Vec3) -> Acceleration {
+/// Accelerations of `body` with orientation `rotation` (principal → world) under `load` (world
+/// axes), with the gyroscopic term evaluated at `omega` (principal frame), after its supports.
+pub fn accelerations(body: &RigidBody, rotation: &Mat3, load: &Load, omega: &Vec3) -> Acceleration {
     match &body.support {
         Support::Kinematic(_) => Acceleration::default(),
-        Support::Free => free_accelerations(body, orientation, load, omega),
-        Support::Fixed { translation, rotation } => {
-            let mut acceleration = if *rotation {
-                Acceleration { linear: load.force / body.mass(), angular: Vec3::zeros() }
+        Support::Free => free_accelerations(body, rotation, load, omega),
+        Support::Fixed { translation, rotation: fixed_rotation } => {
+            let mut acceleration = if *fixed_rotation {
+                Acceleration { linear: load.force * body.inverse_mass, angular: Vec3::zeros() }
             } else {
-                free_accelerations(body, orientation, load, omega)
+                free_accelerations(body, rotation, load, omega)
             };
             for axis in 0..3 {
                 if translation[axis] {
@@ -48,7 +48,7 @@ pub fn accelerations(body: &RigidBody, orientation: &Rotation, load: &Load, omeg
     }
 }
 
-fn free_accelerations(body: &RigidBody, orientation: &Rotation, load: &Load, omega: &Vec3) -> Acceleration {
-    let moment = orientation.inverse_transform_vector(&load.moment);
-    Acceleration { linear: load.force / body.mass(), angular: euler_angular_acceleration(body, &moment, omega) }
+fn free_accelerations(body: &RigidBody, rotation: &Mat3, load: &Load, omega: &Vec3) -> Acceleration {
+    let moment = rotation.tr_mul(&load.moment);
+    Acceleration { linear: load.force * body.inverse_mass, angular: euler_angular_acceleration(body, &moment, omega) }
 }

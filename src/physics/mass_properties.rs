@@ -65,7 +65,10 @@ impl MassProperties {
         if !(mass > 0.0) {
             return Err(MassError::NonPositiveMass(mass));
         }
-        let center_of_mass = nodes().map(|n| n.position * n.mass).sum::<Vec3>() / mass;
+        // A lone master node is its own centre of mass, exactly (no m·x/m round-off), so that
+        // points declared at it are exactly G.
+        let center_of_mass =
+            if slaves.is_empty() { master.position } else { nodes().map(|n| n.position * n.mass).sum::<Vec3>() / mass };
         let inertia_about_g = nodes()
             .map(|n| n.inertia + point_mass_inertia(n.mass, &(n.position - center_of_mass)))
             .sum::<Mat3>();

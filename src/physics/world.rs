@@ -1,10 +1,12 @@
 //! The world: gravity, bodies, couplings and time, and the stages of one step.
 //!
-//! [`World::step`] runs, in order (the integrator decides how velocities enter):
+//! [`World::step`] runs, in order (the integrator decides how velocities enter, and may run the
+//! per-body stages 1–4 in one pass over the bodies):
 //! 1. *advance*: the integrator moves positions and orientations by `dt`;
 //! 2. *prescribe*: kinematic bodies are put where their motion says;
-//! 3. *clear* the loads; 4. *gravity*; 5. *couplings*: each coupling's forces, kept per coupling
-//!    and summed into the bodies' loads;
+//! 3. *predict*: each body's kinematics for the force evaluation ([`BodyFrame`]);
+//! 4. *clear* the loads and add *gravity*;
+//! 5. *couplings*: each coupling's forces, kept per coupling and summed into the bodies' loads;
 //! 6. *accelerations* from Euler's equations in the principal frame;
 //! 7. *ledger*: dissipated and external work advance by the trapezoid rule.
 
@@ -27,7 +29,9 @@ pub struct World {
     time: f64,
     steps: u64,
     /// States at t = 0 (start of prescribed motions, and reset).
-    initial_states: Vec<BodyState>,
+    pub(crate) initial_states: Vec<BodyState>,
+    /// Indices of the kinematic bodies.
+    kinematic_bodies: Vec<usize>,
     /// The integrator's state: for the leapfrog, positions at t and velocities at t − ½dt.
     pub(crate) states: Vec<BodyState>,
     /// Body kinematics at the last force evaluation (t), world axes.
@@ -60,6 +64,7 @@ impl World {
             steps: 0,
             states: initial_states.clone(),
             initial_states,
+            kinematic_bodies: Vec::new(),
             frames: vec![BodyFrame { position: Vec3::zeros(), rotation: super::Mat3::identity(), velocity: Vec3::zeros(), angular_velocity: Vec3::zeros() }; n],
             loads: vec![Load::default(); n],
             accelerations: vec![Acceleration::default(); n],
@@ -67,6 +72,7 @@ impl World {
             ledger: EnergyLedger::default(),
         };
         world.coupling_forces = vec![CouplingForces::default(); world.couplings.len()];
+        world.kinematic_bodies = (0..n).filter(|&i| world.bodies[i].is_kinematic()).collect();
         match world.integrator {
             Integrator::Leapfrog => leapfrog::start(&mut world),
         }
@@ -148,44 +154,38 @@ impl World {
 
     /// Stage *prescribe*: kinematic bodies to their pose and velocity at the current time.
     pub(crate) fn prescribe_kinematic_bodies(&mut self) {
-        for (index, body) in self.bodies.iter().enumerate() {
-            if let Support::Kinematic(motion) = &body.support {
+        for &index in &self.kinematic_bodies {
+            if let Support::Kinematic(motion) = &self.bodies[index].support {
                 self.states[index] = prescribed_state(motion, &self.initial_states[index], self.time);
             }
         }
     }
 
-    /// Stages *clear*, *gravity* and *couplings*: loads at kinematics `self.frames`.
-    pub(crate) fn evaluate_loads(&mut self) {
-        self.loads.fill(Load::default());
+    /// Stages *clear*, *gravity* and *couplings* for kinematics `self.frames`; returns the power
+    /// dissipated [W].
+    pub(crate) fn evaluate_loads(&mut self) -> f64 {
         for (load, body) in self.loads.iter_mut().zip(&self.bodies) {
-            if !body.is_kinematic() {
-                load.force = self.gravity * body.mass();
-            }
+            *load = gravity_load(&self.gravity, body);
         }
-        for (coupling, out) in self.couplings.iter_mut().zip(self.coupling_forces.iter_mut()) {
-            *out = coupling.forces(&self.frames);
-            let [end1, end2] = coupling.ends();
-            for (end, force, at) in [(end1, out.f1, out.point1), (end2, out.f2, out.point2)] {
-                if let Some(body) = end.body() {
-                    self.loads[body].apply(&force, &at, &self.frames[body]);
-                }
-            }
-        }
+        self.apply_couplings()
     }
 
-    /// Power dissipated by all couplings [W].
-    pub(crate) fn dissipated_power(&self) -> f64 {
-        self.coupling_forces.iter().map(|f| f.dissipated_power).sum()
+    /// Stage *couplings*: each coupling's forces, kept per coupling and added to the loads;
+    /// returns the power dissipated [W].
+    pub(crate) fn apply_couplings(&mut self) -> f64 {
+        let mut dissipated = 0.0;
+        for (coupling, out) in self.couplings.iter_mut().zip(self.coupling_forces.iter_mut()) {
+            *out = coupling.apply(&self.frames, &mut self.loads);
+            dissipated += out.dissipated_power;
+        }
+        dissipated
     }
 
     /// Power the prescribed motions put into the system, `−Σ (F_k·v_k + M_k·ω_k)` [W].
     pub(crate) fn external_power(&self) -> f64 {
-        self.bodies
+        self.kinematic_bodies
             .iter()
-            .zip(self.loads.iter().zip(&self.frames))
-            .filter(|(b, _)| b.is_kinematic())
-            .map(|(_, (load, frame))| -(load.force.dot(&frame.velocity) + load.moment.dot(&frame.angular_velocity)))
+            .map(|&i| -(self.loads[i].force.dot(&self.frames[i].velocity) + self.loads[i].moment.dot(&self.frames[i].angular_velocity)))
             .sum()
     }
 
@@ -193,4 +193,10 @@ impl World {
         self.steps += 1;
         self.time += self.dt;
     }
+}
+
+/// Stages *clear* and *gravity* for one body: `F = m g`, `M = 0` (nothing for a kinematic body,
+/// which forces do not move).
+pub(crate) fn gravity_load(gravity: &Vec3, body: &RigidBody) -> Load {
+    if body.is_kinematic() { Load::default() } else { Load { force: gravity * body.mass(), moment: Vec3::zeros() } }
 }

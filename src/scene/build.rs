@@ -194,7 +194,7 @@ fn build_end(def: &EndDef, bodies: &[RigidBody], at: &ItemAt) -> Result<Endpoint
                 let known: Vec<&str> = bodies.iter().map(|b| b.name.as_str()).collect();
                 return Err(at.problem(Some("body"), Some(body), format!("unknown body \"{body}\" (bodies: {})", known.join(", "))));
             };
-            Endpoint::Body { body: index, point: bodies[index].principal_point(&vec3(*point)) }
+            Endpoint::on_body(index, bodies[index].principal_point(&vec3(*point)))
         }
     })
 }

@@ -18,6 +18,32 @@ pub enum Endpoint {
     World(Vec3),
     /// A point fixed on body `body` (index in the world), in its principal frame [m].
     Body { body: usize, point: Vec3 },
+    /// The centre of mass G of body `body`: no lever arm, so no moment and no rotation to
+    /// evaluate (a chain of point-like bodies pays for none).
+    Center { body: usize },
+}
+
+impl Endpoint {
+    /// An end at `point` (principal frame) of body `body`: [`Endpoint::Center`] when it is G.
+    pub fn on_body(body: usize, point: Vec3) -> Self {
+        if point == Vec3::zeros() { Self::Center { body } } else { Self::Body { body, point } }
+    }
+
+    /// The end's point in the body's principal frame [m], or in the world for a world end.
+    pub fn point(&self) -> Vec3 {
+        match *self {
+            Self::World(point) | Self::Body { point, .. } => point,
+            Self::Center { .. } => Vec3::zeros(),
+        }
+    }
+
+    /// The body the end is on, if any.
+    pub fn body(&self) -> Option<usize> {
+        match *self {
+            Self::World(_) => None,
+            Self::Body { body, .. } | Self::Center { body } => Some(body),
+        }
+    }
 }
 
 /// A body's kinematics at the instant the forces are evaluated, in world axes.
@@ -33,31 +59,57 @@ pub struct BodyFrame {
     pub angular_velocity: Vec3,
 }
 
-/// Position [m] and velocity [m/s] of an end, world frame.
+/// How a force at an end reaches a body.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Attachment {
+    World,
+    Center(usize),
+    /// Body index and lever arm `x_end − x_G` [m], world axes.
+    Arm(usize, Vec3),
+}
+
+/// Position [m] and velocity [m/s] of an end, world frame, and how it is attached.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EndMotion {
     pub position: Vec3,
     pub velocity: Vec3,
+    pub attachment: Attachment,
+}
+
+impl EndMotion {
+    /// Adds force `force` [N] at this end to its body's load: `F += f`, `M += arm × f`.
+    #[inline]
+    pub fn apply(&self, force: &Vec3, loads: &mut [Load]) {
+        match self.attachment {
+            Attachment::World => {}
+            Attachment::Center(body) => loads[body].force += force,
+            Attachment::Arm(body, arm) => {
+                loads[body].force += force;
+                loads[body].moment += arm.cross(force);
+            }
+        }
+    }
 }
 
 impl Endpoint {
     /// Where the end is and how fast it moves (seed 003 [19]: `v_i = v_G + ω × (x_i − x_G)`).
+    #[inline]
     pub fn motion(&self, frames: &[BodyFrame]) -> EndMotion {
         match *self {
-            Self::World(position) => EndMotion { position, velocity: Vec3::zeros() },
+            Self::World(position) => EndMotion { position, velocity: Vec3::zeros(), attachment: Attachment::World },
+            Self::Center { body } => {
+                let frame = &frames[body];
+                EndMotion { position: frame.position, velocity: frame.velocity, attachment: Attachment::Center(body) }
+            }
             Self::Body { body, point } => {
                 let frame = &frames[body];
                 let arm = frame.rotation * point;
-                EndMotion { position: frame.position + arm, velocity: frame.velocity + frame.angular_velocity.cross(&arm) }
+                EndMotion {
+                    position: frame.position + arm,
+                    velocity: frame.velocity + frame.angular_velocity.cross(&arm),
+                    attachment: Attachment::Arm(body, arm),
+                }
             }
-        }
-    }
-
-    /// The body this end is on, if any.
-    pub fn body(&self) -> Option<usize> {
-        match *self {
-            Self::World(_) => None,
-            Self::Body { body, .. } => Some(body),
         }
     }
 }
@@ -67,14 +119,6 @@ impl Endpoint {
 pub struct Load {
     pub force: Vec3,
     pub moment: Vec3,
-}
-
-impl Load {
-    /// Adds force `force` applied at world point `at`: `M += (at − x_G) × F`.
-    pub fn apply(&mut self, force: &Vec3, at: &Vec3, frame: &BodyFrame) {
-        self.force += force;
-        self.moment += (at - frame.position).cross(force);
-    }
 }
 
 /// What one coupling did at the last evaluation.
@@ -120,10 +164,10 @@ impl Coupling {
         }
     }
 
-    /// Evaluates the forces at the kinematics `frames`.
-    pub fn forces(&mut self, frames: &[BodyFrame]) -> CouplingForces {
+    /// Evaluates the forces at the kinematics `frames` and adds them to the end bodies' `loads`.
+    pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load]) -> CouplingForces {
         match &mut self.kind {
-            CouplingKind::SpringDamper(spring) => spring.forces(frames),
+            CouplingKind::SpringDamper(spring) => spring.apply(frames, loads),
         }
     }
 

@@ -5,7 +5,7 @@
 //! `f1 d` acts on end 1 and `−f1 d` on end 2, so a stretched spring pulls the ends together.
 //! Dissipated power `k_d ẋ²` [W]; stored energy `V(x)` [J].
 
-use super::{BodyFrame, CouplingForces, ElasticLaw, Endpoint};
+use super::{BodyFrame, CouplingForces, ElasticLaw, Endpoint, Load};
 use crate::physics::Vec3;
 
 /// Below this distance [m] the ends count as coincident: the direction is undefined.
@@ -34,19 +34,21 @@ impl SpringDamper {
     fn length_and_direction(&mut self, separation: &Vec3) -> (f64, Vec3) {
         let length = separation.norm();
         if length > COINCIDENT {
-            self.direction = separation / length;
+            self.direction = separation * length.recip();
         }
         (length, self.direction)
     }
 
-    /// Forces at the kinematics `frames` (seed [4944]–[4945]).
-    pub fn forces(&mut self, frames: &[BodyFrame]) -> CouplingForces {
+    /// Forces at the kinematics `frames` (seed [4944]–[4945]), added to the end bodies' `loads`.
+    pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load]) -> CouplingForces {
         let (end1, end2) = (self.end1.motion(frames), self.end2.motion(frames));
         let (length, direction) = self.length_and_direction(&(end2.position - end1.position));
         let rate = (end2.velocity - end1.velocity).dot(&direction);
         let damping_force = self.damping * rate;
         let tension = self.law.force(length) + damping_force;
         let f1 = direction * tension;
+        end1.apply(&f1, loads);
+        end2.apply(&-f1, loads);
         CouplingForces {
             point1: end1.position,
             point2: end2.position,

@@ -28,6 +28,7 @@ pub fn euler_angular_acceleration(body: &RigidBody, moment: &Vec3, omega: &Vec3)
 
 /// Accelerations of `body` with orientation `rotation` (principal → world) under `load` (world
 /// axes), with the gyroscopic term evaluated at `omega` (principal frame), after its supports.
+#[inline(always)]
 pub fn accelerations(body: &RigidBody, rotation: &Mat3, load: &Load, omega: &Vec3) -> Acceleration {
     match &body.support {
         Support::Kinematic(_) => Acceleration::default(),
@@ -49,6 +50,7 @@ pub fn accelerations(body: &RigidBody, rotation: &Mat3, load: &Load, omega: &Vec
 }
 
 fn free_accelerations(body: &RigidBody, rotation: &Mat3, load: &Load, omega: &Vec3) -> Acceleration {
-    let moment = rotation.tr_mul(&load.moment);
+    // Bodies held only at G (point masses on springs) carry no moment: skip the rotation.
+    let moment = if load.moment == Vec3::zeros() { Vec3::zeros() } else { rotation.tr_mul(&load.moment) };
     Acceleration { linear: load.force * body.inverse_mass, angular: euler_angular_acceleration(body, &moment, omega) }
 }

@@ -175,7 +175,7 @@ impl World {
     pub(crate) fn apply_couplings(&mut self) -> f64 {
         let mut dissipated = 0.0;
         for (coupling, out) in self.couplings.iter_mut().zip(self.coupling_forces.iter_mut()) {
-            *out = coupling.apply(&self.frames, &mut self.loads);
+            coupling.apply(&self.frames, &mut self.loads, out);
             dissipated += out.dissipated_power;
         }
         dissipated
@@ -185,7 +185,10 @@ impl World {
     pub(crate) fn external_power(&self) -> f64 {
         self.kinematic_bodies
             .iter()
-            .map(|&i| -(self.loads[i].force.dot(&self.frames[i].velocity) + self.loads[i].moment.dot(&self.frames[i].angular_velocity)))
+            .map(|&i| {
+                let (load, frame) = (&self.loads[i], &self.frames[i]);
+                -(load.force.dot(&frame.velocity) + load.moment.dot(&(frame.rotation * frame.angular_velocity)))
+            })
             .sum()
     }
 

@@ -52,6 +52,7 @@ impl ElasticLaw {
     }
 
     /// Elastic force on end 1, `f_e(x)` [N].
+    #[inline(always)]
     pub fn force(&self, x: f64) -> f64 {
         match self {
             Self::Linear { stiffness, rest_length } => stiffness * (x - rest_length),

@@ -55,7 +55,7 @@ pub struct BodyFrame {
     pub rotation: Mat3,
     /// `v_G` [m/s].
     pub velocity: Vec3,
-    /// `ω` in world axes [rad/s].
+    /// `ω` in the principal frame [rad/s] (turned into world axes only where an end needs it).
     pub angular_velocity: Vec3,
 }
 
@@ -78,7 +78,7 @@ pub struct EndMotion {
 
 impl EndMotion {
     /// Adds force `force` [N] at this end to its body's load: `F += f`, `M += arm × f`.
-    #[inline]
+    #[inline(always)]
     pub fn apply(&self, force: &Vec3, loads: &mut [Load]) {
         match self.attachment {
             Attachment::World => {}
@@ -93,7 +93,7 @@ impl EndMotion {
 
 impl Endpoint {
     /// Where the end is and how fast it moves (seed 003 [19]: `v_i = v_G + ω × (x_i − x_G)`).
-    #[inline]
+    #[inline(always)]
     pub fn motion(&self, frames: &[BodyFrame]) -> EndMotion {
         match *self {
             Self::World(position) => EndMotion { position, velocity: Vec3::zeros(), attachment: Attachment::World },
@@ -106,7 +106,7 @@ impl Endpoint {
                 let arm = frame.rotation * point;
                 EndMotion {
                     position: frame.position + arm,
-                    velocity: frame.velocity + frame.angular_velocity.cross(&arm),
+                    velocity: frame.velocity + frame.rotation * frame.angular_velocity.cross(&point),
                     attachment: Attachment::Arm(body, arm),
                 }
             }
@@ -164,10 +164,12 @@ impl Coupling {
         }
     }
 
-    /// Evaluates the forces at the kinematics `frames` and adds them to the end bodies' `loads`.
-    pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load]) -> CouplingForces {
+    /// Evaluates the forces at the kinematics `frames`, adds them to the end bodies' `loads` and
+    /// writes what the coupling did to `out`.
+    #[inline]
+    pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load], out: &mut CouplingForces) {
         match &mut self.kind {
-            CouplingKind::SpringDamper(spring) => spring.apply(frames, loads),
+            CouplingKind::SpringDamper(spring) => spring.apply(frames, loads, out),
         }
     }
 

@@ -39,8 +39,10 @@ impl SpringDamper {
         (length, self.direction)
     }
 
-    /// Forces at the kinematics `frames` (seed [4944]–[4945]), added to the end bodies' `loads`.
-    pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load]) -> CouplingForces {
+    /// Forces at the kinematics `frames` (seed [4944]–[4945]), added to the end bodies' `loads`
+    /// and written to `out`.
+    #[inline]
+    pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load], out: &mut CouplingForces) {
         let (end1, end2) = (self.end1.motion(frames), self.end2.motion(frames));
         let (length, direction) = self.length_and_direction(&(end2.position - end1.position));
         let rate = (end2.velocity - end1.velocity).dot(&direction);
@@ -49,14 +51,14 @@ impl SpringDamper {
         let f1 = direction * tension;
         end1.apply(&f1, loads);
         end2.apply(&-f1, loads);
-        CouplingForces {
+        *out = CouplingForces {
             point1: end1.position,
             point2: end2.position,
             f1,
             f2: -f1,
             tension,
             dissipated_power: damping_force * rate,
-        }
+        };
     }
 
     /// `V(x)` [J].

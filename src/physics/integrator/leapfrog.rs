@@ -45,12 +45,18 @@ pub(crate) fn step(world: &mut World) {
     let half = 0.5 * dt;
     world.advance_clock();
     let time = world.time();
-    for (index, body) in world.bodies.iter().enumerate() {
-        let state = &mut world.states[index];
-        let acceleration = &world.accelerations[index];
-        world.frames[index] = match &body.support {
+    let per_body = world
+        .bodies
+        .iter()
+        .zip(world.states.iter_mut())
+        .zip(&world.accelerations)
+        .zip(world.frames.iter_mut())
+        .zip(world.loads.iter_mut())
+        .zip(&world.initial_states);
+    for (((((body, state), acceleration), frame), load), initial) in per_body {
+        *frame = match &body.support {
             Support::Kinematic(motion) => {
-                *state = prescribed_state(motion, &world.initial_states[index], time);
+                *state = prescribed_state(motion, initial, time);
                 body_frame(state, state.velocity, state.angular_velocity)
             }
             support => {
@@ -59,7 +65,7 @@ pub(crate) fn step(world: &mut World) {
                 body_frame(state, state.velocity + acceleration.linear * half, state.angular_velocity + acceleration.angular * half)
             }
         };
-        world.loads[index] = gravity_load(&world.gravity, body);
+        *load = gravity_load(&world.gravity, body);
     }
     let dissipated = world.apply_couplings();
     compute_accelerations(world);
@@ -102,10 +108,12 @@ fn kick_and_drift(state: &mut BodyState, acceleration: &Acceleration, support: &
 pub(crate) fn rotate_by(orientation: &Rotation, rotation_vector: &Vec3) -> Rotation {
     let angle_squared = rotation_vector.norm_squared();
     let (cos_half, sin_half_over_angle) = if angle_squared < 0.05 * 0.05 {
+        // Multiplications by constant reciprocals: a division here would cost more than the
+        // whole series.
         let t = angle_squared;
         (
-            1.0 - t / 8.0 * (1.0 - t / 48.0 * (1.0 - t / 120.0)),
-            0.5 * (1.0 - t / 24.0 * (1.0 - t / 80.0 * (1.0 - t / 168.0))),
+            1.0 - t * (1.0 / 8.0) * (1.0 - t * (1.0 / 48.0) * (1.0 - t * (1.0 / 120.0))),
+            0.5 * (1.0 - t * (1.0 / 24.0) * (1.0 - t * (1.0 / 80.0) * (1.0 - t * (1.0 / 168.0)))),
         )
     } else {
         let angle = angle_squared.sqrt();
@@ -127,14 +135,14 @@ fn renormalize(q: nalgebra::Quaternion<f64>) -> Rotation {
 /// Stage *predict*: the kinematics the forces see, world axes.
 fn body_frame(state: &BodyState, velocity: Vec3, angular_velocity: Vec3) -> BodyFrame {
     let rotation = state.orientation.to_rotation_matrix().into_inner();
-    BodyFrame { position: state.position, rotation, velocity, angular_velocity: rotation * angular_velocity }
+    BodyFrame { position: state.position, rotation, velocity, angular_velocity }
 }
 
 /// Stage *accelerations*: Euler's equations with the gyroscopic term at `ω(t−½dt)` (the seed's choice).
 fn compute_accelerations(world: &mut World) {
-    for (index, body) in world.bodies.iter().enumerate() {
-        let omega = &world.states[index].angular_velocity;
-        world.accelerations[index] = accelerations(body, &world.frames[index].rotation, &world.loads[index], omega);
+    let per_body = world.bodies.iter().zip(&world.states).zip(&world.frames).zip(&world.loads);
+    for ((((body, state), frame), load), acceleration) in per_body.zip(world.accelerations.iter_mut()) {
+        *acceleration = accelerations(body, &frame.rotation, load, &state.angular_velocity);
     }
 }
 

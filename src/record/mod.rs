@@ -5,8 +5,9 @@
 //!   `…/shape`: static display shape, with a static transform from the principal frame to the
 //!   shape; `…/nodes`: static slave nodes (principal frame);
 //! - `world/couplings/<name>`: `LineStrips3D` between the ends, each frame;
-//! - `plots/energy/<kinetic|gravity|elastic|dissipated|external_work|total|balance>` [J];
-//! - `plots/couplings/<name>/tension` [N].
+//! - `plots/energy`: one series each for kinetic, gravity, elastic, dissipated, external_work,
+//!   total and balance [J], in one plot;
+//! - `plots/tension`: one series per coupling, named after it [N], in one plot.
 
 use crate::physics::body::{RigidBody, Shape};
 use crate::physics::world::World;
@@ -22,11 +23,10 @@ pub struct Recorder {
     stream: RecordingStream,
     body_paths: Vec<String>,
     coupling_paths: Vec<String>,
-    tension_paths: Vec<String>,
 }
 
-/// Energy plots, in the order logged.
-const ENERGY_PLOTS: [&str; 7] = ["kinetic", "gravity", "elastic", "dissipated", "external_work", "total", "balance"];
+/// Energy series, in the order logged.
+const ENERGY_SERIES: [&str; 7] = ["kinetic", "gravity", "elastic", "dissipated", "external_work", "total", "balance"];
 
 impl Recorder {
     /// A recorder writing to the `.rrd` file `path`; the file is created now, so an unwritable
@@ -44,8 +44,11 @@ impl Recorder {
             log_static_body(&stream, body, path)?;
         }
         let coupling_paths = world.couplings.iter().map(|c| format!("world/couplings/{}", c.name)).collect();
-        let tension_paths = world.couplings.iter().map(|c| format!("plots/couplings/{}/tension", c.name)).collect();
-        Ok(Self { stream, body_paths, coupling_paths, tension_paths })
+        stream.log_static("plots/energy", &rerun::SeriesLines::new().with_names(ENERGY_SERIES))?;
+        if !world.couplings.is_empty() {
+            stream.log_static("plots/tension", &rerun::SeriesLines::new().with_names(world.couplings.iter().map(|c| c.name.as_str())))?;
+        }
+        Ok(Self { stream, body_paths, coupling_paths })
     }
 
     /// Logs the world's current state at its `sim_time` and `step`.
@@ -56,15 +59,15 @@ impl Recorder {
             let state = world.state(index);
             self.stream.log(path.as_str(), &pose(&state.position, &state.orientation))?;
         }
-        for ((path, tension_path), forces) in self.coupling_paths.iter().zip(&self.tension_paths).zip(world.coupling_forces()) {
+        for (path, forces) in self.coupling_paths.iter().zip(world.coupling_forces()) {
             self.stream.log(path.as_str(), &rerun::LineStrips3D::new([[f32x3(&forces.point1), f32x3(&forces.point2)]]))?;
-            self.stream.log(tension_path.as_str(), &rerun::Scalars::single(forces.tension))?;
+        }
+        if !world.couplings.is_empty() {
+            self.stream.log("plots/tension", &rerun::Scalars::new(world.coupling_forces().iter().map(|f| f.tension)))?;
         }
         let energy = world.energy();
         let values = [energy.kinetic, energy.gravity, energy.elastic, energy.dissipated, energy.external_work, energy.total(), energy.balance()];
-        for (name, value) in ENERGY_PLOTS.iter().zip(values) {
-            self.stream.log(format!("plots/energy/{name}"), &rerun::Scalars::single(value))?;
-        }
+        self.stream.log("plots/energy", &rerun::Scalars::new(values))?;
         Ok(())
     }
 
@@ -100,16 +103,17 @@ fn log_static_body(stream: &RecordingStream, body: &RigidBody, path: &str) -> Re
     let placement = to_principal * nalgebra::Isometry3::from_parts(center.into(), axis_rotation);
     stream.log_static(shape_path.as_str(), &pose(&placement.translation.vector, &placement.rotation))?;
     let color = rerun::Color::from_rgb(120, 160, 210);
+    let solid = rerun::components::FillMode::Solid;
     match &body.shape {
         Shape::Box { size, .. } => {
-            stream.log_static(shape_path.as_str(), &rerun::Boxes3D::from_half_sizes([f32x3(&(size * 0.5))]).with_colors([color]))?
+            stream.log_static(shape_path.as_str(), &rerun::Boxes3D::from_half_sizes([f32x3(&(size * 0.5))]).with_colors([color]).with_fill_mode(solid))?
         }
         Shape::Sphere { radius, .. } => {
-            stream.log_static(shape_path.as_str(), &rerun::Ellipsoids3D::from_radii([*radius as f32]).with_colors([color]))?
+            stream.log_static(shape_path.as_str(), &rerun::Ellipsoids3D::from_radii([*radius as f32]).with_colors([color]).with_fill_mode(solid))?
         }
         Shape::Cylinder { radius, length, .. } => stream.log_static(
             shape_path.as_str(),
-            &rerun::Cylinders3D::from_lengths_and_radii([*length as f32], [*radius as f32]).with_colors([color]),
+            &rerun::Cylinders3D::from_lengths_and_radii([*length as f32], [*radius as f32]).with_colors([color]).with_fill_mode(solid),
         )?,
     }
     if !body.slave_nodes.is_empty() {

@@ -39,7 +39,7 @@ fn bench_chains(c: &mut Criterion) {
         ("chain1000", scene::parse(&chain_scene(1000), Path::new("chain1000")).expect("generated scene").world),
     ];
     for (name, mut world) in cases {
-        group.bench_function(name, |b| b.iter(|| world.step()));
+        group.bench_function(name, |b| b.iter(|| world.step().expect("springs always give a force")));
     }
     group.finish();
 }

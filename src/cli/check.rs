@@ -34,13 +34,24 @@ fn report(world: &World, label: &str) -> String {
         let [end1, end2] = coupling.ends();
         let _ = writeln!(out, "\ncoupling \"{}\" ({})", coupling.name, coupling.kind_name());
         let _ = writeln!(out, "  end 1 {}   end 2 {}", end(world, &end1), end(world, &end2));
+        let chord = (forces.point2 - forces.point1).norm();
         match &coupling.kind {
             CouplingKind::SpringDamper(spring) => {
                 let _ = writeln!(out, "  law {}, damping {} N·s/m", law(&spring.law), spring.damping);
+                let _ = writeln!(out, "  length {chord:.6} m, tension {:.6} N", forces.tension);
+            }
+            CouplingKind::Catenary(line) => {
+                let _ = writeln!(out, "  λ0 = {} kg/m, L_eq = {} m, D = {} N/m (EA = {} N)", line.mass_per_length, line.length, line.stiffness, line.stiffness * line.length);
+                if let Some(state) = line.state() {
+                    let (t1, t2) = state.end_tensions();
+                    let _ = writeln!(
+                        out,
+                        "  chord {chord:.6} m, H = {:.6} N, V1 = {:.6} N, V2 = {:.6} N, end tensions {t1:.6} / {t2:.6} N ({} Newton iterations)",
+                        state.horizontal_tension, state.vertical1, state.vertical2(), state.iterations
+                    );
+                }
             }
         }
-        let length = (forces.point2 - forces.point1).norm();
-        let _ = writeln!(out, "  length {length:.6} m, tension {:.6} N", forces.tension);
     }
     let e = world.energy();
     let _ = writeln!(

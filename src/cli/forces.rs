@@ -1,6 +1,7 @@
 //! `tether forces SCENE --json`: the forces of the initial state.
 
 use serde::Serialize;
+use tether::physics::coupling::{Coupling, CouplingKind};
 use tether::physics::world::World;
 use tether::physics::Vec3;
 use tether::scene::Scene;
@@ -11,13 +12,31 @@ struct Report<'a> {
     bodies: Vec<BodyReport<'a>>,
 }
 
-/// Forces exerted by the coupling on end 1 and end 2 [N], world frame.
+/// Forces exerted by the coupling on end 1 and end 2 [N], world frame; for a catenary also
+/// the horizontal tension [N] and the parameters `u1`, `u2` (PHYSICS.md §3; null when the line
+/// is vertical and they are infinite).
 #[derive(Serialize)]
 struct CouplingReport<'a> {
     name: &'a str,
     kind: &'a str,
     f1: [f64; 3],
     f2: [f64; 3],
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    catenary: Option<CatenaryReport>,
+}
+
+#[derive(Serialize)]
+struct CatenaryReport {
+    horizontal_tension: f64,
+    u1: f64,
+    u2: f64,
+}
+
+fn catenary_report(coupling: &Coupling) -> Option<CatenaryReport> {
+    let CouplingKind::Catenary(line) = &coupling.kind else { return None };
+    let state = line.state()?;
+    let (u1, u2) = state.parameters();
+    Some(CatenaryReport { horizontal_tension: state.horizontal_tension, u1, u2 })
 }
 
 /// Total force [N] and moment about G [N·m] on a body, world frame.
@@ -38,7 +57,7 @@ fn report(world: &World) -> Report<'_> {
             .couplings
             .iter()
             .zip(world.coupling_forces())
-            .map(|(c, f)| CouplingReport { name: &c.name, kind: c.kind_name(), f1: a(&f.f1), f2: a(&f.f2) })
+            .map(|(c, f)| CouplingReport { name: &c.name, kind: c.kind_name(), f1: a(&f.f1), f2: a(&f.f2), catenary: catenary_report(c) })
             .collect(),
         bodies: world
             .bodies

@@ -40,7 +40,7 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<()> {
         ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} steps  {msg}").expect("the template is a valid literal"),
     );
     for step in 1..=total_steps {
-        world.step();
+        world.step()?;
         if step % steps_per_frame == 0 || step == total_steps {
             recorder.log_frame(world)?;
             progress.set_position(step);

@@ -11,11 +11,20 @@
 //! 7. *ledger*: dissipated and external work advance by the trapezoid rule.
 
 use super::body::{BodyState, RigidBody, Support, prescribed_state};
-use super::coupling::{BodyFrame, Coupling, CouplingForces, Load};
+use super::coupling::{BodyFrame, Coupling, CouplingError, CouplingForces, Load};
 use super::dynamics::Acceleration;
 use super::energy::{EnergyLedger, EnergyReport};
 use super::integrator::{Integrator, leapfrog};
 use super::Vec3;
+
+/// A step that could not be completed: the coupling at fault, the time, and why.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("coupling \"{coupling}\" at t = {time} s: {source}")]
+pub struct StepError {
+    pub coupling: String,
+    pub time: f64,
+    pub source: CouplingError,
+}
 
 /// Bodies, couplings and time.
 #[derive(Debug, Clone)]
@@ -45,6 +54,9 @@ pub struct World {
 impl World {
     /// A world at t = 0 with `initial_states` (synchronised: velocities at t = 0) and time step
     /// `dt` [s] > 0. Forces and accelerations at t = 0 are evaluated here.
+    ///
+    /// # Errors
+    /// A coupling that cannot give its forces at t = 0.
     pub fn new(
         gravity: Vec3,
         bodies: Vec<RigidBody>,
@@ -52,7 +64,7 @@ impl World {
         initial_states: Vec<BodyState>,
         dt: f64,
         integrator: Integrator,
-    ) -> Self {
+    ) -> Result<Self, StepError> {
         let n = bodies.len();
         let mut world = Self {
             gravity,
@@ -74,28 +86,26 @@ impl World {
         world.coupling_forces = vec![CouplingForces::default(); world.couplings.len()];
         world.kinematic_bodies = (0..n).filter(|&i| world.bodies[i].is_kinematic()).collect();
         match world.integrator {
-            Integrator::Leapfrog => leapfrog::start(&mut world),
+            Integrator::Leapfrog => leapfrog::start(&mut world)?,
         }
-        world
+        Ok(world)
     }
 
     /// Advances the world by one time step `dt`.
-    pub fn step(&mut self) {
+    ///
+    /// # Errors
+    /// A coupling that cannot give its forces; the world is then left mid-step and should be
+    /// reset.
+    pub fn step(&mut self) -> Result<(), StepError> {
         match self.integrator {
             Integrator::Leapfrog => leapfrog::step(self),
         }
     }
 
-    /// Restarts from t = 0 with the current parameters.
-    pub fn reset(&mut self) {
-        *self = Self::new(
-            self.gravity,
-            std::mem::take(&mut self.bodies),
-            std::mem::take(&mut self.couplings),
-            self.initial_states.clone(),
-            self.dt,
-            self.integrator,
-        );
+    /// Restarts from t = 0 with the current parameters; on error the world is unchanged.
+    pub fn reset(&mut self) -> Result<(), StepError> {
+        *self = Self::new(self.gravity, self.bodies.clone(), self.couplings.clone(), self.initial_states.clone(), self.dt, self.integrator)?;
+        Ok(())
     }
 
     /// Simulated time [s].
@@ -146,7 +156,7 @@ impl World {
                 + 0.5 * state.angular_velocity.dot(&inertia.component_mul(&state.angular_velocity));
             report.gravity -= body.mass() * self.gravity.dot(&state.position);
         }
-        report.elastic = self.couplings.iter().map(|c| c.potential_energy(&self.frames)).sum();
+        report.elastic = self.couplings.iter().map(|c| c.potential_energy(&self.frames, &self.gravity)).sum();
         report
     }
 
@@ -163,7 +173,7 @@ impl World {
 
     /// Stages *clear*, *gravity* and *couplings* for kinematics `self.frames`; returns the power
     /// dissipated [W].
-    pub(crate) fn evaluate_loads(&mut self) -> f64 {
+    pub(crate) fn evaluate_loads(&mut self) -> Result<f64, StepError> {
         for (load, body) in self.loads.iter_mut().zip(&self.bodies) {
             *load = gravity_load(&self.gravity, body);
         }
@@ -172,13 +182,15 @@ impl World {
 
     /// Stage *couplings*: each coupling's forces, kept per coupling and added to the loads;
     /// returns the power dissipated [W].
-    pub(crate) fn apply_couplings(&mut self) -> f64 {
+    pub(crate) fn apply_couplings(&mut self) -> Result<f64, StepError> {
         let mut dissipated = 0.0;
         for (coupling, out) in self.couplings.iter_mut().zip(self.coupling_forces.iter_mut()) {
-            coupling.apply(&self.frames, &mut self.loads, out);
+            coupling
+                .apply(&self.frames, &self.gravity, &mut self.loads, out)
+                .map_err(|source| StepError { coupling: coupling.name.clone(), time: self.time, source })?;
             dissipated += out.dissipated_power;
         }
-        dissipated
+        Ok(dissipated)
     }
 
     /// Power the prescribed motions put into the system, `−Σ (F_k·v_k + M_k·ω_k)` [W].

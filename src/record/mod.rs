@@ -4,12 +4,18 @@
 //! - `world/bodies/<name>`: temporal `Transform3D` (G and the principal axes);
 //!   `…/shape`: static display shape, with a static transform from the principal frame to the
 //!   shape; `…/nodes`: static slave nodes (principal frame);
-//! - `world/couplings/<name>`: `LineStrips3D` between the ends, each frame;
+//! - `world/couplings/<name>`: `LineStrips3D` between the ends, each frame; a catenary is drawn
+//!   along its solved shape in 32 segments coloured by tension (blue: the lowest tension along
+//!   the line, red: the highest);
 //! - `plots/energy`: one series each for kinetic, gravity, elastic, dissipated, external_work,
 //!   total and balance [J], in one plot;
-//! - `plots/tension`: one series per coupling, named after it [N], in one plot.
+//! - `plots/tension`: one series per coupling, named after it [N], in one plot (a catenary's
+//!   series is its larger end tension);
+//! - `plots/catenary/<name>`: a catenary's end tensions, series `end1` and `end2` [N].
 
 use crate::physics::body::{RigidBody, Shape};
+use crate::physics::coupling::CouplingKind;
+use crate::physics::coupling::catenary::LineState;
 use crate::physics::world::World;
 use crate::physics::{Rotation, Vec3};
 use rerun::RecordingStream;
@@ -48,6 +54,11 @@ impl Recorder {
         if !world.couplings.is_empty() {
             stream.log_static("plots/tension", &rerun::SeriesLines::new().with_names(world.couplings.iter().map(|c| c.name.as_str())))?;
         }
+        for coupling in &world.couplings {
+            if matches!(coupling.kind, CouplingKind::Catenary(_)) {
+                stream.log_static(format!("plots/catenary/{}", coupling.name), &rerun::SeriesLines::new().with_names(["end1", "end2"]))?;
+            }
+        }
         Ok(Self { stream, body_paths, coupling_paths })
     }
 
@@ -59,8 +70,15 @@ impl Recorder {
             let state = world.state(index);
             self.stream.log(path.as_str(), &pose(&state.position, &state.orientation))?;
         }
-        for (path, forces) in self.coupling_paths.iter().zip(world.coupling_forces()) {
-            self.stream.log(path.as_str(), &rerun::LineStrips3D::new([[f32x3(&forces.point1), f32x3(&forces.point2)]]))?;
+        for ((path, forces), coupling) in self.coupling_paths.iter().zip(world.coupling_forces()).zip(&world.couplings) {
+            match &coupling.kind {
+                CouplingKind::Catenary(line) if let Some(state) = line.state() => {
+                    self.stream.log(path.as_str(), &catenary_strips(state))?;
+                    let (t1, t2) = state.end_tensions();
+                    self.stream.log(format!("plots/catenary/{}", coupling.name), &rerun::Scalars::new([t1, t2]))?;
+                }
+                _ => self.stream.log(path.as_str(), &rerun::LineStrips3D::new([[f32x3(&forces.point1), f32x3(&forces.point2)]]))?,
+            }
         }
         if !world.couplings.is_empty() {
             self.stream.log("plots/tension", &rerun::Scalars::new(world.coupling_forces().iter().map(|f| f.tension)))?;
@@ -75,6 +93,20 @@ impl Recorder {
     pub fn finish(self) -> Result<(), rerun::sink::SinkFlushError> {
         self.stream.flush_blocking()
     }
+}
+
+/// Segments of a catenary's shape, each coloured by its tension on a blue → red ramp between
+/// the lowest and highest tension along the line.
+fn catenary_strips(state: &LineState) -> rerun::LineStrips3D {
+    let points = state.sample(32);
+    let (low, high) = points.iter().fold((f64::INFINITY, 0.0_f64), |(lo, hi), (_, t)| (lo.min(*t), hi.max(*t)));
+    let span = (high - low).max(f64::MIN_POSITIVE);
+    let segments = points.windows(2).map(|pair| [f32x3(&pair[0].0), f32x3(&pair[1].0)]);
+    let colors = points.windows(2).map(|pair| {
+        let heat = ((0.5 * (pair[0].1 + pair[1].1) - low) / span).clamp(0.0, 1.0);
+        rerun::Color::from_rgb((60.0 + 195.0 * heat) as u8, 90, (255.0 - 195.0 * heat) as u8)
+    });
+    rerun::LineStrips3D::new(segments).with_colors(colors.collect::<Vec<_>>()).with_radii([rerun::Radius::new_ui_points(2.5)])
 }
 
 fn f32x3(v: &Vec3) -> [f32; 3] {

@@ -5,7 +5,7 @@
 use super::file::{BodyDef, CouplingDef, EndDef, InertiaDef, LawDef, NodeDef, SceneFile, ShapeDef, SupportDef, Triple, VelocityDef};
 use super::source::ItemKind;
 use crate::physics::body::{PrescribedMotion, RigidBody, Shape, Support, VelocityProfile};
-use crate::physics::coupling::{Coupling, CouplingKind, ElasticLaw, Endpoint, SpringDamper};
+use crate::physics::coupling::{Catenary, Coupling, CouplingKind, ElasticLaw, Endpoint, SpringDamper};
 use crate::physics::mass_properties::{MassProperties, Node};
 use crate::physics::world::World;
 use crate::physics::{Mat3, Vec3};
@@ -67,7 +67,10 @@ pub fn build(file: &SceneFile) -> Result<Built, Problem> {
         check_name(&at, file.couplings[..index].iter().map(CouplingDef::name))?;
         couplings.push(build_coupling(def, &bodies, &at)?);
     }
-    Ok(Built { world: World::new(vec3(file.gravity), bodies, couplings, states, file.dt, file.integrator), warnings })
+    // Names are unique by now: the coupling at fault is the first of its name.
+    let world = World::new(vec3(file.gravity), bodies, couplings, states, file.dt, file.integrator)
+        .map_err(|e| ItemAt::new(ItemKind::Coupling, &e.coupling, 0).at_name(format!("at t = 0: {}", e.source)))?;
+    Ok(Built { world, warnings })
 }
 
 /// Locates problems in one item.
@@ -211,6 +214,18 @@ fn build_coupling(def: &CouplingDef, bodies: &[RigidBody], at: &ItemAt) -> Resul
                 return Err(at.at_field("damping", format!("damping must be ≥ 0 N·s/m, got {damping}")));
             }
             CouplingKind::SpringDamper(SpringDamper::new(ends.0, ends.1, build_law(law, at)?, *damping))
+        }
+        CouplingDef::Catenary { mass_per_length, length, stiffness, .. } => {
+            if !(*mass_per_length >= 0.0) {
+                return Err(at.at_field("mass_per_length", format!("mass_per_length must be ≥ 0 kg/m, got {mass_per_length}")));
+            }
+            if !(*length > 0.0) {
+                return Err(at.at_field("length", format!("length must be > 0 m, got {length}")));
+            }
+            if !(*stiffness > 0.0) {
+                return Err(at.at_field("stiffness", format!("stiffness must be > 0 N/m, got {stiffness}")));
+            }
+            CouplingKind::Catenary(Catenary::new(ends.0, ends.1, *mass_per_length, *length, *stiffness))
         }
     };
     Ok(Coupling { name: def.name().to_string(), kind })

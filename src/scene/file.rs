@@ -177,20 +177,33 @@ pub enum CouplingDef {
         #[serde(default, deserialize_with = "finite")]
         damping: f64,
     },
+    /// Elastic catenary line (PHYSICS.md §3): `mass_per_length` λ0 [kg/m] ≥ 0, unstretched
+    /// `length` L_eq [m] > 0, `stiffness` D [N/m] > 0 of the whole line (EA = D L_eq).
+    Catenary {
+        name: String,
+        end1: EndDef,
+        end2: EndDef,
+        #[serde(deserialize_with = "finite")]
+        mass_per_length: f64,
+        #[serde(deserialize_with = "finite")]
+        length: f64,
+        #[serde(deserialize_with = "finite")]
+        stiffness: f64,
+    },
 }
 
 impl CouplingDef {
     /// The coupling's name.
     pub fn name(&self) -> &str {
         match self {
-            Self::SpringDamper { name, .. } => name,
+            Self::SpringDamper { name, .. } | Self::Catenary { name, .. } => name,
         }
     }
 
     /// The coupling's ends.
     pub fn ends(&self) -> [&EndDef; 2] {
         match self {
-            Self::SpringDamper { end1, end2, .. } => [end1, end2],
+            Self::SpringDamper { end1, end2, .. } | Self::Catenary { end1, end2, .. } => [end1, end2],
         }
     }
 }

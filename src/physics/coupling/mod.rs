@@ -4,10 +4,12 @@
 //! [`CouplingForces`] each evaluation, so its forces can be plotted, recorded and tested apart
 //! from the others before they are summed into the bodies' [`Load`]s.
 
+pub mod catenary;
 pub mod elastic_law;
 pub mod spring_damper;
 
 use super::{Mat3, Vec3};
+pub use catenary::{Catenary, CatenaryError};
 pub use elastic_law::ElasticLaw;
 pub use spring_damper::SpringDamper;
 
@@ -140,6 +142,14 @@ pub struct CouplingForces {
 #[derive(Debug, Clone, PartialEq)]
 pub enum CouplingKind {
     SpringDamper(SpringDamper),
+    Catenary(Catenary),
+}
+
+/// Why a coupling could not give its forces.
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+pub enum CouplingError {
+    #[error(transparent)]
+    Catenary(#[from] CatenaryError),
 }
 
 /// A named coupling.
@@ -154,29 +164,34 @@ impl Coupling {
     pub fn ends(&self) -> [Endpoint; 2] {
         match &self.kind {
             CouplingKind::SpringDamper(spring) => [spring.end1, spring.end2],
+            CouplingKind::Catenary(line) => [line.end1, line.end2],
         }
     }
 
-    /// Short name of the kind, as in scene files and JSON output.
+    /// Short name of the kind, as in JSON output.
     pub fn kind_name(&self) -> &'static str {
         match &self.kind {
             CouplingKind::SpringDamper(_) => "spring_damper",
+            CouplingKind::Catenary(_) => "catenary",
         }
     }
 
-    /// Evaluates the forces at the kinematics `frames`, adds them to the end bodies' `loads` and
-    /// writes what the coupling did to `out`.
+    /// Evaluates the forces at the kinematics `frames` under `gravity`, adds them to the end
+    /// bodies' `loads` and writes what the coupling did to `out`.
     #[inline]
-    pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load], out: &mut CouplingForces) {
+    pub fn apply(&mut self, frames: &[BodyFrame], gravity: &Vec3, loads: &mut [Load], out: &mut CouplingForces) -> Result<(), CouplingError> {
         match &mut self.kind {
             CouplingKind::SpringDamper(spring) => spring.apply(frames, loads, out),
+            CouplingKind::Catenary(line) => line.apply(frames, gravity, loads, out)?,
         }
+        Ok(())
     }
 
     /// Potential energy stored in the coupling [J].
-    pub fn potential_energy(&self, frames: &[BodyFrame]) -> f64 {
+    pub fn potential_energy(&self, frames: &[BodyFrame], gravity: &Vec3) -> f64 {
         match &self.kind {
             CouplingKind::SpringDamper(spring) => spring.potential_energy(frames),
+            CouplingKind::Catenary(line) => line.potential_energy(frames, gravity),
         }
     }
 }

@@ -17,16 +17,16 @@ use crate::physics::body::{BodyState, Support, prescribed_state};
 use crate::physics::coupling::BodyFrame;
 use crate::physics::dynamics::{Acceleration, accelerations};
 use crate::physics::energy::EnergyLedger;
-use crate::physics::world::{World, gravity_load};
+use crate::physics::world::{StepError, World, gravity_load};
 use crate::physics::{Rotation, Vec3};
 
 /// Evaluates t = 0 and turns the synchronised initial velocities into `v(−½dt) = v(0) − ½dt γ(0)`.
-pub(crate) fn start(world: &mut World) {
+pub(crate) fn start(world: &mut World) -> Result<(), StepError> {
     world.prescribe_kinematic_bodies();
     for (frame, state) in world.frames.iter_mut().zip(&world.states) {
         *frame = body_frame(state, state.velocity, state.angular_velocity);
     }
-    let dissipated = world.evaluate_loads();
+    let dissipated = world.evaluate_loads()?;
     compute_accelerations(world);
     let half = 0.5 * world.dt();
     for ((state, acceleration), body) in world.states.iter_mut().zip(&world.accelerations).zip(&world.bodies) {
@@ -36,11 +36,12 @@ pub(crate) fn start(world: &mut World) {
         }
     }
     world.ledger = EnergyLedger::new(dissipated, world.external_power());
+    Ok(())
 }
 
 /// One leapfrog step. Stages 1–4 (advance, prescribe, predict, clear + gravity) run in one
 /// pass over the bodies; then couplings, accelerations and the ledger.
-pub(crate) fn step(world: &mut World) {
+pub(crate) fn step(world: &mut World) -> Result<(), StepError> {
     let dt = world.dt();
     let half = 0.5 * dt;
     world.advance_clock();
@@ -67,9 +68,10 @@ pub(crate) fn step(world: &mut World) {
         };
         *load = gravity_load(&world.gravity, body);
     }
-    let dissipated = world.apply_couplings();
+    let dissipated = world.apply_couplings()?;
     compute_accelerations(world);
     world.ledger.advance(dt, dissipated, world.external_power());
+    Ok(())
 }
 
 /// The state at the current time t, velocities synchronised: `v(t) = v(t−½dt) + ½dt γ(t)`.

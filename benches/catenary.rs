@@ -38,7 +38,7 @@ fn report_iterations() {
     let stats = |v: &[u32]| (v.iter().sum::<u32>() as f64 / v.len() as f64, v.iter().max().copied().unwrap_or(0));
     let (cold_mean, cold_max) = stats(&cold);
     let (warm_mean, warm_max) = stats(&warm);
-    println!("catenary Newton iterations over {} cases: cold mean {cold_mean:.2} max {cold_max}; warm (1 % move) mean {warm_mean:.2} max {warm_max}", cold.len());
+    eprintln!("catenary Newton iterations over {} cases: cold mean {cold_mean:.2} max {cold_max}; warm (1 % move) mean {warm_mean:.2} max {warm_max}", cold.len());
 }
 
 fn bench_solver(c: &mut Criterion) {

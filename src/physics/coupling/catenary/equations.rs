@@ -15,22 +15,32 @@
 //! Both are written without cancellation ([`span`], [`rise`]), so they hold from millimetre to
 //! kilometre spans, slack to stretched, and down to `h = 0` (a vertical line).
 
+/// `√(h² + v²)`, without `hypot`'s cost where the squares cannot overflow.
+#[inline]
+fn radius(h: f64, v: f64) -> f64 {
+    if h.abs().max(v.abs()) < 1e150 { (h * h + v * v).sqrt() } else { h.hypot(v) }
+}
+
 /// `h (asinh(b/h) − asinh(a/h))` for `a ≤ b`: the horizontal extent of the inextensible line
 /// between vertical forces `a` and `b` (in units of W and L). Zero at `h = 0`.
+pub fn span(h: f64, a: f64, b: f64) -> f64 {
+    span_with_radii(h, a, b, radius(h, a), radius(h, b))
+}
+
+/// [`span`] with `r_a = √(h² + a²)` and `r_b = √(h² + b²)` already known.
 ///
 /// Same-sign `a, b` use `ln(1 + ((b + r_b) − (a + r_a))/(a + r_a))` with
 /// `r_b − r_a = (b² − a²)/(r_a + r_b)`: no difference of large logarithms.
-pub fn span(h: f64, a: f64, b: f64) -> f64 {
+fn span_with_radii(h: f64, a: f64, b: f64, ra: f64, rb: f64) -> f64 {
     if h <= 0.0 {
-        return 0.0;
-    }
-    if b <= 0.0 {
-        return span(h, -b, -a);
-    }
-    if a >= 0.0 {
-        let (ra, rb) = (h.hypot(a), h.hypot(b));
+        0.0
+    } else if a >= 0.0 {
         let growth = (b - a) * (1.0 + (b + a) / (ra + rb));
         h * (growth / (a + ra)).ln_1p()
+    } else if b <= 0.0 {
+        // Mirror: asinh(b/h) − asinh(a/h) = asinh(−a/h) − asinh(−b/h).
+        let growth = (b - a) * (1.0 - (b + a) / (ra + rb));
+        h * (growth / (-b + rb)).ln_1p()
     } else {
         h * ((b / h).asinh() + (-a / h).asinh())
     }
@@ -39,7 +49,11 @@ pub fn span(h: f64, a: f64, b: f64) -> f64 {
 /// `√(h² + b²) − √(h² + a²) = (b² − a²)/(r_a + r_b)`: the vertical extent of the inextensible
 /// line between vertical forces `a` and `b`.
 pub fn rise(h: f64, a: f64, b: f64) -> f64 {
-    let sum = h.hypot(a) + h.hypot(b);
+    rise_with_radii(a, b, radius(h, a), radius(h, b))
+}
+
+fn rise_with_radii(a: f64, b: f64, ra: f64, rb: f64) -> f64 {
+    let sum = ra + rb;
     if sum > 0.0 { (b - a) * (b + a) / sum } else { 0.0 }
 }
 
@@ -63,18 +77,20 @@ pub struct Closure {
 impl Closure {
     /// `X(h, v)`, `Y(h, v)`.
     pub fn ends(&self, h: f64, v: f64) -> [f64; 2] {
-        [span(h, v, v + 1.0) + self.epsilon * h, rise(h, v, v + 1.0) + self.epsilon * (v + 0.5)]
+        let (r1, r2) = (radius(h, v), radius(h, v + 1.0));
+        [span_with_radii(h, v, v + 1.0, r1, r2) + self.epsilon * h, rise_with_radii(v, v + 1.0, r1, r2) + self.epsilon * (v + 0.5)]
     }
 
     /// Residual and Jacobian at `(h, v)`, `h > 0`:
     /// `X_h = span/h − (v+1)/r2 + v/r1 + ε`, `X_v = Y_h = h(1/r2 − 1/r1)`,
     /// `Y_v = (v+1)/r2 − v/r1 + ε`.
     pub fn evaluate(&self, h: f64, v: f64) -> Evaluation {
-        let (r1, r2) = (h.hypot(v), h.hypot(v + 1.0));
-        let extent = span(h, v, v + 1.0);
-        let residual = [extent + self.epsilon * h - self.x, rise(h, v, v + 1.0) + self.epsilon * (v + 0.5) - self.y];
-        let cross = h * (1.0 / r2 - 1.0 / r1);
-        let slope_difference = (v + 1.0) / r2 - v / r1;
+        let (r1, r2) = (radius(h, v), radius(h, v + 1.0));
+        let extent = span_with_radii(h, v, v + 1.0, r1, r2);
+        let residual = [extent + self.epsilon * h - self.x, rise_with_radii(v, v + 1.0, r1, r2) + self.epsilon * (v + 0.5) - self.y];
+        let (inverse1, inverse2) = (r1.recip(), r2.recip());
+        let cross = h * (inverse2 - inverse1);
+        let slope_difference = (v + 1.0) * inverse2 - v * inverse1;
         let jacobian = [[extent / h - slope_difference + self.epsilon, cross], [cross, slope_difference + self.epsilon]];
         Evaluation { residual, jacobian }
     }

@@ -4,12 +4,13 @@
 //!    or slack and folded, each end carrying the weight of the part hanging from it.
 //! 2. Otherwise a damped Newton iteration on `(ln h, v)` (so `h` stays positive) with a
 //!    backtracking line search, from the previous solution (warm) or from a closed-form guess
-//!    (cold: the straight elastic line when taut, Peyrot & Goulois' estimate when slack).
+//!    (the straight elastic line when taut, Peyrot & Goulois' estimate when slack), whichever
+//!    fits the ends better.
 //! 3. Should Newton stall, a bracketed solve that cannot fail: `Y` increases strictly with `v`
 //!    at fixed `h`, and `X` increases strictly with `h` along `Y = Y*` (`dX/dh = det J / Y_v`,
 //!    with `J` symmetric positive definite), so nested safeguarded root-finding converges.
 
-use super::equations::{Closure, span};
+use super::equations::{Closure, Evaluation, span};
 
 /// Dimensionless unknowns: `h = H/W`, `v = V1/W`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -40,8 +41,22 @@ pub fn solve(closure: &Closure, warm: Option<Unknowns>) -> Option<Solved> {
     if closure.x <= 0.0 {
         return Some(vertical(closure));
     }
-    let start = warm.filter(|w| w.h > 0.0 && w.h.is_finite() && w.v.is_finite()).unwrap_or_else(|| cold_guess(closure));
-    newton(closure, start).or_else(|| Some(bracketed(closure)))
+    // The closed-form guess costs one evaluation: start from whichever of it and the warm start
+    // fits the ends better (after a jump, e.g. a line pulled taut, the guess is far better).
+    let guess = cold_guess(closure);
+    let guessed = closure.evaluate(guess.h, guess.v);
+    let start = match warm.filter(|w| w.h > 0.0 && w.h.is_finite() && w.v.is_finite()) {
+        Some(w) => {
+            let warmed = closure.evaluate(w.h, w.v);
+            if max_abs(warmed.residual) < max_abs(guessed.residual) { (w, warmed) } else { (guess, guessed) }
+        }
+        None => (guess, guessed),
+    };
+    newton(closure, start.0, start.1).or_else(|| Some(bracketed(closure)))
+}
+
+fn max_abs(r: [f64; 2]) -> f64 {
+    r[0].abs().max(r[1].abs())
 }
 
 /// Closed forms at `X = 0` (`h = 0`): `Y = |v+1| − |v| + ε(v + ½)`.
@@ -81,14 +96,14 @@ pub fn cold_guess(closure: &Closure) -> Unknowns {
     Unknowns { h: x / (2.0 * lambda), v: 0.5 * (y / lambda.tanh() - 1.0) }
 }
 
-/// Damped Newton on `(ln h, v)`; `None` if it does not converge.
-fn newton(closure: &Closure, start: Unknowns) -> Option<Solved> {
+/// Damped Newton on `(ln h, v)` from `start`, whose evaluation is `evaluation`; `None` if it
+/// does not converge.
+fn newton(closure: &Closure, start: Unknowns, mut evaluation: Evaluation) -> Option<Solved> {
     let (mut log_h, mut v) = (start.h.ln(), start.v);
-    let mut evaluation = closure.evaluate(start.h, v);
     let mut merit = norm2(evaluation.residual);
     for iteration in 0..MAX_NEWTON {
         let h = log_h.exp();
-        let residual = evaluation.residual[0].abs().max(evaluation.residual[1].abs());
+        let residual = max_abs(evaluation.residual);
         if residual <= TOLERANCE {
             return Some(Solved { unknowns: Unknowns { h, v }, iterations: iteration, residual });
         }
@@ -111,7 +126,10 @@ fn newton(closure: &Closure, start: Unknowns) -> Option<Solved> {
             let (trial_log_h, trial_v) = (log_h + scale * step_log_h, v + scale * step_v);
             let trial = closure.evaluate(trial_log_h.exp(), trial_v);
             let trial_merit = norm2(trial.residual);
-            if trial_merit <= (1.0 - 1e-4 * scale) * merit || (trial_merit.is_finite() && scale < 1e-3 && trial_merit < merit) {
+            // Armijo's sufficient decrease; a step cut to the e² limit, or already short, needs
+            // only some decrease (the residual can be flat in ln h until the stretch takes over).
+            let short = limit < 1.0 || scale < 1e-3;
+            if trial_merit <= (1.0 - 1e-4 * scale) * merit || (short && trial_merit < merit) {
                 log_h = trial_log_h;
                 v = trial_v;
                 evaluation = trial;

@@ -217,3 +217,61 @@ proptest! {
         prop_assert!(s.potential_energy().is_finite());
     }
 }
+
+/// A non-finite end position (a diverged simulation) is an error, never NaN forces.
+#[test]
+fn non_finite_ends_are_an_error() {
+    let l = line(1.0, 10.0, 1e4);
+    assert!(l.solve(&V::zeros(), &V::new(f64::NAN, 0.0, 1.0), &gravity()).is_err());
+    assert!(l.solve(&V::zeros(), &V::new(f64::INFINITY, 0.0, 1.0), &gravity()).is_err());
+}
+
+/// A ball swinging on a heavy elastic line from a world point, no damper: the line is
+/// conservative, so kinetic + gravity + line energy stays constant (to the leapfrog's O(dt²)).
+#[test]
+fn a_ball_swinging_on_a_catenary_conserves_energy() {
+    let mut world = tether::scene::parse(
+        "Scene(dt: 5e-4, bodies: [Body(name: \"ball\", master: Node(position: (6.0, 0.0, -8.05), mass: 50.0,
+            inertia: Inertia(xx: 0.5, yy: 0.5, zz: 0.5)), velocity: (0.0, 2.0, 0.0), shape: Sphere(radius: 0.25))],
+         couplings: [Catenary(name: \"line\", end1: World((0.0, 0.0, 0.0)), end2: Body(body: \"ball\"),
+            mass_per_length: 2.0, length: 10.0, stiffness: 2e5)])",
+        std::path::Path::new("swing.ron"),
+    )
+    .unwrap()
+    .world;
+    let e0 = world.energy();
+    let mut largest_kinetic = 0.0_f64;
+    let mut worst = 0.0_f64;
+    for _ in 0..20_000 {
+        world.step().unwrap();
+        let e = world.energy();
+        largest_kinetic = largest_kinetic.max(e.kinetic);
+        worst = worst.max((e.balance() - e0.balance()).abs());
+    }
+    assert!(largest_kinetic > 100.0, "it swung: {largest_kinetic} J");
+    // Measured 4.2e-5 of the largest kinetic energy at dt = 0.5 ms.
+    assert!(worst < 2e-4 * largest_kinetic, "balance drift {worst} J against {largest_kinetic} J of motion");
+}
+
+/// `tether forces --json` reports a catenary's horizontal tension and parameters u1, u2.
+#[test]
+fn forces_json_reports_the_catenary_solution() {
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sagging_chain.ron");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_tether")).args(["forces", scene, "--json"]).output().unwrap();
+    assert!(out.status.success());
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let chain = &json["couplings"][0];
+    assert_eq!(chain["name"], "chain");
+    assert_eq!(chain["kind"], "catenary");
+    // Ends (2, 0, 0) and (18, 0, 0): level, span 16 m, L = 30 m, λ0 = 20 kg/m, D = 1e6 N/m.
+    let s = solve(&line(20.0, 30.0, 1e6), V::new(2.0, 0.0, 0.0), V::new(18.0, 0.0, 0.0));
+    let h = chain["horizontal_tension"].as_f64().unwrap();
+    assert_relative_eq!(h, s.horizontal_tension, max_relative = 1e-12);
+    let (u1, u2) = (chain["u1"].as_f64().unwrap(), chain["u2"].as_f64().unwrap());
+    // Level ends: symmetric, u1 = −u2, and c (sinh u2 − sinh u1) = W.
+    assert_relative_eq!(u1, -u2, max_relative = 1e-9);
+    assert_relative_eq!(h * (u2.sinh() - u1.sinh()), 20.0 * G * 30.0, max_relative = 1e-9);
+    let f1: Vec<f64> = chain["f1"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+    assert_relative_eq!(f1[0], h, max_relative = 1e-12);
+    assert_relative_eq!(f1[2], h * u1.sinh(), max_relative = 1e-9);
+}

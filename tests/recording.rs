@@ -63,3 +63,20 @@ fn recording_passes_rerun_rrd_verify() {
         .expect("the `rerun` CLI must be on PATH: pip install rerun-sdk==0.36.3 (see README)");
     assert!(verify.status.success(), "rerun rrd verify failed:\n{}\n{}", String::from_utf8_lossy(&verify.stdout), String::from_utf8_lossy(&verify.stderr));
 }
+
+/// A catenary is drawn along its shape (32 coloured segments) and its end tensions plotted.
+#[test]
+fn catenary_shape_and_end_tensions_are_recorded() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("crane.rrd");
+    let status = tether()
+        .args(["record", common::repo("scenes/crane.ron").to_str().unwrap(), "-o", out.to_str().unwrap(), "--duration", "0.5", "--log-hz", "20"])
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let rows = rows_per_entity(&out);
+    // dt = 1 ms, 20 Hz: frames at steps 0, 50, …, 500.
+    for entity in ["/world/couplings/rope", "/plots/catenary/rope", "/plots/tension", "/world/bodies/load"] {
+        assert_eq!(rows.get(entity), Some(&11), "{entity}: {rows:?}");
+    }
+}

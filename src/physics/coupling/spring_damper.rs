@@ -67,3 +67,31 @@ impl SpringDamper {
         self.law.potential(length)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::Mat3;
+
+    fn frame_at(position: Vec3) -> BodyFrame {
+        BodyFrame { position, rotation: Mat3::identity(), velocity: Vec3::new(0.3, 0.0, 0.0), angular_velocity: Vec3::zeros() }
+    }
+
+    #[test]
+    fn coincident_ends_give_finite_forces_and_keep_the_last_direction() {
+        let law = ElasticLaw::Linear { stiffness: 100.0, rest_length: 0.5 };
+        let mut spring = SpringDamper::new(Endpoint::World(Vec3::zeros()), Endpoint::Center { body: 0 }, law, 2.0);
+        let mut loads = [Load::default()];
+        let mut out = CouplingForces::default();
+        // Never separated: no direction, no force, no NaN.
+        spring.apply(&[frame_at(Vec3::zeros())], &mut loads, &mut out);
+        assert_eq!(out.f1, Vec3::zeros());
+        assert!(out.tension.is_finite() && out.dissipated_power.is_finite());
+        // Separated along +x, then coincident again: the compressed spring keeps pushing along x.
+        spring.apply(&[frame_at(Vec3::new(0.2, 0.0, 0.0))], &mut loads, &mut out);
+        spring.apply(&[frame_at(Vec3::zeros())], &mut loads, &mut out);
+        // f_e(0) = 100·(0 − 0.5) = −50 N, damping 2·(0.3·1) = 0.6 N: f1 = −49.4 x̂ (pushes end 1 away).
+        assert!((out.f1 - Vec3::new(-49.4, 0.0, 0.0)).norm() < 1e-12, "{:?}", out.f1);
+        assert!(out.f1.iter().all(|c| c.is_finite()));
+    }
+}

@@ -32,6 +32,8 @@ pub enum MassError {
          all the mass lies on a point or a line; give the nodes an inertia or spread them"
     )]
     NotPositiveDefinite([f64; 3]),
+    #[error("mass properties overflow f64 (mass {mass} kg, inertia {inertia_norm} kg·m²): use smaller numbers")]
+    NotFinite { mass: f64, inertia_norm: f64 },
 }
 
 /// "the master node" for index 0, "slave node i" (1-based) after it.
@@ -72,7 +74,11 @@ impl MassProperties {
         let inertia_about_g = nodes()
             .map(|n| n.inertia + point_mass_inertia(n.mass, &(n.position - center_of_mass)))
             .sum::<Mat3>();
-        let (principal_moments, principal_axes) = principal_frame(&inertia_about_g);
+        if !(mass.is_finite() && center_of_mass.iter().all(|x| x.is_finite()) && inertia_about_g.iter().all(|x| x.is_finite())) {
+            return Err(MassError::NotFinite { mass, inertia_norm: inertia_about_g.norm() });
+        }
+        let (principal_moments, principal_axes) =
+            principal_frame(&inertia_about_g).ok_or(MassError::NotFinite { mass, inertia_norm: inertia_about_g.norm() })?;
         if principal_moments.iter().any(|&moment| !(moment > 1e-12 * principal_moments.max().max(f64::MIN_POSITIVE))) {
             return Err(MassError::NotPositiveDefinite(principal_moments.into()));
         }
@@ -93,9 +99,10 @@ fn point_mass_inertia(mass: f64, r: &Vec3) -> Mat3 {
     mass * (Mat3::identity() * r.norm_squared() - r * r.transpose())
 }
 
-/// Principal moments (ascending) and a proper rotation whose columns are the principal axes.
-fn principal_frame(inertia: &Mat3) -> (Vec3, Rotation) {
-    let eigen = nalgebra::SymmetricEigen::new(*inertia);
+/// Principal moments (ascending) and a proper rotation whose columns are the principal axes;
+/// `None` if the (finite) tensor cannot be diagonalised in 1000 sweeps.
+fn principal_frame(inertia: &Mat3) -> Option<(Vec3, Rotation)> {
+    let eigen = nalgebra::SymmetricEigen::try_new(*inertia, f64::EPSILON, 1000)?;
     let mut order = [0usize, 1, 2];
     order.sort_by(|&a, &b| eigen.eigenvalues[a].total_cmp(&eigen.eigenvalues[b]));
     let moments = Vec3::new(eigen.eigenvalues[order[0]], eigen.eigenvalues[order[1]], eigen.eigenvalues[order[2]]);
@@ -104,7 +111,7 @@ fn principal_frame(inertia: &Mat3) -> (Vec3, Rotation) {
     // Third axis from the cross product: the frame is right-handed whatever signs the solver chose.
     let e3 = e1.cross(&e2);
     let rotation = nalgebra::Rotation3::from_matrix_unchecked(Mat3::from_columns(&[e1, e2, e3]));
-    (moments, Rotation::from_rotation_matrix(&rotation))
+    Some((moments, Rotation::from_rotation_matrix(&rotation)))
 }
 
 #[cfg(test)]
@@ -159,6 +166,12 @@ mod tests {
         ));
         let line = MassProperties::from_nodes(&point(0.0, 0.0, 0.0, 1.0), &[point(1.0, 0.0, 0.0, 1.0)]);
         assert!(matches!(line, Err(MassError::NotPositiveDefinite(_))), "{line:?}");
+    }
+
+    #[test]
+    fn overflowing_numbers_are_an_error_not_a_hang() {
+        let far = MassProperties::from_nodes(&point(0.0, 0.0, 0.0, 1e300), &[point(1e200, 0.0, 0.0, 1e300)]);
+        assert!(matches!(far, Err(MassError::NotFinite { .. })), "{far:?}");
     }
 
     #[test]

@@ -6,6 +6,7 @@
 //! - [`integrator`]: how a state advances in time (§1, time integration).
 //! - [`world`]: bodies + couplings + time, and the named stages of one step.
 //! - [`energy`]: the energy balance that checks it all (§5).
+//! - [`stability`]: the stable time step of each coupling and spinning body.
 //! - [`table`]: piecewise-linear tables with exact integrals, for curve-defined laws.
 
 pub mod body;
@@ -14,6 +15,7 @@ pub mod dynamics;
 pub mod energy;
 pub mod integrator;
 pub mod mass_properties;
+pub mod stability;
 pub mod table;
 pub mod world;
 

@@ -15,16 +15,23 @@ use super::coupling::{BodyFrame, Coupling, CouplingError, CouplingForces, Load};
 use super::dynamics::Acceleration;
 use super::energy::{EnergyLedger, EnergyReport};
 use super::integrator::{Integrator, leapfrog};
+use super::stability::{self, Limit};
 use super::Vec3;
 
-/// A step that could not be completed: the coupling at fault, the time, and why.
+/// A step that could not be completed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("coupling \"{coupling}\" at t = {time} s: {source}")]
-pub struct StepError {
-    pub coupling: String,
-    pub time: f64,
-    pub source: CouplingError,
+pub enum StepError {
+    /// A coupling could not give its forces.
+    #[error("coupling \"{coupling}\" at t = {time} s: {source}")]
+    Coupling { coupling: String, time: f64, source: CouplingError },
+    /// The state blew up: `body` is the body at fault (non-finite, or the most energetic),
+    /// `advice` names the binding stable time step of the starting configuration.
+    #[error("the simulation diverged at t = {time} s: body \"{body}\" {cause}; {advice}")]
+    Diverged { time: f64, body: String, cause: String, advice: String },
 }
+
+/// Energy balance drift, in multiples of the energy budget, taken as a blow-up.
+const DIVERGENCE_FACTOR: f64 = 10.0;
 
 /// Bodies, couplings and time.
 #[derive(Debug, Clone)]
@@ -49,6 +56,10 @@ pub struct World {
     pub(crate) accelerations: Vec<Acceleration>,
     pub(crate) coupling_forces: Vec<CouplingForces>,
     pub(crate) ledger: EnergyLedger,
+    /// Energies at t = 0, the reference of the divergence check.
+    initial_energy: EnergyReport,
+    /// The binding stable time step at t = 0, for the divergence message.
+    initial_limit: Option<Limit>,
 }
 
 impl World {
@@ -82,12 +93,16 @@ impl World {
             accelerations: vec![Acceleration::default(); n],
             coupling_forces: Vec::new(),
             ledger: EnergyLedger::default(),
+            initial_energy: EnergyReport::default(),
+            initial_limit: None,
         };
         world.coupling_forces = vec![CouplingForces::default(); world.couplings.len()];
         world.kinematic_bodies = (0..n).filter(|&i| world.bodies[i].is_kinematic()).collect();
         match world.integrator {
             Integrator::Leapfrog => leapfrog::start(&mut world)?,
         }
+        world.initial_energy = world.energy();
+        world.initial_limit = stability::binding(&stability::limits(&world));
         Ok(world)
     }
 
@@ -98,8 +113,53 @@ impl World {
     /// reset.
     pub fn step(&mut self) -> Result<(), StepError> {
         match self.integrator {
-            Integrator::Leapfrog => leapfrog::step(self),
+            Integrator::Leapfrog => leapfrog::step(self)?,
         }
+        self.check_health()
+    }
+
+    /// Stage *health*: every body's state is finite, and the energy balance has not drifted by
+    /// more than [`DIVERGENCE_FACTOR`] times the energy budget (`|kinetic| + |gravity| +
+    /// |elastic|` at t = 0 plus the work put in by prescribed motions since). An unstable step grows
+    /// the energy geometrically, so this stops a blow-up within a few steps of its start and
+    /// long before anything overflows.
+    fn check_health(&self) -> Result<(), StepError> {
+        let dynamic = || (0..self.bodies.len()).filter(|&i| !self.bodies[i].is_kinematic());
+        let not_finite = dynamic().find(|&i| {
+            let s = &self.states[i];
+            !(s.position.iter().chain(s.velocity.iter()).chain(s.angular_velocity.iter()).chain(s.orientation.coords.iter()).all(|x| x.is_finite()))
+        });
+        let energy = self.energy();
+        let start = &self.initial_energy;
+        // Not the dissipated work: a blow-up with a damper dissipates as fast as it grows.
+        let budget = start.kinetic.abs() + start.gravity.abs() + start.elastic.abs() + energy.external_work.abs();
+        let drift = (energy.balance() - start.balance()).abs();
+        let (body, cause) = if let Some(i) = not_finite {
+            (i, "has a non-finite state".to_string())
+        } else if drift.is_nan() || drift > DIVERGENCE_FACTOR * budget.max(f64::MIN_POSITIVE) {
+            let most_energetic = dynamic().max_by(|&a, &b| self.kinetic_energy(a).total_cmp(&self.kinetic_energy(b))).unwrap_or(0);
+            (most_energetic, format!("carries the most kinetic energy as the energy balance drifts by {drift:.3e} J (budget {budget:.3e} J)"))
+        } else {
+            return Ok(());
+        };
+        let advice = match self.initial_limit {
+            Some(limit) => format!("the stable time step is {:.3e} s, set by {} (dt = {:.3e} s)", limit.dt, limit.describe(self), self.dt),
+            None => format!("no coupling limits the time step (dt = {:.3e} s)", self.dt),
+        };
+        Err(StepError::Diverged { time: self.time, body: self.bodies.get(body).map_or_else(String::new, |b| b.name.clone()), cause, advice })
+    }
+
+    /// `½ m |v|² + ½ ωᵀ I ω` of body `index` [J].
+    fn kinetic_energy(&self, index: usize) -> f64 {
+        let state = self.state(index);
+        let body = &self.bodies[index];
+        0.5 * body.mass() * state.velocity.norm_squared()
+            + 0.5 * state.angular_velocity.dot(&body.principal_moments().component_mul(&state.angular_velocity))
+    }
+
+    /// Body kinematics at the last force evaluation, world axes.
+    pub fn frames(&self) -> &[BodyFrame] {
+        &self.frames
     }
 
     /// Restarts from t = 0 with the current parameters; on error the world is unchanged.
@@ -150,13 +210,10 @@ impl World {
     pub fn energy(&self) -> EnergyReport {
         let mut report = EnergyReport { dissipated: self.ledger.dissipated, external_work: self.ledger.external_work, ..Default::default() };
         for (index, body) in self.bodies.iter().enumerate().filter(|(_, b)| !b.is_kinematic()) {
-            let state = self.state(index);
-            let inertia = body.principal_moments();
-            report.kinetic += 0.5 * body.mass() * state.velocity.norm_squared()
-                + 0.5 * state.angular_velocity.dot(&inertia.component_mul(&state.angular_velocity));
-            report.gravity -= body.mass() * self.gravity.dot(&state.position);
+            report.kinetic += self.kinetic_energy(index);
+            report.gravity -= body.mass() * self.gravity.dot(&self.states[index].position);
         }
-        report.elastic = self.couplings.iter().map(|c| c.potential_energy(&self.frames, &self.gravity)).sum();
+        report.elastic = self.coupling_forces.iter().map(|f| f.potential).sum();
         report
     }
 
@@ -187,7 +244,7 @@ impl World {
         for (coupling, out) in self.couplings.iter_mut().zip(self.coupling_forces.iter_mut()) {
             coupling
                 .apply(&self.frames, &self.gravity, &mut self.loads, out)
-                .map_err(|source| StepError { coupling: coupling.name.clone(), time: self.time, source })?;
+                .map_err(|source| StepError::Coupling { coupling: coupling.name.clone(), time: self.time, source })?;
             dissipated += out.dissipated_power;
         }
         Ok(dissipated)

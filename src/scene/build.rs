@@ -7,7 +7,7 @@ use super::source::ItemKind;
 use crate::physics::body::{PrescribedMotion, RigidBody, Shape, Support, VelocityProfile};
 use crate::physics::coupling::{Catenary, Coupling, CouplingKind, ElasticLaw, Endpoint, SpringDamper};
 use crate::physics::mass_properties::{MassProperties, Node};
-use crate::physics::world::World;
+use crate::physics::world::{StepError, World};
 use crate::physics::{Mat3, Vec3};
 
 /// Where a problem is in the file.
@@ -68,8 +68,10 @@ pub fn build(file: &SceneFile) -> Result<Built, Problem> {
         couplings.push(build_coupling(def, &bodies, &at)?);
     }
     // Names are unique by now: the coupling at fault is the first of its name.
-    let world = World::new(vec3(file.gravity), bodies, couplings, states, file.dt, file.integrator)
-        .map_err(|e| ItemAt::new(ItemKind::Coupling, &e.coupling, 0).at_name(format!("at t = 0: {}", e.source)))?;
+    let world = World::new(vec3(file.gravity), bodies, couplings, states, file.dt, file.integrator).map_err(|e| match e {
+        StepError::Coupling { coupling, source, .. } => ItemAt::new(ItemKind::Coupling, &coupling, 0).at_name(format!("at t = 0: {source}")),
+        other => Problem { place: Place::Top("bodies"), message: other.to_string() },
+    })?;
     Ok(Built { world, warnings })
 }
 
@@ -129,7 +131,7 @@ fn build_body(def: &BodyDef, at: &ItemAt) -> Result<RigidBody, Problem> {
     let slaves: Vec<Node> = def.slaves.iter().map(node).collect();
     let mass_properties = MassProperties::from_nodes(&node(&def.master), &slaves).map_err(|e| {
         let field = match e {
-            crate::physics::mass_properties::MassError::NotPositiveDefinite(_) => "inertia",
+            crate::physics::mass_properties::MassError::NotPositiveDefinite(_) | crate::physics::mass_properties::MassError::NotFinite { .. } => "inertia",
             _ => "mass",
         };
         at.at_field(field, e.to_string())

@@ -136,6 +136,8 @@ pub struct CouplingForces {
     pub tension: f64,
     /// Power dissipated by damping [W] ≥ 0.
     pub dissipated_power: f64,
+    /// Potential energy stored in the coupling [J].
+    pub potential: f64,
 }
 
 /// The physical model of a coupling.
@@ -187,11 +189,4 @@ impl Coupling {
         Ok(())
     }
 
-    /// Potential energy stored in the coupling [J].
-    pub fn potential_energy(&self, frames: &[BodyFrame], gravity: &Vec3) -> f64 {
-        match &self.kind {
-            CouplingKind::SpringDamper(spring) => spring.potential_energy(frames),
-            CouplingKind::Catenary(line) => line.potential_energy(frames, gravity),
-        }
-    }
 }

@@ -58,14 +58,10 @@ impl SpringDamper {
             f2: -f1,
             tension,
             dissipated_power: damping_force * rate,
+            potential: self.law.potential(length),
         };
     }
 
-    /// `V(x)` [J].
-    pub fn potential_energy(&self, frames: &[BodyFrame]) -> f64 {
-        let length = (self.end2.motion(frames).position - self.end1.motion(frames).position).norm();
-        self.law.potential(length)
-    }
 }
 
 #[cfg(test)]

@@ -6,8 +6,9 @@
 //!
 //! - Order: 2 in translation; 1 in rotation, because the gyroscopic term `ω × Iω` at t only has
 //!   `ω(t−½dt)` available (|L| and energy of a precessing body drift ~ exp(½ Ω² dt T)).
-//! - Velocity-dependent forces (dampers) see the predicted `v(t) ≈ v(t−½dt) + ½dt γ(t−dt)`,
-//!   which keeps them second order.
+//! - Velocity-dependent forces (dampers) see `v(t−½dt)`, the latest velocity there is, as in
+//!   Radioss: the damping force is first-order accurate, and the damped stability limit is
+//!   exactly Belytschko's `2(√(1+ζ²) − ζ)/ω`.
 //! - Conserves: linear momentum exactly (forces are pairwise equal and opposite); symplectic
 //!   for conservative translational forces, so energy oscillates with no trend.
 //! - Stability: `ω_max dt < 2` for an undamped spring, `2(√(1+ζ²) − ζ)` with damping.
@@ -43,7 +44,6 @@ pub(crate) fn start(world: &mut World) -> Result<(), StepError> {
 /// pass over the bodies; then couplings, accelerations and the ledger.
 pub(crate) fn step(world: &mut World) -> Result<(), StepError> {
     let dt = world.dt();
-    let half = 0.5 * dt;
     world.advance_clock();
     let time = world.time();
     let per_body = world
@@ -62,8 +62,8 @@ pub(crate) fn step(world: &mut World) -> Result<(), StepError> {
             }
             support => {
                 kick_and_drift(state, acceleration, support, dt);
-                // Predicted v(t) = v(t−½dt) + ½dt γ(t−dt) for velocity-dependent forces.
-                body_frame(state, state.velocity + acceleration.linear * half, state.angular_velocity + acceleration.angular * half)
+                // Velocity-dependent forces see v(t−½dt), as in Radioss.
+                body_frame(state, state.velocity, state.angular_velocity)
             }
         };
         *load = gravity_load(&world.gravity, body);

@@ -229,16 +229,19 @@ impl Catenary {
         end1.apply(&f1, loads);
         end2.apply(&f2, loads);
         let (t1, t2) = state.end_tensions();
-        *out = CouplingForces { point1: end1.position, point2: end2.position, f1, f2, tension: t1.max(t2), dissipated_power: 0.0 };
+        *out = CouplingForces {
+            point1: end1.position,
+            point2: end2.position,
+            f1,
+            f2,
+            tension: t1.max(t2),
+            dissipated_power: 0.0,
+            potential: state.potential_energy(),
+        };
         self.last = Some(state);
         Ok(())
     }
 
-    /// Potential energy [J] at the kinematics `frames` (solved afresh, warm-started).
-    pub fn potential_energy(&self, frames: &[BodyFrame], gravity: &Vec3) -> f64 {
-        let (p1, p2) = (self.end1.motion(frames).position, self.end2.motion(frames).position);
-        self.solve(&p1, &p2, gravity).map_or(f64::NAN, |s| s.potential_energy())
-    }
 }
 
 /// A unit vector perpendicular to `axis` (unit).

@@ -51,6 +51,7 @@ pub fn accelerations(body: &RigidBody, rotation: &Mat3, load: &Load, omega: &Vec
 
 fn free_accelerations(body: &RigidBody, rotation: &Mat3, load: &Load, omega: &Vec3) -> Acceleration {
     // Bodies held only at G (point masses on springs) carry no moment: skip the rotation.
-    let moment = if load.moment == Vec3::zeros() { Vec3::zeros() } else { rotation.tr_mul(&load.moment) };
+    let m = &load.moment;
+    let moment = if m.x == 0.0 && m.y == 0.0 && m.z == 0.0 { Vec3::zeros() } else { rotation.tr_mul(m) };
     Acceleration { linear: load.force * body.inverse_mass, angular: euler_angular_acceleration(body, &moment, omega) }
 }

@@ -14,7 +14,7 @@
 //! - Stability: `ω_max dt < 2` for an undamped spring, `2(√(1+ζ²) − ζ)` with damping.
 //! - Cost: one force evaluation per step.
 
-use crate::physics::body::{BodyState, Support, prescribed_state};
+use crate::physics::body::{BodyState, RigidBody, Support, prescribed_state};
 use crate::physics::coupling::BodyFrame;
 use crate::physics::dynamics::{Acceleration, accelerations};
 use crate::physics::energy::EnergyLedger;
@@ -36,6 +36,7 @@ pub(crate) fn start(world: &mut World) -> Result<(), StepError> {
             state.angular_velocity -= acceleration.angular * half;
         }
     }
+    world.body_energy = kinetic_and_gravity(world);
     world.ledger = EnergyLedger::new(dissipated, world.external_power());
     Ok(())
 }
@@ -55,17 +56,24 @@ pub(crate) fn step(world: &mut World) -> Result<(), StepError> {
         .zip(world.loads.iter_mut())
         .zip(&world.initial_states);
     for (((((body, state), acceleration), frame), load), initial) in per_body {
-        *frame = match &body.support {
+        match &body.support {
             Support::Kinematic(motion) => {
                 *state = prescribed_state(motion, initial, time);
-                body_frame(state, state.velocity, state.angular_velocity)
+                *frame = body_frame(state, state.velocity, state.angular_velocity);
             }
             support => {
-                kick_and_drift(state, acceleration, support, dt);
-                // Velocity-dependent forces see v(t−½dt), as in Radioss.
-                body_frame(state, state.velocity, state.angular_velocity)
+                let turned = kick_and_drift(state, acceleration, support, dt);
+                // Velocity-dependent forces see v(t−½dt), as in Radioss. A body that did not
+                // turn keeps its rotation matrix.
+                if turned {
+                    *frame = body_frame(state, state.velocity, state.angular_velocity);
+                } else {
+                    frame.position = state.position;
+                    frame.velocity = state.velocity;
+                    frame.angular_velocity = state.angular_velocity;
+                }
             }
-        };
+        }
         *load = gravity_load(&world.gravity, body);
     }
     let dissipated = world.apply_couplings()?;
@@ -85,9 +93,33 @@ pub(crate) fn synchronized_state(world: &World, index: usize) -> BodyState {
     state
 }
 
+/// `Σ ½ m |v(t)|² + ½ ω(t)ᵀ I ω(t)` and `Σ −m g·x_G` [J] over the bodies that respond to
+/// forces, with the synchronised velocities.
+fn kinetic_and_gravity(world: &World) -> (f64, f64) {
+    let half = 0.5 * world.dt();
+    world.bodies.iter().zip(&world.states).zip(&world.accelerations).fold((0.0, 0.0), |(k, g), ((body, state), acceleration)| {
+        let (dk, dg) = body_energy(body, state, acceleration, half, &world.gravity);
+        (k + dk, g + dg)
+    })
+}
+
+/// Kinetic energy `½ m |v(t)|² + ½ ω(t)ᵀ I ω(t)` and gravity energy `−m g·x_G` [J] of one body
+/// (zero for a kinematic body), `v(t) = v(t−½dt) + ½dt γ(t)`.
+#[inline(always)]
+fn body_energy(body: &RigidBody, state: &BodyState, acceleration: &Acceleration, half: f64, gravity: &Vec3) -> (f64, f64) {
+    if body.is_kinematic() {
+        return (0.0, 0.0);
+    }
+    let velocity = state.velocity + acceleration.linear * half;
+    let spin = state.angular_velocity + acceleration.angular * half;
+    let kinetic = 0.5 * (body.mass() * velocity.norm_squared() + spin.dot(&body.principal_moments().component_mul(&spin)));
+    (kinetic, -body.mass() * gravity.dot(&state.position))
+}
+
 /// Stage *advance* of one body: `v += γ dt`, `ω += α dt` (fixed components stay at rest), then
-/// `x += v dt`, `q ⊗= exp(ω dt)`.
-fn kick_and_drift(state: &mut BodyState, acceleration: &Acceleration, support: &Support, dt: f64) {
+/// `x += v dt`, `q ⊗= exp(ω dt)`. Returns whether the body turned: one with `ω = 0` exactly (a
+/// point mass held at G, a fixed rotation) pays nothing for rotation.
+fn kick_and_drift(state: &mut BodyState, acceleration: &Acceleration, support: &Support, dt: f64) -> bool {
     state.velocity += acceleration.linear * dt;
     state.angular_velocity += acceleration.angular * dt;
     if let Support::Fixed { translation, rotation } = support {
@@ -99,7 +131,12 @@ fn kick_and_drift(state: &mut BodyState, acceleration: &Acceleration, support: &
         }
     }
     state.position += state.velocity * dt;
-    state.orientation = rotate_by(&state.orientation, &(state.angular_velocity * dt));
+    let w = &state.angular_velocity;
+    let turned = w.x != 0.0 || w.y != 0.0 || w.z != 0.0;
+    if turned {
+        state.orientation = rotate_by(&state.orientation, &(state.angular_velocity * dt));
+    }
+    turned
 }
 
 /// `q ⊗ exp(φ)` for a rotation vector `φ` in the body frame [rad], renormalised.
@@ -140,12 +177,19 @@ fn body_frame(state: &BodyState, velocity: Vec3, angular_velocity: Vec3) -> Body
     BodyFrame { position: state.position, rotation, velocity, angular_velocity }
 }
 
-/// Stage *accelerations*: Euler's equations with the gyroscopic term at `ω(t−½dt)` (the seed's choice).
+/// Stage *accelerations*: Euler's equations with the gyroscopic term at `ω(t−½dt)` (the seed's
+/// choice). In the same pass, the bodies' kinetic and gravity energies at t.
 fn compute_accelerations(world: &mut World) {
+    let half = 0.5 * world.dt();
+    let (mut kinetic, mut gravity) = (0.0, 0.0);
     let per_body = world.bodies.iter().zip(&world.states).zip(&world.frames).zip(&world.loads);
     for ((((body, state), frame), load), acceleration) in per_body.zip(world.accelerations.iter_mut()) {
         *acceleration = accelerations(body, &frame.rotation, load, &state.angular_velocity);
+        let (dk, dg) = body_energy(body, state, acceleration, half, &world.gravity);
+        kinetic += dk;
+        gravity += dg;
     }
+    world.body_energy = (kinetic, gravity);
 }
 
 #[cfg(test)]

@@ -3,6 +3,7 @@
 use std::fmt::Write as _;
 use tether::physics::body::Support;
 use tether::physics::coupling::{CouplingKind, ElasticLaw, Endpoint};
+use tether::physics::stability;
 use tether::physics::world::World;
 use tether::physics::{Mat3, Vec3};
 use tether::scene::Scene;
@@ -51,6 +52,20 @@ fn report(world: &World, label: &str) -> String {
                     );
                 }
             }
+        }
+    }
+    let limits = stability::limits(world);
+    let _ = writeln!(out, "\nstable time step ({:?}):", world.integrator);
+    for limit in &limits {
+        let _ = writeln!(out, "  {:<40} {:.6e} s", limit.describe(world), limit.dt);
+    }
+    match stability::binding(&limits) {
+        Some(binding) => {
+            let verdict = if world.dt() <= binding.dt { "stable" } else { "UNSTABLE: lower dt" };
+            let _ = writeln!(out, "  binding: {} at {:.6e} s; dt = {:.6e} s is {verdict}", binding.describe(world), binding.dt, world.dt());
+        }
+        None => {
+            let _ = writeln!(out, "  nothing limits the time step");
         }
     }
     let e = world.energy();

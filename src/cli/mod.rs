@@ -36,12 +36,18 @@ enum Command {
     },
 }
 
-/// Runs one subcommand.
-pub fn run(cli: Cli) -> anyhow::Result<()> {
+/// Exit code of a run stopped by Ctrl-C or SIGTERM (128 + SIGINT, the shell's convention).
+pub const INTERRUPTED: u8 = 130;
+
+/// Runs one subcommand; returns the process exit code.
+pub fn run(cli: Cli) -> anyhow::Result<u8> {
     match cli.command {
-        Command::Check { scene } => check::run(&load(&scene)?),
-        Command::Record(args) => record::run(&args),
-        Command::Forces { scene, json } => forces::run(&load(&scene)?, json),
+        Command::Check { scene } => check::run(&load(&scene)?).map(|()| 0),
+        Command::Record(args) => record::run(&args).map(|outcome| match outcome {
+            record::Outcome::Finished => 0,
+            record::Outcome::Interrupted => INTERRUPTED,
+        }),
+        Command::Forces { scene, json } => forces::run(&load(&scene)?, json).map(|()| 0),
     }
 }
 
@@ -52,6 +58,19 @@ fn load(path: &Path) -> anyhow::Result<Scene> {
         eprintln!("warning: {}: {warning}", path.display());
     }
     Ok(scene)
+}
+
+/// Warns once when the time step exceeds the binding stable time step.
+fn warn_if_unstable(world: &tether::physics::world::World) {
+    let limits = tether::physics::stability::limits(world);
+    if let Some(binding) = tether::physics::stability::binding(&limits).filter(|b| world.dt() > b.dt) {
+        eprintln!(
+            "warning: dt = {:.3e} s exceeds the stable time step {:.3e} s set by {}: the run will likely diverge",
+            world.dt(),
+            binding.dt,
+            binding.describe(world)
+        );
+    }
 }
 
 /// Writes `text` to stdout; a closed pipe is not an error worth a panic.

@@ -1,9 +1,17 @@
 //! `tether record SCENE -o OUT.rrd`: a headless run written to a Rerun recording.
+//!
+//! The run stops cleanly — the recording complete up to there, footer written — when it ends,
+//! when the simulation diverges (exit 1, with the body, the time and the stable time step), and
+//! on Ctrl-C or SIGTERM (exit 130).
 
 use anyhow::{Context as _, bail};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::PathBuf;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use tether::physics::integrator::Integrator;
+use tether::physics::world::StepError;
 use tether::record::Recorder;
 
 #[derive(Debug, Args)]
@@ -19,28 +27,72 @@ pub struct RecordArgs {
     /// Frames logged per simulated second.
     #[arg(long, default_value_t = 60.0)]
     log_hz: f64,
+    /// Time step [s] (default: the scene's).
+    #[arg(long)]
+    dt: Option<f64>,
+    /// Integrator, as named in scene files (default: the scene's).
+    #[arg(long, value_parser = parse_integrator)]
+    integrator: Option<Integrator>,
 }
 
-pub fn run(args: &RecordArgs) -> anyhow::Result<()> {
-    if !(args.log_hz.is_finite() && args.log_hz > 0.0) {
-        bail!("--log-hz must be a positive number of frames per second, got {}", args.log_hz);
+/// How a recording run ended.
+pub enum Outcome {
+    Finished,
+    Interrupted,
+}
+
+/// An integrator by its scene-file name (`leapfrog`, …).
+fn parse_integrator(name: &str) -> Result<Integrator, String> {
+    use serde::Deserialize as _;
+    Integrator::deserialize(serde::de::value::StrDeserializer::<serde::de::value::Error>::new(name)).map_err(|e| e.to_string())
+}
+
+fn positive(name: &str, value: f64, unit: &str) -> anyhow::Result<f64> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        bail!("{name} must be a positive number of {unit}, got {value}")
+    }
+}
+
+pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
+    let log_hz = positive("--log-hz", args.log_hz, "frames per second")?;
+    if let Some(dt) = args.dt {
+        positive("--dt", dt, "seconds")?;
+    }
+    if let Some(duration) = args.duration {
+        positive("--duration", duration, "seconds")?;
     }
     let mut scene = super::load(&args.scene)?;
-    let duration = args.duration.unwrap_or(scene.file.duration);
-    if !(duration.is_finite() && duration > 0.0) {
-        bail!("--duration must be a positive number of seconds, got {duration}");
+    if args.dt.is_some() || args.integrator.is_some() {
+        scene.file.dt = args.dt.unwrap_or(scene.file.dt);
+        scene.file.integrator = args.integrator.unwrap_or(scene.file.integrator);
+        scene = tether::scene::rebuild(scene)?;
     }
+    let duration = args.duration.unwrap_or(scene.file.duration);
+    super::warn_if_unstable(&scene.world);
     let world = &mut scene.world;
     let dt = world.dt();
     let total_steps = (duration / dt).round().max(1.0) as u64;
-    let steps_per_frame = ((1.0 / (args.log_hz * dt)).round() as u64).max(1);
+    let steps_per_frame = ((1.0 / (log_hz * dt)).round() as u64).max(1);
     let recorder = Recorder::to_file(&args.output, world).with_context(|| format!("cannot write {}", args.output.display()))?;
+    let interrupted = Arc::new(AtomicBool::new(false));
+    let flag = Arc::clone(&interrupted);
+    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst)).context("installing the Ctrl-C / SIGTERM handler")?;
+
     recorder.log_frame(world)?;
     let progress = ProgressBar::new(total_steps).with_style(
         ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} steps  {msg}").expect("the template is a valid literal"),
     );
+    let mut failure: Option<StepError> = None;
     for step in 1..=total_steps {
-        world.step()?;
+        if interrupted.load(Ordering::SeqCst) {
+            break;
+        }
+        if let Err(error) = world.step() {
+            failure = Some(error);
+            break;
+        }
         if step % steps_per_frame == 0 || step == total_steps {
             recorder.log_frame(world)?;
             progress.set_position(step);
@@ -49,6 +101,14 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<()> {
     }
     progress.finish_and_clear();
     recorder.finish()?;
-    eprintln!("recorded {total_steps} steps ({duration} s simulated) to {}", args.output.display());
-    Ok(())
+    let output = args.output.display();
+    if let Some(error) = failure {
+        bail!("{error}\nthe recording {output} holds everything up to the last healthy frame");
+    }
+    if interrupted.load(Ordering::SeqCst) {
+        eprintln!("interrupted at t = {:.6} s; {output} is complete up to there", world.time());
+        return Ok(Outcome::Interrupted);
+    }
+    eprintln!("recorded {total_steps} steps ({duration} s simulated) to {output}");
+    Ok(Outcome::Finished)
 }

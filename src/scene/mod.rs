@@ -52,6 +52,13 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     Ok(Scene { path: path.to_path_buf(), file, world: built.world, warnings: built.warnings })
 }
 
+/// Builds the world again from `scene.file` (after a setting was changed, e.g. the time step
+/// from the command line); errors point at the scene's path.
+pub fn rebuild(scene: Scene) -> Result<Scene, SceneError> {
+    let built = build::build(&scene.file).map_err(|p| SceneError { path: scene.path.display().to_string(), line: 1, col: 1, message: p.message })?;
+    Ok(Scene { world: built.world, warnings: built.warnings, ..scene })
+}
+
 /// A parser error, with the body or coupling it falls in when there is one.
 fn syntax_error(source: &Source, label: &str, error: &ron::error::SpannedError) -> SceneError {
     let (line, col) = (error.position.line.max(1), error.position.col.max(1));

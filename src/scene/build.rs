@@ -90,7 +90,8 @@ impl<'a> ItemAt<'a> {
     fn problem(&self, field: Option<&'static str>, literal: Option<&str>, message: String) -> Problem {
         Problem {
             place: Place::Item { kind: self.kind, name: self.name.to_string(), occurrence: self.occurrence, field, literal: literal.map(str::to_string) },
-            message: format!("{} \"{}\": {message}", self.kind.label(), self.name),
+            // Debug formatting quotes the name and escapes what would break the one-line error.
+            message: format!("{} {:?}: {message}", self.kind.label(), self.name),
         }
     }
 
@@ -197,7 +198,7 @@ fn build_end(def: &EndDef, bodies: &[RigidBody], at: &ItemAt) -> Result<Endpoint
         EndDef::Body { body, point } => {
             let Some(index) = bodies.iter().position(|b| &b.name == body) else {
                 let known: Vec<&str> = bodies.iter().map(|b| b.name.as_str()).collect();
-                return Err(at.problem(Some("body"), Some(body), format!("unknown body \"{body}\" (bodies: {})", known.join(", "))));
+                return Err(at.problem(Some("body"), Some(body), format!("unknown body {body:?} (bodies: {})", known.join(", "))));
             };
             Endpoint::on_body(index, bodies[index].principal_point(&vec3(*point)))
         }

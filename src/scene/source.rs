@@ -105,12 +105,17 @@ impl<'a> Source<'a> {
             let Some(rest) = rest.strip_prefix(':') else { continue };
             let Some(rest) = rest.trim_start().strip_prefix('"') else { continue };
             let Some(end) = rest.find('"') else { continue };
+            // A broken file can pair quotes across lines: only a real name is quoted back.
+            let name = &rest[..end];
+            if name.is_empty() || !name.chars().all(|c| c.is_alphanumeric() || "_-.".contains(c)) {
+                continue;
+            }
             let kind = match (before[..at].rfind("bodies"), before[..at].rfind("couplings")) {
                 (Some(b), Some(c)) if c > b => ItemKind::Coupling,
                 (None, Some(_)) => ItemKind::Coupling,
                 _ => ItemKind::Body,
             };
-            return Some((kind, rest[..end].to_string()));
+            return Some((kind, name.to_string()));
         }
         None
     }

@@ -26,15 +26,18 @@ fn rows_per_entity(path: &std::path::Path) -> BTreeMap<String, usize> {
     rows
 }
 
+/// Records `scene` (under the repository) into a temporary directory with extra `flags`.
+fn record(scene: &str, flags: &[&str]) -> (tempfile::TempDir, std::path::PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.rrd");
+    let status = tether().args(["record", common::repo(scene).to_str().unwrap(), "-o", out.to_str().unwrap()]).args(flags).status().unwrap();
+    assert!(status.success());
+    (dir, out)
+}
+
 #[test]
 fn record_writes_every_entity_once_per_frame() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("suspension.rrd");
-    let status = tether()
-        .args(["record", common::repo("scenes/suspension.ron").to_str().unwrap(), "-o", out.to_str().unwrap(), "--duration", "1", "--log-hz", "50"])
-        .status()
-        .unwrap();
-    assert!(status.success());
+    let (_dir, out) = record("scenes/suspension.ron", &["--duration", "1", "--log-hz", "50"]);
     let rows = rows_per_entity(&out);
     // dt = 0.5 ms, 50 Hz → a frame every 40 steps, 2000 steps: frames at steps 0, 40, …, 2000.
     let frames = 51;
@@ -50,13 +53,7 @@ fn record_writes_every_entity_once_per_frame() {
 /// accepts the file: it is complete, footer included.
 #[test]
 fn recording_passes_rerun_rrd_verify() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("t_handle.rrd");
-    let status = tether()
-        .args(["record", common::repo("scenes/t_handle.ron").to_str().unwrap(), "-o", out.to_str().unwrap(), "--duration", "2"])
-        .status()
-        .unwrap();
-    assert!(status.success());
+    let (_dir, out) = record("scenes/t_handle.ron", &["--duration", "2"]);
     let verify = Command::new("rerun")
         .args(["rrd", "verify", out.to_str().unwrap()])
         .output()
@@ -67,13 +64,7 @@ fn recording_passes_rerun_rrd_verify() {
 /// A catenary is drawn along its shape (32 coloured segments) and its end tensions plotted.
 #[test]
 fn catenary_shape_and_end_tensions_are_recorded() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("crane.rrd");
-    let status = tether()
-        .args(["record", common::repo("scenes/crane.ron").to_str().unwrap(), "-o", out.to_str().unwrap(), "--duration", "0.5", "--log-hz", "20"])
-        .status()
-        .unwrap();
-    assert!(status.success());
+    let (_dir, out) = record("scenes/crane.ron", &["--duration", "0.5", "--log-hz", "20"]);
     let rows = rows_per_entity(&out);
     // dt = 1 ms, 20 Hz: frames at steps 0, 50, …, 500.
     for entity in ["/world/couplings/rope", "/plots/catenary/rope", "/plots/tension", "/world/bodies/load"] {

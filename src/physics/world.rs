@@ -14,7 +14,7 @@ use super::body::{BodyState, RigidBody, Support, prescribed_state};
 use super::coupling::{BodyFrame, Coupling, CouplingError, CouplingForces, Load};
 use super::dynamics::Acceleration;
 use super::energy::{EnergyLedger, EnergyReport};
-use super::integrator::{Integrator, leapfrog};
+use super::integrator::{Integrator, leapfrog, leapfrog2};
 use super::stability::{self, Limit};
 use super::Vec3;
 
@@ -102,7 +102,7 @@ impl World {
         world.coupling_forces = vec![CouplingForces::default(); world.couplings.len()];
         world.kinematic_bodies = (0..n).filter(|&i| world.bodies[i].is_kinematic()).collect();
         match world.integrator {
-            Integrator::Leapfrog => leapfrog::start(&mut world)?,
+            Integrator::Leapfrog | Integrator::Leapfrog2 => leapfrog::start(&mut world)?,
         }
         world.initial_energy = world.energy();
         world.initial_limit = stability::binding(&stability::limits(&world));
@@ -116,7 +116,8 @@ impl World {
     /// reset.
     pub fn step(&mut self) -> Result<(), StepError> {
         match self.integrator {
-            Integrator::Leapfrog => leapfrog::step(self)?,
+            Integrator::Leapfrog => leapfrog::step(self, leapfrog::Gyroscopic::Lagged)?,
+            Integrator::Leapfrog2 => leapfrog2::step(self)?,
         }
         self.check_health()
     }
@@ -193,7 +194,7 @@ impl World {
     /// State of body `index` at the current time, velocities included.
     pub fn state(&self, index: usize) -> BodyState {
         match self.integrator {
-            Integrator::Leapfrog => leapfrog::synchronized_state(self, index),
+            Integrator::Leapfrog | Integrator::Leapfrog2 => leapfrog::synchronized_state(self, index),
         }
     }
 

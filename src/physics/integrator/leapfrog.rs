@@ -28,7 +28,8 @@ pub(crate) fn start(world: &mut World) -> Result<(), StepError> {
         *frame = body_frame(state, state.velocity, state.angular_velocity);
     }
     let dissipated = world.evaluate_loads()?;
-    compute_accelerations(world);
+    // The initial velocities are synchronised: ω(0) is exact for either variant.
+    compute_accelerations(world, Gyroscopic::Lagged);
     let half = 0.5 * world.dt();
     for ((state, acceleration), body) in world.states.iter_mut().zip(&world.accelerations).zip(&world.bodies) {
         if !body.is_kinematic() {
@@ -41,9 +42,18 @@ pub(crate) fn start(world: &mut World) -> Result<(), StepError> {
     Ok(())
 }
 
+/// At which angular velocity the gyroscopic term `ω × Iω` is evaluated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Gyroscopic {
+    /// `ω(t−½dt)`, the seed's (first order in rotation).
+    Lagged,
+    /// `ω(t) ≈ ω(t−½dt) + ½dt α(t−dt)` ([`super::leapfrog2`], second order).
+    Predicted,
+}
+
 /// One leapfrog step. Stages 1–4 (advance, prescribe, predict, clear + gravity) run in one
 /// pass over the bodies; then couplings, accelerations and the ledger.
-pub(crate) fn step(world: &mut World) -> Result<(), StepError> {
+pub(crate) fn step(world: &mut World, gyroscopic: Gyroscopic) -> Result<(), StepError> {
     let dt = world.dt();
     world.advance_clock();
     let time = world.time();
@@ -77,7 +87,7 @@ pub(crate) fn step(world: &mut World) -> Result<(), StepError> {
         *load = gravity_load(&world.gravity, body);
     }
     let dissipated = world.apply_couplings()?;
-    compute_accelerations(world);
+    compute_accelerations(world, gyroscopic);
     world.ledger.advance(dt, dissipated, world.external_power());
     Ok(())
 }
@@ -177,14 +187,19 @@ fn body_frame(state: &BodyState, velocity: Vec3, angular_velocity: Vec3) -> Body
     BodyFrame { position: state.position, rotation, velocity, angular_velocity }
 }
 
-/// Stage *accelerations*: Euler's equations with the gyroscopic term at `ω(t−½dt)` (the seed's
-/// choice). In the same pass, the bodies' kinetic and gravity energies at t.
-fn compute_accelerations(world: &mut World) {
+/// Stage *accelerations*: Euler's equations with the gyroscopic term at the chosen angular
+/// velocity. In the same pass, the bodies' kinetic and gravity energies at t.
+fn compute_accelerations(world: &mut World, gyroscopic: Gyroscopic) {
     let half = 0.5 * world.dt();
     let (mut kinetic, mut gravity) = (0.0, 0.0);
     let per_body = world.bodies.iter().zip(&world.states).zip(&world.frames).zip(&world.loads);
     for ((((body, state), frame), load), acceleration) in per_body.zip(world.accelerations.iter_mut()) {
-        *acceleration = accelerations(body, &frame.rotation, load, &state.angular_velocity);
+        let omega = match gyroscopic {
+            Gyroscopic::Lagged => state.angular_velocity,
+            // `acceleration` still holds α(t−dt) here.
+            Gyroscopic::Predicted => state.angular_velocity + acceleration.angular * half,
+        };
+        *acceleration = accelerations(body, &frame.rotation, load, &omega);
         let (dk, dg) = body_energy(body, state, acceleration, half, &world.gravity);
         kinetic += dk;
         gravity += dg;

@@ -154,3 +154,21 @@ fn prescribed_motion_work_closes_the_energy_balance() {
     // The tug is where its table says: x = ∫v = 0.5 + 2·1 m at t = 3 s.
     assert_relative_eq!(world.state(0).position.x, 2.5, epsilon = 1e-9);
 }
+
+/// `reset` puts the world back at t = 0 exactly as built.
+#[test]
+fn reset_returns_to_the_initial_state() {
+    let fresh = scene(&std::fs::read_to_string(common::repo("scenes/suspension.ron")).unwrap()).world;
+    let mut world = fresh.clone();
+    for _ in 0..500 {
+        world.step().unwrap();
+    }
+    assert!(world.state(1).position != fresh.state(1).position);
+    world.reset().unwrap();
+    assert_eq!(world.time(), 0.0);
+    assert_eq!(world.steps(), 0);
+    for i in 0..2 {
+        assert_eq!(world.state(i), fresh.state(i));
+    }
+    assert_eq!(world.energy(), fresh.energy());
+}

@@ -62,7 +62,6 @@ pub struct Table {
     /// `pieces[0]` is the left extension, `pieces[i]` (1 ≤ i ≤ n−1) the segment from point
     /// i−1 to i, `pieces[n]` the right extension.
     pieces: Vec<Piece>,
-    extrapolation: Extrapolation,
 }
 
 impl Table {
@@ -80,17 +79,12 @@ impl Table {
             }
         }
         let pieces = build_pieces(&points, extrapolation);
-        Ok(Self { points, pieces, extrapolation })
+        Ok(Self { points, pieces })
     }
 
     /// The points the table was built from.
     pub fn points(&self) -> &[(f64, f64)] {
         &self.points
-    }
-
-    /// How the table continues beyond its ends.
-    pub fn extrapolation(&self) -> Extrapolation {
-        self.extrapolation
     }
 
     fn piece(&self, x: f64) -> &Piece {

@@ -209,11 +209,6 @@ impl World {
         &self.coupling_forces
     }
 
-    /// Index of the body named `name`.
-    pub fn body_index(&self, name: &str) -> Option<usize> {
-        self.bodies.iter().position(|b| b.name == name)
-    }
-
     /// Energies at the current time (PHYSICS.md §5).
     pub fn energy(&self) -> EnergyReport {
         let (kinetic, gravity) = self.body_energy;

@@ -62,6 +62,9 @@ pub struct World {
     initial_energy: EnergyReport,
     /// The binding stable time step at t = 0, for the divergence message.
     initial_limit: Option<Limit>,
+    /// `Σ m |g| ℓ` [J] with ℓ the size of the scene at t = 0: the energy the bodies could gain by
+    /// falling across it, part of the divergence budget whatever the height of the origin.
+    fall_energy: f64,
 }
 
 impl World {
@@ -98,6 +101,7 @@ impl World {
             body_energy: (0.0, 0.0),
             initial_energy: EnergyReport::default(),
             initial_limit: None,
+            fall_energy: 0.0,
         };
         world.coupling_forces = vec![CouplingForces::default(); world.couplings.len()];
         world.kinematic_bodies = (0..n).filter(|&i| world.bodies[i].is_kinematic()).collect();
@@ -105,6 +109,7 @@ impl World {
             Integrator::Leapfrog | Integrator::Leapfrog2 => leapfrog::start(&mut world)?,
         }
         world.initial_energy = world.energy();
+        world.fall_energy = world.fall_energy();
         world.initial_limit = stability::binding(&stability::limits(&world));
         Ok(world)
     }
@@ -124,14 +129,15 @@ impl World {
 
     /// Stage *health*: every body's state is finite, and the energy balance has not drifted by
     /// more than [`DIVERGENCE_FACTOR`] times the energy budget (`|kinetic| + |gravity| +
-    /// |elastic|` at t = 0 plus the work put in by prescribed motions since). An unstable step grows
+    /// |elastic|` at t = 0, the energy of a fall across the scene, and the work put in by
+    /// prescribed motions since). An unstable step grows
     /// the energy geometrically, so this stops a blow-up within a few steps of its start and
     /// long before anything overflows.
     fn check_health(&self) -> Result<(), StepError> {
         let energy = self.energy();
         let start = &self.initial_energy;
         // Not the dissipated work: a blow-up with a damper dissipates as fast as it grows.
-        let budget = start.kinetic.abs() + start.gravity.abs() + start.elastic.abs() + energy.external_work.abs();
+        let budget = start.kinetic.abs() + start.gravity.abs() + start.elastic.abs() + self.fall_energy + energy.external_work.abs();
         let drift = (energy.balance() - start.balance()).abs();
         if drift <= DIVERGENCE_FACTOR * budget.max(f64::MIN_POSITIVE) {
             return Ok(());
@@ -155,6 +161,16 @@ impl World {
             None => format!("no coupling limits the time step (dt = {:.3e} s)", self.dt),
         };
         Err(StepError::Diverged { time: self.time, body: self.bodies.get(body).map_or_else(String::new, |b| b.name.clone()), cause, advice })
+    }
+
+    /// `Σ m |g| ℓ` [J], ℓ the diagonal of the box around the bodies' centres of mass and the
+    /// coupling ends at the current time.
+    fn fall_energy(&self) -> f64 {
+        let points = self.states.iter().map(|s| s.position).chain(self.coupling_forces.iter().flat_map(|f| [f.point1, f.point2]));
+        let (low, high) = points.fold((Vec3::repeat(f64::INFINITY), Vec3::repeat(f64::NEG_INFINITY)), |(lo, hi), p| (lo.inf(&p), hi.sup(&p)));
+        let size = if low.x.is_finite() { (high - low).norm() } else { 0.0 };
+        let mass: f64 = self.bodies.iter().filter(|b| !b.is_kinematic()).map(|b| b.mass()).sum();
+        mass * self.gravity.norm() * size
     }
 
     /// `½ m |v|² + ½ ωᵀ I ω` of body `index` [J].

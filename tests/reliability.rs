@@ -43,7 +43,7 @@ fn a_diverging_run_stops_names_the_culprit_and_keeps_nan_out_of_the_recording() 
     let run = tether().args(["record", common::repo("tests/fixtures/unstable_chain.ron").to_str().unwrap(), "-o", out.to_str().unwrap(), "--log-hz", "200"]).output().unwrap();
     assert_eq!(run.status.code(), Some(1));
     let stderr = String::from_utf8_lossy(&run.stderr);
-    assert!(stderr.contains("warning: dt = 5.000e-3 s exceeds the stable time step"), "{stderr}");
+    assert!(stderr.contains("warning: the integrator step 5.000e-3 s exceeds the stable time step"), "{stderr}");
     assert!(stderr.contains("the simulation diverged at t = "), "{stderr}");
     assert!(stderr.contains("body \"b"), "{stderr}");
     assert!(stderr.contains("the stable time step is 4.472e-3 s, set by coupling \"s"), "{stderr}");

@@ -55,3 +55,36 @@ fn effective_mass_includes_rotation_about_the_attachment() {
     let limit = stability::binding(&stability::limits(&world)).unwrap();
     assert_relative_eq!(limit.dt, 2.0 / (300.0 * inverse_mass).sqrt(), max_relative = 1e-12);
 }
+
+/// The spring-mass (ω = 10 rad/s, stable step 0.2 s) with a world step of 0.3 s: `substeps:
+/// Auto` takes ⌈0.3/(0.9·0.2)⌉ = 2 integrator steps per world step and stays bounded, exactly as
+/// a run at dt = 0.15 s; without sub-steps the same dt diverges.
+#[test]
+fn auto_substeps_make_a_too_large_step_stable() {
+    let scene = |dt: f64, substeps: &str| {
+        common::scene(&format!(
+            "Scene(gravity: (0, 0, 0), dt: {dt:e}, substeps: {substeps}, bodies: [Body(name: \"m\",
+                master: Node(position: (1.01, 0, 0), mass: 1.0, inertia: Inertia(xx: 0.01, yy: 0.01, zz: 0.01)),
+                support: Fixed(translation: (false, true, true), rotation: true), shape: Sphere(radius: 0.1))],
+             couplings: [SpringDamper(name: \"s\", end1: World((0, 0, 0)), end2: Body(body: \"m\"), law: Linear(stiffness: 100.0, rest_length: 1.0))])"
+        ))
+        .world
+    };
+    let mut auto = scene(0.3, "Auto");
+    assert_eq!(auto.substeps(), 2);
+    assert_relative_eq!(auto.step_size(), 0.15, max_relative = 1e-15);
+    let mut fine = scene(0.15, "Fixed(1)");
+    for _ in 0..1000 {
+        auto.step().unwrap();
+        fine.step().unwrap();
+        fine.step().unwrap();
+        assert_eq!(auto.state(0).position, fine.state(0).position);
+    }
+    assert_eq!(auto.steps(), 1000);
+    assert!((auto.state(0).position.x - 1.0).abs() <= 0.0101);
+    let mut plain = scene(0.3, "Fixed(1)");
+    assert!(steps_to_failure(&mut plain, 1000).is_some());
+    let mut fixed = scene(0.3, "Fixed(3)");
+    assert_eq!(fixed.substeps(), 3);
+    assert_eq!(steps_to_failure(&mut fixed, 1000), None);
+}

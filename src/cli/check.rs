@@ -14,7 +14,16 @@ pub fn run(scene: &Scene) -> anyhow::Result<()> {
 
 fn report(world: &World, label: &str) -> String {
     let mut out = String::new();
-    let _ = writeln!(out, "{label}: ok — {} bodies, {} couplings, dt = {} s, integrator {:?}", world.bodies.len(), world.couplings.len(), world.dt(), world.integrator);
+    let _ = writeln!(
+        out,
+        "{label}: ok — {} bodies, {} couplings, dt = {} s, integrator {:?}, {} substep(s) of {:.6e} s",
+        world.bodies.len(),
+        world.couplings.len(),
+        world.dt(),
+        world.integrator,
+        world.substeps(),
+        world.step_size()
+    );
     let _ = writeln!(out, "gravity {} m/s²", v(&world.gravity));
     for body in &world.bodies {
         let p = &body.mass_properties;
@@ -61,8 +70,8 @@ fn report(world: &World, label: &str) -> String {
     }
     match stability::binding(&limits) {
         Some(binding) => {
-            let verdict = if world.dt() <= binding.dt { "stable" } else { "UNSTABLE: lower dt" };
-            let _ = writeln!(out, "  binding: {} at {:.6e} s; dt = {:.6e} s is {verdict}", binding.describe(world), binding.dt, world.dt());
+            let verdict = if world.step_size() <= binding.dt { "stable" } else { "UNSTABLE: lower dt or add substeps" };
+            let _ = writeln!(out, "  binding: {} at {:.6e} s; the integrator step {:.6e} s is {verdict}", binding.describe(world), binding.dt, world.step_size());
         }
         None => {
             let _ = writeln!(out, "  nothing limits the time step");

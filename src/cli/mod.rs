@@ -63,10 +63,10 @@ fn load(path: &Path) -> anyhow::Result<Scene> {
 /// Warns once when the time step exceeds the binding stable time step.
 fn warn_if_unstable(world: &tether::physics::world::World) {
     let limits = tether::physics::stability::limits(world);
-    if let Some(binding) = tether::physics::stability::binding(&limits).filter(|b| world.dt() > b.dt) {
+    if let Some(binding) = tether::physics::stability::binding(&limits).filter(|b| world.step_size() > b.dt) {
         eprintln!(
-            "warning: dt = {:.3e} s exceeds the stable time step {:.3e} s set by {}: the run will likely diverge",
-            world.dt(),
+            "warning: the integrator step {:.3e} s exceeds the stable time step {:.3e} s set by {}: the run will likely diverge (lower dt or set substeps: Auto)",
+            world.step_size(),
             binding.dt,
             binding.describe(world)
         );

@@ -14,7 +14,7 @@ use super::body::{BodyState, RigidBody, Support, prescribed_state};
 use super::coupling::{BodyFrame, Coupling, CouplingError, CouplingForces, Load};
 use super::dynamics::Acceleration;
 use super::energy::{EnergyLedger, EnergyReport};
-use super::integrator::{Integrator, leapfrog, leapfrog2};
+use super::integrator::{Integrator, Substeps, Timing, leapfrog, leapfrog2};
 use super::stability::{self, Limit};
 use super::Vec3;
 
@@ -30,6 +30,9 @@ pub enum StepError {
     Diverged { time: f64, body: String, cause: String, advice: String },
 }
 
+/// `substeps: Auto` keeps each integrator step under this fraction of the stable time step.
+const AUTO_SUBSTEP_MARGIN: f64 = 0.9;
+
 /// Energy balance drift, in multiples of the energy budget, taken as a blow-up.
 const DIVERGENCE_FACTOR: f64 = 10.0;
 
@@ -42,6 +45,9 @@ pub struct World {
     pub couplings: Vec<Coupling>,
     pub integrator: Integrator,
     dt: f64,
+    /// The substep setting, and the integrator steps per world step it resolved to.
+    substep_setting: Substeps,
+    substeps: u32,
     time: f64,
     steps: u64,
     /// States at t = 0 (start of prescribed motions, and reset).
@@ -78,16 +84,20 @@ impl World {
         bodies: Vec<RigidBody>,
         couplings: Vec<Coupling>,
         initial_states: Vec<BodyState>,
-        dt: f64,
-        integrator: Integrator,
+        timing: Timing,
     ) -> Result<Self, StepError> {
         let n = bodies.len();
         let mut world = Self {
             gravity,
             bodies,
             couplings,
-            integrator,
-            dt,
+            integrator: timing.integrator,
+            dt: timing.dt,
+            substep_setting: timing.substeps,
+            substeps: match timing.substeps {
+                Substeps::Fixed(n) => n.max(1),
+                Substeps::Auto => 1,
+            },
             time: 0.0,
             steps: 0,
             states: initial_states.clone(),
@@ -105,13 +115,26 @@ impl World {
         };
         world.coupling_forces = vec![CouplingForces::default(); world.couplings.len()];
         world.kinematic_bodies = (0..n).filter(|&i| world.bodies[i].is_kinematic()).collect();
-        match world.integrator {
-            Integrator::Leapfrog | Integrator::Leapfrog2 => leapfrog::start(&mut world)?,
+        world.start()?;
+        world.initial_limit = stability::binding(&stability::limits(&world));
+        if let (Substeps::Auto, Some(limit)) = (world.substep_setting, world.initial_limit) {
+            let needed = (world.dt / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil();
+            if needed > 1.0 {
+                world.substeps = needed.min(f64::from(u32::MAX)) as u32;
+                world.start()?;
+            }
         }
         world.initial_energy = world.energy();
         world.fall_energy = world.fall_energy();
-        world.initial_limit = stability::binding(&stability::limits(&world));
         Ok(world)
+    }
+
+    /// The integrator's start at t = 0 from the initial states.
+    fn start(&mut self) -> Result<(), StepError> {
+        self.states.clone_from(&self.initial_states);
+        match self.integrator {
+            Integrator::Leapfrog | Integrator::Leapfrog2 => leapfrog::start(self),
+        }
     }
 
     /// Advances the world by one time step `dt`.
@@ -120,11 +143,15 @@ impl World {
     /// A coupling that cannot give its forces; the world is then left mid-step and should be
     /// reset.
     pub fn step(&mut self) -> Result<(), StepError> {
-        match self.integrator {
-            Integrator::Leapfrog => leapfrog::step(self, leapfrog::Gyroscopic::Lagged)?,
-            Integrator::Leapfrog2 => leapfrog2::step(self)?,
+        for _ in 0..self.substeps {
+            match self.integrator {
+                Integrator::Leapfrog => leapfrog::step(self, leapfrog::Gyroscopic::Lagged)?,
+                Integrator::Leapfrog2 => leapfrog2::step(self)?,
+            }
+            self.check_health()?;
         }
-        self.check_health()
+        self.steps += 1;
+        Ok(())
     }
 
     /// Stage *health*: every body's state is finite, and the energy balance has not drifted by
@@ -157,8 +184,8 @@ impl World {
             }
         };
         let advice = match self.initial_limit {
-            Some(limit) => format!("the stable time step is {:.3e} s, set by {} (dt = {:.3e} s)", limit.dt, limit.describe(self), self.dt),
-            None => format!("no coupling limits the time step (dt = {:.3e} s)", self.dt),
+            Some(limit) => format!("the stable time step is {:.3e} s, set by {} (step {:.3e} s)", limit.dt, limit.describe(self), self.step_size()),
+            None => format!("no coupling limits the time step (step {:.3e} s)", self.step_size()),
         };
         Err(StepError::Diverged { time: self.time, body: self.bodies.get(body).map_or_else(String::new, |b| b.name.clone()), cause, advice })
     }
@@ -188,7 +215,8 @@ impl World {
 
     /// Restarts from t = 0 with the current parameters; on error the world is unchanged.
     pub fn reset(&mut self) -> Result<(), StepError> {
-        *self = Self::new(self.gravity, self.bodies.clone(), self.couplings.clone(), self.initial_states.clone(), self.dt, self.integrator)?;
+        let timing = Timing { dt: self.dt, integrator: self.integrator, substeps: self.substep_setting };
+        *self = Self::new(self.gravity, self.bodies.clone(), self.couplings.clone(), self.initial_states.clone(), timing)?;
         Ok(())
     }
 
@@ -197,14 +225,24 @@ impl World {
         self.time
     }
 
-    /// Steps taken since t = 0.
+    /// World steps taken since t = 0.
     pub fn steps(&self) -> u64 {
         self.steps
     }
 
-    /// Time step [s].
+    /// World step [s]: what one [`World::step`] advances.
     pub fn dt(&self) -> f64 {
         self.dt
+    }
+
+    /// Integrator steps per world step.
+    pub fn substeps(&self) -> u32 {
+        self.substeps
+    }
+
+    /// The integrator's step `dt / substeps` [s], the one the stable time step bounds.
+    pub fn step_size(&self) -> f64 {
+        self.dt / f64::from(self.substeps)
     }
 
     /// State of body `index` at the current time, velocities included.
@@ -282,8 +320,7 @@ impl World {
     }
 
     pub(crate) fn advance_clock(&mut self) {
-        self.steps += 1;
-        self.time += self.dt;
+        self.time += self.step_size();
     }
 }
 

@@ -7,6 +7,7 @@ use super::source::ItemKind;
 use crate::physics::body::{PrescribedMotion, RigidBody, Shape, Support, VelocityProfile};
 use crate::physics::coupling::{Catenary, Coupling, CouplingKind, ElasticLaw, Endpoint, SpringDamper};
 use crate::physics::mass_properties::{MassProperties, Node};
+use crate::physics::integrator::{Substeps, Timing};
 use crate::physics::world::{StepError, World};
 use crate::physics::{Mat3, Vec3};
 
@@ -38,6 +39,9 @@ pub fn build(file: &SceneFile) -> Result<Built, Problem> {
     if !(file.dt > 0.0) {
         return Err(Problem { place: Place::Top("dt"), message: format!("time step dt must be > 0 s, got {}", file.dt) });
     }
+    if file.substeps == Substeps::Fixed(0) {
+        return Err(Problem { place: Place::Top("substeps"), message: "substeps must be at least 1".into() });
+    }
     if !(file.duration > 0.0) {
         return Err(Problem { place: Place::Top("duration"), message: format!("duration must be > 0 s, got {}", file.duration) });
     }
@@ -68,7 +72,8 @@ pub fn build(file: &SceneFile) -> Result<Built, Problem> {
         couplings.push(build_coupling(def, &bodies, &at)?);
     }
     // Names are unique by now: the coupling at fault is the first of its name.
-    let world = World::new(vec3(file.gravity), bodies, couplings, states, file.dt, file.integrator).map_err(|e| match e {
+    let timing = Timing { dt: file.dt, integrator: file.integrator, substeps: file.substeps };
+    let world = World::new(vec3(file.gravity), bodies, couplings, states, timing).map_err(|e| match e {
         StepError::Coupling { coupling, source, .. } => ItemAt::new(ItemKind::Coupling, &coupling, 0).at_name(format!("at t = 0: {source}")),
         other => Problem { place: Place::Top("bodies"), message: other.to_string() },
     })?;

@@ -5,7 +5,7 @@
 //! must be finite; unknown fields are rejected.
 
 use super::finite::{finite, finite3, finite_pairs, finite_velocity_table};
-use crate::physics::integrator::Integrator;
+use crate::physics::integrator::{Integrator, Substeps};
 use serde::{Deserialize, Serialize};
 
 /// `(x, y, z)`.
@@ -26,6 +26,9 @@ pub struct SceneFile {
     pub duration: f64,
     #[serde(default)]
     pub integrator: Integrator,
+    /// Integrator steps per `dt`: `Fixed(n)` or `Auto` (default `Fixed(1)`).
+    #[serde(default)]
+    pub substeps: Substeps,
     pub bodies: Vec<BodyDef>,
     #[serde(default)]
     pub couplings: Vec<CouplingDef>,

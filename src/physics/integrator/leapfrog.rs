@@ -30,7 +30,7 @@ pub(crate) fn start(world: &mut World) -> Result<(), StepError> {
     let dissipated = world.evaluate_loads()?;
     // The initial velocities are synchronised: ω(0) is exact for either variant.
     compute_accelerations(world, Gyroscopic::Lagged);
-    let half = 0.5 * world.dt();
+    let half = 0.5 * world.step_size();
     for ((state, acceleration), body) in world.states.iter_mut().zip(&world.accelerations).zip(&world.bodies) {
         if !body.is_kinematic() {
             state.velocity -= acceleration.linear * half;
@@ -54,7 +54,7 @@ pub(crate) enum Gyroscopic {
 /// One leapfrog step. Stages 1–4 (advance, prescribe, predict, clear + gravity) run in one
 /// pass over the bodies; then couplings, accelerations and the ledger.
 pub(crate) fn step(world: &mut World, gyroscopic: Gyroscopic) -> Result<(), StepError> {
-    let dt = world.dt();
+    let dt = world.step_size();
     world.advance_clock();
     let time = world.time();
     let per_body = world
@@ -96,7 +96,7 @@ pub(crate) fn step(world: &mut World, gyroscopic: Gyroscopic) -> Result<(), Step
 pub(crate) fn synchronized_state(world: &World, index: usize) -> BodyState {
     let mut state = world.states[index];
     if !world.bodies[index].is_kinematic() {
-        let half = 0.5 * world.dt();
+        let half = 0.5 * world.step_size();
         state.velocity += world.accelerations[index].linear * half;
         state.angular_velocity += world.accelerations[index].angular * half;
     }
@@ -106,7 +106,7 @@ pub(crate) fn synchronized_state(world: &World, index: usize) -> BodyState {
 /// `Σ ½ m |v(t)|² + ½ ω(t)ᵀ I ω(t)` and `Σ −m g·x_G` [J] over the bodies that respond to
 /// forces, with the synchronised velocities.
 fn kinetic_and_gravity(world: &World) -> (f64, f64) {
-    let half = 0.5 * world.dt();
+    let half = 0.5 * world.step_size();
     world.bodies.iter().zip(&world.states).zip(&world.accelerations).fold((0.0, 0.0), |(k, g), ((body, state), acceleration)| {
         let (dk, dg) = body_energy(body, state, acceleration, half, &world.gravity);
         (k + dk, g + dg)
@@ -190,7 +190,7 @@ fn body_frame(state: &BodyState, velocity: Vec3, angular_velocity: Vec3) -> Body
 /// Stage *accelerations*: Euler's equations with the gyroscopic term at the chosen angular
 /// velocity. In the same pass, the bodies' kinetic and gravity energies at t.
 fn compute_accelerations(world: &mut World, gyroscopic: Gyroscopic) {
-    let half = 0.5 * world.dt();
+    let half = 0.5 * world.step_size();
     let (mut kinetic, mut gravity) = (0.0, 0.0);
     let per_body = world.bodies.iter().zip(&world.states).zip(&world.frames).zip(&world.loads);
     for ((((body, state), frame), load), acceleration) in per_body.zip(world.accelerations.iter_mut()) {

@@ -13,3 +13,28 @@ pub enum Integrator {
     /// The leapfrog with the gyroscopic term at a predicted ω(t) ([`leapfrog2`]).
     Leapfrog2,
 }
+
+/// How many integrator steps one world step takes: the world advances by `dt`, its integrator
+/// by `dt / n` (recordings log world steps).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Substeps {
+    /// `n ≥ 1` integrator steps per world step.
+    Fixed(u32),
+    /// Enough integrator steps to keep each under 0.9 of the binding stable time step at t = 0.
+    Auto,
+}
+
+impl Default for Substeps {
+    fn default() -> Self {
+        Self::Fixed(1)
+    }
+}
+
+/// The time step settings of a world.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Timing {
+    /// World step [s] > 0.
+    pub dt: f64,
+    pub integrator: Integrator,
+    pub substeps: Substeps,
+}

@@ -154,6 +154,12 @@ impl RigidBody {
         }
     }
 
+    /// Kinetic energy `½ m |v|² + ½ ωᵀ I ω` [J] for velocity `velocity` (any axes) and angular
+    /// velocity `spin` (principal frame).
+    pub fn kinetic_energy(&self, velocity: &Vec3, spin: &Vec3) -> f64 {
+        0.5 * (self.mass() * velocity.norm_squared() + spin.dot(&self.principal_moments().component_mul(spin)))
+    }
+
     /// Whether the body moves by prescription rather than by forces.
     pub fn is_kinematic(&self) -> bool {
         matches!(self.support, Support::Kinematic(_))

@@ -100,7 +100,8 @@ impl World {
             },
             time: 0.0,
             steps: 0,
-            states: initial_states.clone(),
+            // Filled from `initial_states` by `start`.
+            states: Vec::new(),
             initial_states,
             kinematic_bodies: Vec::new(),
             frames: vec![BodyFrame { position: Vec3::zeros(), rotation: super::Mat3::identity(), velocity: Vec3::zeros(), angular_velocity: Vec3::zeros() }; n],
@@ -203,9 +204,7 @@ impl World {
     /// `½ m |v|² + ½ ωᵀ I ω` of body `index` [J].
     fn kinetic_energy(&self, index: usize) -> f64 {
         let state = self.state(index);
-        let body = &self.bodies[index];
-        0.5 * body.mass() * state.velocity.norm_squared()
-            + 0.5 * state.angular_velocity.dot(&body.principal_moments().component_mul(&state.angular_velocity))
+        self.bodies[index].kinetic_energy(&state.velocity, &state.angular_velocity)
     }
 
     /// Body kinematics at the last force evaluation, world axes.

@@ -25,7 +25,7 @@ use crate::physics::{Rotation, Vec3};
 pub(crate) fn start(world: &mut World) -> Result<(), StepError> {
     world.prescribe_kinematic_bodies();
     for (frame, state) in world.frames.iter_mut().zip(&world.states) {
-        *frame = body_frame(state, state.velocity, state.angular_velocity);
+        *frame = body_frame(state);
     }
     let dissipated = world.evaluate_loads()?;
     // The initial velocities are synchronised: ω(0) is exact for either variant.
@@ -69,14 +69,14 @@ pub(crate) fn step(world: &mut World, gyroscopic: Gyroscopic) -> Result<(), Step
         match &body.support {
             Support::Kinematic(motion) => {
                 *state = prescribed_state(motion, initial, time);
-                *frame = body_frame(state, state.velocity, state.angular_velocity);
+                *frame = body_frame(state);
             }
             support => {
                 let turned = kick_and_drift(state, acceleration, support, dt);
                 // Velocity-dependent forces see v(t−½dt), as in Radioss. A body that did not
                 // turn keeps its rotation matrix.
                 if turned {
-                    *frame = body_frame(state, state.velocity, state.angular_velocity);
+                    *frame = body_frame(state);
                 } else {
                     frame.position = state.position;
                     frame.velocity = state.velocity;
@@ -122,8 +122,7 @@ fn body_energy(body: &RigidBody, state: &BodyState, acceleration: &Acceleration,
     }
     let velocity = state.velocity + acceleration.linear * half;
     let spin = state.angular_velocity + acceleration.angular * half;
-    let kinetic = 0.5 * (body.mass() * velocity.norm_squared() + spin.dot(&body.principal_moments().component_mul(&spin)));
-    (kinetic, -body.mass() * gravity.dot(&state.position))
+    (body.kinetic_energy(&velocity, &spin), -body.mass() * gravity.dot(&state.position))
 }
 
 /// Stage *advance* of one body: `v += γ dt`, `ω += α dt` (fixed components stay at rest), then
@@ -182,9 +181,9 @@ fn renormalize(q: nalgebra::Quaternion<f64>) -> Rotation {
 }
 
 /// Stage *predict*: the kinematics the forces see, world axes.
-fn body_frame(state: &BodyState, velocity: Vec3, angular_velocity: Vec3) -> BodyFrame {
+fn body_frame(state: &BodyState) -> BodyFrame {
     let rotation = state.orientation.to_rotation_matrix().into_inner();
-    BodyFrame { position: state.position, rotation, velocity, angular_velocity }
+    BodyFrame { position: state.position, rotation, velocity: state.velocity, angular_velocity: state.angular_velocity }
 }
 
 /// Stage *accelerations*: Euler's equations with the gyroscopic term at the chosen angular

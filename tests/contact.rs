@@ -208,3 +208,80 @@ fn a_ball_in_a_domain_box_bounces_off_every_wall_it_meets() {
     assert_relative_eq!(v.abs(), Vec3::new(2.0, 1.0, 0.5), max_relative = 1e-3);
     assert!(v.x < 0.0 || v.y > 0.0, "the ball must have bounced: {v:?}");
 }
+
+/// Runs a shipped scene for its duration (every step healthy) and returns the world.
+fn run_shipped(name: &str) -> World {
+    let scene = tether::scene::load(&common::repo(&format!("scenes/{name}"))).unwrap_or_else(|e| panic!("{e}"));
+    let (mut world, steps) = (scene.world, (scene.file.duration / scene.file.dt).round() as usize);
+    for _ in 0..steps {
+        world.step().unwrap_or_else(|e| panic!("{name}: {e}"));
+    }
+    world
+}
+
+#[test]
+fn the_dropped_crate_comes_to_rest_on_a_face() {
+    let world = run_shipped("box_drop.ron");
+    let state = world.state(0);
+    assert!(state.velocity.norm() < 1e-3 && state.angular_velocity.norm() < 1e-2, "still moving: {state:?}");
+    // Resting on a face: G at half of one of the edge lengths (0.6, 0.4, 0.4 m) above the ground,
+    // less the range and the sinking under the weight.
+    let height = state.position.z;
+    assert!([0.3, 0.2].iter().any(|h| (height - h).abs() < 0.003), "G at {height} m");
+}
+
+#[test]
+fn the_barge_holds_on_the_slipway_until_the_tug_drags_it_down() {
+    let scene = tether::scene::load(&common::repo("scenes/barge_slipway.ron")).unwrap_or_else(|e| panic!("{e}"));
+    let mut world = scene.world;
+    let (mut peak_tension, mut settled_at) = (0.0_f64, None);
+    while world.time() < scene.file.duration - 1e-9 {
+        world.step().unwrap_or_else(|e| panic!("{e}"));
+        peak_tension = peak_tension.max(world.coupling_forces()[1].tension);
+        let x = world.state(0).position.x;
+        if (world.time() - 1.5).abs() < 1e-9 {
+            settled_at = Some(x);
+        }
+        if (world.time() - 3.0).abs() < 1e-9 {
+            // Settled onto the ramp by 1.5 s, then held by friction until the tug pulls
+            // (tan 3° < μ = 0.15; the tanh law creeps at 1.8 mm/s).
+            let moved = x - settled_at.expect("passed 1.5 s");
+            assert!(moved.abs() < 0.01, "the barge slid {moved} m before the pull");
+        }
+    }
+    // Dragged for 22 s at up to 1 m/s: it follows the tug, and the rope had to overcome
+    // μ N − m g sin 3° ≈ 28.7 kN of friction net of gravity.
+    let x = world.state(0).position.x;
+    assert!(x < -10.0, "barge at x = {x}");
+    assert!(peak_tension > 2.87e4, "tow rope peak tension {peak_tension} N");
+    assert!(world.energy().dissipated > 0.0);
+}
+
+#[test]
+fn the_fender_is_squeezed_between_hull_and_quay_and_released() {
+    let scene = tether::scene::load(&common::repo("scenes/fender.ron")).unwrap_or_else(|e| panic!("{e}"));
+    let mut world = scene.world;
+    let (mut quay_peak, mut hull_peak) = (0.0_f64, 0.0_f64);
+    while world.time() < 4.0 {
+        world.step().unwrap_or_else(|e| panic!("{e}"));
+        quay_peak = quay_peak.max(world.coupling_forces()[2].tension);
+        hull_peak = hull_peak.max(world.coupling_forces()[3].tension);
+    }
+    // Squeezed by about 0.1 m: both contacts carry tens of kN, the fender stays between them.
+    assert!(quay_peak > 2e4 && hull_peak > 2e4, "peaks: quay {quay_peak} N, hull {hull_peak} N");
+    let x = world.state(0).position.x;
+    assert!(x > 0.3 && x < 0.5, "fender at x = {x}");
+    while world.time() < 8.0 {
+        world.step().unwrap_or_else(|e| panic!("{e}"));
+    }
+    assert_eq!(world.coupling_forces()[3].tension, 0.0, "the hull has left");
+}
+
+#[test]
+fn the_rolling_ball_knocks_the_box_forwards() {
+    let world = run_shipped("two_bodies.ron");
+    let (ball, block) = (world.state(0), world.state(1));
+    assert!(block.position.x > 0.05, "the box was not pushed: {:?}", block.position);
+    assert!(ball.position.x < block.position.x, "the ball went through the box");
+    assert!(block.position.z > 0.14 && block.position.z < 0.16, "the box left the ground: {:?}", block.position);
+}

@@ -111,12 +111,12 @@ fn contact_report(out: &mut String, world: &World, contact: &Contact) {
     );
     let mass = |i: usize| if world.bodies[i].is_kinematic() { 0.0 } else { world.bodies[i].inverse_mass };
     let inverse_mass = mass(contact.body) + contact.other_body().map_or(0.0, mass);
-    let totals = contact.totals();
+    let totals = contact.totals(world.frames());
     let _ = writeln!(
         out,
         "  stopping time τ = {:.6e} s; now {} faces in contact over {:.6e} m², normal force {:.6} N, friction {:.6} N",
-        contact.stopping_time(inverse_mass),
-        contact.active_faces().len(),
+        contact.stopping_time(contact.limit_area(world.frames()), inverse_mass),
+        totals.faces,
         totals.area,
         totals.normal,
         totals.friction

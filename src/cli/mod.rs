@@ -1,6 +1,7 @@
 //! Subcommands of `tether`, one module each.
 
 mod check;
+mod estimate_contact;
 mod forces;
 mod record;
 
@@ -34,6 +35,8 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Contact parameters k1, k2, the stopping time τ and a time step from an expected impact.
+    EstimateContact(estimate_contact::EstimateArgs),
 }
 
 /// Exit code of a run stopped by Ctrl-C or SIGTERM (128 + SIGINT, the shell's convention).
@@ -48,6 +51,7 @@ pub fn run(cli: Cli) -> anyhow::Result<u8> {
             record::Outcome::Interrupted => INTERRUPTED,
         }),
         Command::Forces { scene, json } => forces::run(&load(&scene)?, json).map(|()| 0),
+        Command::EstimateContact(args) => estimate_contact::run(&args).map(|()| 0),
     }
 }
 

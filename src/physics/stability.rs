@@ -84,9 +84,9 @@ pub fn limits(world: &World) -> Vec<Limit> {
             }
             CouplingKind::Contact(contact) => {
                 let inverse: f64 = [Some(contact.body), contact.other_body()].into_iter().flatten().map(|i| translational_inverse_mass(world, i)).sum();
-                let area = contact.limit_area();
+                let area = contact.limit_area(frames);
                 let normal = damped_oscillator_limit(contact.law.stiffness * area, contact.law.damping * area, inverse);
-                let friction = contact.law.friction * contact.law.friction_sharpness * contact.totals().normal;
+                let friction = contact.law.friction * contact.law.friction_sharpness * contact.normal_force();
                 normal.min(damped_oscillator_limit(0.0, friction, inverse))
             }
         };
@@ -113,7 +113,7 @@ pub fn impact_limits(world: &World) -> Vec<Limit> {
         .filter_map(|(index, coupling)| match &coupling.kind {
             CouplingKind::Contact(contact) => {
                 let inverse = inverse_mass(contact.body) + contact.other_body().map_or(0.0, inverse_mass);
-                Some(Limit { limiter: Limiter::Impact(index), dt: contact.stopping_time(inverse) / STEPS_PER_STOPPING_TIME })
+                Some(Limit { limiter: Limiter::Impact(index), dt: contact.stopping_time(contact.limit_area(world.frames()), inverse) / STEPS_PER_STOPPING_TIME })
             }
             _ => None,
         })

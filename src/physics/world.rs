@@ -33,6 +33,11 @@ pub enum StepError {
 /// `substeps: Auto` keeps each integrator step under this fraction of the stable time step.
 const AUTO_SUBSTEP_MARGIN: f64 = 0.9;
 
+/// `substeps: Auto` takes at most this many integrator steps per world step: a scene that needs
+/// more (a stiffness typed a million times too high) runs unstable and the health check stops
+/// it with the stable time step in the message, rather than seeming to hang.
+pub const MAX_AUTO_SUBSTEPS: u32 = 10_000;
+
 /// Energy balance drift, in multiples of the energy budget, taken as a blow-up.
 const DIVERGENCE_FACTOR: f64 = 10.0;
 
@@ -123,7 +128,7 @@ impl World {
         if let (Substeps::Auto, Some(limit)) = (world.substep_setting, stability::binding(&[limits, impacts].concat())) {
             let needed = (world.dt / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil();
             if needed > 1.0 {
-                world.substeps = needed.min(f64::from(u32::MAX)) as u32;
+                world.substeps = needed.min(f64::from(MAX_AUTO_SUBSTEPS)) as u32;
                 world.start()?;
             }
         }

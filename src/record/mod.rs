@@ -99,7 +99,7 @@ impl Recorder {
                 }
                 CouplingKind::Contact(contact) => {
                     self.stream.log(path.as_str(), &face_arrows(world, contact))?;
-                    let totals = contact.totals();
+                    let totals = contact.totals(world.frames());
                     self.stream.log(format!("plots/contact/{}", coupling.name), &rerun::Scalars::new([totals.normal, totals.friction]))?;
                 }
                 _ => self.stream.log(path.as_str(), &rerun::LineStrips3D::new([[f32x3(&forces.point1), f32x3(&forces.point2)]]))?,
@@ -127,7 +127,7 @@ fn face_arrows(world: &World, contact: &Contact) -> rerun::Arrows3D {
     let scale = ARROW_LENGTH_PER_WEIGHT * contact.boundary.bounding_radius() / weight;
     let frame = &world.frames()[contact.body];
     let (origins, vectors): (Vec<[f32; 3]>, Vec<[f32; 3]>) = contact
-        .active_faces()
+        .active_faces(world.frames())
         .iter()
         .filter(|face| face.force.norm() > ARROW_THRESHOLD * weight)
         .map(|face| (f32x3(&(frame.position + frame.rotation * face.centroid)), f32x3(&(frame.rotation * face.force * scale))))

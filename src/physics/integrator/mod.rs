@@ -21,7 +21,8 @@ pub enum Substeps {
     /// `n ≥ 1` integrator steps per world step.
     Fixed(u32),
     /// Enough integrator steps to keep each under 0.9 of the binding stable time step at t = 0
-    /// and of every contact's impact resolution τ/10.
+    /// and of every contact's impact resolution τ/10, up to
+    /// [`crate::physics::world::MAX_AUTO_SUBSTEPS`].
     Auto,
 }
 

@@ -43,6 +43,52 @@ pub enum MeshError {
     Topology(String),
 }
 
+/// Up to this many faces share a bounding ball in a [`FaceGroup`].
+pub const GROUP_SIZE: usize = 8;
+
+/// Consecutive faces that lie close together (a part of a median split of the centroids), and
+/// the ball around their centroids: whatever
+/// is out of range of the ball is out of range of every face in it. The centroids are also
+/// kept lane by lane, so that [`FaceGroup::below`] tests the whole group at once (the compiler
+/// turns its loop into vector instructions).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FaceGroup {
+    /// Centre of the ball [m].
+    pub center: Vec3,
+    /// Radius of the ball [m].
+    pub radius: f64,
+    /// Index of the group's first face in [`BoundaryMesh::faces`].
+    pub first: usize,
+    /// Centroid coordinates, one lane per face; unused lanes are masked out by `lanes`.
+    x: [f64; GROUP_SIZE],
+    y: [f64; GROUP_SIZE],
+    z: [f64; GROUP_SIZE],
+    /// Bit i set when lane i holds a face.
+    lanes: u32,
+}
+
+impl FaceGroup {
+    fn new(first: usize, faces: &[Face]) -> Self {
+        let center = faces.iter().map(|f| f.centroid).sum::<Vec3>() / faces.len() as f64;
+        let radius = faces.iter().map(|f| (f.centroid - center).norm()).fold(0.0, f64::max);
+        let lane = |axis: usize| std::array::from_fn(|i| faces.get(i).map_or(0.0, |f| f.centroid[axis]));
+        Self { center, radius, first, x: lane(0), y: lane(1), z: lane(2), lanes: (1 << faces.len()) - 1 }
+    }
+
+    /// The group's faces, a range of [`BoundaryMesh::faces`].
+    pub fn faces(&self) -> std::ops::Range<usize> {
+        self.first..self.first + self.lanes.count_ones() as usize
+    }
+
+    /// Bit i set for each face i of the group with `offset + direction·r_f < limit` [m].
+    #[inline]
+    pub fn below(&self, offset: f64, direction: &Vec3, limit: f64) -> u32 {
+        let distances: [f64; GROUP_SIZE] = std::array::from_fn(|i| offset + direction.x * self.x[i] + direction.y * self.y[i] + direction.z * self.z[i]);
+        let bits = distances.iter().enumerate().fold(0, |bits, (i, d)| if *d < limit { bits | 1 << i } else { bits });
+        bits & self.lanes
+    }
+}
+
 /// A body's boundary as faces, principal frame.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BoundaryMesh {
@@ -50,7 +96,9 @@ pub struct BoundaryMesh {
     pub vertices: Vec<Vec3>,
     /// Counter-clockwise seen from outside.
     pub triangles: Vec<[u32; 3]>,
+    /// Ordered group by group.
     faces: Vec<Face>,
+    groups: Vec<FaceGroup>,
     /// `max |v|` over the vertices [m]: the boundary lies in the ball of this radius about G.
     bounding_radius: f64,
 }
@@ -96,13 +144,21 @@ impl BoundaryMesh {
         if faces.is_empty() {
             return Err(MeshError::ZeroArea);
         }
+        let mut faces = faces;
+        let mut groups = Vec::new();
+        split_into_groups(&mut faces, 0, &mut groups);
         let bounding_radius = vertices.iter().map(|v| v.norm()).fold(0.0, f64::max);
-        Ok(Self { vertices, triangles, faces, bounding_radius })
+        Ok(Self { vertices, triangles, faces, groups, bounding_radius })
     }
 
     /// The faces with positive area.
     pub fn faces(&self) -> &[Face] {
         &self.faces
+    }
+
+    /// The faces in groups of neighbours with their bounding balls.
+    pub fn groups(&self) -> &[FaceGroup] {
+        &self.groups
     }
 
     /// Radius of the ball about G that holds the boundary [m].
@@ -129,6 +185,24 @@ impl BoundaryMesh {
         let to_principal = &body.reference_in_principal;
         Self::new(vertices.iter().map(|v| to_principal.transform_point(&(*v).into()).coords).collect(), triangles)
     }
+}
+
+/// Splits `faces` (starting at index `first` of the whole list) in place at the median of
+/// their centroids along the longest side of their bounds, recursively, until each part holds at
+/// most [`GROUP_SIZE`] faces; appends each part as a group. The parts are compact, so their
+/// bounding balls are small.
+fn split_into_groups(faces: &mut [Face], first: usize, groups: &mut Vec<FaceGroup>) {
+    if faces.len() <= GROUP_SIZE {
+        groups.push(FaceGroup::new(first, faces));
+        return;
+    }
+    let (low, high) = faces.iter().fold((Vec3::repeat(f64::INFINITY), Vec3::repeat(f64::NEG_INFINITY)), |(lo, hi), f| (lo.inf(&f.centroid), hi.sup(&f.centroid)));
+    let axis = (high - low).imax();
+    let middle = faces.len() / 2;
+    faces.select_nth_unstable_by(middle, |a, b| a.centroid[axis].total_cmp(&b.centroid[axis]));
+    let (lower, upper) = faces.split_at_mut(middle);
+    split_into_groups(lower, first, groups);
+    split_into_groups(upper, first + middle, groups);
 }
 
 /// Where a point is relative to a [`Surface`].
@@ -181,11 +255,16 @@ impl Surface {
         self.reach
     }
 
+    /// Whether `point` [m] is within `margin` [m] of the surface's bounding box.
+    pub fn near_bounds(&self, point: &Vec3, margin: f64) -> bool {
+        let outside_box = (self.low - point).sup(&(point - self.high)).sup(&Vec3::zeros());
+        outside_box.norm_squared() <= margin * margin
+    }
+
     /// The boundary's point nearest to `point` (surface frame) [m], if `point` is within `range`
     /// of the boundary's bounding box; `None` means farther than `range` from the boundary.
     pub fn nearest(&self, point: &Vec3, range: f64) -> Option<SurfacePoint> {
-        let outside_box = (self.low - point).sup(&(point - self.high)).sup(&Vec3::zeros());
-        if outside_box.norm_squared() > range * range {
+        if !self.near_bounds(point, range) {
             return None;
         }
         let query = Point::from(*point);

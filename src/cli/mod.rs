@@ -60,12 +60,23 @@ fn load(path: &Path) -> anyhow::Result<Scene> {
     Ok(scene)
 }
 
-/// Warns once when the time step exceeds the binding stable time step.
+/// Warns once when the integrator step exceeds the binding stable time step of the world's
+/// integrator; for the adaptive one, notes that a stiff coupling will hold its steps.
 fn warn_if_unstable(world: &tether::physics::world::World) {
     let limits = tether::physics::stability::limits(world);
-    if let Some(binding) = tether::physics::stability::binding(&limits).filter(|b| world.step_size() > b.dt) {
+    let Some(binding) = tether::physics::stability::binding(&limits).filter(|b| world.step_size() > b.dt) else { return };
+    let name = world.integrator.name();
+    if world.integrator.is_adaptive() {
         eprintln!(
-            "warning: the integrator step {:.3e} s exceeds the stable time step {:.3e} s set by {}: the run will likely diverge (lower dt or set substeps: Auto)",
+            "note: {} holds {name}'s steps near {:.3e} s (stiff for an explicit scheme): expect about {:.0} steps per integrator step of {:.3e} s",
+            binding.describe(world),
+            binding.dt,
+            (world.step_size() / binding.dt).ceil(),
+            world.step_size()
+        );
+    } else {
+        eprintln!(
+            "warning: the integrator step {:.3e} s exceeds the stable time step {:.3e} s of {name}, set by {}: the run will likely diverge (lower dt or set substeps: Auto)",
             world.step_size(),
             binding.dt,
             binding.describe(world)

@@ -15,6 +15,11 @@ pub fn finite<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
     check(f64::deserialize(d)?)
 }
 
+/// A plain finite number for an optional field (absent fields take the serde default, `None`).
+pub fn finite_some<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
+    finite(d).map(Some)
+}
+
 pub fn finite3<'de, D: Deserializer<'de>>(d: D) -> Result<[f64; 3], D::Error> {
     let v = <[f64; 3]>::deserialize(d)?;
     for x in v {

@@ -47,7 +47,9 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
 pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let source = Source::new(text);
     let label = path.display().to_string();
-    let file: SceneFile = ron::Options::default().from_str(text).map_err(|e| syntax_error(&source, &label, &e))?;
+    // Optional sections (`adaptive: (…)`) are written without `Some(…)`.
+    let options = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
+    let file: SceneFile = options.from_str(text).map_err(|e| syntax_error(&source, &label, &e))?;
     let built = build::build(&file).map_err(|p| placed(&source, &label, p))?;
     Ok(Scene { path: path.to_path_buf(), file, world: built.world, warnings: built.warnings })
 }

@@ -330,3 +330,21 @@ fn rotation_step_near_one_radian() {
         }
     }
 }
+
+/// The adaptive settings are checked where they are written, and a scene whose integrator does
+/// not use them says so.
+#[test]
+fn adaptive_settings_are_checked_where_they_are_written() {
+    let parse = |text: &str| tether::scene::parse(text, std::path::Path::new("bad.ron"));
+    let body = "bodies: [Body(name: \"b\", master: Node(position: (0, 0, 0), mass: 1.0, inertia: Inertia(xx: 1, yy: 1, zz: 1)), shape: Sphere(radius: 0.1))]";
+    let error = |text: String| parse(&text).err().map(|e| e.to_string()).unwrap_or_default();
+    assert_eq!(error(format!("Scene(dt: 0.01, integrator: dopri45,\n  adaptive: (rtol: 0.0), {body})")), "bad.ron:2:14: adaptive rtol must be > 0 and < 1, got 0");
+    assert_eq!(error(format!("Scene(dt: 0.01, integrator: dopri45,\n  adaptive: (atol: -1e-9), {body})")), "bad.ron:2:14: adaptive atol must be > 0, got -0.000000001");
+    assert_eq!(error(format!("Scene(dt: 0.01, integrator: dopri45,\n  adaptive: (max_step: 0), {body})")), "bad.ron:2:14: adaptive max_step must be > 0 s, got 0");
+    assert!(error(format!("Scene(dt: 0.01, adaptive: (rtl: 1e-6), {body})")).starts_with("bad.ron:1:"), "unknown field");
+    assert!(error(format!("Scene(dt: 0.01, integrator: rk5, {body})")).starts_with("bad.ron:1:"), "unknown integrator");
+    let scene = parse(&format!("Scene(dt: 0.01, integrator: rk4, adaptive: (rtol: 1e-8), {body})")).unwrap();
+    assert_eq!(scene.warnings, ["the adaptive settings are for integrator dopri45; rk4 ignores them"]);
+    let scene = parse(&format!("Scene(dt: 0.01, integrator: dopri45, adaptive: (rtol: 1e-8, max_step: 1e-3), {body})")).unwrap();
+    assert_eq!((scene.world.tolerances().rtol, scene.world.tolerances().atol, scene.world.tolerances().max_step), (1e-8, 1e-9, Some(1e-3)));
+}

@@ -3,6 +3,7 @@
 mod check;
 mod forces;
 mod record;
+mod study;
 
 use anyhow::Context as _;
 use clap::{Parser, Subcommand};
@@ -26,6 +27,9 @@ enum Command {
     },
     /// Run a scene headless and write a Rerun recording (.rrd).
     Record(record::RecordArgs),
+    /// Run the scene with each integrator at a ladder of time steps against a reference run;
+    /// print the accuracy-versus-cost table and write it as CSV, Markdown and a PNG chart.
+    Study(study::StudyArgs),
     /// Print the forces of the initial state.
     Forces {
         /// Scene file (.ron).
@@ -48,6 +52,7 @@ pub fn run(cli: Cli) -> anyhow::Result<u8> {
             record::Outcome::Interrupted => INTERRUPTED,
         }),
         Command::Forces { scene, json } => forces::run(&load(&scene)?, json).map(|()| 0),
+        Command::Study(args) => study::run(&args).map(|()| 0),
     }
 }
 

@@ -87,7 +87,7 @@ pub fn write(study: &Study, path: &Path) -> Result<(), StudyError> {
             .draw_series(LineSeries::new(points.iter().copied(), style))
             .map_err(|e| draw(&e))?
             .label(integrator.name())
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 30, y)], style));
+            .legend(move |(x, y)| PathElement::new(vec![(x - 5, y), (x + 18, y)], style));
         chart.draw_series(points.iter().map(|&p| Circle::new(p, 6, colour.filled()))).map_err(|e| draw(&e))?;
     }
     chart

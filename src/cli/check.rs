@@ -2,7 +2,8 @@
 
 use std::fmt::Write as _;
 use tether::physics::body::Support;
-use tether::physics::coupling::{CouplingKind, ElasticLaw, Endpoint};
+use tether::physics::coupling::contact::Opposing;
+use tether::physics::coupling::{Contact, CouplingKind, ElasticLaw, Endpoint};
 use tether::physics::stability;
 use tether::physics::world::World;
 use tether::physics::{Mat3, Vec3};
@@ -44,14 +45,16 @@ fn report(world: &World, label: &str) -> String {
     for (coupling, forces) in world.couplings.iter().zip(world.coupling_forces()) {
         let [end1, end2] = coupling.ends();
         let _ = writeln!(out, "\ncoupling \"{}\" ({})", coupling.name, coupling.kind_name());
-        let _ = writeln!(out, "  end 1 {}   end 2 {}", end(world, &end1), end(world, &end2));
         let chord = (forces.point2 - forces.point1).norm();
+        let ends = format!("  end 1 {}   end 2 {}", end(world, &end1), end(world, &end2));
         match &coupling.kind {
             CouplingKind::SpringDamper(spring) => {
+                let _ = writeln!(out, "{ends}");
                 let _ = writeln!(out, "  law {}, damping {} N·s/m", law(&spring.law), spring.damping);
                 let _ = writeln!(out, "  length {chord:.6} m, tension {:.6} N", forces.tension);
             }
             CouplingKind::Catenary(line) => {
+                let _ = writeln!(out, "{ends}");
                 let _ = writeln!(out, "  λ0 = {} kg/m, L_eq = {} m, D = {} N/m (EA = {} N)", line.mass_per_length, line.length, line.stiffness, line.stiffness * line.length);
                 if let Some(state) = line.state() {
                     let (t1, t2) = state.end_tensions();
@@ -62,6 +65,7 @@ fn report(world: &World, label: &str) -> String {
                     );
                 }
             }
+            CouplingKind::Contact(contact) => contact_report(&mut out, world, contact),
         }
     }
     let limits = stability::limits(world);
@@ -84,6 +88,10 @@ fn report(world: &World, label: &str) -> String {
             let _ = writeln!(out, "  nothing limits the time step");
         }
     }
+    for impact in stability::impact_limits(world) {
+        let verdict = if world.step_size() <= impact.dt { "resolved" } else { "UNDER-RESOLVED: the rebound will be wrong; lower dt or add substeps" };
+        let _ = writeln!(out, "  {:<40} {:.6e} s; the integrator step is {verdict}", impact.describe(world), impact.dt);
+    }
     let e = world.energy();
     let _ = writeln!(
         out,
@@ -101,6 +109,35 @@ fn adaptive(world: &World) -> String {
     let t = world.tolerances();
     let max_step = t.max_step.map_or_else(|| "the integrator step".to_string(), |m| format!("{m} s"));
     format!(" (rtol {:e}, atol {:e}, max step {max_step})", t.rtol, t.atol)
+}
+
+fn contact_report(out: &mut String, world: &World, contact: &Contact) {
+    let body = &world.bodies[contact.body];
+    let against = match &contact.against {
+        Opposing::Planes(planes) if planes.len() == 1 => format!("the plane through {} m with normal {}", v(&planes[0].point), v(&planes[0].normal)),
+        Opposing::Planes(planes) => format!("{} walls of the domain box", planes.len()),
+        Opposing::Body { body, .. } => format!("body \"{}\"", world.bodies[*body].name),
+    };
+    let boundary = &contact.boundary;
+    let _ = writeln!(out, "  faces of body \"{}\" ({} faces, {:.6} m²) against {against}", body.name, boundary.faces().len(), boundary.area());
+    let law = &contact.law;
+    let _ = writeln!(
+        out,
+        "  k1 = {} N/m³, k2 = {} N·s/m³, d0 = {} m, μ = {}, k_t = {} s/m, expected area {:.6e} m²",
+        law.stiffness, law.damping, law.range, law.friction, law.friction_sharpness, contact.expected_area
+    );
+    let mass = |i: usize| if world.bodies[i].is_kinematic() { 0.0 } else { world.bodies[i].inverse_mass };
+    let inverse_mass = mass(contact.body) + contact.other_body().map_or(0.0, mass);
+    let totals = contact.totals();
+    let _ = writeln!(
+        out,
+        "  stopping time τ = {:.6e} s; now {} faces in contact over {:.6e} m², normal force {:.6} N, friction {:.6} N",
+        contact.stopping_time(inverse_mass),
+        contact.active_faces().len(),
+        totals.area,
+        totals.normal,
+        totals.friction
+    );
 }
 
 /// `(x, y, z)` with 6 decimals; `+ 0.0` prints −0 as 0.

@@ -5,7 +5,13 @@
 //! the attachment points included: `1/m_eff = Σ_ends (1/m + (r × d)ᵀ I⁻¹ (r × d))` [1/kg]
 //! (world ends and kinematic bodies add nothing), and `β = k_d/(2 m_eff)` [1/s], `ζ = β/ω`.
 //! For a catenary `k` is the largest eigenvalue of the line's tangent stiffness and `d` its
-//! eigenvector; it has no damper.
+//! eigenvector; it has no damper. For a contact, the oscillator of stiffness `k1 A` and damping
+//! `k2 A` over the effective mass of the two bodies' translation, `A` the larger of the
+//! expected contact area and the area in contact now; and friction, which near rest is a damper
+//! of `c = μ k_t Σ|f_n|` [N·s/m] (an oscillator with `k = 0`: `dt ≤ 2 m_e/c` for the leapfrog).
+//! Stability is not enough for an impact: PHYSICS.md §4 asks for a step well below the
+//! stopping time τ, and [`impact_limits`] gives `τ/10` per contact (stability alone would allow
+//! `4τ/π`); `substeps: Auto` honours both.
 //!
 //! - Leapfrog, leapfrog2, splitting (the same central difference in translation, dampers seeing
 //!   `v(t−½dt)`): stable for `dt ≤ 2/(√(ω² + β²) + β)`, which is `2(√(1+ζ²) − ζ)/ω`
@@ -22,6 +28,7 @@
 //!   divergence check stops; the leapfrog family has no such transient.
 //! - Rotation, fixed-step schemes: `|ω| dt < 1` (Radioss aborts beyond).
 
+use super::coupling::contact::estimator::STEPS_PER_STOPPING_TIME;
 use super::coupling::{BodyFrame, CouplingKind, Endpoint};
 use super::integrator::Integrator;
 use super::world::World;
@@ -35,6 +42,8 @@ pub enum Limiter {
     Coupling(usize),
     /// Body index: its spin.
     Rotation(usize),
+    /// Coupling index of a contact: the step that resolves its impact (not a stability limit).
+    Impact(usize),
 }
 
 /// A stable time step [s] and what sets it.
@@ -45,11 +54,12 @@ pub struct Limit {
 }
 
 impl Limit {
-    /// "coupling \"name\"" or "rotation of body \"name\"".
+    /// "coupling \"name\"", "rotation of body \"name\"" or "impact of contact \"name\" (τ/10)".
     pub fn describe(&self, world: &World) -> String {
         match self.limiter {
             Limiter::Coupling(i) => format!("coupling \"{}\"", world.couplings[i].name),
             Limiter::Rotation(i) => format!("rotation of body \"{}\"", world.bodies[i].name),
+            Limiter::Impact(i) => format!("impact of contact \"{}\" (τ/10)", world.couplings[i].name),
         }
     }
 }
@@ -132,6 +142,13 @@ pub fn limits(world: &World) -> Vec<Limit> {
                 let inverse = inverse_mass_along(world, frames, &end1, &d) + inverse_mass_along(world, frames, &end2, &d);
                 oscillator_limit(world.integrator, eigen.eigenvalues[largest], 0.0, inverse)
             }
+            CouplingKind::Contact(contact) => {
+                let inverse: f64 = [Some(contact.body), contact.other_body()].into_iter().flatten().map(|i| translational_inverse_mass(world, i)).sum();
+                let area = contact.limit_area();
+                let normal = oscillator_limit(world.integrator, contact.law.stiffness * area, contact.law.damping * area, inverse);
+                let friction = contact.law.friction * contact.law.friction_sharpness * contact.totals().normal;
+                normal.min(oscillator_limit(world.integrator, 0.0, friction, inverse))
+            }
         };
         if dt.is_finite() {
             limits.push(Limit { limiter: Limiter::Coupling(index), dt });
@@ -148,9 +165,33 @@ pub fn limits(world: &World) -> Vec<Limit> {
     limits
 }
 
+/// The time step that resolves an impact of each contact, `τ/10` [s] (PHYSICS.md §4).
+pub fn impact_limits(world: &World) -> Vec<Limit> {
+    let inverse_mass = |i: usize| translational_inverse_mass(world, i);
+    world
+        .couplings
+        .iter()
+        .enumerate()
+        .filter_map(|(index, coupling)| match &coupling.kind {
+            CouplingKind::Contact(contact) => {
+                let inverse = inverse_mass(contact.body) + contact.other_body().map_or(0.0, inverse_mass);
+                Some(Limit { limiter: Limiter::Impact(index), dt: contact.stopping_time(inverse) / STEPS_PER_STOPPING_TIME })
+            }
+            _ => None,
+        })
+        .filter(|limit| limit.dt.is_finite())
+        .collect()
+}
+
 /// The smallest limit, if any.
 pub fn binding(limits: &[Limit]) -> Option<Limit> {
     limits.iter().copied().min_by(|a, b| a.dt.total_cmp(&b.dt))
+}
+
+/// `1/m` [1/kg] of a body that responds to forces, 0 for a kinematic one.
+fn translational_inverse_mass(world: &World, index: usize) -> f64 {
+    let body = &world.bodies[index];
+    if body.is_kinematic() { 0.0 } else { body.inverse_mass }
 }
 
 /// `1/m + (r × d)ᵀ I⁻¹ (r × d)` of the body an end is on, for a unit force direction `d`.

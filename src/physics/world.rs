@@ -131,9 +131,11 @@ impl World {
         world.coupling_forces = vec![CouplingForces::default(); world.couplings.len()];
         world.kinematic_bodies = (0..n).filter(|&i| world.bodies[i].is_kinematic()).collect();
         world.start()?;
-        world.initial_limit = stability::binding(&stability::limits(&world));
+        let limits = stability::limits(&world);
+        world.initial_limit = stability::binding(&limits);
+        let impacts = stability::impact_limits(&world);
         let adaptive = world.integrator.is_adaptive();
-        if let (Substeps::Auto, Some(limit), false) = (world.substep_setting, world.initial_limit, adaptive) {
+        if let (Substeps::Auto, Some(limit), false) = (world.substep_setting, stability::binding(&[limits, impacts].concat()), adaptive) {
             let needed = (world.dt / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil();
             if needed > 1.0 {
                 world.substeps = needed.min(f64::from(u32::MAX)) as u32;

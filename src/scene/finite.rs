@@ -15,9 +15,8 @@ pub fn finite<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
     check(f64::deserialize(d)?)
 }
 
-/// A plain finite number for an optional field (absent fields take the serde default, `None`).
-pub fn finite_some<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
-    finite(d).map(Some)
+pub fn finite_option<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
+    Option::<f64>::deserialize(d)?.map(check::<D::Error>).transpose()
 }
 
 pub fn finite3<'de, D: Deserializer<'de>>(d: D) -> Result<[f64; 3], D::Error> {

@@ -6,6 +6,7 @@
 pub mod build;
 pub mod file;
 mod finite;
+pub mod mesh_file;
 pub mod source;
 
 use crate::physics::world::World;
@@ -50,15 +51,20 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     // Optional sections (`adaptive: (…)`) are written without `Some(…)`.
     let options = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
     let file: SceneFile = options.from_str(text).map_err(|e| syntax_error(&source, &label, &e))?;
-    let built = build::build(&file).map_err(|p| placed(&source, &label, p))?;
+    let built = build::build(&file, directory(path)).map_err(|p| placed(&source, &label, p))?;
     Ok(Scene { path: path.to_path_buf(), file, world: built.world, warnings: built.warnings })
 }
 
 /// Builds the world again from `scene.file` (after a setting was changed, e.g. the time step
 /// from the command line); errors point at the scene's path.
 pub fn rebuild(scene: Scene) -> Result<Scene, SceneError> {
-    let built = build::build(&scene.file).map_err(|p| SceneError { path: scene.path.display().to_string(), line: 1, col: 1, message: p.message })?;
+    let built = build::build(&scene.file, directory(&scene.path)).map_err(|p| SceneError { path: scene.path.display().to_string(), line: 1, col: 1, message: p.message })?;
     Ok(Scene { world: built.world, warnings: built.warnings, ..scene })
+}
+
+/// The folder of a scene file, where its mesh files are looked up.
+fn directory(path: &Path) -> &Path {
+    path.parent().unwrap_or(Path::new("."))
 }
 
 /// A parser error, with the body or coupling it falls in when there is one.

@@ -76,7 +76,8 @@ pub enum Substeps {
     /// `n ≥ 1` integrator steps per world step.
     Fixed(u32),
     /// Enough integrator steps to keep each under 0.9 of the binding stable time step of the
-    /// scene's integrator at t = 0 (one for the adaptive `dopri45`).
+    /// scene's integrator at t = 0 and of every contact's impact resolution τ/10 (one for the
+    /// adaptive `dopri45`, whose steps adapt).
     Auto,
 }
 

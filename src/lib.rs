@@ -2,7 +2,8 @@
 //!
 //! The crate is split along one rule: [`physics`] is pure numerics with no GUI or viewer
 //! dependency; [`scene`] turns a RON file into a [`physics::World`]; [`record`] is the Rerun
-//! adapter that reads a world and writes `.rrd` recordings. The `tether` binary's command line
+//! adapter that reads a world and writes `.rrd` recordings; [`study`] measures the integrators
+//! against a reference run and writes tables and a chart. The `tether` binary's command line
 //! lives beside `main.rs`.
 //!
 //! Units are SI throughout (`../shared/PHYSICS.md` header):
@@ -21,3 +22,4 @@
 pub mod physics;
 pub mod record;
 pub mod scene;
+pub mod study;

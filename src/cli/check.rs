@@ -17,11 +17,12 @@ fn report(world: &World, label: &str) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "{label}: ok — {} bodies, {} couplings, dt = {} s, integrator {:?}, {} substep(s) of {:.6e} s",
+        "{label}: ok — {} bodies, {} couplings, dt = {} s, integrator {}{}, {} substep(s) of {:.6e} s",
         world.bodies.len(),
         world.couplings.len(),
         world.dt(),
-        world.integrator,
+        world.integrator.name(),
+        adaptive(world),
         world.substeps(),
         world.step_size()
     );
@@ -68,11 +69,17 @@ fn report(world: &World, label: &str) -> String {
         }
     }
     let limits = stability::limits(world);
-    let _ = writeln!(out, "\nstable time step ({:?}):", world.integrator);
+    let adaptive = world.integrator.is_adaptive();
+    let title = if adaptive { "stiffness limit (dopri45 adapts its step; explicit steps are held below these)" } else { "stable time step" };
+    let _ = writeln!(out, "\n{title} ({}):", world.integrator.name());
     for limit in &limits {
         let _ = writeln!(out, "  {:<40} {:.6e} s", limit.describe(world), limit.dt);
     }
     match stability::binding(&limits) {
+        Some(binding) if adaptive => {
+            let verdict = if world.step_size() <= binding.dt { "does not hold it back" } else { "holds its steps near this" };
+            let _ = writeln!(out, "  binding: {} at {:.6e} s; with the integrator step {:.6e} s it {verdict}", binding.describe(world), binding.dt, world.step_size());
+        }
         Some(binding) => {
             let verdict = if world.step_size() <= binding.dt { "stable" } else { "UNSTABLE: lower dt or add substeps" };
             let _ = writeln!(out, "  binding: {} at {:.6e} s; the integrator step {:.6e} s is {verdict}", binding.describe(world), binding.dt, world.step_size());
@@ -92,6 +99,16 @@ fn report(world: &World, label: &str) -> String {
         e.kinetic + 0.0, e.gravity + 0.0, e.elastic + 0.0, e.total() + 0.0
     );
     out
+}
+
+/// ` (rtol …, atol …, max step …)` for the adaptive scheme, nothing for the others.
+fn adaptive(world: &World) -> String {
+    if !world.integrator.is_adaptive() {
+        return String::new();
+    }
+    let t = world.tolerances();
+    let max_step = t.max_step.map_or_else(|| "the integrator step".to_string(), |m| format!("{m} s"));
+    format!(" (rtol {:e}, atol {:e}, max step {max_step})", t.rtol, t.atol)
 }
 
 fn contact_report(out: &mut String, world: &World, contact: &Contact) {

@@ -32,7 +32,8 @@ impl EnergyReport {
     }
 }
 
-/// Running integrals of dissipated power and external power, by the trapezoid rule.
+/// Running integrals of dissipated power and external power: by the trapezoid rule for the
+/// one-evaluation schemes, by the scheme's own weights for the Runge–Kutta ones.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct EnergyLedger {
     pub dissipated: f64,
@@ -45,6 +46,13 @@ impl EnergyLedger {
     /// Starts the integrals with the powers at t = 0 [W].
     pub fn new(dissipated_power: f64, external_power: f64) -> Self {
         Self { dissipated: 0.0, external_work: 0.0, dissipated_power, external_power }
+    }
+
+    /// Adds work integrated elsewhere [J] (the Runge–Kutta schemes integrate the powers with
+    /// their own weights).
+    pub fn add(&mut self, dissipated: f64, external_work: f64) {
+        self.dissipated += dissipated;
+        self.external_work += external_work;
     }
 
     /// Advances by `dt` [s] to the new powers [W].

@@ -1,20 +1,23 @@
 //! The world: gravity, bodies, couplings and time, and the stages of one step.
 //!
-//! [`World::step`] runs, in order (the integrator decides how velocities enter, and may run the
-//! per-body stages 1–4 in one pass over the bodies):
-//! 1. *advance*: the integrator moves positions and orientations by `dt`;
-//! 2. *prescribe*: kinematic bodies are put where their motion says;
+//! [`World::step`] advances `dt` in `substeps` integrator steps, each followed by the *health*
+//! check (for the adaptive `dopri45`, each accepted step). An integrator step runs, in order (the
+//! integrator decides how velocities enter, and may run the per-body stages 1–4 in one pass
+//! over the bodies; the Runge–Kutta schemes run stages 2–6 once per stage):
+//! 1. *advance*: the integrator moves positions and orientations;
+//! 2. *prescribe*: kinematic bodies are put where their motion says at the (stage) time;
 //! 3. *predict*: each body's kinematics for the force evaluation ([`BodyFrame`]);
 //! 4. *clear* the loads and add *gravity*;
 //! 5. *couplings*: each coupling's forces, kept per coupling and summed into the bodies' loads;
-//! 6. *accelerations* from Euler's equations in the principal frame;
-//! 7. *ledger*: dissipated and external work advance by the trapezoid rule.
+//! 6. *accelerations* (or, for the Runge–Kutta schemes, the rates of the integrated variables);
+//! 7. *ledger*: dissipated and external work advance with the scheme's weights.
 
 use super::body::{BodyState, RigidBody, Support, prescribed_state};
 use super::coupling::{BodyFrame, Coupling, CouplingError, CouplingForces, Load};
 use super::dynamics::Acceleration;
 use super::energy::{EnergyLedger, EnergyReport};
-use super::integrator::{Integrator, Substeps, Timing, leapfrog, leapfrog2};
+use super::integrator::runge_kutta::Workspace;
+use super::integrator::{Integrator, Substeps, Timing, Tolerances, dopri45, leapfrog, leapfrog2, rk4, splitting};
 use super::stability::{self, Limit};
 use super::Vec3;
 
@@ -50,21 +53,28 @@ pub struct World {
     pub couplings: Vec<Coupling>,
     pub integrator: Integrator,
     dt: f64,
+    tolerances: Tolerances,
     /// The substep setting, and the integrator steps per world step it resolved to.
     substep_setting: Substeps,
     substeps: u32,
     time: f64,
     steps: u64,
+    /// Integrator steps accepted, and (adaptive schemes) rejected, since t = 0.
+    integrator_steps: u64,
+    rejected_steps: u64,
     /// States at t = 0 (start of prescribed motions, and reset).
     pub(crate) initial_states: Vec<BodyState>,
     /// Indices of the kinematic bodies.
     kinematic_bodies: Vec<usize>,
-    /// The integrator's state: for the leapfrog, positions at t and velocities at t − ½dt.
+    /// The integrator's state: for the leapfrogs, positions at t and velocities at t − ½dt;
+    /// synchronised for the others.
     pub(crate) states: Vec<BodyState>,
     /// Body kinematics at the last force evaluation (t), world axes.
     pub(crate) frames: Vec<BodyFrame>,
     pub(crate) loads: Vec<Load>,
     pub(crate) accelerations: Vec<Acceleration>,
+    /// Stage buffers of the Runge–Kutta schemes (empty for the others).
+    pub(crate) runge_kutta: Workspace,
     pub(crate) coupling_forces: Vec<CouplingForces>,
     pub(crate) ledger: EnergyLedger,
     /// Kinetic and gravity energy of the bodies at the current time [J], from the integrator.
@@ -98,6 +108,7 @@ impl World {
             couplings,
             integrator: timing.integrator,
             dt: timing.dt,
+            tolerances: timing.tolerances,
             substep_setting: timing.substeps,
             substeps: match timing.substeps {
                 Substeps::Fixed(n) => n.max(1),
@@ -105,6 +116,8 @@ impl World {
             },
             time: 0.0,
             steps: 0,
+            integrator_steps: 0,
+            rejected_steps: 0,
             // Filled from `initial_states` by `start`.
             states: Vec::new(),
             initial_states,
@@ -112,6 +125,7 @@ impl World {
             frames: vec![BodyFrame { position: Vec3::zeros(), rotation: super::Mat3::identity(), velocity: Vec3::zeros(), angular_velocity: Vec3::zeros() }; n],
             loads: vec![Load::default(); n],
             accelerations: vec![Acceleration::default(); n],
+            runge_kutta: Workspace::default(),
             coupling_forces: Vec::new(),
             ledger: EnergyLedger::default(),
             body_energy: (0.0, 0.0),
@@ -125,7 +139,8 @@ impl World {
         let limits = stability::limits(&world);
         world.initial_limit = stability::binding(&limits);
         let impacts = stability::impact_limits(&world);
-        if let (Substeps::Auto, Some(limit)) = (world.substep_setting, stability::binding(&[limits, impacts].concat())) {
+        let adaptive = world.integrator.is_adaptive();
+        if let (Substeps::Auto, Some(limit), false) = (world.substep_setting, stability::binding(&[limits, impacts].concat()), adaptive) {
             let needed = (world.dt / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil();
             if needed > 1.0 {
                 world.substeps = needed.min(f64::from(MAX_AUTO_SUBSTEPS)) as u32;
@@ -142,6 +157,9 @@ impl World {
         self.states.clone_from(&self.initial_states);
         match self.integrator {
             Integrator::Leapfrog | Integrator::Leapfrog2 => leapfrog::start(self),
+            Integrator::Splitting => splitting::start(self),
+            Integrator::Rk4 => rk4::start(self),
+            Integrator::Dopri45 => dopri45::start(self),
         }
     }
 
@@ -155,25 +173,41 @@ impl World {
             match self.integrator {
                 Integrator::Leapfrog => leapfrog::step(self, leapfrog::Gyroscopic::Lagged)?,
                 Integrator::Leapfrog2 => leapfrog2::step(self)?,
+                Integrator::Splitting => splitting::step(self)?,
+                Integrator::Rk4 => rk4::step(self)?,
+                Integrator::Dopri45 => {
+                    let end = self.time + self.step_size();
+                    while !dopri45::step(self, end)? {
+                        self.check_health()?;
+                    }
+                }
             }
             self.check_health()?;
+            if !self.integrator.is_adaptive() {
+                self.integrator_steps += 1;
+            }
         }
         self.steps += 1;
         Ok(())
     }
 
-    /// Stage *health*: every body's state is finite, and the energy balance has not drifted by
-    /// more than [`DIVERGENCE_FACTOR`] times the energy budget (`|kinetic| + |gravity| +
-    /// |elastic|` at t = 0, the energy of a fall across the scene, and the work put in by
-    /// prescribed motions since). An unstable step grows
-    /// the energy geometrically, so this stops a blow-up within a few steps of its start and
-    /// long before anything overflows.
+    /// Stage *health*: every body's state is finite, and its mechanical energy less the work
+    /// put in by prescribed motions has not drifted by more than [`DIVERGENCE_FACTOR`] times the
+    /// energy budget (`|kinetic| + |gravity| + |elastic|` at t = 0, the energy of a fall across
+    /// the scene, and the work put in by prescribed motions since). An unstable step grows the
+    /// energy geometrically, so this stops a blow-up within a few steps of its start and long
+    /// before anything overflows.
+    ///
+    /// The dissipated work is left out on both sides: dampers remove at most the budget, a
+    /// blow-up with a damper dissipates as fast as it grows, and a scheme that resolves a damper
+    /// poorly at a large but stable step (RK4 near its damped limit, where the physical decay
+    /// per step is far faster than the scheme's) books more dissipation than its bounded state
+    /// loses, which is inaccuracy, not divergence.
     fn check_health(&self) -> Result<(), StepError> {
         let energy = self.energy();
         let start = &self.initial_energy;
-        // Not the dissipated work: a blow-up with a damper dissipates as fast as it grows.
         let budget = start.kinetic.abs() + start.gravity.abs() + start.elastic.abs() + self.fall_energy + energy.external_work.abs();
-        let drift = (energy.balance() - start.balance()).abs();
+        let drift = (energy.total() - energy.external_work - start.total()).abs();
         if drift <= DIVERGENCE_FACTOR * budget.max(f64::MIN_POSITIVE) {
             return Ok(());
         }
@@ -184,18 +218,32 @@ impl World {
             let s = &self.states[i];
             !(s.position.iter().chain(s.velocity.iter()).chain(s.angular_velocity.iter()).chain(s.orientation.coords.iter()).all(|x| x.is_finite()))
         });
-        let (body, cause) = match not_finite {
-            Some(i) => (i, "has a non-finite state".to_string()),
-            None => {
-                let most_energetic = dynamic().max_by(|&a, &b| self.kinetic_energy(a).total_cmp(&self.kinetic_energy(b))).unwrap_or(0);
-                (most_energetic, format!("carries the most kinetic energy as the energy balance drifts by {drift:.3e} J (budget {budget:.3e} J)"))
-            }
-        };
+        Err(match not_finite {
+            Some(i) => self.diverged(i, "has a non-finite state".to_string()),
+            None => self.diverged(
+                self.most_energetic_body(),
+                format!("carries the most kinetic energy as the energy drifts by {drift:.3e} J (budget {budget:.3e} J)"),
+            ),
+        })
+    }
+
+    /// The body that responds to forces with the most kinetic energy (0 if none does).
+    fn most_energetic_body(&self) -> usize {
+        (0..self.bodies.len()).filter(|&i| !self.bodies[i].is_kinematic()).max_by(|&a, &b| self.kinetic_energy(a).total_cmp(&self.kinetic_energy(b))).unwrap_or(0)
+    }
+
+    /// An adaptive step that had to shrink to `step` [s], below round-off of the time.
+    pub(crate) fn stalled(&self, step: f64) -> StepError {
+        self.diverged(self.most_energetic_body(), format!("carries the most kinetic energy as the adaptive step shrinks to {step:.3e} s (too stiff, or blown up)"))
+    }
+
+    /// [`StepError::Diverged`] naming body `body` and the binding stable time step at t = 0.
+    fn diverged(&self, body: usize, cause: String) -> StepError {
         let advice = match self.initial_limit {
             Some(limit) => format!("the stable time step is {:.3e} s, set by {} (step {:.3e} s)", limit.dt, limit.describe(self), self.step_size()),
             None => format!("no coupling limits the time step (step {:.3e} s)", self.step_size()),
         };
-        Err(StepError::Diverged { time: self.time, body: self.bodies.get(body).map_or_else(String::new, |b| b.name.clone()), cause, advice })
+        StepError::Diverged { time: self.time, body: self.bodies.get(body).map_or_else(String::new, |b| b.name.clone()), cause, advice }
     }
 
     /// `Σ m |g| ℓ` [J], ℓ the diagonal of the box around the bodies' centres of mass and the
@@ -221,7 +269,7 @@ impl World {
 
     /// Restarts from t = 0 with the current parameters; on error the world is unchanged.
     pub fn reset(&mut self) -> Result<(), StepError> {
-        let timing = Timing { dt: self.dt, integrator: self.integrator, substeps: self.substep_setting };
+        let timing = Timing { dt: self.dt, integrator: self.integrator, substeps: self.substep_setting, tolerances: self.tolerances };
         *self = Self::new(self.gravity, self.bodies.clone(), self.couplings.clone(), self.initial_states.clone(), timing)?;
         Ok(())
     }
@@ -241,6 +289,30 @@ impl World {
         self.dt
     }
 
+    /// Integrator steps accepted since t = 0 (for `dopri45`, its adaptive steps).
+    pub fn integrator_steps(&self) -> u64 {
+        self.integrator_steps
+    }
+
+    /// Adaptive steps rejected since t = 0 (always 0 for the fixed-step schemes).
+    pub fn rejected_steps(&self) -> u64 {
+        self.rejected_steps
+    }
+
+    /// Counts one adaptive step, accepted or rejected.
+    pub(crate) fn count_integrator_step(&mut self, rejected: bool) {
+        if rejected {
+            self.rejected_steps += 1;
+        } else {
+            self.integrator_steps += 1;
+        }
+    }
+
+    /// The adaptive scheme's settings.
+    pub fn tolerances(&self) -> Tolerances {
+        self.tolerances
+    }
+
     /// Integrator steps per world step.
     pub fn substeps(&self) -> u32 {
         self.substeps
@@ -253,9 +325,7 @@ impl World {
 
     /// State of body `index` at the current time, velocities included.
     pub fn state(&self, index: usize) -> BodyState {
-        match self.integrator {
-            Integrator::Leapfrog | Integrator::Leapfrog2 => leapfrog::synchronized_state(self, index),
-        }
+        if self.integrator.is_staggered() { leapfrog::synchronized_state(self, index) } else { self.states[index] }
     }
 
     /// Load (force and moment about G, world) on body `index` at the current time: couplings,
@@ -283,11 +353,11 @@ impl World {
 
     // ----- stages, shared by the integrators -----
 
-    /// Stage *prescribe*: kinematic bodies to their pose and velocity at the current time.
-    pub(crate) fn prescribe_kinematic_bodies(&mut self) {
+    /// Stage *prescribe*: kinematic bodies to their pose and velocity at time `time` [s].
+    pub(crate) fn prescribe_kinematic_bodies(&mut self, time: f64) {
         for &index in &self.kinematic_bodies {
             if let Support::Kinematic(motion) = &self.bodies[index].support {
-                self.states[index] = prescribed_state(motion, &self.initial_states[index], self.time);
+                self.states[index] = prescribed_state(motion, &self.initial_states[index], time);
             }
         }
     }
@@ -327,6 +397,11 @@ impl World {
 
     pub(crate) fn advance_clock(&mut self) {
         self.time += self.step_size();
+    }
+
+    /// Sets the clock (the adaptive scheme's steps do not divide the integrator step).
+    pub(crate) fn set_time(&mut self, time: f64) {
+        self.time = time;
     }
 }
 

@@ -10,7 +10,7 @@ use crate::physics::coupling::contact::{ContactLaw, Opposing, Plane};
 use crate::physics::coupling::{Catenary, Contact, Coupling, CouplingKind, ElasticLaw, Endpoint, SpringDamper};
 use crate::physics::mesh::{BoundaryMesh, MeshError, Surface};
 use crate::physics::mass_properties::{MassProperties, Node};
-use crate::physics::integrator::{Substeps, Timing};
+use crate::physics::integrator::{Substeps, Timing, Tolerances};
 use crate::physics::world::{StepError, World};
 use crate::physics::{Mat3, Vec3};
 use std::path::Path;
@@ -51,6 +51,7 @@ pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
         return Err(Problem { place: Place::Top("duration"), message: format!("duration must be > 0 s, got {}", file.duration) });
     }
     let mut warnings = Vec::new();
+    let tolerances = build_tolerances(file, &mut warnings)?;
     let mut bodies = Vec::with_capacity(file.bodies.len());
     let mut states = Vec::with_capacity(file.bodies.len());
     for (index, def) in file.bodies.iter().enumerate() {
@@ -78,12 +79,30 @@ pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
         couplings.push(build_coupling(def, &bodies, &mut boundaries, &at)?);
     }
     // Names are unique by now: the coupling at fault is the first of its name.
-    let timing = Timing { dt: file.dt, integrator: file.integrator, substeps: file.substeps };
+    let timing = Timing { dt: file.dt, integrator: file.integrator, substeps: file.substeps, tolerances };
     let world = World::new(vec3(file.gravity), bodies, couplings, states, timing).map_err(|e| match e {
         StepError::Coupling { coupling, source, .. } => ItemAt::new(ItemKind::Coupling, &coupling, 0).at_name(format!("at t = 0: {source}")),
         other => Problem { place: Place::Top("bodies"), message: other.to_string() },
     })?;
     Ok(Built { world, warnings })
+}
+
+/// The `adaptive` settings, checked; a warning when the integrator does not use them.
+fn build_tolerances(file: &SceneFile, warnings: &mut Vec<String>) -> Result<Tolerances, Problem> {
+    let Some(def) = file.adaptive else { return Ok(Tolerances::default()) };
+    if !(def.rtol > 0.0 && def.rtol < 1.0) {
+        return Err(Problem { place: Place::Top("rtol"), message: format!("adaptive rtol must be > 0 and < 1, got {}", def.rtol) });
+    }
+    if !(def.atol > 0.0) {
+        return Err(Problem { place: Place::Top("atol"), message: format!("adaptive atol must be > 0, got {}", def.atol) });
+    }
+    if let Some(max_step) = def.max_step.filter(|m| !(*m > 0.0)) {
+        return Err(Problem { place: Place::Top("max_step"), message: format!("adaptive max_step must be > 0 s, got {max_step}") });
+    }
+    if !file.integrator.is_adaptive() {
+        warnings.push(format!("the adaptive settings are for integrator dopri45; {} ignores them", file.integrator.name()));
+    }
+    Ok(Tolerances { rtol: def.rtol, atol: def.atol, max_step: def.max_step })
 }
 
 /// Locates problems in one item.

@@ -24,14 +24,41 @@ pub struct SceneFile {
     /// Default duration of a run [s] > 0.
     #[serde(default = "default_duration", deserialize_with = "finite")]
     pub duration: f64,
+    /// `leapfrog` (default), `leapfrog2`, `splitting`, `rk4` or `dopri45`.
     #[serde(default)]
     pub integrator: Integrator,
+    /// Settings of `dopri45`; defaults when absent.
+    #[serde(default)]
+    pub adaptive: Option<AdaptiveDef>,
     /// Integrator steps per `dt`: `Fixed(n)` or `Auto` (default `Fixed(1)`).
     #[serde(default)]
     pub substeps: Substeps,
     pub bodies: Vec<BodyDef>,
     #[serde(default)]
     pub couplings: Vec<CouplingDef>,
+}
+
+/// Tolerances of the adaptive `dopri45` (PHYSICS.md §1; see [`crate::physics::integrator::Tolerances`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename = "Adaptive", deny_unknown_fields)]
+pub struct AdaptiveDef {
+    /// Relative tolerance [–], 0 < rtol < 1 (default 1e-6).
+    #[serde(default = "default_rtol", deserialize_with = "finite")]
+    pub rtol: f64,
+    /// Absolute tolerance [SI unit of each component] > 0 (default 1e-9).
+    #[serde(default = "default_atol", deserialize_with = "finite")]
+    pub atol: f64,
+    /// Largest adaptive step [s] > 0 (default: the integrator step `dt / substeps`).
+    #[serde(default, deserialize_with = "finite_option")]
+    pub max_step: Option<f64>,
+}
+
+fn default_rtol() -> f64 {
+    crate::physics::integrator::Tolerances::default().rtol
+}
+
+fn default_atol() -> f64 {
+    crate::physics::integrator::Tolerances::default().atol
 }
 
 fn default_gravity() -> Triple {

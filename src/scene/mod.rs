@@ -48,6 +48,7 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
 pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let source = Source::new(text);
     let label = path.display().to_string();
+    // Optional sections (`adaptive: (…)`) are written without `Some(…)`.
     let options = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
     let file: SceneFile = options.from_str(text).map_err(|e| syntax_error(&source, &label, &e))?;
     let built = build::build(&file, directory(path)).map_err(|p| placed(&source, &label, p))?;

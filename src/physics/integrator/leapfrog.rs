@@ -23,7 +23,8 @@ use crate::physics::{Rotation, Vec3};
 
 /// Evaluates t = 0 and turns the synchronised initial velocities into `v(−½dt) = v(0) − ½dt γ(0)`.
 pub(crate) fn start(world: &mut World) -> Result<(), StepError> {
-    world.prescribe_kinematic_bodies();
+    let time = world.time();
+    world.prescribe_kinematic_bodies(time);
     for (frame, state) in world.frames.iter_mut().zip(&world.states) {
         *frame = body_frame(state);
     }
@@ -176,12 +177,12 @@ pub(crate) fn rotate_by(orientation: &Rotation, rotation_vector: &Vec3) -> Rotat
 /// Pulls a quaternion that is unit up to round-off back onto the unit sphere with one Newton
 /// step for `1/|q|`: `q (3 − |q|²)/2`. The error ε = |q|² − 1 becomes O(ε²), so round-off
 /// cannot accumulate, and there is no square root or division in the hot loop.
-fn renormalize(q: nalgebra::Quaternion<f64>) -> Rotation {
+pub(crate) fn renormalize(q: nalgebra::Quaternion<f64>) -> Rotation {
     Rotation::new_unchecked(q * (1.5 - 0.5 * q.norm_squared()))
 }
 
 /// Stage *predict*: the kinematics the forces see, world axes.
-fn body_frame(state: &BodyState) -> BodyFrame {
+pub(crate) fn body_frame(state: &BodyState) -> BodyFrame {
     let rotation = state.orientation.to_rotation_matrix().into_inner();
     BodyFrame { position: state.position, rotation, velocity: state.velocity, angular_velocity: state.angular_velocity }
 }

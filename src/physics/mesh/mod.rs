@@ -28,6 +28,9 @@ pub struct Face {
     pub area: f64,
 }
 
+/// Farthest a vertex may be from the origin [m]: distances squared must not overflow.
+pub const MAX_EXTENT: f64 = 1e12;
+
 /// Why a triangle list is not a usable boundary.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum MeshError {
@@ -37,6 +40,8 @@ pub enum MeshError {
     VertexOutOfRange { triangle: usize, vertex: u32, count: usize },
     #[error("vertex {vertex} is not a finite point")]
     NotFinite { vertex: usize },
+    #[error("vertex {vertex} is {distance:e} m from the origin, beyond {MAX_EXTENT:e} m")]
+    TooFar { vertex: usize, distance: f64 },
     #[error("the mesh has zero area: every triangle is degenerate")]
     ZeroArea,
     #[error("the mesh cannot be used for distance queries: {0}")]
@@ -115,6 +120,9 @@ impl BoundaryMesh {
         }
         if let Some(vertex) = vertices.iter().position(|v| !v.iter().all(|x| x.is_finite())) {
             return Err(MeshError::NotFinite { vertex });
+        }
+        if let Some(vertex) = vertices.iter().position(|v| v.amax() > MAX_EXTENT) {
+            return Err(MeshError::TooFar { vertex, distance: vertices[vertex].norm() });
         }
         for (triangle, corners) in triangles.iter().enumerate() {
             if let Some(&vertex) = corners.iter().find(|&&i| i as usize >= vertices.len()) {
@@ -255,10 +263,11 @@ impl Surface {
         self.reach
     }
 
-    /// Whether `point` [m] is within `margin` [m] of the surface's bounding box.
+    /// Whether `point` [m] is within `margin` [m] of the surface's bounding box; never for a
+    /// non-finite point (whose NaN the componentwise maximum would drop).
     pub fn near_bounds(&self, point: &Vec3, margin: f64) -> bool {
         let outside_box = (self.low - point).sup(&(point - self.high)).sup(&Vec3::zeros());
-        outside_box.norm_squared() <= margin * margin
+        point.iter().all(|x| x.is_finite()) && outside_box.norm_squared() <= margin * margin
     }
 
     /// The boundary's point nearest to `point` (surface frame) [m], if `point` is within `range`
@@ -320,5 +329,8 @@ mod tests {
         assert_relative_eq!(inside.distance, -0.05, epsilon = 1e-12);
         assert_relative_eq!(inside.normal, Vec3::x(), epsilon = 1e-12);
         assert!(surface.nearest(&Vec3::new(0.0, 0.0, 3.0), 1.0).is_none());
+        // A NaN point is out of range, not a query (parry's would panic).
+        assert!(surface.nearest(&Vec3::new(f64::NAN, 0.0, 0.0), 1.0).is_none());
+        assert!(surface.nearest(&Vec3::new(0.0, f64::INFINITY, 0.0), f64::INFINITY).is_none());
     }
 }

@@ -262,6 +262,7 @@ fn the_fender_is_squeezed_between_hull_and_quay_and_released() {
     let scene = tether::scene::load(&common::repo("scenes/fender.ron")).unwrap_or_else(|e| panic!("{e}"));
     let mut world = scene.world;
     let (mut quay_peak, mut hull_peak) = (0.0_f64, 0.0_f64);
+    let balance = world.energy().balance();
     while world.time() < 4.0 {
         world.step().unwrap_or_else(|e| panic!("{e}"));
         quay_peak = quay_peak.max(world.coupling_forces()[2].tension);
@@ -275,6 +276,12 @@ fn the_fender_is_squeezed_between_hull_and_quay_and_released() {
         world.step().unwrap_or_else(|e| panic!("{e}"));
     }
     assert_eq!(world.coupling_forces()[3].tension, 0.0, "the hull has left");
+    // The balance holds through the squeeze (the hull's work is external work): within 1 J of
+    // the 2.38 kJ the hull puts in (measured 0.2 J). With a friction sharpness past the friction
+    // damper's stable step the faces flip their sliding direction every step and this drifts by
+    // tens of kJ while the fender looks at rest.
+    let drift = (world.energy().balance() - balance).abs();
+    assert!(drift < 1.0, "balance drift {drift} J");
 }
 
 #[test]

@@ -147,7 +147,11 @@ pub fn limits(world: &World) -> Vec<Limit> {
                 let area = contact.limit_area(frames);
                 let normal = oscillator_limit(world.integrator, contact.law.stiffness * area, contact.law.damping * area, inverse);
                 let friction = contact.law.friction * contact.law.friction_sharpness * contact.normal_force();
-                normal.min(oscillator_limit(world.integrator, 0.0, friction, inverse))
+                // Friction acts across the surface, at up to the boundary's radius from G: it
+                // turns the body as much as it pushes it.
+                let reach = contact.boundary.bounding_radius();
+                let sliding_inverse = translational_inverse_mass(world, contact.body) + turning_inverse_mass(world, contact.body, reach) + contact.other_body().map_or(0.0, |other| translational_inverse_mass(world, other) + turning_inverse_mass(world, other, reach));
+                normal.min(oscillator_limit(world.integrator, 0.0, friction, sliding_inverse))
             }
         };
         if dt.is_finite() {
@@ -192,6 +196,13 @@ pub fn binding(limits: &[Limit]) -> Option<Limit> {
 fn translational_inverse_mass(world: &World, index: usize) -> f64 {
     let body = &world.bodies[index];
     if body.is_kinematic() { 0.0 } else { body.inverse_mass }
+}
+
+/// `ρ²/I_min` [1/kg]: the most a unit force at distance `ρ` [m] from G can add to the
+/// acceleration of the point through rotation; 0 for a kinematic body.
+fn turning_inverse_mass(world: &World, index: usize, reach: f64) -> f64 {
+    let body = &world.bodies[index];
+    if body.is_kinematic() { 0.0 } else { reach * reach * body.inverse_principal_moments.max() }
 }
 
 /// `1/m + (r × d)ᵀ I⁻¹ (r × d)` of the body an end is on, for a unit force direction `d`.

@@ -2,6 +2,7 @@
 
 mod check;
 mod forces;
+mod gui;
 mod record;
 
 use anyhow::Context as _;
@@ -9,12 +10,13 @@ use clap::{Parser, Subcommand};
 use std::path::{Path, PathBuf};
 use tether::scene::{self, Scene};
 
-/// Coupled rigid bodies — springs, catenaries, contact — simulated and recorded for Rerun.
+/// Coupled rigid bodies — springs, catenaries, contact — simulated, tuned live and recorded for
+/// Rerun. With no command: the window, with the default scene.
 #[derive(Debug, Parser)]
 #[command(name = "tether", version, about)]
 pub struct Cli {
     #[command(subcommand)]
-    command: Command,
+    command: Option<Command>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -26,6 +28,13 @@ enum Command {
     },
     /// Run a scene headless and write a Rerun recording (.rrd).
     Record(record::RecordArgs),
+    /// Open the window: control panel and Rerun viewer, a scene running live (the default).
+    Gui(gui::GuiArgs),
+    /// Play a recording (.rrd) back in the window's viewer.
+    View {
+        /// Recording file (.rrd).
+        recording: PathBuf,
+    },
     /// Print the forces of the initial state.
     Forces {
         /// Scene file (.ron).
@@ -41,7 +50,10 @@ pub const INTERRUPTED: u8 = 130;
 
 /// Runs one subcommand; returns the process exit code.
 pub fn run(cli: Cli) -> anyhow::Result<u8> {
-    match cli.command {
+    let command = cli.command.unwrap_or(Command::Gui(gui::GuiArgs::default()));
+    match command {
+        Command::Gui(args) => gui::run(args).map(|()| 0),
+        Command::View { recording } => gui::view(recording).map(|()| 0),
         Command::Check { scene } => check::run(&load(&scene)?).map(|()| 0),
         Command::Record(args) => record::run(&args).map(|outcome| match outcome {
             record::Outcome::Finished => 0,

@@ -47,6 +47,14 @@ impl EnergyLedger {
         Self { dissipated: 0.0, external_work: 0.0, dissipated_power, external_power }
     }
 
+    /// Books `work` [J] done on the system from outside at one instant (a coupling changed while
+    /// running) and restarts the integrals from the powers [W] evaluated after it.
+    pub fn intervene(&mut self, work: f64, dissipated_power: f64, external_power: f64) {
+        self.external_work += work;
+        self.dissipated_power = dissipated_power;
+        self.external_power = external_power;
+    }
+
     /// Advances by `dt` [s] to the new powers [W].
     pub fn advance(&mut self, dt: f64, dissipated_power: f64, external_power: f64) {
         self.dissipated += 0.5 * dt * (self.dissipated_power + dissipated_power);

@@ -12,7 +12,7 @@
 
 use super::body::{BodyState, RigidBody, Support, prescribed_state};
 use super::coupling::{BodyFrame, Coupling, CouplingError, CouplingForces, Load};
-use super::dynamics::Acceleration;
+use super::dynamics::{Acceleration, accelerations};
 use super::energy::{EnergyLedger, EnergyReport};
 use super::integrator::{Integrator, Substeps, Timing, leapfrog, leapfrog2};
 use super::stability::{self, Limit};
@@ -28,6 +28,15 @@ pub enum StepError {
     /// `advice` names the binding stable time step of the starting configuration.
     #[error("the simulation diverged at t = {time} s: body \"{body}\" {cause}; {advice}")]
     Diverged { time: f64, body: String, cause: String, advice: String },
+}
+
+/// A time step setting refused by [`World::set_timing`].
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+pub enum TimingError {
+    #[error("time step dt must be > 0 s, got {0}")]
+    Step(f64),
+    #[error("substeps must be at least 1")]
+    NoSubsteps,
 }
 
 /// `substeps: Auto` keeps each integrator step under this fraction of the stable time step.
@@ -214,9 +223,85 @@ impl World {
 
     /// Restarts from t = 0 with the current parameters; on error the world is unchanged.
     pub fn reset(&mut self) -> Result<(), StepError> {
-        let timing = Timing { dt: self.dt, integrator: self.integrator, substeps: self.substep_setting };
-        *self = Self::new(self.gravity, self.bodies.clone(), self.couplings.clone(), self.initial_states.clone(), timing)?;
+        *self = Self::new(self.gravity, self.bodies.clone(), self.couplings.clone(), self.initial_states.clone(), self.timing())?;
         Ok(())
+    }
+
+    /// Replaces coupling `index` while running, without a restart (live tuning): the loads and
+    /// accelerations at the current time are evaluated again with the new coupling, so the next
+    /// step already uses it. The state does not move, but its energy does: the elastic energy of
+    /// the new parameters at the same positions differs from the old one (and so, through the new
+    /// accelerations, does the synchronised kinetic energy). That jump is booked as external work
+    /// (PHYSICS.md §5), so `balance()` stays continuous across the swap and keeps checking the
+    /// motion after it; the divergence message then quotes the stable time step of the new
+    /// parameters.
+    ///
+    /// # Errors
+    /// The new coupling cannot give its forces here; the world is then unchanged. An `index` out
+    /// of range is refused the same way.
+    pub fn replace_coupling(&mut self, index: usize, coupling: Coupling) -> Result<(), StepError> {
+        if index >= self.couplings.len() {
+            return Err(StepError::Coupling { coupling: coupling.name, time: self.time, source: CouplingError::NoSuchCoupling(index) });
+        }
+        let before = (self.energy().total(), std::mem::replace(&mut self.couplings[index], coupling), self.coupling_forces[index], self.loads.clone());
+        let dissipated = match self.evaluate_loads() {
+            Ok(power) => power,
+            Err(error) => {
+                let (_, old, forces, loads) = before;
+                (self.couplings[index], self.coupling_forces[index], self.loads) = (old, forces, loads);
+                return Err(error);
+            }
+        };
+        // Euler's equations are linear in the load once the gyroscopic term (which the change
+        // does not touch) is set aside: add the accelerations of the load difference.
+        for (i, old_load) in before.3.iter().enumerate() {
+            let change = Load { force: self.loads[i].force - old_load.force, moment: self.loads[i].moment - old_load.moment };
+            let delta = accelerations(&self.bodies[i], &self.frames[i].rotation, &change, &Vec3::zeros());
+            self.accelerations[i].linear += delta.linear;
+            self.accelerations[i].angular += delta.angular;
+        }
+        self.body_energy = match self.integrator {
+            Integrator::Leapfrog | Integrator::Leapfrog2 => leapfrog::kinetic_and_gravity(self),
+        };
+        let work = self.energy().total() - before.0;
+        let external_power = self.external_power();
+        self.ledger.intervene(work, dissipated, external_power);
+        self.initial_limit = stability::binding(&stability::limits(self));
+        Ok(())
+    }
+
+    /// Changes the time step, the integrator and the substeps at the current time, keeping the
+    /// state: velocities are synchronised to t with the old integrator step and restarted with
+    /// the new one, so the motion goes on where it was. `Substeps::Auto` is resolved from the
+    /// binding stable time step of the current state.
+    ///
+    /// # Errors
+    /// `dt` not finite and positive, or zero substeps; the world is then unchanged.
+    pub fn set_timing(&mut self, timing: Timing) -> Result<(), TimingError> {
+        if !(timing.dt.is_finite() && timing.dt > 0.0) {
+            return Err(TimingError::Step(timing.dt));
+        }
+        if timing.substeps == Substeps::Fixed(0) {
+            return Err(TimingError::NoSubsteps);
+        }
+        let synchronized: Vec<BodyState> = (0..self.bodies.len()).map(|i| self.state(i)).collect();
+        self.dt = timing.dt;
+        self.integrator = timing.integrator;
+        self.substep_setting = timing.substeps;
+        self.substeps = match timing.substeps {
+            Substeps::Fixed(n) => n,
+            Substeps::Auto => stability::binding(&stability::limits(self))
+                .map_or(1, |limit| (self.dt / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil().clamp(1.0, f64::from(u32::MAX)) as u32),
+        };
+        match self.integrator {
+            Integrator::Leapfrog | Integrator::Leapfrog2 => leapfrog::restart(self, synchronized),
+        }
+        Ok(())
+    }
+
+    /// The time step settings.
+    pub fn timing(&self) -> Timing {
+        Timing { dt: self.dt, integrator: self.integrator, substeps: self.substep_setting }
     }
 
     /// Simulated time [s].

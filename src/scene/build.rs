@@ -36,12 +36,7 @@ pub struct Built {
 
 /// Builds the world a scene describes.
 pub fn build(file: &SceneFile) -> Result<Built, Problem> {
-    if !(file.dt > 0.0) {
-        return Err(Problem { place: Place::Top("dt"), message: format!("time step dt must be > 0 s, got {}", file.dt) });
-    }
-    if file.substeps == Substeps::Fixed(0) {
-        return Err(Problem { place: Place::Top("substeps"), message: "substeps must be at least 1".into() });
-    }
+    let timing = timing(file)?;
     if !(file.duration > 0.0) {
         return Err(Problem { place: Place::Top("duration"), message: format!("duration must be > 0 s, got {}", file.duration) });
     }
@@ -72,12 +67,38 @@ pub fn build(file: &SceneFile) -> Result<Built, Problem> {
         couplings.push(build_coupling(def, &bodies, &at)?);
     }
     // Names are unique by now: the coupling at fault is the first of its name.
-    let timing = Timing { dt: file.dt, integrator: file.integrator, substeps: file.substeps };
     let world = World::new(vec3(file.gravity), bodies, couplings, states, timing).map_err(|e| match e {
         StepError::Coupling { coupling, source, .. } => ItemAt::new(ItemKind::Coupling, &coupling, 0).at_name(format!("at t = 0: {source}")),
         other => Problem { place: Place::Top("bodies"), message: other.to_string() },
     })?;
     Ok(Built { world, warnings })
+}
+
+/// The time step settings of a scene, checked: `dt` > 0 s, at least one substep.
+pub fn timing(file: &SceneFile) -> Result<Timing, Problem> {
+    if !(file.dt > 0.0 && file.dt.is_finite()) {
+        return Err(Problem { place: Place::Top("dt"), message: format!("time step dt must be > 0 s, got {}", file.dt) });
+    }
+    if file.substeps == Substeps::Fixed(0) {
+        return Err(Problem { place: Place::Top("substeps"), message: "substeps must be at least 1".into() });
+    }
+    Ok(Timing { dt: file.dt, integrator: file.integrator, substeps: file.substeps })
+}
+
+/// Builds coupling `index` of `file` on its own, with the checks and messages of [`build`]
+/// (live tuning builds a changed coupling this way before it reaches a running world). The
+/// bodies are built again to resolve the ends; their own problems are reported too.
+pub fn coupling(file: &SceneFile, index: usize) -> Result<Coupling, Problem> {
+    let Some(def) = file.couplings.get(index) else {
+        return Err(Problem { place: Place::Top("couplings"), message: format!("the scene has no coupling {index}") });
+    };
+    let mut bodies = Vec::with_capacity(file.bodies.len());
+    for (i, body) in file.bodies.iter().enumerate() {
+        let occurrence = file.bodies[..i].iter().filter(|b| b.name == body.name).count();
+        bodies.push(build_body(body, &ItemAt::new(ItemKind::Body, &body.name, occurrence))?);
+    }
+    let occurrence = file.couplings[..index].iter().filter(|c| c.name() == def.name()).count();
+    build_coupling(def, &bodies, &ItemAt::new(ItemKind::Coupling, def.name(), occurrence))
 }
 
 /// Locates problems in one item.

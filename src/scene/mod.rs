@@ -59,6 +59,13 @@ pub fn rebuild(scene: Scene) -> Result<Scene, SceneError> {
     Ok(Scene { world: built.world, warnings: built.warnings, ..scene })
 }
 
+/// The scene as RON text that [`parse`] reads back to the same [`SceneFile`] ("save as" after
+/// live tuning). Comments of the original file are not kept.
+pub fn to_ron(file: &SceneFile) -> Result<String, ron::Error> {
+    let config = ron::ser::PrettyConfig::new().struct_names(true);
+    ron::ser::to_string_pretty(file, config).map(|text| text + "\n")
+}
+
 /// A parser error, with the body or coupling it falls in when there is one.
 fn syntax_error(source: &Source, label: &str, error: &ron::error::SpannedError) -> SceneError {
     let (line, col) = (error.position.line.max(1), error.position.col.max(1));

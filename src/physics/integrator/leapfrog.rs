@@ -42,6 +42,20 @@ pub(crate) fn start(world: &mut World) -> Result<(), StepError> {
     Ok(())
 }
 
+/// Restarts the half-step velocities after the integrator step changed: the synchronised
+/// `v(t)`, `ω(t)` (taken with the old step) become `v(t−½h) = v(t) − ½h γ(t)`,
+/// `ω(t−½h) = ω(t) − ½h α(t)` with the new step `h`, as at [`start`].
+pub(crate) fn restart(world: &mut World, synchronized: Vec<BodyState>) {
+    let half = 0.5 * world.step_size();
+    for ((state, synced), (acceleration, body)) in world.states.iter_mut().zip(synchronized).zip(world.accelerations.iter().zip(&world.bodies)) {
+        *state = synced;
+        if !body.is_kinematic() {
+            state.velocity -= acceleration.linear * half;
+            state.angular_velocity -= acceleration.angular * half;
+        }
+    }
+}
+
 /// At which angular velocity the gyroscopic term `ω × Iω` is evaluated.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Gyroscopic {
@@ -105,7 +119,7 @@ pub(crate) fn synchronized_state(world: &World, index: usize) -> BodyState {
 
 /// `Σ ½ m |v(t)|² + ½ ω(t)ᵀ I ω(t)` and `Σ −m g·x_G` [J] over the bodies that respond to
 /// forces, with the synchronised velocities.
-fn kinetic_and_gravity(world: &World) -> (f64, f64) {
+pub(crate) fn kinetic_and_gravity(world: &World) -> (f64, f64) {
     let half = 0.5 * world.step_size();
     world.bodies.iter().zip(&world.states).zip(&world.accelerations).fold((0.0, 0.0), |(k, g), ((body, state), acceleration)| {
         let (dk, dg) = body_energy(body, state, acceleration, half, &world.gravity);

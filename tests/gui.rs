@@ -82,7 +82,8 @@ fn set_knob(harness: &mut Harness<'_, ControlPanel>, label: &str, value: f64) {
     let (target_node, target_tree) = harness.get_by_label(label).accesskit_node().locate();
     let request = accesskit::ActionRequest { action: accesskit::Action::SetValue, target_tree, target_node, data: Some(accesskit::ActionData::NumericValue(value)) };
     harness.event(egui::Event::AccessKitActionRequest(request));
-    harness.step();
+    // One frame takes the edit, the next shows what became of it.
+    harness.run_steps(2);
 }
 
 /// Clicks the scene `name` in the list and waits for it to run.
@@ -147,7 +148,7 @@ fn a_bad_scene_shows_its_place_and_the_previous_one_keeps_running() {
     harness.key_press(egui::Key::Space);
 
     harness.get_by_label("bad.ron").click();
-    harness.step();
+    harness.run_steps(2);
     let error = harness.state().load_error().expect("the bad scene is refused").to_string();
     assert!(error.contains("bad.ron:4:"), "{error}");
     assert!(error.contains("body \"m\""), "{error}");

@@ -85,9 +85,10 @@ fn the_window_plays_a_scene_records_it_and_quits_cleanly() {
         .unwrap();
     let window = || x.xdotool(&["search", "--name", "^Tether$"]);
     wait_for("the window", Duration::from_secs(60), || window().status.success());
-    // No window manager: the keyboard follows the pointer. Click an empty spot of the panel,
-    // then play for a while.
-    x.xdotool(&["mousemove", "200", "980", "click", "1"]);
+    let id = String::from_utf8_lossy(&window().stdout).lines().next().unwrap_or_default().to_string();
+    // No window manager gives the window the keyboard: give it, let the first frames draw, play.
+    std::thread::sleep(Duration::from_secs(2));
+    x.xdotool(&["windowfocus", "--sync", &id]);
     std::thread::sleep(Duration::from_millis(500));
     x.xdotool(&["key", "space"]);
     std::thread::sleep(Duration::from_secs(3));

@@ -168,6 +168,10 @@ impl eframe::App for TetherApp {
         }
     }
 
+    fn raw_input_hook(&mut self, ctx: &egui::Context, raw_input: &mut egui::RawInput) {
+        self.panel.take_shortcuts(ctx, &mut raw_input.events);
+    }
+
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         eframe::set_value(storage, SETTINGS_KEY, &self.panel.settings);
     }

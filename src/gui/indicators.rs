@@ -59,7 +59,7 @@ fn energy_ui(ui: &mut egui::Ui, status: &Status, history: &EnergyHistory) {
             ("external work", e.external_work),
         ] {
             ui.label(name);
-            ui.label(format!("{value:.6e} J"));
+            ui.label(format!("{value:+.6e} J"));
             ui.end_row();
         }
         let drift = e.balance() - status.initial_balance;
@@ -78,7 +78,8 @@ fn drift_plot(ui: &mut egui::Ui, history: &EnergyHistory) {
     let points = &history.points;
     let (Some(first), Some(last)) = (points.front(), points.back()) else { return };
     let span = (last.0 - first.0).max(f64::MIN_POSITIVE);
-    let extent = points.iter().fold(0.0_f64, |m, &(_, d)| m.max(d.abs())).max(f64::MIN_POSITIVE);
+    let largest = points.iter().fold(0.0_f64, |m, &(_, d)| m.max(d.abs()));
+    let extent = largest.max(f64::MIN_POSITIVE);
     let to_screen = |&(t, d): &(f64, f64)| {
         let x = rect.left() + rect.width() * ((t - first.0) / span) as f32;
         let y = rect.center().y - 0.45 * rect.height() * (d / extent) as f32;
@@ -87,7 +88,7 @@ fn drift_plot(ui: &mut egui::Ui, history: &EnergyHistory) {
     painter.hline(rect.x_range(), rect.center().y, egui::Stroke::new(1.0, ui.visuals().weak_text_color()));
     let line: Vec<egui::Pos2> = points.iter().map(to_screen).collect();
     painter.add(egui::Shape::line(line, egui::Stroke::new(1.5, ui.visuals().strong_text_color())));
-    painter.text(rect.left_top(), egui::Align2::LEFT_TOP, format!("±{extent:.1e} J"), egui::FontId::monospace(10.0), ui.visuals().weak_text_color());
+    painter.text(rect.left_top(), egui::Align2::LEFT_TOP, format!("drift ±{largest:.1e} J"), egui::FontId::monospace(10.0), ui.visuals().weak_text_color());
 }
 
 /// The integrator step against each stable time step.
@@ -101,10 +102,10 @@ fn stability_ui(ui: &mut egui::Ui, status: &Status) {
             match limit {
                 Some(dt) => {
                     let (color, verdict) = if status.step_size <= dt { (GREEN, "ok") } else { (RED, "too large: will diverge") };
-                    ui.colored_label(color, format!("● {dt:.3e} s {verdict}"));
+                    ui.colored_label(color, format!("{dt:.3e} s {verdict}"));
                 }
                 None => {
-                    ui.colored_label(GREEN, "● no limit");
+                    ui.colored_label(GREEN, "no limit");
                 }
             }
             ui.end_row();

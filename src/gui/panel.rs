@@ -19,6 +19,9 @@ use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
+/// Keys of the run shortcuts: play/pause, one step, reset.
+const SHORTCUTS: [egui::Key; 3] = [egui::Key::Space, egui::Key::ArrowRight, egui::Key::Backspace];
+
 /// Messages kept in the panel's log.
 const LOG_LINES: usize = 6;
 
@@ -260,28 +263,51 @@ impl ControlPanel {
         }
     }
 
-    /// Space: play/pause; →: one step; Backspace: reset — unless a text field has the keyboard.
-    fn shortcuts(&mut self, ctx: &egui::Context) {
-        if ctx.egui_wants_keyboard_input() {
+    /// Takes the run shortcuts (Space: play/pause; →: one step, repeating while held;
+    /// Backspace: reset) out of the window's raw input before anything else sees them — the
+    /// embedded viewer takes the same keys for its timeline at the start of each frame — and
+    /// acts on them. Nothing is taken while a text field (a knob being typed into) has the
+    /// keyboard.
+    pub fn take_shortcuts(&mut self, ctx: &egui::Context, events: &mut Vec<egui::Event>) {
+        if ctx.text_edit_focused() {
             return;
         }
-        let (space, right, backspace) = ctx.input_mut(|i| {
-            (
-                i.consume_key(egui::Modifiers::NONE, egui::Key::Space),
-                i.consume_key(egui::Modifiers::NONE, egui::Key::ArrowRight),
-                i.consume_key(egui::Modifiers::NONE, egui::Key::Backspace),
-            )
+        let mut pressed = Vec::new();
+        events.retain(|event| match event {
+            egui::Event::Key { key, pressed: down, repeat, modifiers, .. } if modifiers.is_none() && SHORTCUTS.contains(key) => {
+                if *down && (!*repeat || *key == egui::Key::ArrowRight) {
+                    pressed.push(*key);
+                }
+                false
+            }
+            _ => true,
         });
+        for key in pressed {
+            self.shortcut(key);
+        }
+    }
+
+    /// The run shortcuts, when the panel runs on its own (no window to hook into).
+    fn shortcuts(&mut self, ctx: &egui::Context) {
+        if ctx.text_edit_focused() {
+            return;
+        }
+        for key in SHORTCUTS {
+            if ctx.input_mut(|i| i.consume_key(egui::Modifiers::NONE, key)) {
+                self.shortcut(key);
+            }
+        }
+    }
+
+    fn shortcut(&mut self, key: egui::Key) {
         let running = self.status.as_ref().is_some_and(|s| s.running);
-        if space {
-            self.run_action(if running { RunAction::Pause } else { RunAction::Play });
-        }
-        if right {
-            self.run_action(RunAction::Step);
-        }
-        if backspace {
-            self.run_action(RunAction::Reset);
-        }
+        let action = match key {
+            egui::Key::Space if running => RunAction::Pause,
+            egui::Key::Space => RunAction::Play,
+            egui::Key::ArrowRight => RunAction::Step,
+            _ => RunAction::Reset,
+        };
+        self.run_action(action);
     }
 
     fn scene_action(&mut self, action: SceneAction) {

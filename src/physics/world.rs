@@ -228,13 +228,14 @@ impl World {
     }
 
     /// Replaces coupling `index` while running, without a restart (live tuning): the loads and
-    /// accelerations at the current time are evaluated again with the new coupling, so the next
-    /// step already uses it. The state does not move, but its energy does: the elastic energy of
-    /// the new parameters at the same positions differs from the old one (and so, through the new
-    /// accelerations, does the synchronised kinetic energy). That jump is booked as external work
-    /// (PHYSICS.md §5), so `balance()` stays continuous across the swap and keeps checking the
-    /// motion after it; the divergence message then quotes the stable time step of the new
-    /// parameters.
+    /// accelerations at the current time are evaluated again with the new coupling, and the
+    /// half-step velocities restarted from the synchronised ones (as after a change of time
+    /// step), so the state at t — positions and velocities — does not move and the motion goes
+    /// on under the new forces, second-order accurate across the change. Its energy does jump:
+    /// the elastic energy of the new parameters at the same positions differs from the old one.
+    /// That jump is booked as external work (PHYSICS.md §5), so `balance()` stays continuous
+    /// across the swap and keeps checking the motion after it; the divergence message then
+    /// quotes the stable time step of the new parameters.
     ///
     /// # Errors
     /// The new coupling cannot give its forces here; the world is then unchanged. An `index` out
@@ -243,6 +244,7 @@ impl World {
         if index >= self.couplings.len() {
             return Err(StepError::Coupling { coupling: coupling.name, time: self.time, source: CouplingError::NoSuchCoupling(index) });
         }
+        let synchronized: Vec<BodyState> = (0..self.bodies.len()).map(|i| self.state(i)).collect();
         let before = (self.energy().total(), std::mem::replace(&mut self.couplings[index], coupling), self.coupling_forces[index], self.loads.clone());
         let dissipated = match self.evaluate_loads() {
             Ok(power) => power,
@@ -261,7 +263,10 @@ impl World {
             self.accelerations[i].angular += delta.angular;
         }
         self.body_energy = match self.integrator {
-            Integrator::Leapfrog | Integrator::Leapfrog2 => leapfrog::kinetic_and_gravity(self),
+            Integrator::Leapfrog | Integrator::Leapfrog2 => {
+                leapfrog::restart(self, synchronized);
+                leapfrog::kinetic_and_gravity(self)
+            }
         };
         let work = self.energy().total() - before.0;
         let external_power = self.external_power();

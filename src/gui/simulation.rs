@@ -379,7 +379,11 @@ impl Runner {
         self.finish_recording();
         let Some(run) = &self.run else { return };
         self.initial_balance = run.world.energy().balance();
-        match self.sinks.stream(&run.label).and_then(|stream| Recorder::new(stream, &run.world)) {
+        let recording = self.sinks.stream(&run.label).and_then(|stream| {
+            super::stream::send_layout(&stream, &run.world)?;
+            Recorder::new(stream, &run.world)
+        });
+        match recording {
             Ok(recorder) => {
                 self.recorder = Some(recorder);
                 self.log_frame();

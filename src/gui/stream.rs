@@ -7,8 +7,12 @@
 //! session and one connection serves them all. The file's footer is written when the last
 //! [`Sinks`] handle is dropped, after the simulation thread has flushed and stopped.
 
+use crate::physics::coupling::CouplingKind;
+use crate::physics::world::World;
 use crate::record::APPLICATION_ID;
 use rerun::RecordingStream;
+use rerun::blueprint::{Blueprint, BlueprintActivation, BlueprintPanel, ContainerLike, Horizontal, SelectionPanel, Spatial3DView, TimePanel, TimeSeriesView, Vertical};
+use rerun::blueprint::components::PanelState;
 use rerun::log::LogMsg;
 use rerun::sink::{LogSink, MultiSink, SinkFlushError};
 use std::sync::Arc;
@@ -63,6 +67,33 @@ impl Sinks {
             }
         }
     }
+}
+
+/// How the viewer lays out a run of `world`: the 3D scene large on the left, the energy and
+/// tension plots stacked on the right (with the catenaries' end tensions when there are any);
+/// the `sim_time` timeline; the viewer's own side panels folded, room being short beside the
+/// control panel.
+pub fn layout(world: &World) -> Blueprint {
+    let mut plots: Vec<ContainerLike> = vec![TimeSeriesView::new("energy [J]").with_origin("plots/energy").into()];
+    if !world.couplings.is_empty() {
+        plots.push(TimeSeriesView::new("tension [N]").with_origin("plots/tension").into());
+    }
+    if world.couplings.iter().any(|c| matches!(c.kind, CouplingKind::Catenary(_))) {
+        plots.push(TimeSeriesView::new("catenary end tensions [N]").with_origin("plots/catenary").into());
+    }
+    let scene: ContainerLike = Spatial3DView::new("scene").with_origin("world").into();
+    Blueprint::new(Horizontal::new([scene, Vertical::new(plots).into()]).with_column_shares([3.0, 2.0]))
+        .with_blueprint_panel(BlueprintPanel::from_state(PanelState::Collapsed))
+        .with_selection_panel(SelectionPanel::from_state(PanelState::Collapsed))
+        .with_time_panel(TimePanel::new().with_timeline("sim_time"))
+}
+
+/// Sends `world`'s [`layout`] to the viewer behind `stream` (nothing for a disabled stream).
+pub fn send_layout(stream: &RecordingStream, world: &World) -> rerun::RecordingStreamResult<()> {
+    if !stream.is_enabled() {
+        return Ok(());
+    }
+    layout(world).send(stream, BlueprintActivation { make_active: true, make_default: true })
 }
 
 /// Forwards one recording stream's messages to the shared sinks; dropping it (the stream ended)

@@ -3,8 +3,9 @@
 //! The crate is split along one rule: [`physics`] is pure numerics with no GUI or viewer
 //! dependency; [`scene`] turns a RON file into a [`physics::World`]; [`record`] is the Rerun
 //! adapter that reads a world and writes `.rrd` recordings; [`gui`] is the window (control panel
-//! and embedded Rerun viewer) that sends a running world commands. The `tether` binary's command
-//! line lives beside `main.rs`.
+//! and embedded Rerun viewer) that sends a running world commands; [`study`] measures the
+//! integrators against a reference run and writes tables and a chart. The `tether` binary's
+//! command line lives beside `main.rs`.
 //!
 //! Units are SI throughout (`../shared/PHYSICS.md` header):
 //!
@@ -23,3 +24,4 @@ pub mod gui;
 pub mod physics;
 pub mod record;
 pub mod scene;
+pub mod study;

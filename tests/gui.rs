@@ -191,7 +191,9 @@ fn the_tuned_scene_is_saved_as_ron_that_loads_back() {
 /// compared with `tests/snapshots/control_panel.png` (`UPDATE_SNAPSHOTS=1` rewrites it).
 #[test]
 fn the_panel_renders_on_the_cpu_like_its_snapshot() {
-    let panel = panel(&repo("scenes"));
+    // A folder of its own: the scene list stays the same when scenes are added to the repository.
+    let dir = scenes_folder(&[("moored_buoy.ron", &std::fs::read_to_string(repo("scenes/moored_buoy.ron")).unwrap())]);
+    let panel = panel(dir.path());
     let mut harness = Harness::builder()
         .with_size([440.0, 1100.0])
         .with_options(SnapshotOptions::new().threshold(2.0).output_path(repo("tests/snapshots")))
@@ -203,4 +205,34 @@ fn the_panel_renders_on_the_cpu_like_its_snapshot() {
     let colors: std::collections::HashSet<_> = image.pixels().map(|p| p.0).collect();
     assert!(colors.len() > 20, "a blank render: {} colours", colors.len());
     harness.snapshot("control_panel");
+}
+
+/// Where there is contact: its knobs reach the running contact law, and the estimator's k1, k2
+/// (from the default impact) go into them with one click.
+#[test]
+fn contact_knobs_and_the_estimator_tune_the_running_contact() {
+    let mut harness = harness(panel(&repo("scenes")));
+    open_from_list(&mut harness, "box_drop.ron");
+    set_knob(&mut harness, "stiffness k1", 2.5e8);
+    until(&mut harness, "the applied message", |p| p.log().any(|l| l.text.contains("applied")));
+    let contact_stiffness = |world: &World| match &world.couplings[0].kind {
+        CouplingKind::Contact(contact) => contact.law.stiffness,
+        kind => panic!("not a contact: {kind:?}"),
+    };
+    assert_eq!(contact_stiffness(&world(&harness)), 2.5e8);
+
+    harness.get_by_label_contains("Use k1, k2 for").click();
+    harness.run_steps(2);
+    let estimated = harness.state().status().map(|s| s.contacts[0].clone()).unwrap();
+    let impact = tether::physics::coupling::contact::estimator::Impact {
+        mass: estimated.mass,
+        other_mass: estimated.other_mass,
+        area: estimated.area,
+        speed: 1.0,
+        range: estimated.range,
+        min_distance: -0.005,
+        damping_ratio: 0.1,
+    };
+    let expected = tether::physics::coupling::contact::estimator::estimate(&impact).unwrap().stiffness;
+    until(&mut harness, "the estimate in the running contact", |p| p.simulation().snapshot(PATIENCE).is_some_and(|w| contact_stiffness(&w) == expected));
 }

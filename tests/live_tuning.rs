@@ -7,7 +7,7 @@ mod common;
 use common::{oscillator, repo, scene_files};
 use std::path::Path;
 use tether::physics::coupling::CouplingKind;
-use tether::physics::integrator::{Integrator, Substeps, Timing};
+use tether::physics::integrator::{Integrator, Substeps, Timing, Tolerances};
 use tether::physics::world::World;
 use tether::scene::{self, build};
 
@@ -40,7 +40,7 @@ fn a_stiffer_spring_swapped_in_continues_the_motion_at_the_new_frequency() {
         "SpringDamper(name: \"s\", end1: World((0.0, 0.0, 0.0)), end2: Body(body: \"m\"), law: Linear(stiffness: 400.0, rest_length: 1.0))",
     )
     .unwrap();
-    let stiffer = build::coupling(&loaded.file, 0).unwrap();
+    let stiffer = build::coupling(&loaded.file, 0, Path::new(".")).unwrap();
     world.replace_coupling(0, stiffer).unwrap();
     let after = world.energy();
     let elastic_jump = 0.5 * 300.0 * (state.position.x - 1.0).powi(2);
@@ -66,7 +66,7 @@ fn a_damper_added_while_running_dissipates_and_the_balance_holds() {
     if let scene::file::CouplingDef::SpringDamper { damping, .. } = &mut loaded.file.couplings[0] {
         *damping = 5.0;
     }
-    let damped = build::coupling(&loaded.file, 0).unwrap();
+    let damped = build::coupling(&loaded.file, 0, Path::new(".")).unwrap();
     loaded.world.replace_coupling(0, damped).unwrap();
     run_to(&mut loaded.world, 1.2);
     let energy = loaded.world.energy();
@@ -81,9 +81,9 @@ fn tuned_values_are_checked_by_the_scene_builder() {
     if let scene::file::CouplingDef::SpringDamper { damping, .. } = &mut loaded.file.couplings[0] {
         *damping = -1.0;
     }
-    let refused = build::coupling(&loaded.file, 0).unwrap_err();
+    let refused = build::coupling(&loaded.file, 0, Path::new(".")).unwrap_err();
     assert_eq!(refused.message, "coupling \"s\": damping must be ≥ 0 N·s/m, got -1");
-    assert!(build::coupling(&loaded.file, 7).is_err());
+    assert!(build::coupling(&loaded.file, 7, Path::new(".")).is_err());
 }
 
 /// Halving dt mid-run keeps the oscillator on its closed-form path (x0 cos ωt).
@@ -91,13 +91,13 @@ fn tuned_values_are_checked_by_the_scene_builder() {
 fn the_time_step_changed_while_running_keeps_the_motion() {
     let mut world = oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", 0.0, 1.01, 0.0, 1e-3).world;
     run_to(&mut world, 0.25);
-    world.set_timing(Timing { dt: 5e-4, integrator: Integrator::Leapfrog2, substeps: Substeps::Fixed(2) }).unwrap();
+    world.set_timing(Timing { dt: 5e-4, integrator: Integrator::Leapfrog2, substeps: Substeps::Fixed(2), tolerances: Tolerances::default() }).unwrap();
     assert_eq!((world.dt(), world.substeps()), (5e-4, 2));
     run_to(&mut world, 1.0);
     let error = world.state(0).position.x - 1.0 - 0.01 * (10.0 * world.time()).cos();
     assert!(error.abs() < 1e-6, "error {error:e} m");
-    assert!(world.set_timing(Timing { dt: 0.0, integrator: Integrator::Leapfrog, substeps: Substeps::Fixed(1) }).is_err());
-    assert!(world.set_timing(Timing { dt: 1e-3, integrator: Integrator::Leapfrog, substeps: Substeps::Fixed(0) }).is_err());
+    assert!(world.set_timing(Timing { dt: 0.0, integrator: Integrator::Leapfrog, substeps: Substeps::Fixed(1), tolerances: Tolerances::default() }).is_err());
+    assert!(world.set_timing(Timing { dt: 1e-3, integrator: Integrator::Leapfrog, substeps: Substeps::Fixed(0), tolerances: Tolerances::default() }).is_err());
     assert_eq!(world.dt(), 5e-4, "a refused setting leaves the world as it was");
 }
 
@@ -107,10 +107,24 @@ fn every_scene_round_trips_through_ron() {
     for path in scene_files() {
         let loaded = scene::load(&path).unwrap();
         let text = scene::to_ron(&loaded.file).unwrap();
-        let again = scene::parse(&text, Path::new("saved.ron")).unwrap_or_else(|e| panic!("{}: {e}\n{text}", path.display()));
+        // Beside the original, where its mesh files are.
+        let again = scene::parse(&text, &path.with_file_name("saved.ron")).unwrap_or_else(|e| panic!("{}: {e}\n{text}", path.display()));
         assert_eq!(again.file, loaded.file, "{}", path.display());
         assert_eq!(again.world.couplings, loaded.world.couplings, "{}", path.display());
     }
+}
+
+/// A scene with a mesh saved into another folder still finds its mesh.
+#[test]
+fn a_scene_saved_elsewhere_still_finds_its_mesh() {
+    let original = repo("scenes/fender.ron");
+    let mut loaded = scene::load(&original).unwrap();
+    let elsewhere = tempfile::tempdir().unwrap();
+    scene::relocate_meshes(&mut loaded.file, original.parent().unwrap(), elsewhere.path());
+    let saved = elsewhere.path().join("fender.ron");
+    std::fs::write(&saved, scene::to_ron(&loaded.file).unwrap()).unwrap();
+    let again = scene::load(&saved).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(again.world.bodies.len(), loaded.world.bodies.len());
 }
 
 /// A tuned catenary written out and read back keeps its tuned values.

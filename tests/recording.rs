@@ -71,3 +71,16 @@ fn catenary_shape_and_end_tensions_are_recorded() {
         assert_eq!(rows.get(entity), Some(&11), "{entity}: {rows:?}");
     }
 }
+
+#[test]
+fn a_contact_recording_has_its_face_arrows_and_force_plots() {
+    let (_dir, out) = record("scenes/fender.ron", &["--duration", "4", "--log-hz", "10"]);
+    let rows = rows_per_entity(&out);
+    // dt = 2 ms, 10 Hz → frames at steps 0, 50, …, 2000: 41.
+    for entity in ["/world/contacts/quay", "/world/contacts/hull", "/plots/contact/quay", "/plots/contact/hull", "/world/bodies/fender"] {
+        assert_eq!(rows.get(entity), Some(&41), "{entity}: {rows:?}");
+    }
+    assert!(!rows.contains_key("/world/couplings/quay"), "a contact is not drawn as a line: {rows:?}");
+    // The fender mesh is logged once, statically.
+    assert_eq!(rows.get("/world/bodies/fender/shape"), Some(&0));
+}

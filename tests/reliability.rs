@@ -91,7 +91,7 @@ fn unknown_integrator_and_bad_time_step_flags_are_refused() {
     let scene = common::repo("scenes/chain.ron");
     let out = tether().args(["record", scene.to_str().unwrap(), "-o", "/tmp/never.rrd", "--integrator", "euler"]).output().unwrap();
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("unknown variant `euler`, expected `leapfrog`"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("unknown integrator `euler`, expected one of leapfrog, leapfrog2, splitting, rk4, dopri45"));
     let out = tether().args(["record", scene.to_str().unwrap(), "-o", "/tmp/never.rrd", "--dt=-0.001"]).output().unwrap();
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--dt must be a positive number of seconds, got -0.001"));

@@ -88,3 +88,109 @@ fn auto_substeps_make_a_too_large_step_stable() {
     assert_eq!(fixed.substeps(), 3);
     assert_eq!(steps_to_failure(&mut fixed, 1000), None);
 }
+
+/// |R(z)|² of RK4, `R = 1 + z + z²/2 + z³/6 + z⁴/24`, for `z = x + iy`, written out here apart
+/// from the estimator's.
+fn rk4_gain(x: f64, y: f64) -> f64 {
+    let (mut re, mut im, mut term_re, mut term_im) = (1.0, 0.0, 1.0, 0.0);
+    for k in 1..=4 {
+        let (r, i) = ((term_re * x - term_im * y) / f64::from(k), (term_re * y + term_im * x) / f64::from(k));
+        (term_re, term_im) = (r, i);
+        re += r;
+        im += i;
+    }
+    (re * re + im * im).sqrt()
+}
+
+/// RK4 on the same oscillators: the estimator's limit is where `|R(dt λ)| = 1` along the
+/// oscillator's eigenvalue `λ = ω(−ζ ± i√(1−ζ²))` (real `−ω` at ζ = 1): 2√2/ω = 0.282843 s
+/// undamped, 0.295085 s at ζ = 0.1 (the region bulges left of the imaginary axis), 0.262254 s
+/// at ζ = 0.5 and 0.278529 s at ζ = 1 (RK4's real-axis limit 2.78529). RK4 stays bounded at
+/// 0.99 of it for 20 000 steps (it damps) and blows up at 1.01. At ζ = 1 the step map is
+/// defective (a double eigenvalue): below the limit the energy still swings up by
+/// ~n·|R|ⁿ before it decays — 2600× at 0.99, 19× at 0.9, 2.5× at 0.8 of the limit — so the
+/// health check stops 0.99× as it should stop any such swing; there it is checked at 0.8×.
+#[test]
+fn rk4_thresholds_match_the_estimator_within_one_percent() {
+    let omega: f64 = 10.0;
+    for (zeta, expected, below_factor) in [(0.0_f64, 0.2828427, 0.99), (0.1, 0.295085, 0.99), (0.5, 0.262254, 0.99), (1.0, 0.2785294, 0.8)] {
+        let damping = 2.0 * zeta * omega;
+        let scene = |dt: f64| {
+            common::scene(&format!(
+                "Scene(gravity: (0, 0, 0), dt: {dt:e}, integrator: rk4, bodies: [Body(name: \"m\",
+                    master: Node(position: (1.01, 0, 0), mass: 1.0, inertia: Inertia(xx: 0.01, yy: 0.01, zz: 0.01)),
+                    support: Fixed(translation: (false, true, true), rotation: true), shape: Sphere(radius: 0.1))],
+                 couplings: [SpringDamper(name: \"s\", end1: World((0, 0, 0)), end2: Body(body: \"m\"),
+                    law: Linear(stiffness: 100.0, rest_length: 1.0), damping: {damping:e})])"
+            ))
+            .world
+        };
+        let limit = stability::binding(&stability::limits(&scene(1e-3))).unwrap();
+        assert_relative_eq!(limit.dt, expected, max_relative = 2e-6);
+        let (x, y) = if zeta < 1.0 { (-zeta * omega, omega * (1.0 - zeta * zeta).sqrt()) } else { (-omega, 0.0) };
+        assert_relative_eq!(rk4_gain(x * limit.dt, y * limit.dt), 1.0, epsilon = 1e-9);
+
+        let mut below = scene(below_factor * limit.dt);
+        assert_eq!(steps_to_failure(&mut below, 20_000), None, "ζ = {zeta} at {below_factor} of the limit");
+        assert!((below.state(0).position.x - 1.0).abs() <= 0.0101);
+        let mut above = scene(1.01 * limit.dt);
+        let (_, error) = steps_to_failure(&mut above, 20_000).unwrap_or_else(|| panic!("ζ = {zeta} at 1.01 of the limit did not diverge"));
+        assert!(error.to_string().contains("set by coupling \"s\""), "{error}");
+    }
+}
+
+/// The splitting and the leapfrog2 move translation exactly as the leapfrog: Belytschko's limit
+/// `2(√(1+ζ²) − ζ)/ω` holds for them too (ζ = 0 and 0.5, at 0.99× and 1.01×).
+#[test]
+fn splitting_and_leapfrog2_share_the_leapfrog_threshold() {
+    let omega: f64 = 10.0;
+    for integrator in ["splitting", "leapfrog2"] {
+        for zeta in [0.0_f64, 0.5] {
+            let scene = |dt: f64| {
+                common::scene(&format!(
+                    "Scene(gravity: (0, 0, 0), dt: {dt:e}, integrator: {integrator}, bodies: [Body(name: \"m\",
+                        master: Node(position: (1.01, 0, 0), mass: 1.0, inertia: Inertia(xx: 0.01, yy: 0.01, zz: 0.01)),
+                        support: Fixed(translation: (false, true, true), rotation: true), shape: Sphere(radius: 0.1))],
+                     couplings: [SpringDamper(name: \"s\", end1: World((0, 0, 0)), end2: Body(body: \"m\"),
+                        law: Linear(stiffness: 100.0, rest_length: 1.0), damping: {:e})])",
+                    2.0 * zeta * omega
+                ))
+                .world
+            };
+            let limit = stability::binding(&stability::limits(&scene(1e-3))).unwrap();
+            assert_relative_eq!(limit.dt, 2.0 * ((1.0 + zeta * zeta).sqrt() - zeta) / omega, max_relative = 1e-12);
+            assert_eq!(steps_to_failure(&mut scene(0.99 * limit.dt), 20_000), None, "{integrator}, ζ = {zeta}, 0.99×");
+            assert!(steps_to_failure(&mut scene(1.01 * limit.dt), 20_000).is_some(), "{integrator}, ζ = {zeta}, 1.01×");
+        }
+    }
+}
+
+/// `substeps: Auto` uses the scene's integrator's limit: at dt = 0.5 s on ω = 10 rad/s, RK4 takes
+/// ⌈0.5/(0.9·0.28284)⌉ = 2 sub-steps where the leapfrog takes ⌈0.5/(0.9·0.2)⌉ = 3, and the
+/// adaptive dopri45 takes one (its own steps adapt) and stays on the closed form.
+#[test]
+fn auto_substeps_follow_the_integrator() {
+    let scene = |integrator: &str| {
+        common::scene(&format!(
+            "Scene(gravity: (0, 0, 0), dt: 0.5, integrator: {integrator}, substeps: Auto, adaptive: (rtol: 1e-9, atol: 1e-12), bodies: [Body(name: \"m\",
+                master: Node(position: (1.01, 0, 0), mass: 1.0, inertia: Inertia(xx: 0.01, yy: 0.01, zz: 0.01)),
+                support: Fixed(translation: (false, true, true), rotation: true), shape: Sphere(radius: 0.1))],
+             couplings: [SpringDamper(name: \"s\", end1: World((0, 0, 0)), end2: Body(body: \"m\"), law: Linear(stiffness: 100.0, rest_length: 1.0))])"
+        ))
+        .world
+    };
+    for (integrator, substeps) in [("leapfrog", 3), ("splitting", 3), ("rk4", 2), ("dopri45", 1)] {
+        let mut world = scene(integrator);
+        assert_eq!(world.substeps(), substeps, "{integrator}");
+        for _ in 0..20 {
+            world.step().unwrap();
+        }
+        assert!((world.state(0).position.x - 1.0).abs() <= 0.0101, "{integrator} bounded");
+        if integrator == "dopri45" {
+            // x = 0.01 cos(10 t) at t = 10 s; every world step ends exactly on its boundary.
+            assert_relative_eq!(world.state(0).position.x - 1.0, 0.01 * 100f64.cos(), epsilon = 1e-8);
+            assert_eq!(world.time(), 10.0);
+            assert!(world.integrator_steps() > 20 && world.rejected_steps() < world.integrator_steps(), "{} / {}", world.integrator_steps(), world.rejected_steps());
+        }
+    }
+}

@@ -2,7 +2,8 @@
 
 use std::fmt::Write as _;
 use tether::physics::body::Support;
-use tether::physics::coupling::{CouplingKind, ElasticLaw, Endpoint};
+use tether::physics::coupling::contact::Opposing;
+use tether::physics::coupling::{Contact, CouplingKind, ElasticLaw, Endpoint};
 use tether::physics::stability;
 use tether::physics::world::World;
 use tether::physics::{Mat3, Vec3};
@@ -16,11 +17,12 @@ fn report(world: &World, label: &str) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "{label}: ok — {} bodies, {} couplings, dt = {} s, integrator {:?}, {} substep(s) of {:.6e} s",
+        "{label}: ok — {} bodies, {} couplings, dt = {} s, integrator {}{}, {} substep(s) of {:.6e} s",
         world.bodies.len(),
         world.couplings.len(),
         world.dt(),
-        world.integrator,
+        world.integrator.name(),
+        adaptive(world),
         world.substeps(),
         world.step_size()
     );
@@ -43,14 +45,16 @@ fn report(world: &World, label: &str) -> String {
     for (coupling, forces) in world.couplings.iter().zip(world.coupling_forces()) {
         let [end1, end2] = coupling.ends();
         let _ = writeln!(out, "\ncoupling \"{}\" ({})", coupling.name, coupling.kind_name());
-        let _ = writeln!(out, "  end 1 {}   end 2 {}", end(world, &end1), end(world, &end2));
         let chord = (forces.point2 - forces.point1).norm();
+        let ends = format!("  end 1 {}   end 2 {}", end(world, &end1), end(world, &end2));
         match &coupling.kind {
             CouplingKind::SpringDamper(spring) => {
+                let _ = writeln!(out, "{ends}");
                 let _ = writeln!(out, "  law {}, damping {} N·s/m", law(&spring.law), spring.damping);
                 let _ = writeln!(out, "  length {chord:.6} m, tension {:.6} N", forces.tension);
             }
             CouplingKind::Catenary(line) => {
+                let _ = writeln!(out, "{ends}");
                 let _ = writeln!(out, "  λ0 = {} kg/m, L_eq = {} m, D = {} N/m (EA = {} N)", line.mass_per_length, line.length, line.stiffness, line.stiffness * line.length);
                 if let Some(state) = line.state() {
                     let (t1, t2) = state.end_tensions();
@@ -61,14 +65,21 @@ fn report(world: &World, label: &str) -> String {
                     );
                 }
             }
+            CouplingKind::Contact(contact) => contact_report(&mut out, world, contact),
         }
     }
     let limits = stability::limits(world);
-    let _ = writeln!(out, "\nstable time step ({:?}):", world.integrator);
+    let adaptive = world.integrator.is_adaptive();
+    let title = if adaptive { "stiffness limit (dopri45 adapts its step; explicit steps are held below these)" } else { "stable time step" };
+    let _ = writeln!(out, "\n{title} ({}):", world.integrator.name());
     for limit in &limits {
         let _ = writeln!(out, "  {:<40} {:.6e} s", limit.describe(world), limit.dt);
     }
     match stability::binding(&limits) {
+        Some(binding) if adaptive => {
+            let verdict = if world.step_size() <= binding.dt { "does not hold it back" } else { "holds its steps near this" };
+            let _ = writeln!(out, "  binding: {} at {:.6e} s; with the integrator step {:.6e} s it {verdict}", binding.describe(world), binding.dt, world.step_size());
+        }
         Some(binding) => {
             let verdict = if world.step_size() <= binding.dt { "stable" } else { "UNSTABLE: lower dt or add substeps" };
             let _ = writeln!(out, "  binding: {} at {:.6e} s; the integrator step {:.6e} s is {verdict}", binding.describe(world), binding.dt, world.step_size());
@@ -77,6 +88,10 @@ fn report(world: &World, label: &str) -> String {
             let _ = writeln!(out, "  nothing limits the time step");
         }
     }
+    for impact in stability::impact_limits(world) {
+        let verdict = if world.step_size() <= impact.dt { "resolved" } else { "UNDER-RESOLVED: the rebound will be wrong; lower dt or add substeps" };
+        let _ = writeln!(out, "  {:<40} {:.6e} s; the integrator step is {verdict}", impact.describe(world), impact.dt);
+    }
     let e = world.energy();
     let _ = writeln!(
         out,
@@ -84,6 +99,45 @@ fn report(world: &World, label: &str) -> String {
         e.kinetic + 0.0, e.gravity + 0.0, e.elastic + 0.0, e.total() + 0.0
     );
     out
+}
+
+/// ` (rtol …, atol …, max step …)` for the adaptive scheme, nothing for the others.
+fn adaptive(world: &World) -> String {
+    if !world.integrator.is_adaptive() {
+        return String::new();
+    }
+    let t = world.tolerances();
+    let max_step = t.max_step.map_or_else(|| "the integrator step".to_string(), |m| format!("{m} s"));
+    format!(" (rtol {:e}, atol {:e}, max step {max_step})", t.rtol, t.atol)
+}
+
+fn contact_report(out: &mut String, world: &World, contact: &Contact) {
+    let body = &world.bodies[contact.body];
+    let against = match &contact.against {
+        Opposing::Planes(planes) if planes.len() == 1 => format!("the plane through {} m with normal {}", v(&planes[0].point), v(&planes[0].normal)),
+        Opposing::Planes(planes) => format!("{} walls of the domain box", planes.len()),
+        Opposing::Body { body, .. } => format!("body \"{}\"", world.bodies[*body].name),
+    };
+    let boundary = &contact.boundary;
+    let _ = writeln!(out, "  faces of body \"{}\" ({} faces, {:.6} m²) against {against}", body.name, boundary.faces().len(), boundary.area());
+    let law = &contact.law;
+    let _ = writeln!(
+        out,
+        "  k1 = {} N/m³, k2 = {} N·s/m³, d0 = {} m, μ = {}, k_t = {} s/m, expected area {:.6e} m²",
+        law.stiffness, law.damping, law.range, law.friction, law.friction_sharpness, contact.expected_area
+    );
+    let mass = |i: usize| if world.bodies[i].is_kinematic() { 0.0 } else { world.bodies[i].inverse_mass };
+    let inverse_mass = mass(contact.body) + contact.other_body().map_or(0.0, mass);
+    let totals = contact.totals(world.frames());
+    let _ = writeln!(
+        out,
+        "  stopping time τ = {:.6e} s; now {} faces in contact over {:.6e} m², normal force {:.6} N, friction {:.6} N",
+        contact.stopping_time(contact.limit_area(world.frames()), inverse_mass),
+        totals.faces,
+        totals.area,
+        totals.normal,
+        totals.friction
+    );
 }
 
 /// `(x, y, z)` with 6 decimals; `+ 0.0` prints −0 as 0.

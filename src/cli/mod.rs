@@ -1,9 +1,11 @@
 //! Subcommands of `tether`, one module each.
 
 mod check;
+mod estimate_contact;
 mod forces;
 mod gui;
 mod record;
+mod study;
 
 use anyhow::Context as _;
 use clap::{Parser, Subcommand};
@@ -35,6 +37,9 @@ enum Command {
         /// Recording file (.rrd).
         recording: PathBuf,
     },
+    /// Run the scene with each integrator at a ladder of time steps against a reference run;
+    /// print the accuracy-versus-cost table and write it as CSV, Markdown and a PNG chart.
+    Study(study::StudyArgs),
     /// Print the forces of the initial state.
     Forces {
         /// Scene file (.ron).
@@ -43,6 +48,8 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Contact parameters k1, k2, the stopping time τ and a time step from an expected impact.
+    EstimateContact(estimate_contact::EstimateArgs),
 }
 
 /// Exit code of a run stopped by Ctrl-C or SIGTERM (128 + SIGINT, the shell's convention).
@@ -60,6 +67,8 @@ pub fn run(cli: Cli) -> anyhow::Result<u8> {
             record::Outcome::Interrupted => INTERRUPTED,
         }),
         Command::Forces { scene, json } => forces::run(&load(&scene)?, json).map(|()| 0),
+        Command::EstimateContact(args) => estimate_contact::run(&args).map(|()| 0),
+        Command::Study(args) => study::run(&args).map(|()| 0),
     }
 }
 
@@ -72,12 +81,23 @@ fn load(path: &Path) -> anyhow::Result<Scene> {
     Ok(scene)
 }
 
-/// Warns once when the time step exceeds the binding stable time step.
+/// Warns once when the integrator step exceeds the binding stable time step of the world's
+/// integrator; for the adaptive one, notes that a stiff coupling will hold its steps.
 fn warn_if_unstable(world: &tether::physics::world::World) {
     let limits = tether::physics::stability::limits(world);
-    if let Some(binding) = tether::physics::stability::binding(&limits).filter(|b| world.step_size() > b.dt) {
+    let Some(binding) = tether::physics::stability::binding(&limits).filter(|b| world.step_size() > b.dt) else { return };
+    let name = world.integrator.name();
+    if world.integrator.is_adaptive() {
         eprintln!(
-            "warning: the integrator step {:.3e} s exceeds the stable time step {:.3e} s set by {}: the run will likely diverge (lower dt or set substeps: Auto)",
+            "note: {} holds {name}'s steps near {:.3e} s (stiff for an explicit scheme): expect about {:.0} steps per integrator step of {:.3e} s",
+            binding.describe(world),
+            binding.dt,
+            (world.step_size() / binding.dt).ceil(),
+            world.step_size()
+        );
+    } else {
+        eprintln!(
+            "warning: the integrator step {:.3e} s exceeds the stable time step {:.3e} s of {name}, set by {}: the run will likely diverge (lower dt or set substeps: Auto)",
             world.step_size(),
             binding.dt,
             binding.describe(world)

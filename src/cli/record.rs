@@ -42,9 +42,11 @@ pub enum Outcome {
 }
 
 /// An integrator by its scene-file name (`leapfrog`, …).
-fn parse_integrator(name: &str) -> Result<Integrator, String> {
-    use serde::Deserialize as _;
-    Integrator::deserialize(serde::de::value::StrDeserializer::<serde::de::value::Error>::new(name)).map_err(|e| e.to_string())
+pub(super) fn parse_integrator(name: &str) -> Result<Integrator, String> {
+    Integrator::from_name(name).ok_or_else(|| {
+        let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.name()).collect();
+        format!("unknown integrator `{name}`, expected one of {}", names.join(", "))
+    })
 }
 
 fn positive(name: &str, value: f64, unit: &str) -> anyhow::Result<f64> {

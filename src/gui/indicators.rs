@@ -110,6 +110,12 @@ fn stability_ui(ui: &mut egui::Ui, status: &Status) {
             }
             ui.end_row();
         }
+        for (name, dt) in &status.impact_limits {
+            ui.label(name);
+            let (color, verdict) = if status.step_size <= *dt { (GREEN, "resolved") } else { (RED, "too coarse: impacts not resolved") };
+            ui.colored_label(color, format!("{dt:.3e} s {verdict}"));
+            ui.end_row();
+        }
     });
 }
 

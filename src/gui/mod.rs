@@ -9,11 +9,13 @@
 //!   - [`run_controls`]: play/pause/step/reset, speed, integrator, dt, substeps;
 //!   - [`tuning`]: every parameter of every coupling, with units; revert, save as;
 //!   - [`indicators`]: energy balance, stable time steps, the selected body;
+//!   - [`contact_estimator`]: k1, k2, τ from an impact, where the scene has contact;
 //! - [`simulation`]: the thread that owns the world;
 //! - [`stream`]: where recordings go (embedded viewer, `--connect`, `--save`);
 //! - [`watch`], [`dialogs`]: the open file watched on disk, file dialogs off the GUI thread.
 
 pub mod app;
+pub mod contact_estimator;
 pub mod dialogs;
 pub mod indicators;
 pub mod panel;

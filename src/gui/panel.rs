@@ -5,6 +5,7 @@
 //! State is split the egui-demo way: [`Settings`] is plain data worth keeping between sessions;
 //! the runtime handles (thread, watcher, dialogs) live beside it.
 
+use super::contact_estimator::{self, ImpactDraft, UseEstimate};
 use super::dialogs::{Dialogs, Purpose};
 use super::indicators::{self, EnergyHistory};
 use super::run_controls::{self, RunAction, TimingDraft};
@@ -13,6 +14,7 @@ use super::simulation::{Command, Report, Run, Simulation, Speed, Status, Wake};
 use super::stream::Sinks;
 use super::tuning::{self, TuningAction};
 use super::watch::FileWatch;
+use crate::scene::file::CouplingDef;
 use crate::scene::{self, SceneFile, build};
 use rerun::external::egui;
 use std::collections::VecDeque;
@@ -80,6 +82,7 @@ pub struct ControlPanel {
     scenes_dir: PathBuf,
     scene_list: Vec<PathBuf>,
     recordings_to_open: Vec<PathBuf>,
+    impact: ImpactDraft,
 }
 
 impl ControlPanel {
@@ -101,6 +104,7 @@ impl ControlPanel {
             scenes_dir,
             scene_list,
             recordings_to_open: Vec::new(),
+            impact: ImpactDraft::default(),
         })
     }
 
@@ -213,6 +217,10 @@ impl ControlPanel {
             ui.separator();
             indicators::ui(ui, self.status.as_ref(), &self.history, selected);
             ui.separator();
+            let contacts = self.status.as_ref().map_or(&[][..], |s| s.contacts.as_slice());
+            if let Some(estimate) = contact_estimator::ui(ui, contacts, &mut self.impact) {
+                self.use_estimate(estimate);
+            }
             self.tuning_ui(ui);
             ui.separator();
             self.log_ui(ui);
@@ -374,13 +382,23 @@ impl ControlPanel {
         let (Some(draft), Some(refusal)) = (open.drafts.get(index), open.refusals.get_mut(index)) else { return };
         let mut candidate = open.tuned.clone();
         candidate.couplings[index] = draft.clone();
-        match build::coupling(&candidate, index) {
+        let directory = open.path.parent().unwrap_or(Path::new("."));
+        match build::coupling(&candidate, index, directory) {
             Ok(coupling) => {
                 *refusal = None;
                 open.tuned = candidate;
                 self.simulation.send(Command::SetCoupling { index, coupling, sent: Instant::now() });
             }
             Err(problem) => *refusal = Some(problem.message),
+        }
+    }
+
+    /// The estimator's k1 and k2 into a contact's knobs, applied as an edit.
+    fn use_estimate(&mut self, estimate: UseEstimate) {
+        let Some(open) = &mut self.scene else { return };
+        if let Some(CouplingDef::Contact { stiffness, damping, .. }) = open.drafts.get_mut(estimate.index) {
+            (*stiffness, *damping) = (estimate.stiffness, estimate.damping);
+            self.tune(estimate.index);
         }
     }
 
@@ -394,10 +412,14 @@ impl ControlPanel {
         }
     }
 
-    /// Writes the tuned scene to `path` as RON that loads back to the same scene.
+    /// Writes the tuned scene to `path` as RON that loads back to the same scene (mesh files
+    /// found from the new folder too).
     pub fn save_as(&mut self, path: &Path) {
         let Some(open) = &self.scene else { return };
-        let written = scene::to_ron(&open.tuned).map_err(|e| e.to_string()).and_then(|text| std::fs::write(path, text).map_err(|e| e.to_string()));
+        let mut tuned = open.tuned.clone();
+        let folder = |p: &Path| std::path::absolute(p.parent().unwrap_or(Path::new("."))).unwrap_or_default();
+        scene::relocate_meshes(&mut tuned, &folder(&open.path), &folder(path));
+        let written = scene::to_ron(&tuned).map_err(|e| e.to_string()).and_then(|text| std::fs::write(path, text).map_err(|e| e.to_string()));
         match written {
             Ok(()) => self.note(format!("saved the tuned scene to {}", path.display())),
             Err(error) => self.note_error(format!("cannot save {}: {error}", path.display())),

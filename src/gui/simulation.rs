@@ -14,7 +14,8 @@
 //! message, as `tether record` stops with it; the world must then be reset.
 
 use crate::physics::body::BodyState;
-use crate::physics::coupling::Coupling;
+use crate::physics::coupling::contact::Opposing;
+use crate::physics::coupling::{Coupling, CouplingKind};
 use crate::physics::energy::EnergyReport;
 use crate::physics::integrator::Timing;
 use crate::physics::stability::{self, Limiter};
@@ -105,10 +106,28 @@ pub struct Status {
     pub coupling_limits: Vec<(String, Option<f64>)>,
     /// Stable time step set by the fastest spinning body, if any spins [s].
     pub rotation_limit: Option<(String, f64)>,
+    /// Time step that resolves each contact's impact, `τ/10` [s] (not a stability limit).
+    pub impact_limits: Vec<(String, f64)>,
+    /// What the contact estimator needs of each contact.
+    pub contacts: Vec<ContactStatus>,
     pub bodies: Vec<BodyStatus>,
     /// Simulated seconds per wall second, and world steps per wall second, over the last tick.
     pub rate: f64,
     pub steps_per_second: f64,
+}
+
+/// A contact coupling as the estimator sees it (PHYSICS.md §4).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactStatus {
+    /// Coupling index in the scene, and name.
+    pub index: usize,
+    pub name: String,
+    /// Mass of the body [kg], and of the opposing body (`None` against the environment).
+    pub mass: f64,
+    pub other_mass: Option<f64>,
+    /// Expected contact area `A` [m²] and range `d0` [m].
+    pub area: f64,
+    pub range: f64,
 }
 
 /// A body's state, synchronised at the current time.
@@ -409,7 +428,7 @@ impl Runner {
                 "dt = {:e} s, {} substep(s), {:?} from t = {:.4} s",
                 timing.dt,
                 run.world.substeps(),
-                timing.integrator,
+                timing.integrator.name(),
                 run.world.time()
             )),
             Err(error) => Report::Error(error.to_string()),
@@ -441,7 +460,7 @@ impl Runner {
             .iter()
             .filter_map(|l| match l.limiter {
                 Limiter::Rotation(body) => Some((world.bodies[body].name.clone(), l.dt)),
-                Limiter::Coupling(_) => None,
+                Limiter::Coupling(_) | Limiter::Impact(_) => None,
             })
             .min_by(|a, b| a.1.total_cmp(&b.1));
         let status = Status {
@@ -457,12 +476,32 @@ impl Runner {
             substeps: world.substeps(),
             coupling_limits: world.couplings.iter().enumerate().map(|(i, c)| (c.name.clone(), coupling_limit(i))).collect(),
             rotation_limit,
+            impact_limits: stability::impact_limits(world).iter().map(|l| (l.describe(world), l.dt)).collect(),
+            contacts: contacts(world),
             bodies: (0..world.bodies.len()).map(|i| body_status(world, i)).collect(),
             rate: if self.running { advanced / wall } else { 0.0 },
             steps_per_second: if self.running { steps as f64 / wall } else { 0.0 },
         };
         self.report(Report::Status(Box::new(status)));
     }
+}
+
+fn contacts(world: &World) -> Vec<ContactStatus> {
+    let contact = |(index, coupling): (usize, &Coupling)| match &coupling.kind {
+        CouplingKind::Contact(contact) => Some(ContactStatus {
+            index,
+            name: coupling.name.clone(),
+            mass: world.bodies[contact.body].mass(),
+            other_mass: match &contact.against {
+                Opposing::Body { body, .. } => Some(world.bodies[*body].mass()),
+                Opposing::Planes(_) => None,
+            },
+            area: contact.expected_area,
+            range: contact.law.range,
+        }),
+        CouplingKind::SpringDamper(_) | CouplingKind::Catenary(_) => None,
+    };
+    world.couplings.iter().enumerate().filter_map(contact).collect()
 }
 
 fn body_status(world: &World, index: usize) -> BodyStatus {

@@ -1,4 +1,6 @@
-//! Live tuning: every parameter of every coupling, with its unit, edited in place. The knobs
+//! Live tuning: every parameter of every coupling, with its unit, edited in place (spring law
+//! coefficients and tables, rest length, damping; catenary λ0, L_eq, D; contact k1, k2, d0, μ,
+//! k_t and the expected area when the scene sets it). The knobs
 //! edit the panel's drafts (scene-file data, [`CouplingDef`]); the panel checks an edited draft
 //! with the scene builder and sends the simulation the coupling it builds. "Revert to file"
 //! and "save as" act on the whole scene.
@@ -54,6 +56,7 @@ fn kind_name(def: &CouplingDef) -> &'static str {
     match def {
         CouplingDef::SpringDamper { .. } => "spring-damper",
         CouplingDef::Catenary { .. } => "catenary",
+        CouplingDef::Contact { .. } => "contact",
     }
 }
 
@@ -65,6 +68,14 @@ fn coupling_knobs(ui: &mut egui::Ui, index: usize, def: &mut CouplingDef) -> boo
             CouplingDef::SpringDamper { law, damping, .. } => law_knobs(ui, law) | knob(ui, "damping k_d", damping, "N·s/m"),
             CouplingDef::Catenary { mass_per_length, length, stiffness, .. } => {
                 knob(ui, "mass per length λ0", mass_per_length, "kg/m") | knob(ui, "length L_eq", length, "m") | knob(ui, "stiffness D", stiffness, "N/m")
+            }
+            CouplingDef::Contact { stiffness, damping, range, friction, friction_sharpness, expected_area, .. } => {
+                let law = knob(ui, "stiffness k1", stiffness, "N/m³")
+                    | knob(ui, "damping k2", damping, "N·s/m³")
+                    | knob(ui, "range d0", range, "m")
+                    | knob(ui, "friction μ", friction, "–")
+                    | knob(ui, "friction sharpness k_t", friction_sharpness, "s/m");
+                law | expected_area.as_mut().is_some_and(|area| knob(ui, "expected area A", area, "m²"))
             }
         })
         .inner

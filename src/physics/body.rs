@@ -9,15 +9,19 @@ use super::mass_properties::MassProperties;
 use super::{Rotation, Vec3};
 use nalgebra::Isometry3;
 
-/// Primitive display (and, later, contact) shape in the body's reference frame [m].
+/// Display and contact shape in the body's reference frame [m].
 #[derive(Debug, Clone, PartialEq)]
 pub enum Shape {
-    /// Box with full edge lengths `size` along the reference axes, centred at `center`.
-    Box { size: Vec3, center: Vec3 },
-    /// Sphere of `radius` centred at `center`.
-    Sphere { radius: f64, center: Vec3 },
+    /// Box with full edge lengths `size` along the reference axes, centred at `center`; as a
+    /// contact boundary, each face split into `subdivisions²` squares.
+    Box { size: Vec3, center: Vec3, subdivisions: u32 },
+    /// Sphere of `radius` centred at `center`; as a contact boundary, an icosphere split
+    /// `subdivisions` times.
+    Sphere { radius: f64, center: Vec3, subdivisions: u32 },
     /// Cylinder of `radius` and `length` along the unit `axis`, centred at `center`.
     Cylinder { radius: f64, length: f64, axis: Vec3, center: Vec3 },
+    /// A closed triangle mesh: vertices [m] and counter-clockwise triangles.
+    Mesh { vertices: Vec<Vec3>, triangles: Vec<[u32; 3]> },
 }
 
 /// Velocity of a kinematic body's master node, world frame [m/s].

@@ -32,7 +32,8 @@ impl EnergyReport {
     }
 }
 
-/// Running integrals of dissipated power and external power, by the trapezoid rule.
+/// Running integrals of dissipated power and external power: by the trapezoid rule for the
+/// one-evaluation schemes, by the scheme's own weights for the Runge–Kutta ones.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct EnergyLedger {
     pub dissipated: f64,
@@ -47,12 +48,11 @@ impl EnergyLedger {
         Self { dissipated: 0.0, external_work: 0.0, dissipated_power, external_power }
     }
 
-    /// Books `work` [J] done on the system from outside at one instant (a coupling changed while
-    /// running) and restarts the integrals from the powers [W] evaluated after it.
-    pub fn intervene(&mut self, work: f64, dissipated_power: f64, external_power: f64) {
-        self.external_work += work;
-        self.dissipated_power = dissipated_power;
-        self.external_power = external_power;
+    /// Adds work integrated elsewhere [J] (the Runge–Kutta schemes integrate the powers with
+    /// their own weights).
+    pub fn add(&mut self, dissipated: f64, external_work: f64) {
+        self.dissipated += dissipated;
+        self.external_work += external_work;
     }
 
     /// Advances by `dt` [s] to the new powers [W].

@@ -2,7 +2,8 @@
 //!
 //! - [`mass_properties`]: mass, centre of mass and principal inertia from master + slave nodes (§1).
 //! - [`body`]: a rigid body's constant properties, its state, and its master-node support (§1).
-//! - [`coupling`]: the forces between bodies and the world (§2).
+//! - [`coupling`]: the forces between bodies and the world (§2–4).
+//! - [`mesh`]: boundary meshes of bodies for contact, and their distance queries (§4).
 //! - [`integrator`]: how a state advances in time (§1, time integration).
 //! - [`world`]: bodies + couplings + time, and the named stages of one step.
 //! - [`energy`]: the energy balance that checks it all (§5).
@@ -15,6 +16,7 @@ pub mod dynamics;
 pub mod energy;
 pub mod integrator;
 pub mod mass_properties;
+pub mod mesh;
 pub mod stability;
 pub mod table;
 pub mod world;

@@ -1,18 +1,39 @@
-//! Stable time step of the leapfrog for each coupling and each spinning body.
+//! Stable time step of the world's integrator for each coupling and each spinning body.
 //!
-//! - Spring-damper: the axial mode of the two ends, `ω² = k/m_eff` with the tangent stiffness
-//!   `k` [N/m] and the effective mass of both ends along the spring, rotation about the
-//!   attachment points included: `1/m_eff = Σ_ends (1/m + (r × d)ᵀ I⁻¹ (r × d))` [1/kg]
-//!   (world ends and kinematic bodies add nothing). With `β = k_d/(2 m_eff)` [1/s] the central
-//!   difference is stable for `dt ≤ 2/(√(ω² + β²) + β)`, which is `2(√(1+ζ²) − ζ)/ω` with
-//!   `ζ = β/ω`, and `2/ω` undamped.
-//! - Catenary: the same with `k` the largest eigenvalue of the line's tangent stiffness and `d`
-//!   its eigenvector.
-//! - Rotation: `|ω| dt < 1` (Radioss aborts beyond).
+//! Each coupling is an oscillator along its axis: `ω² = k/m_eff` [1/s²] with the tangent
+//! stiffness `k` [N/m] and the effective mass of both ends along the coupling, rotation about
+//! the attachment points included: `1/m_eff = Σ_ends (1/m + (r × d)ᵀ I⁻¹ (r × d))` [1/kg]
+//! (world ends and kinematic bodies add nothing), and `β = k_d/(2 m_eff)` [1/s], `ζ = β/ω`.
+//! For a catenary `k` is the largest eigenvalue of the line's tangent stiffness and `d` its
+//! eigenvector; it has no damper. For a contact, the oscillator of stiffness `k1 A` and damping
+//! `k2 A` over the effective mass of the two bodies' translation, `A` the larger of the
+//! expected contact area and the area in contact now; and friction, which near rest is a damper
+//! of `c = μ k_t Σ|f_n|` [N·s/m] (an oscillator with `k = 0`: `dt ≤ 2 m_e/c` for the leapfrog).
+//! Stability is not enough for an impact: PHYSICS.md §4 asks for a step well below the
+//! stopping time τ, and [`impact_limits`] gives `τ/10` per contact (stability alone would allow
+//! `4τ/π`); `substeps: Auto` honours both.
+//!
+//! - Leapfrog, leapfrog2, splitting (the same central difference in translation, dampers seeing
+//!   `v(t−½dt)`): stable for `dt ≤ 2/(√(ω² + β²) + β)`, which is `2(√(1+ζ²) − ζ)/ω`
+//!   (Belytschko), `2/ω` undamped.
+//! - RK4 and Dormand–Prince: a linear oscillator's step multiplies each eigenvalue's mode by the
+//!   scheme's stability polynomial `R(z)`, `z = dt λ`, `λ = −β ± i√(ω² − β²)` (or the most
+//!   negative real `−β − √(β² − ω²)` when overdamped). The limit is the first `dt` along that
+//!   ray where `|R(dt λ)| = 1`, found by a scan and bisection: `2√2/ω` undamped for RK4
+//!   (`R = 1 + z + z²/2 + z³/6 + z⁴/24`), `2.785/ω` critically damped. For the adaptive
+//!   Dormand–Prince (`R = Σ_{k≤5} zᵏ/k! + z⁶/600`) this is no limit on the user's step but a
+//!   stiffness warning: its steps will be held near it. Near critical damping (ζ ≈ 1) RK4's
+//!   step map is nearly defective: below the limit the energy of a critically damped spring
+//!   still swings up before it decays (19× at 0.9 of the limit, 2.5× at 0.8), which the
+//!   divergence check stops; the leapfrog family has no such transient.
+//! - Rotation, fixed-step schemes: `|ω| dt < 1` (Radioss aborts beyond).
 
+use super::coupling::contact::estimator::STEPS_PER_STOPPING_TIME;
 use super::coupling::{BodyFrame, CouplingKind, Endpoint};
+use super::integrator::Integrator;
 use super::world::World;
 use super::Vec3;
+use nalgebra::Complex;
 
 /// What limits the time step.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -21,6 +42,8 @@ pub enum Limiter {
     Coupling(usize),
     /// Body index: its spin.
     Rotation(usize),
+    /// Coupling index of a contact: the step that resolves its impact (not a stability limit).
+    Impact(usize),
 }
 
 /// A stable time step [s] and what sets it.
@@ -31,25 +54,72 @@ pub struct Limit {
 }
 
 impl Limit {
-    /// "coupling \"name\"" or "rotation of body \"name\"".
+    /// "coupling \"name\"", "rotation of body \"name\"" or "impact of contact \"name\" (τ/10)".
     pub fn describe(&self, world: &World) -> String {
         match self.limiter {
             Limiter::Coupling(i) => format!("coupling \"{}\"", world.couplings[i].name),
             Limiter::Rotation(i) => format!("rotation of body \"{}\"", world.bodies[i].name),
+            Limiter::Impact(i) => format!("impact of contact \"{}\" (τ/10)", world.couplings[i].name),
         }
     }
 }
 
-/// `2/(√(ω² + β²) + β)` for stiffness `k` [N/m], damping `damping` [N·s/m] and inverse
-/// effective mass `inverse_mass` [1/kg]; infinite when nothing oscillates.
-pub fn damped_oscillator_limit(k: f64, damping: f64, inverse_mass: f64) -> f64 {
+/// The stable step [s] of `integrator` for an oscillator of stiffness `k` [N/m], damping
+/// `damping` [N·s/m] and inverse effective mass `inverse_mass` [1/kg]; infinite when nothing
+/// oscillates.
+pub fn oscillator_limit(integrator: Integrator, k: f64, damping: f64, inverse_mass: f64) -> f64 {
     let omega_squared = k.max(0.0) * inverse_mass;
     let beta = 0.5 * damping.max(0.0) * inverse_mass;
-    let denominator = (omega_squared + beta * beta).sqrt() + beta;
-    if denominator > 0.0 { 2.0 / denominator } else { f64::INFINITY }
+    match integrator {
+        Integrator::Leapfrog | Integrator::Leapfrog2 | Integrator::Splitting => {
+            let denominator = (omega_squared + beta * beta).sqrt() + beta;
+            if denominator > 0.0 { 2.0 / denominator } else { f64::INFINITY }
+        }
+        Integrator::Rk4 => polynomial_limit(&RK4, omega_squared, beta),
+        Integrator::Dopri45 => polynomial_limit(&DORMAND_PRINCE, omega_squared, beta),
+    }
 }
 
-/// Every finite limit of the world at its current state.
+/// Coefficients of the stability polynomial `R(z) = Σ c_k zᵏ` of RK4.
+pub const RK4: [f64; 5] = [1.0, 1.0, 1.0 / 2.0, 1.0 / 6.0, 1.0 / 24.0];
+/// Of the fifth-order Dormand–Prince solution.
+pub const DORMAND_PRINCE: [f64; 7] = [1.0, 1.0, 1.0 / 2.0, 1.0 / 6.0, 1.0 / 24.0, 1.0 / 120.0, 1.0 / 600.0];
+
+/// `R(z)` for the coefficients `c`.
+pub fn amplification(c: &[f64], z: Complex<f64>) -> Complex<f64> {
+    c.iter().rev().fold(Complex::new(0.0, 0.0), |acc, &ck| acc * z + ck)
+}
+
+/// The first `dt` [s] at which `|R(dt λ)|` exceeds 1 for the oscillator eigenvalue `λ` of
+/// `ω²` [1/s²] and `β` [1/s]: a scan of `|z|` by 1/64 up to 8 (beyond every explicit
+/// scheme's region), then bisection to round-off.
+fn polynomial_limit(c: &[f64], omega_squared: f64, beta: f64) -> f64 {
+    let lambda = if beta * beta < omega_squared {
+        Complex::new(-beta, (omega_squared - beta * beta).sqrt())
+    } else {
+        Complex::new(-beta - (beta * beta - omega_squared).sqrt(), 0.0)
+    };
+    let modulus = lambda.norm();
+    if !(modulus > 0.0) {
+        return f64::INFINITY;
+    }
+    let direction = lambda / modulus;
+    let grows = |s: f64| amplification(c, direction * s).norm() > 1.0;
+    const SCAN: f64 = 1.0 / 64.0;
+    let Some(first) = (1..=512).map(|i| f64::from(i) * SCAN).find(|&s| grows(s)) else { return f64::INFINITY };
+    let (mut stable, mut unstable) = (first - SCAN, first);
+    for _ in 0..60 {
+        let middle = 0.5 * (stable + unstable);
+        if grows(middle) {
+            unstable = middle;
+        } else {
+            stable = middle;
+        }
+    }
+    stable / modulus
+}
+
+/// Every finite limit of the world's integrator at the world's current state.
 pub fn limits(world: &World) -> Vec<Limit> {
     let frames = world.frames();
     let mut limits = Vec::new();
@@ -61,7 +131,7 @@ pub fn limits(world: &World) -> Vec<Limit> {
                 let length = chord.norm();
                 let Some(d) = chord.try_normalize(0.0) else { continue };
                 let inverse = inverse_mass_along(world, frames, &end1, &d) + inverse_mass_along(world, frames, &end2, &d);
-                damped_oscillator_limit(spring.law.tangent_stiffness(length), spring.damping, inverse)
+                oscillator_limit(world.integrator, spring.law.tangent_stiffness(length), spring.damping, inverse)
             }
             CouplingKind::Catenary(line) => {
                 let Some(state) = line.state() else { continue };
@@ -70,14 +140,23 @@ pub fn limits(world: &World) -> Vec<Limit> {
                 let (largest, _) = eigen.eigenvalues.argmax();
                 let d = eigen.eigenvectors.column(largest).into_owned();
                 let inverse = inverse_mass_along(world, frames, &end1, &d) + inverse_mass_along(world, frames, &end2, &d);
-                damped_oscillator_limit(eigen.eigenvalues[largest], 0.0, inverse)
+                oscillator_limit(world.integrator, eigen.eigenvalues[largest], 0.0, inverse)
+            }
+            CouplingKind::Contact(contact) => {
+                let inverse: f64 = [Some(contact.body), contact.other_body()].into_iter().flatten().map(|i| translational_inverse_mass(world, i)).sum();
+                let area = contact.limit_area(frames);
+                let normal = oscillator_limit(world.integrator, contact.law.stiffness * area, contact.law.damping * area, inverse);
+                let friction = contact.law.friction * contact.law.friction_sharpness * contact.normal_force();
+                normal.min(oscillator_limit(world.integrator, 0.0, friction, inverse))
             }
         };
         if dt.is_finite() {
             limits.push(Limit { limiter: Limiter::Coupling(index), dt });
         }
     }
-    for index in (0..world.bodies.len()).filter(|&i| !world.bodies[i].is_kinematic()) {
+    // The adaptive scheme keeps its own rotation accurate.
+    let spinning = if world.integrator.is_adaptive() { 0 } else { world.bodies.len() };
+    for index in (0..spinning).filter(|&i| !world.bodies[i].is_kinematic()) {
         let spin = world.state(index).angular_velocity.norm();
         if spin > 0.0 {
             limits.push(Limit { limiter: Limiter::Rotation(index), dt: 1.0 / spin });
@@ -86,9 +165,33 @@ pub fn limits(world: &World) -> Vec<Limit> {
     limits
 }
 
+/// The time step that resolves an impact of each contact, `τ/10` [s] (PHYSICS.md §4).
+pub fn impact_limits(world: &World) -> Vec<Limit> {
+    let inverse_mass = |i: usize| translational_inverse_mass(world, i);
+    world
+        .couplings
+        .iter()
+        .enumerate()
+        .filter_map(|(index, coupling)| match &coupling.kind {
+            CouplingKind::Contact(contact) => {
+                let inverse = inverse_mass(contact.body) + contact.other_body().map_or(0.0, inverse_mass);
+                Some(Limit { limiter: Limiter::Impact(index), dt: contact.stopping_time(contact.limit_area(world.frames()), inverse) / STEPS_PER_STOPPING_TIME })
+            }
+            _ => None,
+        })
+        .filter(|limit| limit.dt.is_finite())
+        .collect()
+}
+
 /// The smallest limit, if any.
 pub fn binding(limits: &[Limit]) -> Option<Limit> {
     limits.iter().copied().min_by(|a, b| a.dt.total_cmp(&b.dt))
+}
+
+/// `1/m` [1/kg] of a body that responds to forces, 0 for a kinematic one.
+fn translational_inverse_mass(world: &World, index: usize) -> f64 {
+    let body = &world.bodies[index];
+    if body.is_kinematic() { 0.0 } else { body.inverse_mass }
 }
 
 /// `1/m + (r × d)ᵀ I⁻¹ (r × d)` of the body an end is on, for a unit force direction `d`.

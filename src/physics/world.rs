@@ -1,20 +1,23 @@
 //! The world: gravity, bodies, couplings and time, and the stages of one step.
 //!
-//! [`World::step`] runs, in order (the integrator decides how velocities enter, and may run the
-//! per-body stages 1–4 in one pass over the bodies):
-//! 1. *advance*: the integrator moves positions and orientations by `dt`;
-//! 2. *prescribe*: kinematic bodies are put where their motion says;
+//! [`World::step`] advances `dt` in `substeps` integrator steps, each followed by the *health*
+//! check (for the adaptive `dopri45`, each accepted step). An integrator step runs, in order (the
+//! integrator decides how velocities enter, and may run the per-body stages 1–4 in one pass
+//! over the bodies; the Runge–Kutta schemes run stages 2–6 once per stage):
+//! 1. *advance*: the integrator moves positions and orientations;
+//! 2. *prescribe*: kinematic bodies are put where their motion says at the (stage) time;
 //! 3. *predict*: each body's kinematics for the force evaluation ([`BodyFrame`]);
 //! 4. *clear* the loads and add *gravity*;
 //! 5. *couplings*: each coupling's forces, kept per coupling and summed into the bodies' loads;
-//! 6. *accelerations* from Euler's equations in the principal frame;
-//! 7. *ledger*: dissipated and external work advance by the trapezoid rule.
+//! 6. *accelerations* (or, for the Runge–Kutta schemes, the rates of the integrated variables);
+//! 7. *ledger*: dissipated and external work advance with the scheme's weights.
 
 use super::body::{BodyState, RigidBody, Support, prescribed_state};
 use super::coupling::{BodyFrame, Coupling, CouplingError, CouplingForces, Load};
-use super::dynamics::{Acceleration, accelerations};
+use super::dynamics::Acceleration;
 use super::energy::{EnergyLedger, EnergyReport};
-use super::integrator::{Integrator, Substeps, Timing, leapfrog, leapfrog2};
+use super::integrator::runge_kutta::Workspace;
+use super::integrator::{Integrator, Substeps, Timing, Tolerances, dopri45, leapfrog, leapfrog2, rk4, splitting};
 use super::stability::{self, Limit};
 use super::Vec3;
 
@@ -30,17 +33,24 @@ pub enum StepError {
     Diverged { time: f64, body: String, cause: String, advice: String },
 }
 
+/// `substeps: Auto` keeps each integrator step under this fraction of the stable time step.
+const AUTO_SUBSTEP_MARGIN: f64 = 0.9;
+
+/// `substeps: Auto` takes at most this many integrator steps per world step: a scene that needs
+/// more (a stiffness typed a million times too high) runs unstable and the health check stops
+/// it with the stable time step in the message, rather than seeming to hang.
+pub const MAX_AUTO_SUBSTEPS: u32 = 10_000;
+
 /// A time step setting refused by [`World::set_timing`].
-#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum TimingError {
     #[error("time step dt must be > 0 s, got {0}")]
     Step(f64),
     #[error("substeps must be at least 1")]
     NoSubsteps,
+    #[error(transparent)]
+    Forces(StepError),
 }
-
-/// `substeps: Auto` keeps each integrator step under this fraction of the stable time step.
-const AUTO_SUBSTEP_MARGIN: f64 = 0.9;
 
 /// Energy balance drift, in multiples of the energy budget, taken as a blow-up.
 const DIVERGENCE_FACTOR: f64 = 10.0;
@@ -54,21 +64,28 @@ pub struct World {
     pub couplings: Vec<Coupling>,
     pub integrator: Integrator,
     dt: f64,
+    tolerances: Tolerances,
     /// The substep setting, and the integrator steps per world step it resolved to.
     substep_setting: Substeps,
     substeps: u32,
     time: f64,
     steps: u64,
+    /// Integrator steps accepted, and (adaptive schemes) rejected, since t = 0.
+    integrator_steps: u64,
+    rejected_steps: u64,
     /// States at t = 0 (start of prescribed motions, and reset).
     pub(crate) initial_states: Vec<BodyState>,
     /// Indices of the kinematic bodies.
     kinematic_bodies: Vec<usize>,
-    /// The integrator's state: for the leapfrog, positions at t and velocities at t − ½dt.
+    /// The integrator's state: for the leapfrogs, positions at t and velocities at t − ½dt;
+    /// synchronised for the others.
     pub(crate) states: Vec<BodyState>,
     /// Body kinematics at the last force evaluation (t), world axes.
     pub(crate) frames: Vec<BodyFrame>,
     pub(crate) loads: Vec<Load>,
     pub(crate) accelerations: Vec<Acceleration>,
+    /// Stage buffers of the Runge–Kutta schemes (empty for the others).
+    pub(crate) runge_kutta: Workspace,
     pub(crate) coupling_forces: Vec<CouplingForces>,
     pub(crate) ledger: EnergyLedger,
     /// Kinetic and gravity energy of the bodies at the current time [J], from the integrator.
@@ -102,6 +119,7 @@ impl World {
             couplings,
             integrator: timing.integrator,
             dt: timing.dt,
+            tolerances: timing.tolerances,
             substep_setting: timing.substeps,
             substeps: match timing.substeps {
                 Substeps::Fixed(n) => n.max(1),
@@ -109,6 +127,8 @@ impl World {
             },
             time: 0.0,
             steps: 0,
+            integrator_steps: 0,
+            rejected_steps: 0,
             // Filled from `initial_states` by `start`.
             states: Vec::new(),
             initial_states,
@@ -116,6 +136,7 @@ impl World {
             frames: vec![BodyFrame { position: Vec3::zeros(), rotation: super::Mat3::identity(), velocity: Vec3::zeros(), angular_velocity: Vec3::zeros() }; n],
             loads: vec![Load::default(); n],
             accelerations: vec![Acceleration::default(); n],
+            runge_kutta: Workspace::default(),
             coupling_forces: Vec::new(),
             ledger: EnergyLedger::default(),
             body_energy: (0.0, 0.0),
@@ -127,10 +148,10 @@ impl World {
         world.kinematic_bodies = (0..n).filter(|&i| world.bodies[i].is_kinematic()).collect();
         world.start()?;
         world.initial_limit = stability::binding(&stability::limits(&world));
-        if let (Substeps::Auto, Some(limit)) = (world.substep_setting, world.initial_limit) {
-            let needed = (world.dt / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil();
-            if needed > 1.0 {
-                world.substeps = needed.min(f64::from(u32::MAX)) as u32;
+        if world.substep_setting == Substeps::Auto {
+            let needed = world.auto_substeps();
+            if needed > 1 {
+                world.substeps = needed;
                 world.start()?;
             }
         }
@@ -142,8 +163,17 @@ impl World {
     /// The integrator's start at t = 0 from the initial states.
     fn start(&mut self) -> Result<(), StepError> {
         self.states.clone_from(&self.initial_states);
+        self.start_integrator()
+    }
+
+    /// The integrator's start at the current time from `self.states` (synchronised velocities):
+    /// forces, accelerations, energies, and an energy ledger from zero.
+    fn start_integrator(&mut self) -> Result<(), StepError> {
         match self.integrator {
             Integrator::Leapfrog | Integrator::Leapfrog2 => leapfrog::start(self),
+            Integrator::Splitting => splitting::start(self),
+            Integrator::Rk4 => rk4::start(self),
+            Integrator::Dopri45 => dopri45::start(self),
         }
     }
 
@@ -157,25 +187,41 @@ impl World {
             match self.integrator {
                 Integrator::Leapfrog => leapfrog::step(self, leapfrog::Gyroscopic::Lagged)?,
                 Integrator::Leapfrog2 => leapfrog2::step(self)?,
+                Integrator::Splitting => splitting::step(self)?,
+                Integrator::Rk4 => rk4::step(self)?,
+                Integrator::Dopri45 => {
+                    let end = self.time + self.step_size();
+                    while !dopri45::step(self, end)? {
+                        self.check_health()?;
+                    }
+                }
             }
             self.check_health()?;
+            if !self.integrator.is_adaptive() {
+                self.integrator_steps += 1;
+            }
         }
         self.steps += 1;
         Ok(())
     }
 
-    /// Stage *health*: every body's state is finite, and the energy balance has not drifted by
-    /// more than [`DIVERGENCE_FACTOR`] times the energy budget (`|kinetic| + |gravity| +
-    /// |elastic|` at t = 0, the energy of a fall across the scene, and the work put in by
-    /// prescribed motions since). An unstable step grows
-    /// the energy geometrically, so this stops a blow-up within a few steps of its start and
-    /// long before anything overflows.
+    /// Stage *health*: every body's state is finite, and its mechanical energy less the work
+    /// put in by prescribed motions has not drifted by more than [`DIVERGENCE_FACTOR`] times the
+    /// energy budget (`|kinetic| + |gravity| + |elastic|` at t = 0, the energy of a fall across
+    /// the scene, and the work put in by prescribed motions since). An unstable step grows the
+    /// energy geometrically, so this stops a blow-up within a few steps of its start and long
+    /// before anything overflows.
+    ///
+    /// The dissipated work is left out on both sides: dampers remove at most the budget, a
+    /// blow-up with a damper dissipates as fast as it grows, and a scheme that resolves a damper
+    /// poorly at a large but stable step (RK4 near its damped limit, where the physical decay
+    /// per step is far faster than the scheme's) books more dissipation than its bounded state
+    /// loses, which is inaccuracy, not divergence.
     fn check_health(&self) -> Result<(), StepError> {
         let energy = self.energy();
         let start = &self.initial_energy;
-        // Not the dissipated work: a blow-up with a damper dissipates as fast as it grows.
         let budget = start.kinetic.abs() + start.gravity.abs() + start.elastic.abs() + self.fall_energy + energy.external_work.abs();
-        let drift = (energy.balance() - start.balance()).abs();
+        let drift = (energy.total() - energy.external_work - start.total()).abs();
         if drift <= DIVERGENCE_FACTOR * budget.max(f64::MIN_POSITIVE) {
             return Ok(());
         }
@@ -186,18 +232,32 @@ impl World {
             let s = &self.states[i];
             !(s.position.iter().chain(s.velocity.iter()).chain(s.angular_velocity.iter()).chain(s.orientation.coords.iter()).all(|x| x.is_finite()))
         });
-        let (body, cause) = match not_finite {
-            Some(i) => (i, "has a non-finite state".to_string()),
-            None => {
-                let most_energetic = dynamic().max_by(|&a, &b| self.kinetic_energy(a).total_cmp(&self.kinetic_energy(b))).unwrap_or(0);
-                (most_energetic, format!("carries the most kinetic energy as the energy balance drifts by {drift:.3e} J (budget {budget:.3e} J)"))
-            }
-        };
+        Err(match not_finite {
+            Some(i) => self.diverged(i, "has a non-finite state".to_string()),
+            None => self.diverged(
+                self.most_energetic_body(),
+                format!("carries the most kinetic energy as the energy drifts by {drift:.3e} J (budget {budget:.3e} J)"),
+            ),
+        })
+    }
+
+    /// The body that responds to forces with the most kinetic energy (0 if none does).
+    fn most_energetic_body(&self) -> usize {
+        (0..self.bodies.len()).filter(|&i| !self.bodies[i].is_kinematic()).max_by(|&a, &b| self.kinetic_energy(a).total_cmp(&self.kinetic_energy(b))).unwrap_or(0)
+    }
+
+    /// An adaptive step that had to shrink to `step` [s], below round-off of the time.
+    pub(crate) fn stalled(&self, step: f64) -> StepError {
+        self.diverged(self.most_energetic_body(), format!("carries the most kinetic energy as the adaptive step shrinks to {step:.3e} s (too stiff, or blown up)"))
+    }
+
+    /// [`StepError::Diverged`] naming body `body` and the binding stable time step at t = 0.
+    fn diverged(&self, body: usize, cause: String) -> StepError {
         let advice = match self.initial_limit {
             Some(limit) => format!("the stable time step is {:.3e} s, set by {} (step {:.3e} s)", limit.dt, limit.describe(self), self.step_size()),
             None => format!("no coupling limits the time step (step {:.3e} s)", self.step_size()),
         };
-        Err(StepError::Diverged { time: self.time, body: self.bodies.get(body).map_or_else(String::new, |b| b.name.clone()), cause, advice })
+        StepError::Diverged { time: self.time, body: self.bodies.get(body).map_or_else(String::new, |b| b.name.clone()), cause, advice }
     }
 
     /// `Σ m |g| ℓ` [J], ℓ the diagonal of the box around the bodies' centres of mass and the
@@ -227,61 +287,64 @@ impl World {
         Ok(())
     }
 
-    /// Replaces coupling `index` while running, without a restart (live tuning): the loads and
-    /// accelerations at the current time are evaluated again with the new coupling, and the
-    /// half-step velocities restarted from the synchronised ones (as after a change of time
-    /// step), so the state at t — positions and velocities — does not move and the motion goes
-    /// on under the new forces, second-order accurate across the change. Its energy does jump:
-    /// the elastic energy of the new parameters at the same positions differs from the old one.
-    /// That jump is booked as external work (PHYSICS.md §5), so `balance()` stays continuous
+    /// Integrator steps per world step that `Substeps::Auto` asks for at the current state:
+    /// enough to keep each under [`AUTO_SUBSTEP_MARGIN`] of the binding stable time step of the
+    /// integrator and of every contact's impact resolution, at most [`MAX_AUTO_SUBSTEPS`]; one
+    /// for an adaptive scheme, whose steps adapt.
+    fn auto_substeps(&self) -> u32 {
+        if self.integrator.is_adaptive() {
+            return 1;
+        }
+        let limits = [stability::limits(self), stability::impact_limits(self)].concat();
+        stability::binding(&limits).map_or(1, |limit| (self.dt / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil().clamp(1.0, f64::from(MAX_AUTO_SUBSTEPS)) as u32)
+    }
+
+    /// Starts the integrator again at the current time from the synchronised state, keeping the
+    /// energy integrals: the motion goes on from the same positions and velocities under what
+    /// changed (a coupling, the time step, the integrator).
+    fn restart_here(&mut self) -> Result<(), StepError> {
+        let ledger = self.ledger;
+        self.states = (0..self.bodies.len()).map(|i| self.state(i)).collect();
+        self.start_integrator()?;
+        self.ledger.add(ledger.dissipated, ledger.external_work);
+        Ok(())
+    }
+
+    /// Replaces coupling `index` while running, without a restart (live tuning): the integrator
+    /// starts again at the current time from the synchronised state (positions and velocities at
+    /// t do not move, as after a change of time step), with the forces of the new coupling, so
+    /// the motion goes on under them at the scheme's order across the change. Its energy does
+    /// jump: the elastic energy of the new parameters at the same positions differs from the old
+    /// one. That jump is booked as external work (PHYSICS.md §5), so `balance()` stays continuous
     /// across the swap and keeps checking the motion after it; the divergence message then
     /// quotes the stable time step of the new parameters.
     ///
     /// # Errors
-    /// The new coupling cannot give its forces here; the world is then unchanged. An `index` out
-    /// of range is refused the same way.
+    /// The new coupling cannot give its forces here, or `index` is out of range; the world is
+    /// then unchanged.
     pub fn replace_coupling(&mut self, index: usize, coupling: Coupling) -> Result<(), StepError> {
         if index >= self.couplings.len() {
             return Err(StepError::Coupling { coupling: coupling.name, time: self.time, source: CouplingError::NoSuchCoupling(index) });
         }
-        let synchronized: Vec<BodyState> = (0..self.bodies.len()).map(|i| self.state(i)).collect();
-        let before = (self.energy().total(), std::mem::replace(&mut self.couplings[index], coupling), self.coupling_forces[index], self.loads.clone());
-        let dissipated = match self.evaluate_loads() {
-            Ok(power) => power,
-            Err(error) => {
-                let (_, old, forces, loads) = before;
-                (self.couplings[index], self.coupling_forces[index], self.loads) = (old, forces, loads);
-                return Err(error);
-            }
-        };
-        // Euler's equations are linear in the load once the gyroscopic term (which the change
-        // does not touch) is set aside: add the accelerations of the load difference.
-        for (i, old_load) in before.3.iter().enumerate() {
-            let change = Load { force: self.loads[i].force - old_load.force, moment: self.loads[i].moment - old_load.moment };
-            let delta = accelerations(&self.bodies[i], &self.frames[i].rotation, &change, &Vec3::zeros());
-            self.accelerations[i].linear += delta.linear;
-            self.accelerations[i].angular += delta.angular;
+        let before = self.clone();
+        self.couplings[index] = coupling;
+        if let Err(error) = self.restart_here() {
+            *self = before;
+            return Err(error);
         }
-        self.body_energy = match self.integrator {
-            Integrator::Leapfrog | Integrator::Leapfrog2 => {
-                leapfrog::restart(self, synchronized);
-                leapfrog::kinetic_and_gravity(self)
-            }
-        };
-        let work = self.energy().total() - before.0;
-        let external_power = self.external_power();
-        self.ledger.intervene(work, dissipated, external_power);
+        self.ledger.add(0.0, self.energy().total() - before.energy().total());
         self.initial_limit = stability::binding(&stability::limits(self));
         Ok(())
     }
 
-    /// Changes the time step, the integrator and the substeps at the current time, keeping the
-    /// state: velocities are synchronised to t with the old integrator step and restarted with
-    /// the new one, so the motion goes on where it was. `Substeps::Auto` is resolved from the
-    /// binding stable time step of the current state.
+    /// Changes the time step, the integrator, the substeps and the adaptive tolerances at the
+    /// current time, keeping the state: the new integrator starts from the synchronised
+    /// positions and velocities, so the motion goes on where it was. `Substeps::Auto` is
+    /// resolved from the stable time steps of the current state.
     ///
     /// # Errors
-    /// `dt` not finite and positive, or zero substeps; the world is then unchanged.
+    /// `dt` not finite and positive, zero substeps, or forces that cannot be evaluated; the
+    /// world is then unchanged.
     pub fn set_timing(&mut self, timing: Timing) -> Result<(), TimingError> {
         if !(timing.dt.is_finite() && timing.dt > 0.0) {
             return Err(TimingError::Step(timing.dt));
@@ -289,24 +352,25 @@ impl World {
         if timing.substeps == Substeps::Fixed(0) {
             return Err(TimingError::NoSubsteps);
         }
-        let synchronized: Vec<BodyState> = (0..self.bodies.len()).map(|i| self.state(i)).collect();
-        self.dt = timing.dt;
-        self.integrator = timing.integrator;
-        self.substep_setting = timing.substeps;
+        let before = self.clone();
+        self.states = (0..self.bodies.len()).map(|i| self.state(i)).collect();
+        (self.dt, self.integrator, self.substep_setting, self.tolerances) = (timing.dt, timing.integrator, timing.substeps, timing.tolerances);
         self.substeps = match timing.substeps {
             Substeps::Fixed(n) => n,
-            Substeps::Auto => stability::binding(&stability::limits(self))
-                .map_or(1, |limit| (self.dt / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil().clamp(1.0, f64::from(u32::MAX)) as u32),
+            Substeps::Auto => self.auto_substeps(),
         };
-        match self.integrator {
-            Integrator::Leapfrog | Integrator::Leapfrog2 => leapfrog::restart(self, synchronized),
+        let ledger = self.ledger;
+        if let Err(error) = self.start_integrator() {
+            *self = before;
+            return Err(TimingError::Forces(error));
         }
+        self.ledger.add(ledger.dissipated, ledger.external_work);
         Ok(())
     }
 
     /// The time step settings.
     pub fn timing(&self) -> Timing {
-        Timing { dt: self.dt, integrator: self.integrator, substeps: self.substep_setting }
+        Timing { dt: self.dt, integrator: self.integrator, substeps: self.substep_setting, tolerances: self.tolerances }
     }
 
     /// Simulated time [s].
@@ -324,6 +388,30 @@ impl World {
         self.dt
     }
 
+    /// Integrator steps accepted since t = 0 (for `dopri45`, its adaptive steps).
+    pub fn integrator_steps(&self) -> u64 {
+        self.integrator_steps
+    }
+
+    /// Adaptive steps rejected since t = 0 (always 0 for the fixed-step schemes).
+    pub fn rejected_steps(&self) -> u64 {
+        self.rejected_steps
+    }
+
+    /// Counts one adaptive step, accepted or rejected.
+    pub(crate) fn count_integrator_step(&mut self, rejected: bool) {
+        if rejected {
+            self.rejected_steps += 1;
+        } else {
+            self.integrator_steps += 1;
+        }
+    }
+
+    /// The adaptive scheme's settings.
+    pub fn tolerances(&self) -> Tolerances {
+        self.tolerances
+    }
+
     /// Integrator steps per world step.
     pub fn substeps(&self) -> u32 {
         self.substeps
@@ -336,9 +424,7 @@ impl World {
 
     /// State of body `index` at the current time, velocities included.
     pub fn state(&self, index: usize) -> BodyState {
-        match self.integrator {
-            Integrator::Leapfrog | Integrator::Leapfrog2 => leapfrog::synchronized_state(self, index),
-        }
+        if self.integrator.is_staggered() { leapfrog::synchronized_state(self, index) } else { self.states[index] }
     }
 
     /// Load (force and moment about G, world) on body `index` at the current time: couplings,
@@ -366,11 +452,11 @@ impl World {
 
     // ----- stages, shared by the integrators -----
 
-    /// Stage *prescribe*: kinematic bodies to their pose and velocity at the current time.
-    pub(crate) fn prescribe_kinematic_bodies(&mut self) {
+    /// Stage *prescribe*: kinematic bodies to their pose and velocity at time `time` [s].
+    pub(crate) fn prescribe_kinematic_bodies(&mut self, time: f64) {
         for &index in &self.kinematic_bodies {
             if let Support::Kinematic(motion) = &self.bodies[index].support {
-                self.states[index] = prescribed_state(motion, &self.initial_states[index], self.time);
+                self.states[index] = prescribed_state(motion, &self.initial_states[index], time);
             }
         }
     }
@@ -410,6 +496,11 @@ impl World {
 
     pub(crate) fn advance_clock(&mut self) {
         self.time += self.step_size();
+    }
+
+    /// Sets the clock (the adaptive scheme's steps do not divide the integrator step).
+    pub(crate) fn set_time(&mut self, time: f64) {
+        self.time = time;
     }
 }
 

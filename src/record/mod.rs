@@ -11,10 +11,15 @@
 //!   total and balance [J], in one plot;
 //! - `plots/tension`: one series per coupling, named after it [N], in one plot (a catenary's
 //!   series is its larger end tension);
-//! - `plots/catenary/<name>`: a catenary's end tensions, series `end1` and `end2` [N].
+//! - `plots/catenary/<name>`: a catenary's end tensions, series `end1` and `end2` [N];
+//! - `world/contacts/<name>`: a contact's face forces as arrows from the face centroids, those
+//!   above a thousandth of the body's weight, drawn at [`ARROW_LENGTH_PER_WEIGHT`] body radii
+//!   per body weight (`m·max(|g|, 1 m/s²)`);
+//! - `plots/contact/<name>`: a contact's total normal force `Σ|f_n|` and friction `|Σ f_t|`,
+//!   series `normal` and `friction` [N]; its `plots/tension` series is the normal force.
 
 use crate::physics::body::{RigidBody, Shape};
-use crate::physics::coupling::CouplingKind;
+use crate::physics::coupling::{Contact, CouplingKind};
 use crate::physics::coupling::catenary::LineState;
 use crate::physics::world::World;
 use crate::physics::{Rotation, Vec3};
@@ -30,6 +35,12 @@ pub struct Recorder {
     body_paths: Vec<String>,
     coupling_paths: Vec<String>,
 }
+
+/// Length of a contact's face-force arrow for a force equal to the body's weight, in body radii.
+pub const ARROW_LENGTH_PER_WEIGHT: f64 = 2.0;
+
+/// Face forces below this fraction of the body's weight are not drawn.
+const ARROW_THRESHOLD: f64 = 1e-3;
 
 /// Energy series, in the order logged.
 const ENERGY_SERIES: [&str; 7] = ["kinetic", "gravity", "elastic", "dissipated", "external_work", "total", "balance"];
@@ -49,16 +60,25 @@ impl Recorder {
         for (body, path) in world.bodies.iter().zip(&body_paths) {
             log_static_body(&stream, body, path)?;
         }
-        let coupling_paths = world.couplings.iter().map(|c| format!("world/couplings/{}", c.name)).collect();
         stream.log_static("plots/energy", &rerun::SeriesLines::new().with_names(ENERGY_SERIES))?;
         if !world.couplings.is_empty() {
             stream.log_static("plots/tension", &rerun::SeriesLines::new().with_names(world.couplings.iter().map(|c| c.name.as_str())))?;
         }
         for coupling in &world.couplings {
-            if matches!(coupling.kind, CouplingKind::Catenary(_)) {
-                stream.log_static(format!("plots/catenary/{}", coupling.name), &rerun::SeriesLines::new().with_names(["end1", "end2"]))?;
+            match coupling.kind {
+                CouplingKind::Catenary(_) => stream.log_static(format!("plots/catenary/{}", coupling.name), &rerun::SeriesLines::new().with_names(["end1", "end2"]))?,
+                CouplingKind::Contact(_) => stream.log_static(format!("plots/contact/{}", coupling.name), &rerun::SeriesLines::new().with_names(["normal", "friction"]))?,
+                CouplingKind::SpringDamper(_) => {}
             }
         }
+        let coupling_paths = world
+            .couplings
+            .iter()
+            .map(|c| match c.kind {
+                CouplingKind::Contact(_) => format!("world/contacts/{}", c.name),
+                _ => format!("world/couplings/{}", c.name),
+            })
+            .collect();
         Ok(Self { stream, body_paths, coupling_paths })
     }
 
@@ -77,6 +97,11 @@ impl Recorder {
                     let (t1, t2) = state.end_tensions();
                     self.stream.log(format!("plots/catenary/{}", coupling.name), &rerun::Scalars::new([t1, t2]))?;
                 }
+                CouplingKind::Contact(contact) => {
+                    self.stream.log(path.as_str(), &face_arrows(world, contact))?;
+                    let totals = contact.totals(world.frames());
+                    self.stream.log(format!("plots/contact/{}", coupling.name), &rerun::Scalars::new([totals.normal, totals.friction]))?;
+                }
                 _ => self.stream.log(path.as_str(), &rerun::LineStrips3D::new([[f32x3(&forces.point1), f32x3(&forces.point2)]]))?,
             }
         }
@@ -93,6 +118,21 @@ impl Recorder {
     pub fn finish(self) -> Result<(), rerun::sink::SinkFlushError> {
         self.stream.flush_blocking()
     }
+}
+
+/// A contact's face forces above the threshold, as world arrows from the face centroids.
+fn face_arrows(world: &World, contact: &Contact) -> rerun::Arrows3D {
+    let body = &world.bodies[contact.body];
+    let weight = body.mass() * world.gravity.norm().max(1.0);
+    let scale = ARROW_LENGTH_PER_WEIGHT * contact.boundary.bounding_radius() / weight;
+    let frame = &world.frames()[contact.body];
+    let (origins, vectors): (Vec<[f32; 3]>, Vec<[f32; 3]>) = contact
+        .active_faces(world.frames())
+        .iter()
+        .filter(|face| face.force.norm() > ARROW_THRESHOLD * weight)
+        .map(|face| (f32x3(&(frame.position + frame.rotation * face.centroid)), f32x3(&(frame.rotation * face.force * scale))))
+        .unzip();
+    rerun::Arrows3D::from_vectors(vectors).with_origins(origins).with_colors([rerun::Color::from_rgb(230, 120, 40)])
 }
 
 /// Segments of a catenary's shape, each coloured by its tension on a blue → red ramp between
@@ -127,6 +167,8 @@ fn log_static_body(stream: &RecordingStream, body: &RigidBody, path: &str) -> Re
     let to_principal = body.reference_in_principal;
     let (center, axis_rotation) = match &body.shape {
         Shape::Box { center, .. } | Shape::Sphere { center, .. } => (*center, Rotation::identity()),
+        // The vertices are already in the reference frame.
+        Shape::Mesh { .. } => (Vec3::zeros(), Rotation::identity()),
         Shape::Cylinder { center, axis, .. } => {
             // Rerun's cylinders lie along z: turn z onto the axis.
             (*center, Rotation::rotation_between(&Vec3::z(), axis).unwrap_or_else(|| Rotation::from_axis_angle(&Vec3::x_axis(), std::f64::consts::PI)))
@@ -146,6 +188,10 @@ fn log_static_body(stream: &RecordingStream, body: &RigidBody, path: &str) -> Re
         Shape::Cylinder { radius, length, .. } => stream.log_static(
             shape_path.as_str(),
             &rerun::Cylinders3D::from_lengths_and_radii([*length as f32], [*radius as f32]).with_colors([color]).with_fill_mode(solid),
+        )?,
+        Shape::Mesh { vertices, triangles } => stream.log_static(
+            shape_path.as_str(),
+            &rerun::Mesh3D::new(vertices.iter().map(f32x3)).with_triangle_indices(triangles.iter().map(|&[a, b, c]| rerun::datatypes::UVec3D::new(a, b, c))).with_albedo_factor(rerun::datatypes::Rgba32::from_rgb(120, 160, 210)),
         )?,
     }
     if !body.slave_nodes.is_empty() {

@@ -2,14 +2,19 @@
 //! simulation state. Every check that needs more than one value (names, references, mass
 //! properties, tables) is made here and reported with the item it concerns.
 
-use super::file::{BodyDef, CouplingDef, EndDef, InertiaDef, LawDef, NodeDef, SceneFile, ShapeDef, SupportDef, Triple, VelocityDef};
+use super::file::{AgainstDef, BodyDef, CouplingDef, EndDef, InertiaDef, LawDef, NodeDef, SceneFile, ShapeDef, SupportDef, Triple, VelocityDef};
+use super::mesh_file;
 use super::source::ItemKind;
 use crate::physics::body::{PrescribedMotion, RigidBody, Shape, Support, VelocityProfile};
-use crate::physics::coupling::{Catenary, Coupling, CouplingKind, ElasticLaw, Endpoint, SpringDamper};
+use crate::physics::coupling::contact::{ContactLaw, Opposing, Plane};
+use crate::physics::coupling::{Catenary, Contact, Coupling, CouplingKind, ElasticLaw, Endpoint, SpringDamper};
+use crate::physics::mesh::{BoundaryMesh, MeshError, Surface};
 use crate::physics::mass_properties::{MassProperties, Node};
-use crate::physics::integrator::{Substeps, Timing};
+use crate::physics::integrator::{Substeps, Timing, Tolerances};
 use crate::physics::world::{StepError, World};
 use crate::physics::{Mat3, Vec3};
+use std::path::Path;
+use std::sync::Arc;
 
 /// Where a problem is in the file.
 #[derive(Debug, Clone, PartialEq)]
@@ -34,19 +39,19 @@ pub struct Built {
     pub warnings: Vec<String>,
 }
 
-/// Builds the world a scene describes.
-pub fn build(file: &SceneFile) -> Result<Built, Problem> {
-    let timing = timing(file)?;
+/// Builds the world a scene describes; mesh files are looked up relative to `directory`.
+pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
+    let mut warnings = Vec::new();
+    let timing = timing_with_warnings(file, &mut warnings)?;
     if !(file.duration > 0.0) {
         return Err(Problem { place: Place::Top("duration"), message: format!("duration must be > 0 s, got {}", file.duration) });
     }
-    let mut warnings = Vec::new();
     let mut bodies = Vec::with_capacity(file.bodies.len());
     let mut states = Vec::with_capacity(file.bodies.len());
     for (index, def) in file.bodies.iter().enumerate() {
         let at = ItemAt::new(ItemKind::Body, &def.name, file.bodies[..index].iter().filter(|b| b.name == def.name).count());
         check_name(&at, file.bodies[..index].iter().map(|b| b.name.as_str()))?;
-        let body = build_body(def, &at)?;
+        let body = build_body(def, directory, &at)?;
         if let Some(axis) = body.mass_properties.violated_triangle_inequality() {
             warnings.push(format!(
                 "body \"{}\": principal moment I{} = {:.6e} kg·m² exceeds the sum of the other two {:?}: no real mass distribution has this inertia",
@@ -60,11 +65,12 @@ pub fn build(file: &SceneFile) -> Result<Built, Problem> {
         bodies.push(body);
     }
     let mut couplings = Vec::with_capacity(file.couplings.len());
+    let mut boundaries = Boundaries::new(bodies.len());
     for (index, def) in file.couplings.iter().enumerate() {
         let name = def.name();
         let at = ItemAt::new(ItemKind::Coupling, name, file.couplings[..index].iter().filter(|c| c.name() == name).count());
         check_name(&at, file.couplings[..index].iter().map(CouplingDef::name))?;
-        couplings.push(build_coupling(def, &bodies, &at)?);
+        couplings.push(build_coupling(def, &bodies, &mut boundaries, &at)?);
     }
     // Names are unique by now: the coupling at fault is the first of its name.
     let world = World::new(vec3(file.gravity), bodies, couplings, states, timing).map_err(|e| match e {
@@ -74,31 +80,57 @@ pub fn build(file: &SceneFile) -> Result<Built, Problem> {
     Ok(Built { world, warnings })
 }
 
-/// The time step settings of a scene, checked: `dt` > 0 s, at least one substep.
+/// The time step settings of a scene, checked: `dt` > 0 s, at least one substep, sound
+/// adaptive tolerances.
 pub fn timing(file: &SceneFile) -> Result<Timing, Problem> {
+    timing_with_warnings(file, &mut Vec::new())
+}
+
+fn timing_with_warnings(file: &SceneFile, warnings: &mut Vec<String>) -> Result<Timing, Problem> {
     if !(file.dt > 0.0 && file.dt.is_finite()) {
         return Err(Problem { place: Place::Top("dt"), message: format!("time step dt must be > 0 s, got {}", file.dt) });
     }
     if file.substeps == Substeps::Fixed(0) {
         return Err(Problem { place: Place::Top("substeps"), message: "substeps must be at least 1".into() });
     }
-    Ok(Timing { dt: file.dt, integrator: file.integrator, substeps: file.substeps })
+    let tolerances = build_tolerances(file, warnings)?;
+    Ok(Timing { dt: file.dt, integrator: file.integrator, substeps: file.substeps, tolerances })
 }
 
 /// Builds coupling `index` of `file` on its own, with the checks and messages of [`build`]
 /// (live tuning builds a changed coupling this way before it reaches a running world). The
-/// bodies are built again to resolve the ends; their own problems are reported too.
-pub fn coupling(file: &SceneFile, index: usize) -> Result<Coupling, Problem> {
+/// bodies (and the boundary meshes a contact needs, from files under `directory`) are built
+/// again to resolve the ends; their own problems are reported too.
+pub fn coupling(file: &SceneFile, index: usize, directory: &Path) -> Result<Coupling, Problem> {
     let Some(def) = file.couplings.get(index) else {
         return Err(Problem { place: Place::Top("couplings"), message: format!("the scene has no coupling {index}") });
     };
     let mut bodies = Vec::with_capacity(file.bodies.len());
     for (i, body) in file.bodies.iter().enumerate() {
         let occurrence = file.bodies[..i].iter().filter(|b| b.name == body.name).count();
-        bodies.push(build_body(body, &ItemAt::new(ItemKind::Body, &body.name, occurrence))?);
+        bodies.push(build_body(body, directory, &ItemAt::new(ItemKind::Body, &body.name, occurrence))?);
     }
     let occurrence = file.couplings[..index].iter().filter(|c| c.name() == def.name()).count();
-    build_coupling(def, &bodies, &ItemAt::new(ItemKind::Coupling, def.name(), occurrence))
+    let mut boundaries = Boundaries::new(bodies.len());
+    build_coupling(def, &bodies, &mut boundaries, &ItemAt::new(ItemKind::Coupling, def.name(), occurrence))
+}
+
+/// The `adaptive` settings, checked; a warning when the integrator does not use them.
+fn build_tolerances(file: &SceneFile, warnings: &mut Vec<String>) -> Result<Tolerances, Problem> {
+    let Some(def) = file.adaptive else { return Ok(Tolerances::default()) };
+    if !(def.rtol > 0.0 && def.rtol < 1.0) {
+        return Err(Problem { place: Place::Top("rtol"), message: format!("adaptive rtol must be > 0 and < 1, got {}", def.rtol) });
+    }
+    if !(def.atol > 0.0) {
+        return Err(Problem { place: Place::Top("atol"), message: format!("adaptive atol must be > 0, got {}", def.atol) });
+    }
+    if let Some(max_step) = def.max_step.filter(|m| !(*m > 0.0)) {
+        return Err(Problem { place: Place::Top("max_step"), message: format!("adaptive max_step must be > 0 s, got {max_step}") });
+    }
+    if !file.integrator.is_adaptive() {
+        warnings.push(format!("the adaptive settings are for integrator dopri45; {} ignores them", file.integrator.name()));
+    }
+    Ok(Tolerances { rtol: def.rtol, atol: def.atol, max_step: def.max_step })
 }
 
 /// Locates problems in one item.
@@ -154,7 +186,7 @@ fn node(def: &NodeDef) -> Node {
     Node { position: vec3(def.position), mass: def.mass, inertia: tensor(&def.inertia) }
 }
 
-fn build_body(def: &BodyDef, at: &ItemAt) -> Result<RigidBody, Problem> {
+fn build_body(def: &BodyDef, directory: &Path, at: &ItemAt) -> Result<RigidBody, Problem> {
     let slaves: Vec<Node> = def.slaves.iter().map(node).collect();
     let mass_properties = MassProperties::from_nodes(&node(&def.master), &slaves).map_err(|e| {
         let field = match e {
@@ -164,7 +196,7 @@ fn build_body(def: &BodyDef, at: &ItemAt) -> Result<RigidBody, Problem> {
         at.at_field(field, e.to_string())
     })?;
     let support = build_support(&def.support, at)?;
-    let shape = build_shape(&def.shape, at)?;
+    let shape = build_shape(&def.shape, directory, at)?;
     let slave_positions: Vec<Vec3> = slaves.iter().map(|n| n.position).collect();
     Ok(RigidBody::new(def.name.clone(), mass_properties, vec3(def.master.position), &slave_positions, support, shape))
 }
@@ -191,20 +223,34 @@ fn build_support(def: &SupportDef, at: &ItemAt) -> Result<Support, Problem> {
     })
 }
 
-fn build_shape(def: &ShapeDef, at: &ItemAt) -> Result<Shape, Problem> {
+/// Subdivisions of a sphere's icosphere beyond which the mesh (20·4ⁿ triangles) is too big
+/// to be meant: 6 gives 81,920.
+const MAX_SUBDIVISIONS: u32 = 6;
+
+/// Squares per box face edge beyond which the mesh (12 n² triangles) is too big to be meant:
+/// 64 gives 49,152.
+const MAX_BOX_SUBDIVISIONS: u32 = 64;
+
+fn build_shape(def: &ShapeDef, directory: &Path, at: &ItemAt) -> Result<Shape, Problem> {
     let positive = |field: &'static str, value: f64| {
         if value > 0.0 { Ok(()) } else { Err(at.at_field(field, format!("shape {field} must be > 0 m, got {value}"))) }
     };
     Ok(match def {
-        ShapeDef::Box { size, center } => {
+        ShapeDef::Box { size, center, subdivisions } => {
             for s in size {
                 positive("size", *s)?;
             }
-            Shape::Box { size: vec3(*size), center: vec3(*center) }
+            if !(1..=MAX_BOX_SUBDIVISIONS).contains(subdivisions) {
+                return Err(at.at_field("subdivisions", format!("box subdivisions must be 1 to {MAX_BOX_SUBDIVISIONS}, got {subdivisions}")));
+            }
+            Shape::Box { size: vec3(*size), center: vec3(*center), subdivisions: *subdivisions }
         }
-        ShapeDef::Sphere { radius, center } => {
+        ShapeDef::Sphere { radius, center, subdivisions } => {
             positive("radius", *radius)?;
-            Shape::Sphere { radius: *radius, center: vec3(*center) }
+            if *subdivisions > MAX_SUBDIVISIONS {
+                return Err(at.at_field("subdivisions", format!("subdivisions must be at most {MAX_SUBDIVISIONS}, got {subdivisions}")));
+            }
+            Shape::Sphere { radius: *radius, center: vec3(*center), subdivisions: *subdivisions }
         }
         ShapeDef::Cylinder { radius, length, axis, center } => {
             positive("radius", *radius)?;
@@ -215,6 +261,16 @@ fn build_shape(def: &ShapeDef, at: &ItemAt) -> Result<Shape, Problem> {
             };
             Shape::Cylinder { radius: *radius, length: *length, axis, center: vec3(*center) }
         }
+        ShapeDef::Mesh { file, scale, center } => {
+            if !(*scale > 0.0) {
+                return Err(at.at_field("scale", format!("mesh scale must be > 0, got {scale}")));
+            }
+            let (vertices, triangles) = mesh_file::read(&directory.join(file)).map_err(|e| at.problem(Some("file"), Some(file), e))?;
+            let vertices: Vec<Vec3> = vertices.iter().map(|v| v * *scale + vec3(*center)).collect();
+            // Checked now, so that a contact can always mesh the body.
+            let mesh = BoundaryMesh::new(vertices, triangles).map_err(|e| at.problem(Some("file"), Some(file), format!("mesh file {file:?}: {e}")))?;
+            Shape::Mesh { vertices: mesh.vertices, triangles: mesh.triangles }
+        }
     })
 }
 
@@ -222,29 +278,54 @@ fn build_end(def: &EndDef, bodies: &[RigidBody], at: &ItemAt) -> Result<Endpoint
     Ok(match def {
         EndDef::World(p) => Endpoint::World(vec3(*p)),
         EndDef::Body { body, point } => {
-            let Some(index) = bodies.iter().position(|b| &b.name == body) else {
-                let known: Vec<&str> = bodies.iter().map(|b| b.name.as_str()).collect();
-                return Err(at.problem(Some("body"), Some(body), format!("unknown body {body:?} (bodies: {})", known.join(", "))));
-            };
+            let index = body_index(body, bodies, "body", at)?;
             Endpoint::on_body(index, bodies[index].principal_point(&vec3(*point)))
         }
     })
 }
 
-fn build_coupling(def: &CouplingDef, bodies: &[RigidBody], at: &ItemAt) -> Result<Coupling, Problem> {
-    let [end1, end2] = def.ends();
-    let ends = (build_end(end1, bodies, at)?, build_end(end2, bodies, at)?);
-    if end1 == end2 {
-        return Err(at.at_field("end2", "both ends are the same point: the coupling has no direction".into()));
+/// The boundary meshes and opposing surfaces of the bodies in contact, built once per body
+/// and shared by its contacts (a body in no contact gets none).
+struct Boundaries {
+    meshes: Vec<Option<Arc<BoundaryMesh>>>,
+    surfaces: Vec<Option<Arc<Surface>>>,
+}
+
+impl Boundaries {
+    fn new(bodies: usize) -> Self {
+        Self { meshes: vec![None; bodies], surfaces: vec![None; bodies] }
     }
+
+    fn mesh(&mut self, bodies: &[RigidBody], index: usize) -> Result<Arc<BoundaryMesh>, MeshError> {
+        if let Some(mesh) = &self.meshes[index] {
+            return Ok(Arc::clone(mesh));
+        }
+        let mesh = Arc::new(BoundaryMesh::of_body(&bodies[index])?);
+        self.meshes[index] = Some(Arc::clone(&mesh));
+        Ok(mesh)
+    }
+
+    fn surface(&mut self, bodies: &[RigidBody], index: usize) -> Result<Arc<Surface>, MeshError> {
+        if let Some(surface) = &self.surfaces[index] {
+            return Ok(Arc::clone(surface));
+        }
+        let surface = Arc::new(Surface::new(self.mesh(bodies, index)?.as_ref())?);
+        self.surfaces[index] = Some(Arc::clone(&surface));
+        Ok(surface)
+    }
+}
+
+fn build_coupling(def: &CouplingDef, bodies: &[RigidBody], boundaries: &mut Boundaries, at: &ItemAt) -> Result<Coupling, Problem> {
     let kind = match def {
-        CouplingDef::SpringDamper { law, damping, .. } => {
+        CouplingDef::SpringDamper { end1, end2, law, damping, .. } => {
+            let (end1, end2) = build_ends(end1, end2, bodies, at)?;
             if !(*damping >= 0.0) {
                 return Err(at.at_field("damping", format!("damping must be ≥ 0 N·s/m, got {damping}")));
             }
-            CouplingKind::SpringDamper(SpringDamper::new(ends.0, ends.1, build_law(law, at)?, *damping))
+            CouplingKind::SpringDamper(SpringDamper::new(end1, end2, build_law(law, at)?, *damping))
         }
-        CouplingDef::Catenary { mass_per_length, length, stiffness, .. } => {
+        CouplingDef::Catenary { end1, end2, mass_per_length, length, stiffness, .. } => {
+            let (end1, end2) = build_ends(end1, end2, bodies, at)?;
             if !(*mass_per_length >= 0.0) {
                 return Err(at.at_field("mass_per_length", format!("mass_per_length must be ≥ 0 kg/m, got {mass_per_length}")));
             }
@@ -254,10 +335,75 @@ fn build_coupling(def: &CouplingDef, bodies: &[RigidBody], at: &ItemAt) -> Resul
             if !(*stiffness > 0.0) {
                 return Err(at.at_field("stiffness", format!("stiffness must be > 0 N/m, got {stiffness}")));
             }
-            CouplingKind::Catenary(Catenary::new(ends.0, ends.1, *mass_per_length, *length, *stiffness))
+            CouplingKind::Catenary(Catenary::new(end1, end2, *mass_per_length, *length, *stiffness))
+        }
+        CouplingDef::Contact { body, against, stiffness, damping, range, friction, friction_sharpness, expected_area, .. } => {
+            let law = build_contact_law(*stiffness, *damping, *range, *friction, *friction_sharpness, at)?;
+            let index = body_index(body, bodies, "body", at)?;
+            let mesh_problem = |e: MeshError| at.at_field("body", format!("boundary of body {body:?}: {e}"));
+            let boundary = boundaries.mesh(bodies, index).map_err(mesh_problem)?;
+            let against = build_against(against, index, bodies, boundaries, at)?;
+            let expected_area = match expected_area {
+                Some(area) if !(*area > 0.0) => return Err(at.at_field("expected_area", format!("expected_area must be > 0 m², got {area}"))),
+                Some(area) => *area,
+                None => boundary.area() / 6.0,
+            };
+            CouplingKind::Contact(Contact::new(index, boundary, against, law, expected_area))
         }
     };
     Ok(Coupling { name: def.name().to_string(), kind })
+}
+
+/// A spring's or a line's two ends, which must differ.
+fn build_ends(end1: &EndDef, end2: &EndDef, bodies: &[RigidBody], at: &ItemAt) -> Result<(Endpoint, Endpoint), Problem> {
+    if end1 == end2 {
+        return Err(at.at_field("end2", "both ends are the same point: the coupling has no direction".into()));
+    }
+    Ok((build_end(end1, bodies, at)?, build_end(end2, bodies, at)?))
+}
+
+fn build_contact_law(stiffness: f64, damping: f64, range: f64, friction: f64, friction_sharpness: f64, at: &ItemAt) -> Result<ContactLaw, Problem> {
+    let check = |field: &'static str, value: f64, valid: bool, rule: &str| if valid { Ok(value) } else { Err(at.at_field(field, format!("{field} must be {rule}, got {value}"))) };
+    Ok(ContactLaw {
+        stiffness: check("stiffness", stiffness, stiffness > 0.0, "> 0 N/m³")?,
+        damping: check("damping", damping, damping >= 0.0, "≥ 0 N·s/m³")?,
+        range: check("range", range, range >= 0.0, "≥ 0 m")?,
+        friction: check("friction", friction, friction >= 0.0, "≥ 0")?,
+        friction_sharpness: check("friction_sharpness", friction_sharpness, friction_sharpness > 0.0, "> 0 s/m")?,
+    })
+}
+
+fn build_against(def: &AgainstDef, body: usize, bodies: &[RigidBody], boundaries: &mut Boundaries, at: &ItemAt) -> Result<Opposing, Problem> {
+    Ok(match def {
+        AgainstDef::Plane { point, normal } => {
+            let Some(normal) = vec3(*normal).try_normalize(1e-12) else {
+                return Err(at.at_field("normal", "plane normal must not be zero".into()));
+            };
+            Opposing::Planes(vec![Plane { point: vec3(*point), normal }])
+        }
+        AgainstDef::DomainBox { min, max } => {
+            if !(0..3).all(|i| min[i] < max[i]) {
+                return Err(at.at_field("max", format!("domain box max {max:?} must exceed min {min:?} in every coordinate")));
+            }
+            Opposing::Planes(Plane::domain_box(&vec3(*min), &vec3(*max)).to_vec())
+        }
+        AgainstDef::Body(name) => {
+            let other = body_index(name, bodies, "against", at)?;
+            if other == body {
+                return Err(at.problem(Some("against"), Some(name), format!("body {name:?} cannot be in contact with itself")));
+            }
+            let surface = boundaries.surface(bodies, other).map_err(|e| at.problem(Some("against"), Some(name), format!("boundary of body {name:?}: {e}")))?;
+            Opposing::Body { body: other, surface }
+        }
+    })
+}
+
+/// The index of body `name`, or a problem at `field` listing the bodies.
+fn body_index(name: &str, bodies: &[RigidBody], field: &'static str, at: &ItemAt) -> Result<usize, Problem> {
+    bodies.iter().position(|b| b.name == name).ok_or_else(|| {
+        let known: Vec<&str> = bodies.iter().map(|b| b.name.as_str()).collect();
+        at.problem(Some(field), Some(name), format!("unknown body {name:?} (bodies: {})", known.join(", ")))
+    })
 }
 
 fn build_law(def: &LawDef, at: &ItemAt) -> Result<ElasticLaw, Problem> {

@@ -4,7 +4,7 @@
 //! axes parallel to the world axes at t = 0. Vectors are RON tuples `(x, y, z)`. Every number
 //! must be finite; unknown fields are rejected.
 
-use super::finite::{finite, finite3, finite_pairs, finite_velocity_table};
+use super::finite::{finite, finite_option, finite3, finite_pairs, finite_velocity_table};
 use crate::physics::integrator::{Integrator, Substeps};
 use serde::{Deserialize, Serialize};
 
@@ -24,14 +24,41 @@ pub struct SceneFile {
     /// Default duration of a run [s] > 0.
     #[serde(default = "default_duration", deserialize_with = "finite")]
     pub duration: f64,
+    /// `leapfrog` (default), `leapfrog2`, `splitting`, `rk4` or `dopri45`.
     #[serde(default)]
     pub integrator: Integrator,
+    /// Settings of `dopri45`; defaults when absent.
+    #[serde(default)]
+    pub adaptive: Option<AdaptiveDef>,
     /// Integrator steps per `dt`: `Fixed(n)` or `Auto` (default `Fixed(1)`).
     #[serde(default)]
     pub substeps: Substeps,
     pub bodies: Vec<BodyDef>,
     #[serde(default)]
     pub couplings: Vec<CouplingDef>,
+}
+
+/// Tolerances of the adaptive `dopri45` (PHYSICS.md §1; see [`crate::physics::integrator::Tolerances`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename = "Adaptive", deny_unknown_fields)]
+pub struct AdaptiveDef {
+    /// Relative tolerance [–], 0 < rtol < 1 (default 1e-6).
+    #[serde(default = "default_rtol", deserialize_with = "finite")]
+    pub rtol: f64,
+    /// Absolute tolerance [SI unit of each component] > 0 (default 1e-9).
+    #[serde(default = "default_atol", deserialize_with = "finite")]
+    pub atol: f64,
+    /// Largest adaptive step [s] > 0 (default: the integrator step `dt / substeps`).
+    #[serde(default, deserialize_with = "finite_option")]
+    pub max_step: Option<f64>,
+}
+
+fn default_rtol() -> f64 {
+    crate::physics::integrator::Tolerances::default().rtol
+}
+
+fn default_atol() -> f64 {
+    crate::physics::integrator::Tolerances::default().atol
 }
 
 fn default_gravity() -> Triple {
@@ -124,18 +151,25 @@ pub enum VelocityDef {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub enum ShapeDef {
-    /// Full edge lengths along x, y, z.
+    /// Full edge lengths along x, y, z; as a contact boundary, each face is split into
+    /// `subdivisions × subdivisions` squares (default 4).
     Box {
         #[serde(deserialize_with = "finite3")]
         size: Triple,
         #[serde(default, deserialize_with = "finite3")]
         center: Triple,
+        #[serde(default = "default_box_subdivisions")]
+        subdivisions: u32,
     },
+    /// A sphere; its contact boundary is an icosphere split `subdivisions` times (20·4ⁿ
+    /// triangles, default 2: 320).
     Sphere {
         #[serde(deserialize_with = "finite")]
         radius: f64,
         #[serde(default, deserialize_with = "finite3")]
         center: Triple,
+        #[serde(default = "default_subdivisions")]
+        subdivisions: u32,
     },
     Cylinder {
         #[serde(deserialize_with = "finite")]
@@ -147,6 +181,27 @@ pub enum ShapeDef {
         #[serde(default, deserialize_with = "finite3")]
         center: Triple,
     },
+    /// A closed triangle mesh from a Wavefront OBJ or STL `file` (relative to the scene file),
+    /// its coordinates multiplied by `scale` and then moved by `center`.
+    Mesh {
+        file: String,
+        #[serde(default = "one", deserialize_with = "finite")]
+        scale: f64,
+        #[serde(default, deserialize_with = "finite3")]
+        center: Triple,
+    },
+}
+
+fn default_box_subdivisions() -> u32 {
+    4
+}
+
+fn default_subdivisions() -> u32 {
+    2
+}
+
+fn one() -> f64 {
+    1.0
 }
 
 fn z_axis() -> Triple {
@@ -193,20 +248,61 @@ pub enum CouplingDef {
         #[serde(deserialize_with = "finite")]
         stiffness: f64,
     },
+    /// Penalty contact with tanh friction (PHYSICS.md §4) between the faces of body `body`'s
+    /// shape and `against`. Per unit face area: `stiffness` k1 [N/m³] > 0, `damping` k2
+    /// [N·s/m³] ≥ 0; `range` d0 [m] ≥ 0 where pushing starts; `friction` μ ≥ 0;
+    /// `friction_sharpness` k_t [s/m] > 0 of the tanh law (default 100); `expected_area` A [m²]
+    /// > 0 behind the time step limit (default: a sixth of the body's boundary area).
+    Contact {
+        name: String,
+        body: String,
+        against: AgainstDef,
+        #[serde(deserialize_with = "finite")]
+        stiffness: f64,
+        #[serde(default, deserialize_with = "finite")]
+        damping: f64,
+        #[serde(default, deserialize_with = "finite")]
+        range: f64,
+        #[serde(default, deserialize_with = "finite")]
+        friction: f64,
+        #[serde(default = "default_friction_sharpness", deserialize_with = "finite")]
+        friction_sharpness: f64,
+        #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "finite_option")]
+        expected_area: Option<f64>,
+    },
+}
+
+fn default_friction_sharpness() -> f64 {
+    100.0
+}
+
+/// What a contact's faces are pushed away from.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum AgainstDef {
+    /// The half-space above the plane through `point` [m] with `normal` (towards the bodies).
+    Plane {
+        #[serde(deserialize_with = "finite3")]
+        point: Triple,
+        #[serde(deserialize_with = "finite3")]
+        normal: Triple,
+    },
+    /// The inside of the axis-aligned box `[min, max]` [m]: the computational domain's walls.
+    DomainBox {
+        #[serde(deserialize_with = "finite3")]
+        min: Triple,
+        #[serde(deserialize_with = "finite3")]
+        max: Triple,
+    },
+    /// Another body's boundary.
+    Body(String),
 }
 
 impl CouplingDef {
     /// The coupling's name.
     pub fn name(&self) -> &str {
         match self {
-            Self::SpringDamper { name, .. } | Self::Catenary { name, .. } => name,
-        }
-    }
-
-    /// The coupling's ends.
-    pub fn ends(&self) -> [&EndDef; 2] {
-        match self {
-            Self::SpringDamper { end1, end2, .. } | Self::Catenary { end1, end2, .. } => [end1, end2],
+            Self::SpringDamper { name, .. } | Self::Catenary { name, .. } | Self::Contact { name, .. } => name,
         }
     }
 }

@@ -15,6 +15,10 @@ pub fn finite<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
     check(f64::deserialize(d)?)
 }
 
+pub fn finite_option<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
+    Option::<f64>::deserialize(d)?.map(check::<D::Error>).transpose()
+}
+
 pub fn finite3<'de, D: Deserializer<'de>>(d: D) -> Result<[f64; 3], D::Error> {
     let v = <[f64; 3]>::deserialize(d)?;
     for x in v {

@@ -6,6 +6,7 @@
 pub mod build;
 pub mod file;
 mod finite;
+pub mod mesh_file;
 pub mod source;
 
 use crate::physics::world::World;
@@ -47,15 +48,17 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
 pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let source = Source::new(text);
     let label = path.display().to_string();
-    let file: SceneFile = ron::Options::default().from_str(text).map_err(|e| syntax_error(&source, &label, &e))?;
-    let built = build::build(&file).map_err(|p| placed(&source, &label, p))?;
+    // Optional sections (`adaptive: (…)`) are written without `Some(…)`.
+    let options = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
+    let file: SceneFile = options.from_str(text).map_err(|e| syntax_error(&source, &label, &e))?;
+    let built = build::build(&file, directory(path)).map_err(|p| placed(&source, &label, p))?;
     Ok(Scene { path: path.to_path_buf(), file, world: built.world, warnings: built.warnings })
 }
 
 /// Builds the world again from `scene.file` (after a setting was changed, e.g. the time step
 /// from the command line); errors point at the scene's path.
 pub fn rebuild(scene: Scene) -> Result<Scene, SceneError> {
-    let built = build::build(&scene.file).map_err(|p| SceneError { path: scene.path.display().to_string(), line: 1, col: 1, message: p.message })?;
+    let built = build::build(&scene.file, directory(&scene.path)).map_err(|p| SceneError { path: scene.path.display().to_string(), line: 1, col: 1, message: p.message })?;
     Ok(Scene { world: built.world, warnings: built.warnings, ..scene })
 }
 
@@ -64,6 +67,28 @@ pub fn rebuild(scene: Scene) -> Result<Scene, SceneError> {
 pub fn to_ron(file: &SceneFile) -> Result<String, ron::Error> {
     let config = ron::ser::PrettyConfig::new().struct_names(true);
     ron::ser::to_string_pretty(file, config).map(|text| text + "\n")
+}
+
+/// Rewrites the mesh files of `file` (relative to the scene's folder `from`) so they still load
+/// when the scene is written into folder `to`: relative paths stay as they are within the same
+/// folder and become absolute otherwise.
+pub fn relocate_meshes(file: &mut SceneFile, from: &Path, to: &Path) {
+    if from == to {
+        return;
+    }
+    for body in &mut file.bodies {
+        if let file::ShapeDef::Mesh { file: mesh, .. } = &mut body.shape
+            && Path::new(mesh.as_str()).is_relative()
+        {
+            let absolute = std::path::absolute(from.join(mesh.as_str())).unwrap_or_else(|_| from.join(mesh.as_str()));
+            *mesh = absolute.display().to_string();
+        }
+    }
+}
+
+/// The folder of a scene file, where its mesh files are looked up.
+fn directory(path: &Path) -> &Path {
+    path.parent().unwrap_or(Path::new("."))
 }
 
 /// A parser error, with the body or coupling it falls in when there is one.

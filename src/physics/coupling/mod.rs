@@ -1,15 +1,18 @@
-//! Couplings: forces between two ends, each on a body or fixed in the world (PHYSICS.md §2–4).
+//! Couplings: forces between two ends, each on a body or fixed in the world (PHYSICS.md §2–4):
+//! spring-dampers, catenary lines, and contact between a body's faces and a boundary.
 //!
 //! A coupling is plain data in the closed enum [`CouplingKind`]; every kind writes its own
 //! [`CouplingForces`] each evaluation, so its forces can be plotted, recorded and tested apart
 //! from the others before they are summed into the bodies' [`Load`]s.
 
 pub mod catenary;
+pub mod contact;
 pub mod elastic_law;
 pub mod spring_damper;
 
 use super::{Mat3, Vec3};
 pub use catenary::{Catenary, CatenaryError};
+pub use contact::Contact;
 pub use elastic_law::ElasticLaw;
 pub use spring_damper::SpringDamper;
 
@@ -145,6 +148,7 @@ pub struct CouplingForces {
 pub enum CouplingKind {
     SpringDamper(SpringDamper),
     Catenary(Catenary),
+    Contact(Contact),
 }
 
 /// Why a coupling could not give its forces.
@@ -165,11 +169,16 @@ pub struct Coupling {
 }
 
 impl Coupling {
-    /// The coupling's two ends.
+    /// The coupling's two ends (a contact's: the centres of its body and of the opposing body,
+    /// or the world origin for the environment).
     pub fn ends(&self) -> [Endpoint; 2] {
         match &self.kind {
             CouplingKind::SpringDamper(spring) => [spring.end1, spring.end2],
             CouplingKind::Catenary(line) => [line.end1, line.end2],
+            CouplingKind::Contact(contact) => {
+                let other = contact.other_body().map_or(Endpoint::World(Vec3::zeros()), |body| Endpoint::Center { body });
+                [Endpoint::Center { body: contact.body }, other]
+            }
         }
     }
 
@@ -178,6 +187,7 @@ impl Coupling {
         match &self.kind {
             CouplingKind::SpringDamper(_) => "spring_damper",
             CouplingKind::Catenary(_) => "catenary",
+            CouplingKind::Contact(_) => "contact",
         }
     }
 
@@ -188,8 +198,8 @@ impl Coupling {
         match &mut self.kind {
             CouplingKind::SpringDamper(spring) => spring.apply(frames, loads, out),
             CouplingKind::Catenary(line) => line.apply(frames, gravity, loads, out)?,
+            CouplingKind::Contact(contact) => contact.apply(frames, loads, out),
         }
         Ok(())
     }
-
 }

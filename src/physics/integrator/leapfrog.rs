@@ -23,7 +23,8 @@ use crate::physics::{Rotation, Vec3};
 
 /// Evaluates t = 0 and turns the synchronised initial velocities into `v(−½dt) = v(0) − ½dt γ(0)`.
 pub(crate) fn start(world: &mut World) -> Result<(), StepError> {
-    world.prescribe_kinematic_bodies();
+    let time = world.time();
+    world.prescribe_kinematic_bodies(time);
     for (frame, state) in world.frames.iter_mut().zip(&world.states) {
         *frame = body_frame(state);
     }
@@ -40,20 +41,6 @@ pub(crate) fn start(world: &mut World) -> Result<(), StepError> {
     world.body_energy = kinetic_and_gravity(world);
     world.ledger = EnergyLedger::new(dissipated, world.external_power());
     Ok(())
-}
-
-/// Restarts the half-step velocities after the integrator step changed: the synchronised
-/// `v(t)`, `ω(t)` (taken with the old step) become `v(t−½h) = v(t) − ½h γ(t)`,
-/// `ω(t−½h) = ω(t) − ½h α(t)` with the new step `h`, as at [`start`].
-pub(crate) fn restart(world: &mut World, synchronized: Vec<BodyState>) {
-    let half = 0.5 * world.step_size();
-    for ((state, synced), (acceleration, body)) in world.states.iter_mut().zip(synchronized).zip(world.accelerations.iter().zip(&world.bodies)) {
-        *state = synced;
-        if !body.is_kinematic() {
-            state.velocity -= acceleration.linear * half;
-            state.angular_velocity -= acceleration.angular * half;
-        }
-    }
 }
 
 /// At which angular velocity the gyroscopic term `ω × Iω` is evaluated.
@@ -119,7 +106,7 @@ pub(crate) fn synchronized_state(world: &World, index: usize) -> BodyState {
 
 /// `Σ ½ m |v(t)|² + ½ ω(t)ᵀ I ω(t)` and `Σ −m g·x_G` [J] over the bodies that respond to
 /// forces, with the synchronised velocities.
-pub(crate) fn kinetic_and_gravity(world: &World) -> (f64, f64) {
+fn kinetic_and_gravity(world: &World) -> (f64, f64) {
     let half = 0.5 * world.step_size();
     world.bodies.iter().zip(&world.states).zip(&world.accelerations).fold((0.0, 0.0), |(k, g), ((body, state), acceleration)| {
         let (dk, dg) = body_energy(body, state, acceleration, half, &world.gravity);
@@ -190,12 +177,12 @@ pub(crate) fn rotate_by(orientation: &Rotation, rotation_vector: &Vec3) -> Rotat
 /// Pulls a quaternion that is unit up to round-off back onto the unit sphere with one Newton
 /// step for `1/|q|`: `q (3 − |q|²)/2`. The error ε = |q|² − 1 becomes O(ε²), so round-off
 /// cannot accumulate, and there is no square root or division in the hot loop.
-fn renormalize(q: nalgebra::Quaternion<f64>) -> Rotation {
+pub(crate) fn renormalize(q: nalgebra::Quaternion<f64>) -> Rotation {
     Rotation::new_unchecked(q * (1.5 - 0.5 * q.norm_squared()))
 }
 
 /// Stage *predict*: the kinematics the forces see, world axes.
-fn body_frame(state: &BodyState) -> BodyFrame {
+pub(crate) fn body_frame(state: &BodyState) -> BodyFrame {
     let rotation = state.orientation.to_rotation_matrix().into_inner();
     BodyFrame { position: state.position, rotation, velocity: state.velocity, angular_velocity: state.angular_velocity }
 }

@@ -1,7 +1,23 @@
 //! Time integrators (PHYSICS.md §1, time integration). A closed enum: each scheme is a module.
+//!
+//! | scheme | order (translation / rotation) | force evaluations per step | stable step, spring `ω`, damping `ζ` |
+//! |---|---|---|---|
+//! | [`leapfrog`] | 2 (1 with dampers) / 1 | 1 | `2(√(1+ζ²) − ζ)/ω` |
+//! | [`leapfrog2`] | 2 (1 with dampers) / 2 | 1 | `2(√(1+ζ²) − ζ)/ω` |
+//! | [`splitting`] | 2 (1 with dampers) / 2 | 1 | `2(√(1+ζ²) − ζ)/ω` |
+//! | [`rk4`] | 4 / 4 | 4 | `2√2/ω` undamped; damped from RK4's stability polynomial |
+//! | [`dopri45`] | 5 (error estimate 4), adaptive | 6 per attempt | none: the step adapts |
+//!
+//! The leapfrog and leapfrog2 keep velocities half a step behind positions; the splitting, RK4
+//! and Dormand–Prince keep them synchronised. [`crate::physics::world::World::state`] always
+//! gives the synchronised state.
 
+pub mod dopri45;
 pub mod leapfrog;
 pub mod leapfrog2;
+pub mod rk4;
+pub(crate) mod runge_kutta;
+pub mod splitting;
 
 /// The scheme that advances a world by one step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
@@ -12,6 +28,45 @@ pub enum Integrator {
     Leapfrog,
     /// The leapfrog with the gyroscopic term at a predicted ω(t) ([`leapfrog2`]).
     Leapfrog2,
+    /// Kick–drift–kick with the free rigid body split into exact rotations about the principal
+    /// axes ([`splitting`]).
+    Splitting,
+    /// Classical fourth-order Runge–Kutta ([`rk4`]).
+    Rk4,
+    /// Adaptive Dormand–Prince 5(4) ([`dopri45`]), settings in [`Tolerances`].
+    Dopri45,
+}
+
+impl Integrator {
+    /// Every scheme, in the order of the table above.
+    pub const ALL: [Self; 5] = [Self::Leapfrog, Self::Leapfrog2, Self::Splitting, Self::Rk4, Self::Dopri45];
+
+    /// The name scene files and the command line use.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Leapfrog => "leapfrog",
+            Self::Leapfrog2 => "leapfrog2",
+            Self::Splitting => "splitting",
+            Self::Rk4 => "rk4",
+            Self::Dopri45 => "dopri45",
+        }
+    }
+
+    /// The scheme called `name` (as in scene files), if there is one.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|i| i.name() == name)
+    }
+
+    /// Whether the scheme chooses its own steps (and so has no stability limit to respect).
+    pub fn is_adaptive(self) -> bool {
+        self == Self::Dopri45
+    }
+
+    /// Whether [`crate::physics::world::World`]'s stored velocities are at `t − ½dt` (the
+    /// leapfrogs) rather than at `t`.
+    pub(crate) fn is_staggered(self) -> bool {
+        matches!(self, Self::Leapfrog | Self::Leapfrog2)
+    }
 }
 
 /// How many integrator steps one world step takes: the world advances by `dt`, its integrator
@@ -20,13 +75,35 @@ pub enum Integrator {
 pub enum Substeps {
     /// `n ≥ 1` integrator steps per world step.
     Fixed(u32),
-    /// Enough integrator steps to keep each under 0.9 of the binding stable time step at t = 0.
+    /// Enough integrator steps to keep each under 0.9 of the binding stable time step of the
+    /// scene's integrator at t = 0 and of every contact's impact resolution τ/10 (one for the
+    /// adaptive `dopri45`, whose steps adapt), up to [`crate::physics::world::MAX_AUTO_SUBSTEPS`].
     Auto,
 }
 
 impl Default for Substeps {
     fn default() -> Self {
         Self::Fixed(1)
+    }
+}
+
+/// Settings of the adaptive [`Integrator::Dopri45`]: a step is accepted when its estimated
+/// error is below `atol + rtol·|y|` for every component (position [m], velocity [m/s],
+/// orientation quaternion [–], angular velocity [rad/s]), in the root-mean-square sense.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tolerances {
+    /// Relative tolerance [–] > 0.
+    pub rtol: f64,
+    /// Absolute tolerance [SI unit of each component] > 0.
+    pub atol: f64,
+    /// Largest step [s] > 0, if any; the integrator step `dt / substeps` bounds it anyway, as
+    /// every world step ends exactly on its boundary.
+    pub max_step: Option<f64>,
+}
+
+impl Default for Tolerances {
+    fn default() -> Self {
+        Self { rtol: 1e-6, atol: 1e-9, max_step: None }
     }
 }
 
@@ -37,4 +114,6 @@ pub struct Timing {
     pub dt: f64,
     pub integrator: Integrator,
     pub substeps: Substeps,
+    /// Used by [`Integrator::Dopri45`] only.
+    pub tolerances: Tolerances,
 }

@@ -1,0 +1,263 @@
+//! Face-based penalty contact with tanh friction (PHYSICS.md §4, seed [4956]–[4965]).
+//!
+//! A contact coupling pushes the faces of one body's [`BoundaryMesh`] away from an opposing
+//! boundary: half-spaces of the environment (a ground plane, quay walls, the walls of a domain
+//! box) or another body's [`Surface`]. For each face within the range `d0` of the opposing
+//! boundary the [`ContactLaw`] gives `f_f = f_n + f_t` at its centroid `r_f`; the body receives
+//! `Σ f_f` and the moment about G `Σ (r_f − x_G) × f_f` ([4956]–[4957]); another body receives
+//! `−f_f` at the same points, so momentum is conserved.
+//!
+//! Cost: a body whose bounding ball is out of range of a plane costs one dot product; a pair of
+//! bodies whose bounding balls are apart costs one distance; then each face costs a dot product
+//! (plane) or a BVH query (body).
+
+pub mod estimator;
+pub mod law;
+
+use super::{BodyFrame, CouplingForces, Load};
+use crate::physics::mesh::{BoundaryMesh, Face, Surface};
+use crate::physics::{Mat3, Vec3};
+pub use law::{ContactLaw, FaceContact};
+use std::sync::Arc;
+
+/// A half-space boundary: the plane through `point` [m] with unit `normal` pointing to the side
+/// the bodies are on.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Plane {
+    pub point: Vec3,
+    pub normal: Vec3,
+}
+
+impl Plane {
+    /// The six inward walls of the axis-aligned box `[low, high]` [m], the boundary of the
+    /// computational domain.
+    pub fn domain_box(low: &Vec3, high: &Vec3) -> [Self; 6] {
+        let wall = |point: &Vec3, axis: usize, sign: f64| Self { point: *point, normal: Vec3::ith(axis, sign) };
+        [wall(low, 0, 1.0), wall(low, 1, 1.0), wall(low, 2, 1.0), wall(high, 0, -1.0), wall(high, 1, -1.0), wall(high, 2, -1.0)]
+    }
+}
+
+/// What the faces are pushed away from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Opposing {
+    /// Half-spaces of the environment; each acts on every face in its range.
+    Planes(Vec<Plane>),
+    /// The boundary of body `body` (index in the world).
+    Body { body: usize, surface: Arc<Surface> },
+}
+
+/// One face in contact, in the body's principal frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ActiveFace {
+    /// `r_f − x_G` [m], principal frame.
+    pub centroid: Vec3,
+    /// `f_f` on the body [N], principal frame.
+    pub force: Vec3,
+}
+
+/// Totals of the last evaluation.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ContactTotals {
+    /// `Σ |f_n|` [N].
+    pub normal: f64,
+    /// `|Σ f_t|` [N].
+    pub friction: f64,
+    /// `Σ a_f` of the faces in range [m²].
+    pub area: f64,
+    /// Faces in range.
+    pub faces: usize,
+}
+
+/// A contact coupling between the faces of body `body` and an opposing boundary.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Contact {
+    pub body: usize,
+    pub boundary: Arc<BoundaryMesh>,
+    pub against: Opposing,
+    pub law: ContactLaw,
+    /// `A`, the expected contact area [m²] (PHYSICS.md §4) behind the time step limit.
+    pub expected_area: f64,
+    /// `Σ |f_n|` [N] at the last evaluation.
+    normal_force: f64,
+}
+
+/// What a step needs of the faces in contact, summed in the frame they were evaluated in.
+#[derive(Default)]
+struct Accumulated {
+    force: Vec3,
+    /// `Σ r_f × f_f`.
+    moment: Vec3,
+    normal: f64,
+    potential: f64,
+    dissipated_power: f64,
+}
+
+impl Accumulated {
+    #[inline]
+    fn add(&mut self, centroid: &Vec3, contact: &FaceContact) {
+        self.force += contact.force;
+        self.moment += centroid.cross(&contact.force);
+        self.normal += contact.normal_force;
+        self.potential += contact.potential;
+        self.dissipated_power += contact.dissipated_power;
+    }
+}
+
+impl Contact {
+    pub fn new(body: usize, boundary: Arc<BoundaryMesh>, against: Opposing, law: ContactLaw, expected_area: f64) -> Self {
+        Self { body, boundary, against, law, expected_area, normal_force: 0.0 }
+    }
+
+    /// The faces in contact at the kinematics `frames`, with their forces: the evaluation of
+    /// [`Contact::apply`] again, for display (the step itself keeps only the sums it needs).
+    pub fn active_faces(&self, frames: &[BodyFrame]) -> Vec<ActiveFace> {
+        let mut active = Vec::new();
+        self.evaluate(frames, |face, contact| active.push(ActiveFace { centroid: face.centroid, force: contact.force }));
+        active
+    }
+
+    /// Normal force, friction, area and number of the faces in contact at the kinematics
+    /// `frames` (evaluated again, for display and the time step limit).
+    pub fn totals(&self, frames: &[BodyFrame]) -> ContactTotals {
+        let (mut totals, mut friction) = (ContactTotals::default(), Vec3::zeros());
+        self.evaluate(frames, |face, contact| {
+            totals.normal += contact.normal_force;
+            totals.area += face.area;
+            totals.faces += 1;
+            friction += contact.friction;
+        });
+        ContactTotals { friction: friction.norm(), ..totals }
+    }
+
+    /// `Σ |f_n|` [N] at the last [`Contact::apply`].
+    pub fn normal_force(&self) -> f64 {
+        self.normal_force
+    }
+
+    /// The sums over the faces in contact, in the body's principal frame, calling `on_face`
+    /// with each face and what the law gave it.
+    #[inline]
+    fn evaluate(&self, frames: &[BodyFrame], on_face: impl FnMut(&Face, &FaceContact)) -> Accumulated {
+        let frame = &frames[self.body];
+        match &self.against {
+            Opposing::Planes(planes) => against_planes(&self.boundary, &self.law, planes, frame, on_face),
+            Opposing::Body { body, surface } => against_body(&self.boundary, &self.law, surface, frame, &frames[*body], on_face),
+        }
+    }
+
+    /// The area behind the time step limit [m²]: the larger of the expected contact area and
+    /// the area in contact at the kinematics `frames`.
+    pub fn limit_area(&self, frames: &[BodyFrame]) -> f64 {
+        self.expected_area.max(self.totals(frames).area)
+    }
+
+    /// Stopping time `τ` [s] of an impact on an area `area` [m²] for the effective mass
+    /// `1/inverse_mass` (PHYSICS.md §4); infinite when neither side responds to forces.
+    pub fn stopping_time(&self, area: f64, inverse_mass: f64) -> f64 {
+        if inverse_mass > 0.0 { estimator::stopping_time(inverse_mass.recip(), area, self.law.stiffness) } else { f64::INFINITY }
+    }
+
+    /// The other body, if the opposing boundary is one.
+    pub fn other_body(&self) -> Option<usize> {
+        match self.against {
+            Opposing::Planes(_) => None,
+            Opposing::Body { body, .. } => Some(body),
+        }
+    }
+
+    /// Evaluates the faces at the kinematics `frames`, adds the forces to the bodies' `loads`
+    /// and writes the totals to `out` (`f1` on the body at its G, `f2 = −f1` on the opposing
+    /// side at its G or, for planes, at the body's; `tension` = `Σ |f_n|`).
+    #[inline]
+    pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load], out: &mut CouplingForces) {
+        let sums = self.evaluate(frames, |_, _| {});
+        let frame = &frames[self.body];
+        if let Opposing::Body { body, .. } = self.against {
+            // The reaction −f_f at the same points: moment (r_f − x_B) × (−f_f).
+            let force = frame.rotation * sums.force;
+            let lever = frame.position - frames[body].position;
+            loads[body].force -= force;
+            loads[body].moment -= lever.cross(&force) + frame.rotation * sums.moment;
+        }
+        let force = frame.rotation * sums.force;
+        loads[self.body].force += force;
+        loads[self.body].moment += frame.rotation * sums.moment;
+        *out = CouplingForces {
+            point1: frame.position,
+            point2: self.other_body().map_or(frame.position, |body| frames[body].position),
+            f1: force,
+            f2: -force,
+            tension: sums.normal,
+            dissipated_power: sums.dissipated_power,
+            potential: sums.potential,
+        };
+        self.normal_force = sums.normal;
+    }
+}
+
+/// Every face of `boundary` against every plane, in the body's principal frame: a plane at
+/// height `h = n·(x_G − p)` is at distance `d_f = h + n_b·r_f` from face f, `n_b = Rᵀ n`; a
+/// group of faces whose bounding ball is out of range is skipped whole.
+#[inline]
+fn against_planes(boundary: &BoundaryMesh, law: &ContactLaw, planes: &[Plane], frame: &BodyFrame, mut on_face: impl FnMut(&Face, &FaceContact)) -> Accumulated {
+    let mut sums = Accumulated::default();
+    let reach = boundary.bounding_radius();
+    let faces = boundary.faces();
+    for plane in planes {
+        let height = plane.normal.dot(&(frame.position - plane.point));
+        if height - reach >= law.range {
+            continue;
+        }
+        let rotation: &Mat3 = &frame.rotation;
+        let normal = rotation.tr_mul(&plane.normal);
+        let velocity = rotation.tr_mul(&frame.velocity);
+        for group in boundary.groups() {
+            if height + normal.dot(&group.center) - group.radius >= law.range {
+                continue;
+            }
+            let mut in_range = group.below(height, &normal, law.range);
+            while in_range != 0 {
+                let face = &faces[group.first + in_range.trailing_zeros() as usize];
+                in_range &= in_range - 1;
+                let distance = height + normal.dot(&face.centroid);
+                let face_velocity = velocity + frame.angular_velocity.cross(&face.centroid);
+                let contact = law.face_force(face.area, distance, &normal, &face_velocity);
+                sums.add(&face.centroid, &contact);
+                on_face(face, &contact);
+            }
+        }
+    }
+    sums
+}
+
+/// Every face of body A's `boundary` against body B's `surface`, evaluated in B's principal
+/// frame (where the surface is) and returned in A's; a group of faces whose ball is out of range
+/// of B's bounding box is skipped whole.
+fn against_body(boundary: &BoundaryMesh, law: &ContactLaw, surface: &Surface, a: &BodyFrame, b: &BodyFrame, mut on_face: impl FnMut(&Face, &FaceContact)) -> Accumulated {
+    let mut sums = Accumulated::default();
+    if (a.position - b.position).norm() >= boundary.bounding_radius() + surface.bounding_radius() + law.range {
+        return sums;
+    }
+    // B's frame: x_B = b.position, axes b.rotation; A's faces are carried into it.
+    let a_to_b = b.rotation.tr_mul(&a.rotation);
+    let offset = b.rotation.tr_mul(&(a.position - b.position));
+    let velocity_a = b.rotation.tr_mul(&(a.velocity - b.velocity));
+    let spin_a = a_to_b * a.angular_velocity;
+    let faces = boundary.faces();
+    let groups = boundary.groups().iter().filter(|group| surface.near_bounds(&(offset + a_to_b * group.center), law.range + group.radius));
+    for face in groups.flat_map(|group| &faces[group.faces()]) {
+        let arm = a_to_b * face.centroid;
+        let point = offset + arm;
+        let Some(nearest) = surface.nearest(&point, law.range) else { continue };
+        if nearest.distance >= law.range {
+            continue;
+        }
+        let relative_velocity = velocity_a + spin_a.cross(&arm) - b.angular_velocity.cross(&point);
+        let contact = law.face_force(face.area, nearest.distance, &nearest.normal, &relative_velocity);
+        // Back into A's principal frame.
+        let in_a = FaceContact { force: a_to_b.tr_mul(&contact.force), friction: a_to_b.tr_mul(&contact.friction), ..contact };
+        sums.add(&face.centroid, &in_a);
+        on_face(face, &in_a);
+    }
+    sums
+}

@@ -102,6 +102,9 @@ fn a_tuned_stiffness_reaches_the_running_simulation_and_a_bad_one_is_refused() {
     set_knob(&mut harness, "stiffness k", 2500.0);
     until(&mut harness, "the applied message", |p| p.log().any(|l| l.text.starts_with("coupling \"spring\" applied")));
     assert_eq!(spring_stiffness(&world(&harness)), 2500.0, "the thread runs the tuned stiffness");
+    for line in harness.state().log().filter(|l| l.text.contains("applied")) {
+        println!("{}", line.text);
+    }
     assert!(harness.query_by_label_contains("spring •").is_some(), "the coupling is marked as tuned");
 
     set_knob(&mut harness, "stiffness k", -5.0);

@@ -3,6 +3,7 @@
 mod check;
 mod estimate_contact;
 mod forces;
+mod gui;
 mod record;
 mod study;
 
@@ -11,12 +12,13 @@ use clap::{Parser, Subcommand};
 use std::path::{Path, PathBuf};
 use tether::scene::{self, Scene};
 
-/// Coupled rigid bodies — springs, catenaries, contact — simulated and recorded for Rerun.
+/// Coupled rigid bodies — springs, catenaries, contact — simulated, tuned live and recorded for
+/// Rerun. With no command: the window, with the default scene.
 #[derive(Debug, Parser)]
 #[command(name = "tether", version, about)]
 pub struct Cli {
     #[command(subcommand)]
-    command: Command,
+    command: Option<Command>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -28,6 +30,13 @@ enum Command {
     },
     /// Run a scene headless and write a Rerun recording (.rrd).
     Record(record::RecordArgs),
+    /// Open the window: control panel and Rerun viewer, a scene running live (the default).
+    Gui(gui::GuiArgs),
+    /// Play a recording (.rrd) back in the window's viewer.
+    View {
+        /// Recording file (.rrd).
+        recording: PathBuf,
+    },
     /// Run the scene with each integrator at a ladder of time steps against a reference run;
     /// print the accuracy-versus-cost table and write it as CSV, Markdown and a PNG chart.
     Study(study::StudyArgs),
@@ -48,7 +57,10 @@ pub const INTERRUPTED: u8 = 130;
 
 /// Runs one subcommand; returns the process exit code.
 pub fn run(cli: Cli) -> anyhow::Result<u8> {
-    match cli.command {
+    let command = cli.command.unwrap_or(Command::Gui(gui::GuiArgs::default()));
+    match command {
+        Command::Gui(args) => gui::run(args).map(|()| 0),
+        Command::View { recording } => gui::view(recording).map(|()| 0),
         Command::Check { scene } => check::run(&load(&scene)?).map(|()| 0),
         Command::Record(args) => record::run(&args).map(|outcome| match outcome {
             record::Outcome::Finished => 0,

@@ -41,6 +41,17 @@ const AUTO_SUBSTEP_MARGIN: f64 = 0.9;
 /// it with the stable time step in the message, rather than seeming to hang.
 pub const MAX_AUTO_SUBSTEPS: u32 = 10_000;
 
+/// A time step setting refused by [`World::set_timing`].
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum TimingError {
+    #[error("time step dt must be > 0 s, got {0}")]
+    Step(f64),
+    #[error("substeps must be at least 1")]
+    NoSubsteps,
+    #[error(transparent)]
+    Forces(StepError),
+}
+
 /// Energy balance drift, in multiples of the energy budget, taken as a blow-up.
 const DIVERGENCE_FACTOR: f64 = 10.0;
 
@@ -136,14 +147,11 @@ impl World {
         world.coupling_forces = vec![CouplingForces::default(); world.couplings.len()];
         world.kinematic_bodies = (0..n).filter(|&i| world.bodies[i].is_kinematic()).collect();
         world.start()?;
-        let limits = stability::limits(&world);
-        world.initial_limit = stability::binding(&limits);
-        let impacts = stability::impact_limits(&world);
-        let adaptive = world.integrator.is_adaptive();
-        if let (Substeps::Auto, Some(limit), false) = (world.substep_setting, stability::binding(&[limits, impacts].concat()), adaptive) {
-            let needed = (world.dt / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil();
-            if needed > 1.0 {
-                world.substeps = needed.min(f64::from(MAX_AUTO_SUBSTEPS)) as u32;
+        world.initial_limit = stability::binding(&stability::limits(&world));
+        if world.substep_setting == Substeps::Auto {
+            let needed = world.auto_substeps();
+            if needed > 1 {
+                world.substeps = needed;
                 world.start()?;
             }
         }
@@ -155,6 +163,12 @@ impl World {
     /// The integrator's start at t = 0 from the initial states.
     fn start(&mut self) -> Result<(), StepError> {
         self.states.clone_from(&self.initial_states);
+        self.start_integrator()
+    }
+
+    /// The integrator's start at the current time from `self.states` (synchronised velocities):
+    /// forces, accelerations, energies, and an energy ledger from zero.
+    fn start_integrator(&mut self) -> Result<(), StepError> {
         match self.integrator {
             Integrator::Leapfrog | Integrator::Leapfrog2 => leapfrog::start(self),
             Integrator::Splitting => splitting::start(self),
@@ -269,9 +283,94 @@ impl World {
 
     /// Restarts from t = 0 with the current parameters; on error the world is unchanged.
     pub fn reset(&mut self) -> Result<(), StepError> {
-        let timing = Timing { dt: self.dt, integrator: self.integrator, substeps: self.substep_setting, tolerances: self.tolerances };
-        *self = Self::new(self.gravity, self.bodies.clone(), self.couplings.clone(), self.initial_states.clone(), timing)?;
+        *self = Self::new(self.gravity, self.bodies.clone(), self.couplings.clone(), self.initial_states.clone(), self.timing())?;
         Ok(())
+    }
+
+    /// Integrator steps per world step that `Substeps::Auto` asks for at the current state:
+    /// enough to keep each under [`AUTO_SUBSTEP_MARGIN`] of the binding stable time step of the
+    /// integrator and of every contact's impact resolution, at most [`MAX_AUTO_SUBSTEPS`]; one
+    /// for an adaptive scheme, whose steps adapt.
+    fn auto_substeps(&self) -> u32 {
+        if self.integrator.is_adaptive() {
+            return 1;
+        }
+        let limits = [stability::limits(self), stability::impact_limits(self)].concat();
+        stability::binding(&limits).map_or(1, |limit| (self.dt / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil().clamp(1.0, f64::from(MAX_AUTO_SUBSTEPS)) as u32)
+    }
+
+    /// Starts the integrator again at the current time from the synchronised state, keeping the
+    /// energy integrals: the motion goes on from the same positions and velocities under what
+    /// changed (a coupling, the time step, the integrator).
+    fn restart_here(&mut self) -> Result<(), StepError> {
+        let ledger = self.ledger;
+        self.states = (0..self.bodies.len()).map(|i| self.state(i)).collect();
+        self.start_integrator()?;
+        self.ledger.add(ledger.dissipated, ledger.external_work);
+        Ok(())
+    }
+
+    /// Replaces coupling `index` while running, without a restart (live tuning): the integrator
+    /// starts again at the current time from the synchronised state (positions and velocities at
+    /// t do not move, as after a change of time step), with the forces of the new coupling, so
+    /// the motion goes on under them at the scheme's order across the change. Its energy does
+    /// jump: the elastic energy of the new parameters at the same positions differs from the old
+    /// one. That jump is booked as external work (PHYSICS.md §5), so `balance()` stays continuous
+    /// across the swap and keeps checking the motion after it; the divergence message then
+    /// quotes the stable time step of the new parameters.
+    ///
+    /// # Errors
+    /// The new coupling cannot give its forces here, or `index` is out of range; the world is
+    /// then unchanged.
+    pub fn replace_coupling(&mut self, index: usize, coupling: Coupling) -> Result<(), StepError> {
+        if index >= self.couplings.len() {
+            return Err(StepError::Coupling { coupling: coupling.name, time: self.time, source: CouplingError::NoSuchCoupling(index) });
+        }
+        let before = self.clone();
+        self.couplings[index] = coupling;
+        if let Err(error) = self.restart_here() {
+            *self = before;
+            return Err(error);
+        }
+        self.ledger.add(0.0, self.energy().total() - before.energy().total());
+        self.initial_limit = stability::binding(&stability::limits(self));
+        Ok(())
+    }
+
+    /// Changes the time step, the integrator, the substeps and the adaptive tolerances at the
+    /// current time, keeping the state: the new integrator starts from the synchronised
+    /// positions and velocities, so the motion goes on where it was. `Substeps::Auto` is
+    /// resolved from the stable time steps of the current state.
+    ///
+    /// # Errors
+    /// `dt` not finite and positive, zero substeps, or forces that cannot be evaluated; the
+    /// world is then unchanged.
+    pub fn set_timing(&mut self, timing: Timing) -> Result<(), TimingError> {
+        if !(timing.dt.is_finite() && timing.dt > 0.0) {
+            return Err(TimingError::Step(timing.dt));
+        }
+        if timing.substeps == Substeps::Fixed(0) {
+            return Err(TimingError::NoSubsteps);
+        }
+        let before = self.clone();
+        self.states = (0..self.bodies.len()).map(|i| self.state(i)).collect();
+        (self.dt, self.integrator, self.substep_setting, self.tolerances) = (timing.dt, timing.integrator, timing.substeps, timing.tolerances);
+        self.substeps = match timing.substeps {
+            Substeps::Fixed(n) => n,
+            Substeps::Auto => self.auto_substeps(),
+        };
+        let ledger = self.ledger;
+        if let Err(error) = self.start_integrator() {
+            *self = before;
+            return Err(TimingError::Forces(error));
+        }
+        self.ledger.add(ledger.dissipated, ledger.external_work);
+        Ok(())
+    }
+
+    /// The time step settings.
+    pub fn timing(&self) -> Timing {
+        Timing { dt: self.dt, integrator: self.integrator, substeps: self.substep_setting, tolerances: self.tolerances }
     }
 
     /// Simulated time [s].

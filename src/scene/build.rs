@@ -41,17 +41,11 @@ pub struct Built {
 
 /// Builds the world a scene describes; mesh files are looked up relative to `directory`.
 pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
-    if !(file.dt > 0.0) {
-        return Err(Problem { place: Place::Top("dt"), message: format!("time step dt must be > 0 s, got {}", file.dt) });
-    }
-    if file.substeps == Substeps::Fixed(0) {
-        return Err(Problem { place: Place::Top("substeps"), message: "substeps must be at least 1".into() });
-    }
+    let mut warnings = Vec::new();
+    let timing = timing_with_warnings(file, &mut warnings)?;
     if !(file.duration > 0.0) {
         return Err(Problem { place: Place::Top("duration"), message: format!("duration must be > 0 s, got {}", file.duration) });
     }
-    let mut warnings = Vec::new();
-    let tolerances = build_tolerances(file, &mut warnings)?;
     let mut bodies = Vec::with_capacity(file.bodies.len());
     let mut states = Vec::with_capacity(file.bodies.len());
     for (index, def) in file.bodies.iter().enumerate() {
@@ -79,12 +73,46 @@ pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
         couplings.push(build_coupling(def, &bodies, &mut boundaries, &at)?);
     }
     // Names are unique by now: the coupling at fault is the first of its name.
-    let timing = Timing { dt: file.dt, integrator: file.integrator, substeps: file.substeps, tolerances };
     let world = World::new(vec3(file.gravity), bodies, couplings, states, timing).map_err(|e| match e {
         StepError::Coupling { coupling, source, .. } => ItemAt::new(ItemKind::Coupling, &coupling, 0).at_name(format!("at t = 0: {source}")),
         other => Problem { place: Place::Top("bodies"), message: other.to_string() },
     })?;
     Ok(Built { world, warnings })
+}
+
+/// The time step settings of a scene, checked: `dt` > 0 s, at least one substep, sound
+/// adaptive tolerances.
+pub fn timing(file: &SceneFile) -> Result<Timing, Problem> {
+    timing_with_warnings(file, &mut Vec::new())
+}
+
+fn timing_with_warnings(file: &SceneFile, warnings: &mut Vec<String>) -> Result<Timing, Problem> {
+    if !(file.dt > 0.0 && file.dt.is_finite()) {
+        return Err(Problem { place: Place::Top("dt"), message: format!("time step dt must be > 0 s, got {}", file.dt) });
+    }
+    if file.substeps == Substeps::Fixed(0) {
+        return Err(Problem { place: Place::Top("substeps"), message: "substeps must be at least 1".into() });
+    }
+    let tolerances = build_tolerances(file, warnings)?;
+    Ok(Timing { dt: file.dt, integrator: file.integrator, substeps: file.substeps, tolerances })
+}
+
+/// Builds coupling `index` of `file` on its own, with the checks and messages of [`build`]
+/// (live tuning builds a changed coupling this way before it reaches a running world). The
+/// bodies (and the boundary meshes a contact needs, from files under `directory`) are built
+/// again to resolve the ends; their own problems are reported too.
+pub fn coupling(file: &SceneFile, index: usize, directory: &Path) -> Result<Coupling, Problem> {
+    let Some(def) = file.couplings.get(index) else {
+        return Err(Problem { place: Place::Top("couplings"), message: format!("the scene has no coupling {index}") });
+    };
+    let mut bodies = Vec::with_capacity(file.bodies.len());
+    for (i, body) in file.bodies.iter().enumerate() {
+        let occurrence = file.bodies[..i].iter().filter(|b| b.name == body.name).count();
+        bodies.push(build_body(body, directory, &ItemAt::new(ItemKind::Body, &body.name, occurrence))?);
+    }
+    let occurrence = file.couplings[..index].iter().filter(|c| c.name() == def.name()).count();
+    let mut boundaries = Boundaries::new(bodies.len());
+    build_coupling(def, &bodies, &mut boundaries, &ItemAt::new(ItemKind::Coupling, def.name(), occurrence))
 }
 
 /// The `adaptive` settings, checked; a warning when the integrator does not use them.

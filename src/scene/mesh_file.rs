@@ -3,7 +3,8 @@
 use crate::physics::Vec3;
 use std::path::Path;
 
-/// Vertices [file units] and triangles of a mesh file.
+/// Vertices [file units] and triangles of a mesh file. Coordinates are single precision, as
+/// STL files store them (OBJ text is read to `f32` too, see Cargo.toml).
 pub type TriangleList = (Vec<Vec3>, Vec<[u32; 3]>);
 
 /// Reads the mesh at `path`, chosen by its extension (`.obj` or `.stl`, any case); every
@@ -29,7 +30,7 @@ fn read_obj(path: &Path) -> Result<TriangleList, String> {
     let mut triangles = Vec::new();
     for model in &models {
         let offset = u32::try_from(vertices.len()).map_err(|_| "mesh file has too many vertices".to_string())?;
-        vertices.extend(model.mesh.positions.chunks_exact(3).map(|p| Vec3::new(p[0], p[1], p[2])));
+        vertices.extend(model.mesh.positions.chunks_exact(3).map(|p| Vec3::new(f64::from(p[0]), f64::from(p[1]), f64::from(p[2]))));
         triangles.extend(model.mesh.indices.chunks_exact(3).map(|t| [t[0] + offset, t[1] + offset, t[2] + offset]));
     }
     Ok((vertices, triangles))

@@ -62,6 +62,30 @@ pub fn rebuild(scene: Scene) -> Result<Scene, SceneError> {
     Ok(Scene { world: built.world, warnings: built.warnings, ..scene })
 }
 
+/// The scene as RON text that [`parse`] reads back to the same [`SceneFile`] ("save as" after
+/// live tuning). Comments of the original file are not kept.
+pub fn to_ron(file: &SceneFile) -> Result<String, ron::Error> {
+    let config = ron::ser::PrettyConfig::new().struct_names(true);
+    ron::ser::to_string_pretty(file, config).map(|text| text + "\n")
+}
+
+/// Rewrites the mesh files of `file` (relative to the scene's folder `from`) so they still load
+/// when the scene is written into folder `to`: relative paths stay as they are within the same
+/// folder and become absolute otherwise.
+pub fn relocate_meshes(file: &mut SceneFile, from: &Path, to: &Path) {
+    if from == to {
+        return;
+    }
+    for body in &mut file.bodies {
+        if let file::ShapeDef::Mesh { file: mesh, .. } = &mut body.shape
+            && Path::new(mesh.as_str()).is_relative()
+        {
+            let absolute = std::path::absolute(from.join(mesh.as_str())).unwrap_or_else(|_| from.join(mesh.as_str()));
+            *mesh = absolute.display().to_string();
+        }
+    }
+}
+
 /// The folder of a scene file, where its mesh files are looked up.
 fn directory(path: &Path) -> &Path {
     path.parent().unwrap_or(Path::new("."))

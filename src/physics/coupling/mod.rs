@@ -156,6 +156,9 @@ pub enum CouplingKind {
 pub enum CouplingError {
     #[error(transparent)]
     Catenary(#[from] CatenaryError),
+    /// A coupling replaced at an index the world does not have.
+    #[error("the world has no coupling {0}")]
+    NoSuchCoupling(usize),
 }
 
 /// A named coupling.

@@ -1,0 +1,182 @@
+//! The eframe application: the control panel on the left, the embedded Rerun viewer in the rest
+//! of the window (or a note when streaming to an external viewer), dropped files.
+
+use super::panel::{ControlPanel, Settings};
+use super::stream::Sinks;
+use super::{GuiError, GuiOptions, waker};
+use rerun::external::{eframe, egui, re_log_channel, re_viewer};
+use rerun::sink::{CallbackSink, LogSink};
+use std::cell::RefCell;
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+
+/// Key of the panel's [`Settings`] in eframe's storage.
+const SETTINGS_KEY: &str = "tether_settings";
+
+/// The window.
+pub struct TetherApp {
+    panel: ControlPanel,
+    /// The embedded viewer (`None` with `--connect`).
+    viewer: Option<re_viewer::App>,
+    /// The entity selected in the viewer, from its selection events.
+    selection: Rc<RefCell<Option<String>>>,
+    connect: Option<String>,
+}
+
+impl TetherApp {
+    /// The window's state: the simulation thread writing to `sinks` (and to the embedded viewer,
+    /// unless `options` connect to an external one), and what `options` open.
+    pub fn new(
+        cc: &eframe::CreationContext<'_>,
+        main_thread: re_viewer::MainThreadToken,
+        runtime: rerun::external::tokio::runtime::Handle,
+        mut sinks: Vec<Box<dyn LogSink>>,
+        options: GuiOptions,
+    ) -> Result<Self, GuiError> {
+        let selection = Rc::new(RefCell::new(None));
+        let viewer = options.connect.is_none().then(|| {
+            let (viewer, sink) = embedded_viewer(cc, main_thread, runtime, Rc::clone(&selection));
+            sinks.push(sink);
+            viewer
+        });
+        let mut panel = ControlPanel::new(Sinks::new(sinks), waker(&cc.egui_ctx), options.scenes_dir.clone()).map_err(GuiError::Thread)?;
+        if let Some(settings) = cc.storage.and_then(|storage| eframe::get_value::<Settings>(storage, SETTINGS_KEY)) {
+            panel.settings = settings;
+        }
+        if let Some(scene) = &options.scene {
+            panel.open_scene(scene);
+        }
+        let ctx = cc.egui_ctx.clone();
+        // Ctrl-C and SIGTERM close the window as its close button does: the recordings are
+        // flushed and the `.rrd` footer written.
+        let closing = ctrlc::set_handler(move || {
+            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+            ctx.request_repaint();
+        });
+        if let Err(error) = closing {
+            panel.note_error(format!("Ctrl-C will not close the window cleanly: {error}"));
+        }
+        let mut app = Self { panel, viewer, selection, connect: options.connect };
+        if let Some(recording) = &options.recording {
+            app.open_recording(recording);
+        }
+        Ok(app)
+    }
+
+    fn open_recording(&mut self, path: &Path) {
+        match &self.viewer {
+            Some(viewer) => {
+                viewer.open_url_or_file(&path.display().to_string());
+                self.panel.note(format!("playing back {}", path.display()));
+            }
+            None => self.panel.note_error(format!("{}: recordings play back in the embedded viewer, not with --connect", path.display())),
+        }
+    }
+
+    /// Scenes dropped on the window are opened by the panel, recordings by the viewer.
+    fn take_dropped_files(&mut self, ctx: &egui::Context) {
+        let dropped: Vec<PathBuf> = ctx.input_mut(|i| std::mem::take(&mut i.raw.dropped_files)).into_iter().map(|f| f.path().to_path_buf()).filter(|p| !p.as_os_str().is_empty()).collect();
+        for path in dropped {
+            if is_recording(&path) {
+                self.open_recording(&path);
+            } else {
+                self.panel.open_scene(&path);
+            }
+        }
+    }
+}
+
+/// A `.rrd` file (anything else dropped is taken for a scene).
+fn is_recording(path: &Path) -> bool {
+    path.extension().is_some_and(|e| e.eq_ignore_ascii_case("rrd"))
+}
+
+/// The viewer, fed through an in-process channel, and the sink that feeds it.
+fn embedded_viewer(
+    cc: &eframe::CreationContext<'_>,
+    main_thread: re_viewer::MainThreadToken,
+    runtime: rerun::external::tokio::runtime::Handle,
+    selection: Rc<RefCell<Option<String>>>,
+) -> (re_viewer::App, Box<dyn LogSink>) {
+    let (tx, rx) = re_log_channel::log_channel(re_log_channel::LogSource::Sdk);
+    let on_event = move |event: re_viewer::ViewerEvent| {
+        if let re_viewer::ViewerEventKind::SelectionChange { items } = event.kind {
+            *selection.borrow_mut() = items.into_iter().find_map(|item| match item {
+                re_viewer::SelectionChangeItem::Entity { entity_path, .. } => Some(entity_path.to_string()),
+                _ => None,
+            });
+        }
+    };
+    let mut startup = re_viewer::StartupOptions {
+        persist_state: false,
+        hide_welcome_screen: true,
+        expect_data_soon: Some(true),
+        on_event: Some(Rc::new(on_event)),
+        ..Default::default()
+    };
+    // Room for the views beside the control panel: the viewer's own side panels start folded.
+    let collapsed = Some(re_viewer::external::re_sdk_types::blueprint::components::PanelState::Collapsed);
+    startup.panel_state_overrides.blueprint = collapsed;
+    startup.panel_state_overrides.selection = collapsed;
+    let mut viewer = re_viewer::App::new(
+        main_thread,
+        re_viewer::build_info(),
+        re_viewer::AppEnvironment::Custom("tether".into()),
+        startup,
+        cc,
+        None,
+        re_viewer::AsyncRuntimeHandle::new_native(runtime),
+    );
+    viewer.app_options_mut().custom_window_decorations = false;
+    viewer.add_log_receiver(rx);
+    let sink = CallbackSink::new(move |messages| {
+        for message in messages {
+            // The viewer closed its end only when the window is closing.
+            tx.send(re_log_channel::DataSourceMessage::LogMsg(message.clone())).ok();
+        }
+    });
+    (viewer, Box::new(sink))
+}
+
+impl eframe::App for TetherApp {
+    fn logic(&mut self, ctx: &egui::Context, frame: &mut eframe::Frame) {
+        self.take_dropped_files(ctx);
+        // The embedded viewer quits on Ctrl+Q; without it, so does the window.
+        if self.viewer.is_none() && ctx.input_mut(|i| i.consume_key(egui::Modifiers::COMMAND, egui::Key::Q)) {
+            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+        }
+        for recording in self.panel.take_recordings_to_open() {
+            self.open_recording(&recording);
+        }
+        if let Some(viewer) = &mut self.viewer {
+            viewer.logic(ctx, frame);
+        }
+    }
+
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        let selected = self.selection.borrow().clone();
+        egui::Panel::left("tether_controls").resizable(true).default_size(380.0).show(ui, |ui| {
+            self.panel.ui(ui, selected.as_deref());
+        });
+        match (&mut self.viewer, &self.connect) {
+            (Some(viewer), _) => viewer.ui(ui, frame),
+            (None, url) => {
+                egui::CentralPanel::default().show(ui, |ui| {
+                    ui.label(format!("Streaming to the viewer at {}", url.as_deref().unwrap_or("?")));
+                });
+            }
+        }
+    }
+
+    fn raw_input_hook(&mut self, ctx: &egui::Context, raw_input: &mut egui::RawInput) {
+        self.panel.take_shortcuts(ctx, &mut raw_input.events);
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        eframe::set_value(storage, SETTINGS_KEY, &self.panel.settings);
+    }
+
+    fn on_exit(&mut self) {
+        self.panel.shutdown();
+    }
+}

@@ -147,10 +147,16 @@ pub fn limits(world: &World) -> Vec<Limit> {
                 let area = contact.limit_area(frames);
                 let normal = oscillator_limit(world.integrator, contact.law.stiffness * area, contact.law.damping * area, inverse);
                 let friction = contact.law.friction * contact.law.friction_sharpness * contact.normal_force();
-                // Friction acts across the surface, at up to the boundary's radius from G: it
-                // turns the body as much as it pushes it.
-                let reach = contact.boundary.bounding_radius();
-                let sliding_inverse = translational_inverse_mass(world, contact.body) + turning_inverse_mass(world, contact.body, reach) + contact.other_body().map_or(0.0, |other| translational_inverse_mass(world, other) + turning_inverse_mass(world, other, reach));
+                // Friction acts across the surface at the faces in contact: it turns the bodies
+                // as much as it pushes them.
+                let faces = contact.active_faces(frames);
+                let frame = &frames[contact.body];
+                let on_body = faces.iter().map(|face| face.centroid);
+                let mut sliding_inverse = translational_inverse_mass(world, contact.body) + turning_inverse_mass(world, contact.body, on_body);
+                if let Some(other) = contact.other_body() {
+                    let to_other = |c: Vec3| frames[other].rotation.tr_mul(&(frame.position + frame.rotation * c - frames[other].position));
+                    sliding_inverse += translational_inverse_mass(world, other) + turning_inverse_mass(world, other, faces.iter().map(|face| to_other(face.centroid)));
+                }
                 normal.min(oscillator_limit(world.integrator, 0.0, friction, sliding_inverse))
             }
         };
@@ -198,11 +204,22 @@ fn translational_inverse_mass(world: &World, index: usize) -> f64 {
     if body.is_kinematic() { 0.0 } else { body.inverse_mass }
 }
 
-/// `ρ²/I_min` [1/kg]: the most a unit force at distance `ρ` [m] from G can add to the
-/// acceleration of the point through rotation; 0 for a kinematic body.
-fn turning_inverse_mass(world: &World, index: usize, reach: f64) -> f64 {
+/// `max over the points r and unit directions t of (r × t)ᵀ I⁻¹ (r × t)` [1/kg]: the most a unit
+/// force at one of `points` (principal frame of body `index`, relative to G) adds to the
+/// acceleration of its point through rotation, the largest eigenvalue of `[r]×ᵀ I⁻¹ [r]×`;
+/// 0 for a kinematic body.
+fn turning_inverse_mass(world: &World, index: usize, points: impl Iterator<Item = Vec3>) -> f64 {
     let body = &world.bodies[index];
-    if body.is_kinematic() { 0.0 } else { reach * reach * body.inverse_principal_moments.max() }
+    if body.is_kinematic() {
+        return 0.0;
+    }
+    let inverse_inertia = nalgebra::Matrix3::from_diagonal(&body.inverse_principal_moments);
+    points
+        .map(|r| {
+            let cross = r.cross_matrix();
+            nalgebra::SymmetricEigen::new(cross.transpose() * inverse_inertia * cross).eigenvalues.max()
+        })
+        .fold(0.0, f64::max)
 }
 
 /// `1/m + (r × d)ᵀ I⁻¹ (r × d)` of the body an end is on, for a unit force direction `d`.

@@ -13,8 +13,8 @@
 //!   series is its larger end tension);
 //! - `plots/catenary/<name>`: a catenary's end tensions, series `end1` and `end2` [N];
 //! - `world/contacts/<name>`: a contact's face forces as arrows from the face centroids, those
-//!   above a thousandth of the body's weight, drawn at [`ARROW_LENGTH_PER_WEIGHT`] body radii
-//!   per body weight (`m·max(|g|, 1 m/s²)`);
+//!   above a thousandth of the body's weight (`m·max(|g|, 1 m/s²)`), the largest of the frame
+//!   one body radius long (the force itself is in `plots/contact/<name>`);
 //! - `plots/contact/<name>`: a contact's total normal force `Σ|f_n|` and friction `|Σ f_t|`,
 //!   series `normal` and `friction` [N]; its `plots/tension` series is the normal force.
 
@@ -35,9 +35,6 @@ pub struct Recorder {
     body_paths: Vec<String>,
     coupling_paths: Vec<String>,
 }
-
-/// Length of a contact's face-force arrow for a force equal to the body's weight, in body radii.
-pub const ARROW_LENGTH_PER_WEIGHT: f64 = 2.0;
 
 /// Face forces below this fraction of the body's weight are not drawn.
 const ARROW_THRESHOLD: f64 = 1e-3;
@@ -120,18 +117,17 @@ impl Recorder {
     }
 }
 
-/// A contact's face forces above the threshold, as world arrows from the face centroids.
+/// A contact's face forces above the threshold, as world arrows from the face centroids, the
+/// largest one body radius long.
 fn face_arrows(world: &World, contact: &Contact) -> rerun::Arrows3D {
     let body = &world.bodies[contact.body];
     let weight = body.mass() * world.gravity.norm().max(1.0);
-    let scale = ARROW_LENGTH_PER_WEIGHT * contact.boundary.bounding_radius() / weight;
+    let faces: Vec<_> = contact.active_faces(world.frames()).into_iter().filter(|face| face.force.norm() > ARROW_THRESHOLD * weight).collect();
+    let largest = faces.iter().map(|face| face.force.norm()).fold(0.0, f64::max);
+    let scale = contact.boundary.bounding_radius() / largest.max(f64::MIN_POSITIVE);
     let frame = &world.frames()[contact.body];
-    let (origins, vectors): (Vec<[f32; 3]>, Vec<[f32; 3]>) = contact
-        .active_faces(world.frames())
-        .iter()
-        .filter(|face| face.force.norm() > ARROW_THRESHOLD * weight)
-        .map(|face| (f32x3(&(frame.position + frame.rotation * face.centroid)), f32x3(&(frame.rotation * face.force * scale))))
-        .unzip();
+    let (origins, vectors): (Vec<[f32; 3]>, Vec<[f32; 3]>) =
+        faces.iter().map(|face| (f32x3(&(frame.position + frame.rotation * face.centroid)), f32x3(&(frame.rotation * face.force * scale)))).unzip();
     rerun::Arrows3D::from_vectors(vectors).with_origins(origins).with_colors([rerun::Color::from_rgb(230, 120, 40)])
 }
 

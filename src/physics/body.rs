@@ -83,6 +83,22 @@ pub enum Support {
     Kinematic(PrescribedMotion),
 }
 
+impl Support {
+    /// Sets to zero the velocity components [m/s] and, for a fixed rotation, the angular
+    /// velocity [rad/s] (any axes: all of it) that a [`Support::Fixed`] holds.
+    #[inline]
+    pub fn hold(&self, velocity: &mut Vec3, angular_velocity: &mut Vec3) {
+        if let Self::Fixed { translation, rotation } = self {
+            for axis in (0..3).filter(|&axis| translation[axis]) {
+                velocity[axis] = 0.0;
+            }
+            if *rotation {
+                *angular_velocity = Vec3::zeros();
+            }
+        }
+    }
+}
+
 /// Constant properties of a rigid body.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RigidBody {
@@ -141,14 +157,7 @@ impl RigidBody {
     /// `angular_velocity` (world, rad/s).
     /// Components a [`Support::Fixed`] holds are set to zero.
     pub fn initial_state(&self, mut velocity: Vec3, mut angular_velocity: Vec3) -> BodyState {
-        if let Support::Fixed { translation, rotation } = &self.support {
-            for axis in (0..3).filter(|&axis| translation[axis]) {
-                velocity[axis] = 0.0;
-            }
-            if *rotation {
-                angular_velocity = Vec3::zeros();
-            }
-        }
+        self.support.hold(&mut velocity, &mut angular_velocity);
         let orientation = self.mass_properties.principal_axes;
         BodyState {
             position: self.mass_properties.center_of_mass,

@@ -130,16 +130,7 @@ fn body_energy(body: &RigidBody, state: &BodyState, acceleration: &Acceleration,
 /// `x += v dt`, `q ⊗= exp(ω dt)`. Returns whether the body turned: one with `ω = 0` exactly (a
 /// point mass held at G, a fixed rotation) pays nothing for rotation.
 fn kick_and_drift(state: &mut BodyState, acceleration: &Acceleration, support: &Support, dt: f64) -> bool {
-    state.velocity += acceleration.linear * dt;
-    state.angular_velocity += acceleration.angular * dt;
-    if let Support::Fixed { translation, rotation } = support {
-        for axis in (0..3).filter(|&axis| translation[axis]) {
-            state.velocity[axis] = 0.0;
-        }
-        if *rotation {
-            state.angular_velocity = Vec3::zeros();
-        }
-    }
+    kick(state, acceleration, support, dt);
     state.position += state.velocity * dt;
     let w = &state.angular_velocity;
     let turned = w.x != 0.0 || w.y != 0.0 || w.z != 0.0;
@@ -147,6 +138,14 @@ fn kick_and_drift(state: &mut BodyState, acceleration: &Acceleration, support: &
         state.orientation = rotate_by(&state.orientation, &(state.angular_velocity * dt));
     }
     turned
+}
+
+/// `v += γ h`, `ω += α h`, fixed components held at rest.
+#[inline(always)]
+pub(crate) fn kick(state: &mut BodyState, acceleration: &Acceleration, support: &Support, h: f64) {
+    state.velocity += acceleration.linear * h;
+    state.angular_velocity += acceleration.angular * h;
+    support.hold(&mut state.velocity, &mut state.angular_velocity);
 }
 
 /// `q ⊗ exp(φ)` for a rotation vector `φ` in the body frame [rad], renormalised.

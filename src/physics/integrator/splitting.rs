@@ -20,9 +20,9 @@
 //! - Cost: one force evaluation per step; five axis rotations (sine and cosine) per spinning
 //!   body.
 
-use super::leapfrog::{body_frame, renormalize};
+use super::leapfrog::{body_frame, kick, renormalize};
 use crate::physics::body::{BodyState, RigidBody, Support, prescribed_state};
-use crate::physics::dynamics::{Acceleration, accelerations};
+use crate::physics::dynamics::accelerations;
 use crate::physics::energy::EnergyLedger;
 use crate::physics::world::{StepError, World, gravity_load};
 use crate::physics::Vec3;
@@ -87,20 +87,6 @@ fn kick_and_energies(world: &mut World, half: f64) {
         gravity -= body.mass() * world.gravity.dot(&state.position);
     }
     world.body_energy = (kinetic, gravity);
-}
-
-/// `v += γ h`, `ω += α h` (α from the moment alone), fixed components held at rest.
-fn kick(state: &mut BodyState, acceleration: &Acceleration, support: &Support, h: f64) {
-    state.velocity += acceleration.linear * h;
-    state.angular_velocity += acceleration.angular * h;
-    if let Support::Fixed { translation, rotation } = support {
-        for axis in (0..3).filter(|&axis| translation[axis]) {
-            state.velocity[axis] = 0.0;
-        }
-        if *rotation {
-            state.angular_velocity = Vec3::zeros();
-        }
-    }
 }
 
 /// The free rotation over `h` by `R1(h/2) R2(h/2) R3(h) R2(h/2) R1(h/2)`; returns whether the

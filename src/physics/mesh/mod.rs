@@ -130,12 +130,8 @@ impl BoundaryMesh {
             }
         }
         let corners = |t: &[u32; 3]| t.map(|i| vertices[i as usize]);
-        // 6 × the enclosed volume: negative when the normals point inwards.
-        let volume6: f64 = triangles.iter().map(|t| {
-            let [a, b, c] = corners(t);
-            a.dot(&b.cross(&c))
-        }).sum();
-        if volume6 < 0.0 {
+        // Negative when the normals point inwards.
+        if signed_volume(&vertices, &triangles) < 0.0 {
             for t in &mut triangles {
                 t.swap(1, 2);
             }
@@ -174,6 +170,11 @@ impl BoundaryMesh {
         self.bounding_radius
     }
 
+    /// The volume the boundary encloses [m³] (the body's, for a closed mesh).
+    pub fn volume(&self) -> f64 {
+        signed_volume(&self.vertices, &self.triangles)
+    }
+
     /// `Σ a_f` [m²].
     pub fn area(&self) -> f64 {
         self.faces.iter().map(|f| f.area).sum()
@@ -193,6 +194,12 @@ impl BoundaryMesh {
         let to_principal = &body.reference_in_principal;
         Self::new(vertices.iter().map(|v| to_principal.transform_point(&(*v).into()).coords).collect(), triangles)
     }
+}
+
+/// `Σ a·(b × c)/6` over the triangles (a, b, c) [m³]: the enclosed volume of a closed mesh,
+/// positive when every triangle is wound counter-clockwise seen from outside.
+pub(crate) fn signed_volume(vertices: &[Vec3], triangles: &[[u32; 3]]) -> f64 {
+    triangles.iter().map(|t| vertices[t[0] as usize].dot(&vertices[t[1] as usize].cross(&vertices[t[2] as usize]))).sum::<f64>() / 6.0
 }
 
 /// Splits `faces` (starting at index `first` of the whole list) in place at the median of

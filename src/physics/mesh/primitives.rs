@@ -116,7 +116,7 @@ mod tests {
     /// Enclosed volume `Σ a·(b×c)/6` [m³]: positive only if every face is wound outwards
     /// consistently.
     fn volume((vertices, triangles): &(Vec<Vec3>, Vec<[u32; 3]>)) -> f64 {
-        triangles.iter().map(|t| vertices[t[0] as usize].dot(&vertices[t[1] as usize].cross(&vertices[t[2] as usize]))).sum::<f64>() / 6.0
+        crate::physics::mesh::signed_volume(vertices, triangles)
     }
 
     #[test]

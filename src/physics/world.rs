@@ -299,12 +299,17 @@ impl World {
         stability::binding(&limits).map_or(1, |limit| (self.dt / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil().clamp(1.0, f64::from(MAX_AUTO_SUBSTEPS)) as u32)
     }
 
-    /// Starts the integrator again at the current time from the synchronised state, keeping the
-    /// energy integrals: the motion goes on from the same positions and velocities under what
-    /// changed (a coupling, the time step, the integrator).
-    fn restart_here(&mut self) -> Result<(), StepError> {
+    /// The synchronised state of every body at the current time (velocities at t).
+    fn synchronized_states(&self) -> Vec<BodyState> {
+        (0..self.bodies.len()).map(|i| self.state(i)).collect()
+    }
+
+    /// Starts the integrator again at the current time from `self.states`, which the caller has
+    /// set to [`World::synchronized_states`] before changing anything, keeping the energy
+    /// integrals: the motion goes on from the same positions and velocities under what changed
+    /// (a coupling, the time step, the integrator).
+    fn restart(&mut self) -> Result<(), StepError> {
         let ledger = self.ledger;
-        self.states = (0..self.bodies.len()).map(|i| self.state(i)).collect();
         self.start_integrator()?;
         self.ledger.add(ledger.dissipated, ledger.external_work);
         Ok(())
@@ -327,8 +332,9 @@ impl World {
             return Err(StepError::Coupling { coupling: coupling.name, time: self.time, source: CouplingError::NoSuchCoupling(index) });
         }
         let before = self.clone();
+        self.states = self.synchronized_states();
         self.couplings[index] = coupling;
-        if let Err(error) = self.restart_here() {
+        if let Err(error) = self.restart() {
             *self = before;
             return Err(error);
         }
@@ -353,18 +359,16 @@ impl World {
             return Err(TimingError::NoSubsteps);
         }
         let before = self.clone();
-        self.states = (0..self.bodies.len()).map(|i| self.state(i)).collect();
+        self.states = self.synchronized_states();
         (self.dt, self.integrator, self.substep_setting, self.tolerances) = (timing.dt, timing.integrator, timing.substeps, timing.tolerances);
         self.substeps = match timing.substeps {
             Substeps::Fixed(n) => n,
             Substeps::Auto => self.auto_substeps(),
         };
-        let ledger = self.ledger;
-        if let Err(error) = self.start_integrator() {
+        if let Err(error) = self.restart() {
             *self = before;
             return Err(TimingError::Forces(error));
         }
-        self.ledger.add(ledger.dissipated, ledger.external_work);
         Ok(())
     }
 

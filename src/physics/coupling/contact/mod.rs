@@ -8,16 +8,20 @@
 //! `−f_f` at the same points, so momentum is conserved.
 //!
 //! Cost: a body whose bounding ball is out of range of a plane costs one dot product; a pair of
-//! bodies whose bounding balls are apart costs one distance; then each face costs a dot product
-//! (plane) or a BVH query (body).
+//! bodies whose bounding balls are apart costs one distance. Then, against a plane, each face on
+//! the plane's [`shortlist`] costs a dot product (the list is drawn up again, by culling groups of
+//! faces, only when the body has moved or turned by its margin); against a body, each face in a
+//! group near the other's bounding box costs a BVH query.
 
 pub mod estimator;
 pub mod law;
+mod shortlist;
 
 use super::{BodyFrame, CouplingForces, Load};
 use crate::physics::mesh::{BoundaryMesh, Face, Surface};
 use crate::physics::{Mat3, Vec3};
 pub use law::{ContactLaw, FaceContact};
+use shortlist::Shortlist;
 use std::sync::Arc;
 
 /// A half-space boundary: the plane through `point` [m] with unit `normal` pointing to the side
@@ -79,6 +83,8 @@ pub struct Contact {
     pub expected_area: f64,
     /// `Σ |f_n|` [N] at the last evaluation.
     normal_force: f64,
+    /// For each plane of [`Opposing::Planes`], the faces that may be in its range.
+    shortlists: Vec<Shortlist>,
 }
 
 /// What a step needs of the faces in contact, summed in the frame they were evaluated in.
@@ -105,14 +111,18 @@ impl Accumulated {
 
 impl Contact {
     pub fn new(body: usize, boundary: Arc<BoundaryMesh>, against: Opposing, law: ContactLaw, expected_area: f64) -> Self {
-        Self { body, boundary, against, law, expected_area, normal_force: 0.0 }
+        let planes = match &against {
+            Opposing::Planes(planes) => planes.len(),
+            Opposing::Body { .. } => 0,
+        };
+        Self { body, boundary, against, law, expected_area, normal_force: 0.0, shortlists: vec![Shortlist::new(); planes] }
     }
 
     /// The faces in contact at the kinematics `frames`, with their forces: the evaluation of
     /// [`Contact::apply`] again, for display (the step itself keeps only the sums it needs).
     pub fn active_faces(&self, frames: &[BodyFrame]) -> Vec<ActiveFace> {
         let mut active = Vec::new();
-        self.evaluate(frames, |face, contact| active.push(ActiveFace { centroid: face.centroid, force: contact.force }));
+        self.evaluate(frames, &mut self.shortlists.clone(), |face, contact| active.push(ActiveFace { centroid: face.centroid, force: contact.force }));
         active
     }
 
@@ -120,7 +130,7 @@ impl Contact {
     /// `frames` (evaluated again, for display and the time step limit).
     pub fn totals(&self, frames: &[BodyFrame]) -> ContactTotals {
         let (mut totals, mut friction) = (ContactTotals::default(), Vec3::zeros());
-        self.evaluate(frames, |face, contact| {
+        self.evaluate(frames, &mut self.shortlists.clone(), |face, contact| {
             totals.normal += contact.normal_force;
             totals.area += face.area;
             totals.faces += 1;
@@ -135,12 +145,13 @@ impl Contact {
     }
 
     /// The sums over the faces in contact, in the body's principal frame, calling `on_face`
-    /// with each face and what the law gave it.
+    /// with each face and what the law gave it; `shortlists` (this contact's or a copy) are
+    /// brought up to date.
     #[inline]
-    fn evaluate(&self, frames: &[BodyFrame], on_face: impl FnMut(&Face, &FaceContact)) -> Accumulated {
+    fn evaluate(&self, frames: &[BodyFrame], shortlists: &mut [Shortlist], on_face: impl FnMut(&Face, &FaceContact)) -> Accumulated {
         let frame = &frames[self.body];
         match &self.against {
-            Opposing::Planes(planes) => against_planes(&self.boundary, &self.law, planes, frame, on_face),
+            Opposing::Planes(planes) => against_planes(&self.boundary, &self.law, planes, shortlists, frame, on_face),
             Opposing::Body { body, surface } => against_body(&self.boundary, &self.law, surface, frame, &frames[*body], on_face),
         }
     }
@@ -170,7 +181,9 @@ impl Contact {
     /// side at its G or, for planes, at the body's; `tension` = `Σ |f_n|`).
     #[inline]
     pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load], out: &mut CouplingForces) {
-        let sums = self.evaluate(frames, |_, _| {});
+        let mut shortlists = std::mem::take(&mut self.shortlists);
+        let sums = self.evaluate(frames, &mut shortlists, |_, _| {});
+        self.shortlists = shortlists;
         let frame = &frames[self.body];
         if let Opposing::Body { body, .. } = self.against {
             // The reaction −f_f at the same points: moment (r_f − x_B) × (−f_f).
@@ -196,14 +209,21 @@ impl Contact {
 }
 
 /// Every face of `boundary` against every plane, in the body's principal frame: a plane at
-/// height `h = n·(x_G − p)` is at distance `d_f = h + n_b·r_f` from face f, `n_b = Rᵀ n`; a
-/// group of faces whose bounding ball is out of range is skipped whole.
+/// height `h = n·(x_G − p)` is at distance `d_f = h + n_b·r_f` from face f, `n_b = Rᵀ n`; only
+/// the faces on the plane's [`Shortlist`] are tested.
 #[inline]
-fn against_planes(boundary: &BoundaryMesh, law: &ContactLaw, planes: &[Plane], frame: &BodyFrame, mut on_face: impl FnMut(&Face, &FaceContact)) -> Accumulated {
+fn against_planes(
+    boundary: &BoundaryMesh,
+    law: &ContactLaw,
+    planes: &[Plane],
+    shortlists: &mut [Shortlist],
+    frame: &BodyFrame,
+    mut on_face: impl FnMut(&Face, &FaceContact),
+) -> Accumulated {
     let mut sums = Accumulated::default();
     let reach = boundary.bounding_radius();
     let faces = boundary.faces();
-    for plane in planes {
+    for (plane, shortlist) in planes.iter().zip(shortlists) {
         let height = plane.normal.dot(&(frame.position - plane.point));
         if height - reach >= law.range {
             continue;
@@ -211,20 +231,16 @@ fn against_planes(boundary: &BoundaryMesh, law: &ContactLaw, planes: &[Plane], f
         let rotation: &Mat3 = &frame.rotation;
         let normal = rotation.tr_mul(&plane.normal);
         let velocity = rotation.tr_mul(&frame.velocity);
-        for group in boundary.groups() {
-            if height + normal.dot(&group.center) - group.radius >= law.range {
+        for &index in shortlist.faces(boundary, height, &normal, law.range) {
+            let face = &faces[index];
+            let distance = height + normal.dot(&face.centroid);
+            if distance >= law.range {
                 continue;
             }
-            let mut in_range = group.below(height, &normal, law.range);
-            while in_range != 0 {
-                let face = &faces[group.first + in_range.trailing_zeros() as usize];
-                in_range &= in_range - 1;
-                let distance = height + normal.dot(&face.centroid);
-                let face_velocity = velocity + frame.angular_velocity.cross(&face.centroid);
-                let contact = law.face_force(face.area, distance, &normal, &face_velocity);
-                sums.add(&face.centroid, &contact);
-                on_face(face, &contact);
-            }
+            let face_velocity = velocity + frame.angular_velocity.cross(&face.centroid);
+            let contact = law.face_force(face.area, distance, &normal, &face_velocity);
+            sums.add(&face.centroid, &contact);
+            on_face(face, &contact);
         }
     }
     sums

@@ -13,6 +13,7 @@
 //! faces, only when the body has moved or turned by its margin); against a body, each face in a
 //! group near the other's bounding box costs a BVH query.
 
+mod batch;
 pub mod estimator;
 pub mod law;
 mod shortlist;
@@ -21,6 +22,7 @@ use super::{BodyFrame, CouplingForces, Load};
 use crate::physics::mesh::{BoundaryMesh, Face, Surface};
 use crate::physics::{Mat3, Vec3};
 pub use law::{ContactLaw, FaceContact};
+use batch::{Accumulated, FaceBatch, PlaneView};
 use shortlist::Shortlist;
 use std::sync::Arc;
 
@@ -87,28 +89,6 @@ pub struct Contact {
     shortlists: Vec<Shortlist>,
 }
 
-/// What a step needs of the faces in contact, summed in the frame they were evaluated in.
-#[derive(Default)]
-struct Accumulated {
-    force: Vec3,
-    /// `Σ r_f × f_f`.
-    moment: Vec3,
-    normal: f64,
-    potential: f64,
-    dissipated_power: f64,
-}
-
-impl Accumulated {
-    #[inline]
-    fn add(&mut self, centroid: &Vec3, contact: &FaceContact) {
-        self.force += contact.force;
-        self.moment += centroid.cross(&contact.force);
-        self.normal += contact.normal_force;
-        self.potential += contact.potential;
-        self.dissipated_power += contact.dissipated_power;
-    }
-}
-
 impl Contact {
     pub fn new(body: usize, boundary: Arc<BoundaryMesh>, against: Opposing, law: ContactLaw, expected_area: f64) -> Self {
         let planes = match &against {
@@ -144,15 +124,44 @@ impl Contact {
         self.normal_force
     }
 
-    /// The sums over the faces in contact, in the body's principal frame, calling `on_face`
-    /// with each face and what the law gave it; `shortlists` (this contact's or a copy) are
-    /// brought up to date.
-    #[inline]
-    fn evaluate(&self, frames: &[BodyFrame], shortlists: &mut [Shortlist], on_face: impl FnMut(&Face, &FaceContact)) -> Accumulated {
+    /// Calls `on_face` with each face in contact and what the law gave it, face by face;
+    /// `shortlists` (a copy of this contact's) are brought up to date.
+    fn evaluate(&self, frames: &[BodyFrame], shortlists: &mut [Shortlist], mut on_face: impl FnMut(&Face, &FaceContact)) {
         let frame = &frames[self.body];
         match &self.against {
-            Opposing::Planes(planes) => against_planes(&self.boundary, &self.law, planes, shortlists, frame, on_face),
-            Opposing::Body { body, surface } => against_body(&self.boundary, &self.law, surface, frame, &frames[*body], on_face),
+            Opposing::Planes(planes) => {
+                let faces = self.boundary.faces();
+                for (view, batches) in plane_views(&self.boundary, &self.law, planes, shortlists, frame) {
+                    for batch in batches {
+                        let (contacts, mut in_range) = batch.contacts(&self.law, &view);
+                        while in_range != 0 {
+                            let lane = in_range.trailing_zeros() as usize;
+                            in_range &= in_range - 1;
+                            on_face(&faces[batch.index[lane]], &contacts[lane]);
+                        }
+                    }
+                }
+            }
+            Opposing::Body { body, surface } => {
+                against_body(&self.boundary, &self.law, surface, frame, &frames[*body], on_face);
+            }
+        }
+    }
+
+    /// The sums over the faces in contact at the kinematics `frames`, in the body's principal
+    /// frame (against planes, batch by batch), bringing the shortlists up to date.
+    #[inline]
+    fn summed(&mut self, frames: &[BodyFrame]) -> Accumulated {
+        let frame = &frames[self.body];
+        match &self.against {
+            Opposing::Planes(planes) => {
+                let mut sums = Accumulated::default();
+                for (view, batches) in plane_views(&self.boundary, &self.law, planes, &mut self.shortlists, frame) {
+                    sums.merge(&batch::summed_law(batches, &self.law, &view));
+                }
+                sums
+            }
+            Opposing::Body { body, surface } => against_body(&self.boundary, &self.law, surface, frame, &frames[*body], |_, _| {}),
         }
     }
 
@@ -181,9 +190,7 @@ impl Contact {
     /// side at its G or, for planes, at the body's; `tension` = `Σ |f_n|`).
     #[inline]
     pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load], out: &mut CouplingForces) {
-        let mut shortlists = std::mem::take(&mut self.shortlists);
-        let sums = self.evaluate(frames, &mut shortlists, |_, _| {});
-        self.shortlists = shortlists;
+        let sums = self.summed(frames);
         let frame = &frames[self.body];
         if let Opposing::Body { body, .. } = self.against {
             // The reaction −f_f at the same points: moment (r_f − x_B) × (−f_f).
@@ -208,42 +215,27 @@ impl Contact {
     }
 }
 
-/// Every face of `boundary` against every plane, in the body's principal frame: a plane at
-/// height `h = n·(x_G − p)` is at distance `d_f = h + n_b·r_f` from face f, `n_b = Rᵀ n`; only
-/// the faces on the plane's [`Shortlist`] are tested.
-#[inline]
-fn against_planes(
-    boundary: &BoundaryMesh,
-    law: &ContactLaw,
-    planes: &[Plane],
-    shortlists: &mut [Shortlist],
-    frame: &BodyFrame,
-    mut on_face: impl FnMut(&Face, &FaceContact),
-) -> Accumulated {
-    let mut sums = Accumulated::default();
+/// The planes in range of `boundary`'s bounding ball as its faces see them (PHYSICS.md §4: a
+/// plane at height `h = n·(x_G − p)` is at distance `d_f = h + n_b·r_f` from face f,
+/// `n_b = Rᵀ n`), each with the batches of faces on its [`Shortlist`].
+fn plane_views<'a>(
+    boundary: &'a BoundaryMesh,
+    law: &'a ContactLaw,
+    planes: &'a [Plane],
+    shortlists: &'a mut [Shortlist],
+    frame: &'a BodyFrame,
+) -> impl Iterator<Item = (PlaneView, &'a [FaceBatch])> + 'a {
     let reach = boundary.bounding_radius();
-    let faces = boundary.faces();
-    for (plane, shortlist) in planes.iter().zip(shortlists) {
+    planes.iter().zip(shortlists).filter_map(move |(plane, shortlist)| {
         let height = plane.normal.dot(&(frame.position - plane.point));
         if height - reach >= law.range {
-            continue;
+            return None;
         }
         let rotation: &Mat3 = &frame.rotation;
         let normal = rotation.tr_mul(&plane.normal);
-        let velocity = rotation.tr_mul(&frame.velocity);
-        for &index in shortlist.faces(boundary, height, &normal, law.range) {
-            let face = &faces[index];
-            let distance = height + normal.dot(&face.centroid);
-            if distance >= law.range {
-                continue;
-            }
-            let face_velocity = velocity + frame.angular_velocity.cross(&face.centroid);
-            let contact = law.face_force(face.area, distance, &normal, &face_velocity);
-            sums.add(&face.centroid, &contact);
-            on_face(face, &contact);
-        }
-    }
-    sums
+        let view = PlaneView { height, normal, velocity: rotation.tr_mul(&frame.velocity), spin: frame.angular_velocity };
+        Some((view, shortlist.batches(boundary, height, &normal, law.range)))
+    })
 }
 
 /// Every face of body A's `boundary` against body B's `surface`, evaluated in B's principal

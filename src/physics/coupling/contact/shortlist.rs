@@ -10,6 +10,7 @@
 //! drawn up again when the drift reaches the margin: the result is exactly that of testing every
 //! face, in the same order.
 
+use super::batch::FaceBatch;
 use crate::physics::Vec3;
 use crate::physics::mesh::BoundaryMesh;
 
@@ -26,7 +27,9 @@ const USABLE_MARGIN: f64 = 0.99;
 /// Faces of one boundary that may be in range of one plane.
 #[derive(Debug, Clone, Default)]
 pub struct Shortlist {
-    /// Indices in [`BoundaryMesh::faces`], ascending by group as the mesh orders them.
+    /// The faces, in the order of [`BoundaryMesh::faces`] (group by group), in batches.
+    batches: Vec<FaceBatch>,
+    /// Their indices in [`BoundaryMesh::faces`] (kept to draw up the next list in place).
     faces: Vec<usize>,
     /// `h₀` [m] and `n_b₀` when the list was drawn up.
     height: f64,
@@ -50,17 +53,20 @@ impl Shortlist {
     }
 
     /// The faces of `boundary` that may be in range `range` [m] of a plane at height `height`
-    /// [m] with body-frame normal `normal`: the list, drawn up again if it has expired.
+    /// [m] with body-frame normal `normal`, in batches: the list, drawn up again if it has
+    /// expired.
     #[inline]
-    pub fn faces(&mut self, boundary: &BoundaryMesh, height: f64, normal: &Vec3, range: f64) -> &[usize] {
+    pub fn batches(&mut self, boundary: &BoundaryMesh, height: f64, normal: &Vec3, range: f64) -> &[FaceBatch] {
         let reach = boundary.bounding_radius();
         let margin = margin(range, reach);
-        let drift = (height - self.height).abs() + (normal - self.normal).norm() * reach;
+        // drift ≤ usable margin, as |Δn_b|² r_max² ≤ (usable margin − |Δh|)² (no square root).
+        let turning_allowance = USABLE_MARGIN * margin - (height - self.height).abs();
+        let turning = (normal - self.normal).norm_squared() * reach * reach;
         // NaN (no list yet, or a non-finite pose) fails the test and draws one up.
-        if !(self.range == range && drift <= USABLE_MARGIN * margin) {
+        if !(self.range == range && turning_allowance >= 0.0 && turning <= turning_allowance * turning_allowance) {
             self.draw_up(boundary, height, normal, range, margin);
         }
-        &self.faces
+        &self.batches
     }
 
     /// The faces with `d_f < range + margin`, found by culling the boundary's groups.
@@ -77,6 +83,7 @@ impl Shortlist {
                 in_range &= in_range - 1;
             }
         }
+        self.batches = FaceBatch::pack(boundary.faces(), &self.faces);
         (self.height, self.normal, self.range) = (height, *normal, range);
     }
 }
@@ -87,6 +94,11 @@ mod tests {
     use crate::physics::Rotation;
     use crate::physics::mesh::primitives;
     use proptest::prelude::*;
+
+    /// The faces of a list, in order.
+    fn listed(batches: &[FaceBatch]) -> Vec<usize> {
+        batches.iter().flat_map(|batch| batch.index.iter().take(batch.lanes.count_ones() as usize).copied()).collect()
+    }
 
     /// The faces with `h + n_b·r_f < range`, every face tested.
     fn in_range_by_testing_all(boundary: &BoundaryMesh, height: f64, normal: &Vec3, range: f64) -> Vec<usize> {
@@ -109,7 +121,7 @@ mod tests {
                 height += scale * lift;
                 orientation *= Rotation::from_scaled_axis(Vec3::from(turn) * scale);
                 let normal = orientation.inverse_transform_vector(&Vec3::z());
-                let listed = list.faces(&boundary, height, &normal, range).to_vec();
+                let listed = listed(list.batches(&boundary, height, &normal, range));
                 for face in in_range_by_testing_all(&boundary, height, &normal, range) {
                     prop_assert!(listed.contains(&face), "face {face} in range at h = {height} is not on the list {listed:?}");
                 }
@@ -122,15 +134,16 @@ mod tests {
         let (vertices, triangles) = primitives::icosphere(0.05, &Vec3::zeros(), 1);
         let boundary = BoundaryMesh::new(vertices, triangles).expect("an icosphere is a valid mesh");
         let mut list = Shortlist::new();
-        let first = list.faces(&boundary, 0.049, &Vec3::z(), 0.005).to_vec();
+        let first = list.batches(&boundary, 0.049, &Vec3::z(), 0.005).to_vec();
+        let listed = listed(&first).len();
         // Within d0 + margin = 10 mm of the lowest point: the faces around it, not the 80.
-        assert!(!first.is_empty() && first.len() <= 12, "{} faces listed", first.len());
+        assert!(listed > 0 && listed <= 12, "{listed} faces listed");
         // 2 mm lower and turned 0.02 rad: drift 2 mm + 1 mm < 0.99 × 5 mm, the same list.
         let turned = Rotation::from_scaled_axis(Vec3::new(0.02, 0.0, 0.0)).inverse_transform_vector(&Vec3::z());
-        assert_eq!(list.faces(&boundary, 0.047, &turned, 0.005), first);
+        assert_eq!(list.batches(&boundary, 0.047, &turned, 0.005), first);
         assert_eq!(list.height, 0.049, "kept, not drawn up again");
         // A longer range expires it.
-        list.faces(&boundary, 0.047, &turned, 0.006);
+        list.batches(&boundary, 0.047, &turned, 0.006);
         assert_eq!(list.range, 0.006);
     }
 }

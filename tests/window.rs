@@ -8,7 +8,7 @@
 
 mod common;
 
-use common::x11::{self, Xvfb};
+use common::x11::{self, Gui, Xvfb};
 use std::os::unix::process::CommandExt as _;
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
@@ -19,11 +19,11 @@ fn the_window_plays_a_scene_records_it_and_quits_cleanly() {
     let x = Xvfb::start();
     let home = tempfile::tempdir().unwrap();
     let out = home.path().join("shown.rrd");
-    let gui = x11::tether(&x, &common::repo("."), home.path(), &["gui", "scenes/spring_mass.ron", "--save", out.to_str().unwrap()]);
-    x11::focus_tether(&x);
+    let mut gui = Gui::start(&x, &common::repo("."), home.path(), &["gui", "scenes/spring_mass.ron", "--save", out.to_str().unwrap()]);
+    gui.focus(&x);
     x.xdotool(&["key", "space"]);
     std::thread::sleep(Duration::from_secs(3));
-    x11::quit(&x, gui);
+    gui.quit(&x);
     x11::assert_verifies(&out);
     let simulated = x11::last_sim_time(&out);
     assert!(simulated > 1.0, "Space should have played the scene for about 3 s; the recording ends at {simulated} s");
@@ -75,13 +75,13 @@ impl Drop for Receiver {
 fn with_connect_the_window_streams_its_runs_to_an_external_viewer() {
     let home = tempfile::tempdir().unwrap();
     let received = home.path().join("received.rrd");
-    let mut receiver = Receiver::start(&received);
     let x = Xvfb::start();
-    let gui = x11::tether(&x, &common::repo("."), home.path(), &["gui", "scenes/spring_mass.ron", "--connect", &receiver.url]);
-    x11::focus_tether(&x);
+    let mut receiver = Receiver::start(&received);
+    let mut gui = Gui::start(&x, &common::repo("."), home.path(), &["gui", "scenes/spring_mass.ron", "--connect", &receiver.url]);
+    gui.focus(&x);
     x.xdotool(&["key", "space"]);
     std::thread::sleep(Duration::from_secs(3));
-    x11::quit(&x, gui);
+    gui.quit(&x);
     // The receiver writes what it got as it comes: wait for the whole run, then stop it.
     let mut last = 0.0;
     let mut arrived = || {
@@ -131,8 +131,8 @@ fn open_scene_shows_a_file_dialog_in_the_scenes_folder_and_loads_the_file_picked
     let out = folder.path().join("shown.rrd");
     // Run from the folder above `scenes/`: a dialog opened in the working folder would not find
     // `picked.ron` by its bare name.
-    let gui = x11::tether(&x, folder.path(), home.path(), &["gui", "scenes/start.ron", "--save", out.to_str().unwrap()]);
-    let window = x11::focus_tether(&x);
+    let mut gui = Gui::start(&x, folder.path(), home.path(), &["gui", "scenes/start.ron", "--save", out.to_str().unwrap()]);
+    let window = gui.focus(&x);
     // Tab gives the keyboard focus to the panel's first button, "Open scene…"; Enter presses it.
     x.xdotool(&["key", "Tab"]);
     x.xdotool(&["key", "Return"]);
@@ -146,7 +146,7 @@ fn open_scene_shows_a_file_dialog_in_the_scenes_folder_and_loads_the_file_picked
     x11::wait_for("the dialog to close on picked.ron (was it opened in scenes/?)", Duration::from_secs(30), || !dialog_open());
     x.xdotool(&["windowfocus", "--sync", &window]);
     std::thread::sleep(Duration::from_secs(1));
-    x11::quit(&x, gui);
+    gui.quit(&x);
     x11::assert_verifies(&out);
     assert!(x11::has_entity(&out, "/world/bodies/start_body"), "the scene the window started on was recorded");
     assert!(x11::has_entity(&out, "/world/bodies/picked_body"), "the scene picked in the dialog was loaded and recorded");

@@ -6,17 +6,26 @@ use std::collections::BTreeMap;
 use std::io::{BufRead as _, BufReader};
 use std::path::Path;
 use std::process::{Child, Command, ExitStatus, Stdio};
+use std::sync::{Mutex, MutexGuard};
 use std::time::{Duration, Instant};
+
+/// Taken by each [`Xvfb`] while it lives: the window tests of one binary run one after another,
+/// as three viewers rendering on the CPU at once starve a 2-core machine.
+static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
 
 /// A virtual X server, stopped when dropped.
 pub struct Xvfb {
     process: Child,
     pub display: String,
+    _turn: MutexGuard<'static, ()>,
 }
 
 impl Xvfb {
-    /// Starts Xvfb on a free display it picks itself (`-displayfd`).
+    /// Starts Xvfb on a free display it picks itself (`-displayfd`), once the window tests
+    /// before it are done.
     pub fn start() -> Self {
+        // A test that failed holding it poisoned it; the next one may still go.
+        let turn = ONE_AT_A_TIME.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
         let mut process = Command::new("Xvfb")
             .args(["-displayfd", "1", "-screen", "0", "1600x1000x24", "-nolisten", "tcp"])
             .stdout(Stdio::piped())
@@ -25,7 +34,7 @@ impl Xvfb {
             .expect("Xvfb must be installed (apt-get install xvfb; .ci/run does it)");
         let mut line = String::new();
         BufReader::new(process.stdout.take().expect("piped")).read_line(&mut line).unwrap();
-        Self { process, display: format!(":{}", line.trim()) }
+        Self { process, display: format!(":{}", line.trim()), _turn: turn }
     }
 
     /// `xdotool` on this display.
@@ -51,44 +60,76 @@ impl Drop for Xvfb {
     }
 }
 
-/// `tether ARGS…` on `x`'s display, run from `folder`, with a fresh home (settings, GTK state) in
-/// `home`; its stderr kept for the failure message.
-pub fn tether(x: &Xvfb, folder: &Path, home: &Path, args: &[&str]) -> Child {
-    Command::new(env!("CARGO_BIN_EXE_tether"))
-        .args(args)
-        .current_dir(folder)
-        .env("DISPLAY", &x.display)
-        .env_remove("WAYLAND_DISPLAY")
-        .env_remove("DBUS_SESSION_BUS_ADDRESS")
-        .env("HOME", home)
-        .env("XDG_DATA_HOME", home)
-        .env("XDG_CONFIG_HOME", home)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap()
+/// `tether ARGS…` running on a virtual display; killed if still running when dropped (a failed
+/// test).
+pub struct Gui {
+    process: Child,
 }
 
-/// Waits for the Tether window, lets its first frames draw, and gives it the keyboard.
-pub fn focus_tether(x: &Xvfb) -> String {
-    let id = x.focus_window("^Tether$", Duration::from_secs(60));
-    std::thread::sleep(Duration::from_secs(2));
-    x.xdotool(&["windowfocus", "--sync", &id]);
-    std::thread::sleep(Duration::from_millis(500));
-    id
+impl Gui {
+    /// `tether ARGS…` on `x`'s display, run from `folder`, with a fresh home (settings, GTK
+    /// state) in `home`; its stderr kept for failure messages.
+    pub fn start(x: &Xvfb, folder: &Path, home: &Path, args: &[&str]) -> Self {
+        let process = Command::new(env!("CARGO_BIN_EXE_tether"))
+            .args(args)
+            .current_dir(folder)
+            .env("DISPLAY", &x.display)
+            .env_remove("WAYLAND_DISPLAY")
+            .env_remove("DBUS_SESSION_BUS_ADDRESS")
+            .env("HOME", home)
+            .env("XDG_DATA_HOME", home)
+            .env("XDG_CONFIG_HOME", home)
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        Self { process }
+    }
+
+    /// Waits (at most 120 s) for the Tether window, lets its first frames draw, and gives it the
+    /// keyboard; fails with the program's stderr if it exits first.
+    pub fn focus(&mut self, x: &Xvfb) -> String {
+        let search = || x.xdotool(&["search", "--onlyvisible", "--name", "^Tether$"]);
+        let start = Instant::now();
+        while !search().status.success() {
+            if let Some(status) = self.process.try_wait().unwrap() {
+                panic!("tether exited with {status} before its window showed:\n{}", self.stderr());
+            }
+            assert!(start.elapsed() < Duration::from_secs(120), "no Tether window after 120 s");
+            std::thread::sleep(Duration::from_millis(100));
+        }
+        let id = String::from_utf8_lossy(&search().stdout).lines().next().unwrap_or_default().to_string();
+        std::thread::sleep(Duration::from_secs(2));
+        x.xdotool(&["windowfocus", "--sync", &id]);
+        std::thread::sleep(Duration::from_millis(500));
+        id
+    }
+
+    /// Presses Ctrl+Q and waits (at most 30 s) for the window to close; fails with its stderr
+    /// unless it exited cleanly.
+    pub fn quit(mut self, x: &Xvfb) {
+        x.xdotool(&["key", "ctrl+q"]);
+        let status = wait_exit(&mut self.process, Duration::from_secs(30)).unwrap_or_else(|| panic!("the window did not close on Ctrl+Q"));
+        assert!(status.success(), "tether gui exited with {status}:\n{}", self.stderr());
+    }
+
+    /// What the program wrote to stderr (once it has exited).
+    fn stderr(&mut self) -> String {
+        let mut stderr = String::new();
+        if let Some(mut pipe) = self.process.stderr.take() {
+            std::io::Read::read_to_string(&mut pipe, &mut stderr).ok();
+        }
+        stderr
+    }
 }
 
-/// Presses Ctrl+Q and waits (at most 30 s) for the window to close; fails with its stderr unless
-/// it exited cleanly.
-pub fn quit(x: &Xvfb, mut gui: Child) {
-    x.xdotool(&["key", "ctrl+q"]);
-    let status = wait_exit(&mut gui, Duration::from_secs(30)).unwrap_or_else(|| {
-        gui.kill().ok();
-        panic!("the window did not close on Ctrl+Q");
-    });
-    let mut stderr = String::new();
-    std::io::Read::read_to_string(&mut gui.stderr.take().unwrap(), &mut stderr).unwrap();
-    assert!(status.success(), "tether gui exited with {status}:\n{stderr}");
+impl Drop for Gui {
+    fn drop(&mut self) {
+        if self.process.try_wait().ok().flatten().is_none() {
+            self.process.kill().ok();
+            self.process.wait().ok();
+        }
+    }
 }
 
 /// The child's exit status, waiting at most `limit`.

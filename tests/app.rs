@@ -104,7 +104,7 @@ fn dropped_scenes_open_dropped_recordings_play_back_and_other_files_are_refused(
         .unwrap();
     assert!(record.status.success(), "{}", String::from_utf8_lossy(&record.stderr));
     let (file_recording, file_last) = recording_in_file(&recording);
-    assert_eq!(file_last, 500_000_000, "tether record ran 0.5 s");
+    assert!((450_000_000..=500_000_000).contains(&file_last), "tether record ran 0.5 s, its last frame at {file_last} ns");
 
     let runtime = runtime();
     let mut harness = app(&runtime, GuiOptions { scenes_dir: dir.path().to_path_buf(), ..Default::default() });

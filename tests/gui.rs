@@ -190,6 +190,53 @@ fn the_tuned_scene_is_saved_as_ron_that_loads_back() {
     assert!(matches!(&loaded.world.couplings[0].kind, CouplingKind::SpringDamper(s) if s.damping == 0.75));
 }
 
+/// The open file is watched. An editor's save (a new file renamed over the old one) with another
+/// stiffness reloads the scene into the running simulation; a broken save shows its
+/// `path:line:col` and the running scene goes on; undoing that save clears the error without a
+/// restart; a fixed save written in place reloads again.
+#[test]
+fn the_open_scene_reloads_when_its_file_changes_on_disk() {
+    let dir = scenes_folder(&[("spring.ron", SPRING)]);
+    let path = dir.path().join("spring.ron");
+    let save_by_rename = |text: &str| {
+        let swap = dir.path().join(".spring.ron.new");
+        std::fs::write(&swap, text).unwrap();
+        std::fs::rename(&swap, &path).unwrap();
+    };
+    let mut harness = harness(panel(dir.path()));
+    open_from_list(&mut harness, "spring.ron");
+    assert_eq!(spring_stiffness(&world(&harness)), 100.0);
+
+    let stiffer = SPRING.replace("stiffness: 100.0", "stiffness: 2500.0");
+    save_by_rename(&stiffer);
+    until(&mut harness, "the reload", |p| p.log().any(|l| l.text.ends_with("spring.ron changed on disk: reloading")));
+    until(&mut harness, "k = 2500 N/m in the running world", |p| p.simulation().snapshot(PATIENCE).is_some_and(|w| spring_stiffness(&w) == 2500.0));
+    assert_eq!(harness.state().scene().map(|s| s.file.clone()), Some(tether::scene::parse(&stiffer, &path).unwrap().file));
+
+    harness.key_press(egui::Key::Space);
+    until(&mut harness, "the run", |p| p.status().is_some_and(|s| s.running && s.time > 0.02));
+    save_by_rename(&stiffer.replace("rest_length: 1.0)", "rest_length: 1.0"));
+    until(&mut harness, "the load error", |p| p.load_error().is_some());
+    let error = harness.state().load_error().unwrap().to_string();
+    assert!(error.starts_with(&format!("{}:7:", path.display())), "{error}");
+    harness.get_by_label(&error);
+    let broken_at = world(&harness).time();
+    until(&mut harness, "the previous scene to go on", |p| p.status().is_some_and(|s| s.running && s.time > broken_at + 0.02));
+    assert_eq!(spring_stiffness(&world(&harness)), 2500.0, "the broken file left the simulation alone");
+
+    // The broken save undone: the file is what runs again.
+    save_by_rename(&stiffer);
+    until(&mut harness, "the error to clear", |p| p.load_error().is_none());
+    assert!(harness.state().log().any(|l| l.text.ends_with("spring.ron is back to the running scene")));
+    assert!(harness.query_by_label(&error).is_none());
+    assert!(world(&harness).time() > broken_at, "no restart: the file says what already runs");
+
+    std::fs::write(&path, SPRING.replace("stiffness: 100.0", "stiffness: 400.0")).unwrap();
+    until(&mut harness, "k = 400 N/m in the running world", |p| p.simulation().snapshot(PATIENCE).is_some_and(|w| spring_stiffness(&w) == 400.0));
+    assert_eq!(world(&harness).time(), 0.0, "a reloaded scene starts paused at t = 0");
+    assert!(harness.state().load_error().is_none());
+}
+
 /// The panel with the moored buoy at t = 0, rendered by wgpu on the CPU (lavapipe in CI) and
 /// compared with `tests/snapshots/control_panel.png` (`UPDATE_SNAPSHOTS=1` rewrites it).
 #[test]

@@ -1,114 +1,153 @@
-//! The whole window as a user runs it: `tether gui SCENE --save OUT.rrd` on a virtual X server
-//! (Xvfb; the viewer renders with Vulkan on lavapipe), Space pressed to play, Ctrl+Q to quit.
-//! The recording then holds the run and passes `rerun rrd verify`: the window shut the
-//! simulation down cleanly and the file got its footer.
+//! The whole window as a user runs it, on a virtual X server (helpers in `common/x11.rs`):
+//! - `tether gui SCENE --save OUT.rrd`: Space plays, Ctrl+Q quits; the recording holds the run
+//!   and passes `rerun rrd verify` (the window shut the simulation down cleanly);
+//! - `--connect URL`: the run streams to a real external receiver (`rerun --serve-grpc`, which
+//!   saves what it receives);
+//! - "Open scene…": the file dialog (rfd falls back to zenity without a desktop portal) opens in
+//!   the scenes folder, a file name typed there is loaded.
 
 mod common;
 
-use std::io::{BufRead as _, BufReader};
+use common::x11::{self, Gui, Xvfb};
+use std::os::unix::process::CommandExt as _;
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
-use std::time::{Duration, Instant};
-
-/// A virtual X server, stopped when dropped.
-struct Xvfb {
-    process: Child,
-    display: String,
-}
-
-impl Xvfb {
-    /// Starts Xvfb on a free display it picks itself (`-displayfd`).
-    fn start() -> Self {
-        let mut process = Command::new("Xvfb")
-            .args(["-displayfd", "1", "-screen", "0", "1600x1000x24", "-nolisten", "tcp"])
-            .stdout(Stdio::piped())
-            .stderr(Stdio::null())
-            .spawn()
-            .expect("Xvfb must be installed (apt-get install xvfb; .ci/run does it)");
-        let mut line = String::new();
-        BufReader::new(process.stdout.take().expect("piped")).read_line(&mut line).unwrap();
-        Self { process, display: format!(":{}", line.trim()) }
-    }
-
-    /// `xdotool` on this display.
-    fn xdotool(&self, args: &[&str]) -> std::process::Output {
-        Command::new("xdotool").args(args).env("DISPLAY", &self.display).output().expect("xdotool must be installed (apt-get install xdotool)")
-    }
-}
-
-impl Drop for Xvfb {
-    fn drop(&mut self) {
-        self.process.kill().ok();
-        self.process.wait().ok();
-    }
-}
-
-/// Waits for `done`, polling every 100 ms, at most `limit`.
-fn wait_for(what: &str, limit: Duration, mut done: impl FnMut() -> bool) {
-    let start = Instant::now();
-    while !done() {
-        assert!(start.elapsed() < limit, "timed out after {limit:?} waiting for {what}");
-        std::thread::sleep(Duration::from_millis(100));
-    }
-}
-
-/// Largest `sim_time` [s] of the energy plot in a recording.
-fn last_sim_time(path: &Path) -> f64 {
-    let mut file = std::fs::File::open(path).unwrap();
-    let stores = rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file).unwrap();
-    let mut last = 0.0_f64;
-    for store in stores.values() {
-        for chunk in store.iter_physical_chunks().filter(|c| c.entity_path().to_string() == "/plots/energy") {
-            if let Some(column) = chunk.timelines().get(&"sim_time".into()) {
-                last = last.max(column.times_raw().iter().copied().max().unwrap_or(0) as f64 * 1e-9);
-            }
-        }
-    }
-    last
-}
+use std::time::Duration;
 
 #[test]
 fn the_window_plays_a_scene_records_it_and_quits_cleanly() {
     let x = Xvfb::start();
     let home = tempfile::tempdir().unwrap();
     let out = home.path().join("shown.rrd");
-    let mut gui = Command::new(env!("CARGO_BIN_EXE_tether"))
-        .args(["gui", "scenes/spring_mass.ron", "--save", out.to_str().unwrap()])
-        .current_dir(common::repo("."))
-        .env("DISPLAY", &x.display)
-        .env_remove("WAYLAND_DISPLAY")
-        .env("HOME", home.path())
-        .env("XDG_DATA_HOME", home.path())
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let window = || x.xdotool(&["search", "--name", "^Tether$"]);
-    wait_for("the window", Duration::from_secs(60), || window().status.success());
-    let id = String::from_utf8_lossy(&window().stdout).lines().next().unwrap_or_default().to_string();
-    // No window manager gives the window the keyboard: give it, let the first frames draw, play.
-    std::thread::sleep(Duration::from_secs(2));
-    x.xdotool(&["windowfocus", "--sync", &id]);
-    std::thread::sleep(Duration::from_millis(500));
+    let mut gui = Gui::start(&x, &common::repo("."), home.path(), &["gui", "scenes/spring_mass.ron", "--save", out.to_str().unwrap()]);
+    gui.focus(&x);
     x.xdotool(&["key", "space"]);
     std::thread::sleep(Duration::from_secs(3));
-    x.xdotool(&["key", "ctrl+q"]);
-    let start = Instant::now();
-    let status = loop {
-        if let Some(status) = gui.try_wait().unwrap() {
-            break status;
-        }
-        if start.elapsed() > Duration::from_secs(30) {
-            gui.kill().ok();
-            panic!("the window did not close on Ctrl+Q");
-        }
-        std::thread::sleep(Duration::from_millis(100));
-    };
-    let mut stderr = String::new();
-    std::io::Read::read_to_string(&mut gui.stderr.take().unwrap(), &mut stderr).unwrap();
-    assert!(status.success(), "tether gui exited with {status}:\n{stderr}");
-    let verify = Command::new("rerun").args(["rrd", "verify", out.to_str().unwrap()]).output().expect("the `rerun` CLI (pip install rerun-sdk==0.36.3)");
-    assert!(verify.status.success(), "rerun rrd verify:\n{}", String::from_utf8_lossy(&verify.stderr));
-    let simulated = last_sim_time(&out);
+    gui.quit(&x);
+    x11::assert_verifies(&out);
+    let simulated = x11::last_sim_time(&out);
     assert!(simulated > 1.0, "Space should have played the scene for about 3 s; the recording ends at {simulated} s");
+}
+
+/// `rerun --serve-grpc --port PORT --save FILE` (the `rerun` CLI of the same version), in a
+/// process group of its own so that the CLI's wrapper and the server stop together; killed when
+/// dropped.
+struct Receiver {
+    process: Child,
+    url: String,
+}
+
+impl Receiver {
+    fn start(save: &Path) -> Self {
+        let port = std::net::TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port();
+        let process = Command::new("rerun")
+            .args(["--serve-grpc", "--port", &port.to_string(), "--save", save.to_str().unwrap()])
+            .process_group(0)
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .expect("the `rerun` CLI (pip install rerun-sdk==0.36.3)");
+        x11::wait_for("the receiver to listen", Duration::from_secs(30), || std::net::TcpStream::connect(("127.0.0.1", port)).is_ok());
+        Self { process, url: format!("rerun+http://127.0.0.1:{port}/proxy") }
+    }
+
+    /// Ctrl-C to the receiver's group, as in a terminal; true if it exited within 30 s.
+    fn interrupt(&mut self) -> bool {
+        let group = i32::try_from(self.process.id()).unwrap();
+        // SAFETY: kill(2) on the process group this test started.
+        unsafe { libc::kill(-group, libc::SIGINT) };
+        x11::wait_exit(&mut self.process, Duration::from_secs(30)).is_some()
+    }
+}
+
+impl Drop for Receiver {
+    fn drop(&mut self) {
+        if self.process.try_wait().ok().flatten().is_none() {
+            let group = i32::try_from(self.process.id()).unwrap();
+            // SAFETY: as above.
+            unsafe { libc::kill(-group, libc::SIGKILL) };
+            self.process.wait().ok();
+        }
+    }
+}
+
+#[test]
+fn with_connect_the_window_streams_its_runs_to_an_external_viewer() {
+    let home = tempfile::tempdir().unwrap();
+    let received = home.path().join("received.rrd");
+    let x = Xvfb::start();
+    let mut receiver = Receiver::start(&received);
+    let mut gui = Gui::start(&x, &common::repo("."), home.path(), &["gui", "scenes/spring_mass.ron", "--connect", &receiver.url]);
+    gui.focus(&x);
+    x.xdotool(&["key", "space"]);
+    std::thread::sleep(Duration::from_secs(3));
+    gui.quit(&x);
+    // The receiver writes what it got as it comes: wait for the whole run, then stop it.
+    let mut last = 0.0;
+    let mut arrived = || {
+        last = x11::try_stores(&received).map_or(0.0, |stores| x11::sim_time_in(&stores));
+        last > 1.0
+    };
+    let start = std::time::Instant::now();
+    while !arrived() && start.elapsed() < Duration::from_secs(30) {
+        std::thread::sleep(Duration::from_millis(200));
+    }
+    assert!(receiver.interrupt(), "the receiver did not stop on Ctrl-C");
+    let stores = x11::stores(&received);
+    let recordings: Vec<_> = stores.keys().filter(|id| id.is_recording()).collect();
+    assert!(!recordings.is_empty() && recordings.iter().all(|id| id.application_id().to_string() == "tether"), "{recordings:?}");
+    assert!(x11::has_entity(&received, "/world/bodies/mass"), "the body's poses reached the receiver");
+    assert!(x11::has_entity(&received, "/world/couplings/spring"), "the spring's line reached the receiver");
+    let simulated = x11::sim_time_in(&stores);
+    assert!(simulated > 1.0, "Space played the scene for about 3 s; the receiver got up to {simulated} s (last seen {last} s)");
+}
+
+/// Two scenes in a `scenes/` folder of their own: the one the window starts on, and the one
+/// picked in the dialog (its body is named `picked_body`).
+fn scene_with_body(name: &str) -> String {
+    format!(
+        r#"Scene(
+    gravity: (0.0, 0.0, 0.0),
+    dt: 0.001,
+    bodies: [Body(name: "{name}", master: Node(position: (1.1, 0.0, 0.0), mass: 1.0, inertia: Inertia(xx: 0.01, yy: 0.01, zz: 0.01)),
+        support: Fixed(translation: (false, true, true), rotation: true), shape: Sphere(radius: 0.1))],
+    couplings: [SpringDamper(name: "spring", end1: World((0.0, 0.0, 0.0)), end2: Body(body: "{name}"),
+        law: Linear(stiffness: 100.0, rest_length: 1.0))],
+)
+"#
+    )
+}
+
+#[test]
+fn open_scene_shows_a_file_dialog_in_the_scenes_folder_and_loads_the_file_picked() {
+    let x = Xvfb::start();
+    let zenity = Command::new("zenity").arg("--version").env("DISPLAY", &x.display).output();
+    assert!(zenity.is_ok_and(|o| o.status.success()), "zenity must be installed (apt-get install zenity; .ci/run does it): without a desktop portal, rfd's file dialogs are zenity's");
+    let home = tempfile::tempdir().unwrap();
+    let folder = tempfile::tempdir().unwrap();
+    std::fs::create_dir(folder.path().join("scenes")).unwrap();
+    std::fs::write(folder.path().join("scenes/start.ron"), scene_with_body("start_body")).unwrap();
+    std::fs::write(folder.path().join("scenes/picked.ron"), scene_with_body("picked_body")).unwrap();
+    let out = folder.path().join("shown.rrd");
+    // Run from the folder above `scenes/`: a dialog opened in the working folder would not find
+    // `picked.ron` by its bare name.
+    let mut gui = Gui::start(&x, folder.path(), home.path(), &["gui", "scenes/start.ron", "--save", out.to_str().unwrap()]);
+    let window = gui.focus(&x);
+    // Tab gives the keyboard focus to the panel's first button, "Open scene…"; Enter presses it.
+    x.xdotool(&["key", "Tab"]);
+    x.xdotool(&["key", "Return"]);
+    x.focus_window("^zenity$", Duration::from_secs(30));
+    std::thread::sleep(Duration::from_millis(500));
+    // Ctrl+L opens GTK's location field, where a bare name is looked up in the dialog's folder.
+    x.xdotool(&["key", "ctrl+l"]);
+    x.xdotool(&["type", "--delay", "20", "picked.ron"]);
+    x.xdotool(&["key", "Return"]);
+    let dialog_open = || x.xdotool(&["search", "--onlyvisible", "--name", "^zenity$"]).status.success();
+    x11::wait_for("the dialog to close on picked.ron (was it opened in scenes/?)", Duration::from_secs(30), || !dialog_open());
+    x.xdotool(&["windowfocus", "--sync", &window]);
+    std::thread::sleep(Duration::from_secs(1));
+    gui.quit(&x);
+    x11::assert_verifies(&out);
+    assert!(x11::has_entity(&out, "/world/bodies/start_body"), "the scene the window started on was recorded");
+    assert!(x11::has_entity(&out, "/world/bodies/picked_body"), "the scene picked in the dialog was loaded and recorded");
 }

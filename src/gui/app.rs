@@ -63,6 +63,16 @@ impl TetherApp {
         Ok(app)
     }
 
+    /// The control panel (tests look into it).
+    pub fn panel(&self) -> &ControlPanel {
+        &self.panel
+    }
+
+    /// The embedded viewer (`None` with `--connect`; tests look into it and select in it).
+    pub fn viewer(&self) -> Option<&re_viewer::App> {
+        self.viewer.as_ref()
+    }
+
     fn open_recording(&mut self, path: &Path) {
         match &self.viewer {
             Some(viewer) => {
@@ -73,22 +83,37 @@ impl TetherApp {
         }
     }
 
-    /// Scenes dropped on the window are opened by the panel, recordings by the viewer.
+    /// Scenes dropped on the window are opened by the panel, recordings by the viewer; any other
+    /// file is refused with a line in the log.
     fn take_dropped_files(&mut self, ctx: &egui::Context) {
         let dropped: Vec<PathBuf> = ctx.input_mut(|i| std::mem::take(&mut i.raw.dropped_files)).into_iter().map(|f| f.path().to_path_buf()).filter(|p| !p.as_os_str().is_empty()).collect();
         for path in dropped {
-            if is_recording(&path) {
-                self.open_recording(&path);
-            } else {
-                self.panel.open_scene(&path);
+            match Dropped::of(&path) {
+                Dropped::Scene => self.panel.open_scene(&path),
+                Dropped::Recording => self.open_recording(&path),
+                Dropped::Other => self.panel.note_error(format!("{}: not a scene (.ron) or a recording (.rrd); nothing opened", path.display())),
             }
         }
     }
 }
 
-/// A `.rrd` file (anything else dropped is taken for a scene).
-fn is_recording(path: &Path) -> bool {
-    path.extension().is_some_and(|e| e.eq_ignore_ascii_case("rrd"))
+/// What a dropped file is taken for, by its extension.
+#[derive(Debug, PartialEq)]
+enum Dropped {
+    Scene,
+    Recording,
+    Other,
+}
+
+impl Dropped {
+    fn of(path: &Path) -> Self {
+        let extension = path.extension().map(|e| e.to_string_lossy().to_ascii_lowercase());
+        match extension.as_deref() {
+            Some("ron") => Self::Scene,
+            Some("rrd") => Self::Recording,
+            _ => Self::Other,
+        }
+    }
 }
 
 /// The viewer, fed through an in-process channel, and the sink that feeds it.

@@ -26,7 +26,14 @@ impl Dialogs {
             return;
         }
         let (reply, answer) = mpsc::channel();
-        let dialog = rfd::FileDialog::new().set_directory(folder);
+        let folder = std::path::absolute(folder).unwrap_or_else(|_| folder.to_path_buf());
+        let mut dialog = rfd::FileDialog::new().set_directory(&folder);
+        if purpose != Purpose::SaveScene {
+            // rfd's zenity fallback does not pass the folder on, only a file name: zenity starts
+            // in a folder given as `folder/` (the portal takes the folder above and no file name
+            // when opening).
+            dialog = dialog.set_file_name(format!("{}/", folder.display()));
+        }
         let spawned = std::thread::Builder::new().name("file dialog".into()).spawn(move || {
             let path = match purpose {
                 Purpose::OpenScene => dialog.add_filter("Tether scene", &["ron"]).pick_file(),

@@ -72,8 +72,9 @@ pub struct ControlPanel {
     simulation: Simulation,
     wake: Wake,
     scene: Option<OpenScene>,
-    /// Why the last scene could not be opened (the previous one keeps running).
-    load_error: Option<String>,
+    /// The file the last scene came from that could not be opened, and why (the previous scene
+    /// keeps running).
+    load_error: Option<(PathBuf, String)>,
     status: Option<Status>,
     history: EnergyHistory,
     timing: TimingDraft,
@@ -125,7 +126,7 @@ impl ControlPanel {
 
     /// Why the last scene could not be opened.
     pub fn load_error(&self) -> Option<&str> {
-        self.load_error.as_deref()
+        self.load_error.as_ref().map(|(_, message)| message.as_str())
     }
 
     /// The panel's log, oldest first.
@@ -161,7 +162,7 @@ impl ControlPanel {
         let (text, loaded) = match read_scene(path) {
             Ok(read) => read,
             Err(error) => {
-                self.load_error = Some(error.to_string());
+                self.load_error = Some((path.to_path_buf(), error.to_string()));
                 return;
             }
         };
@@ -206,7 +207,7 @@ impl ControlPanel {
         egui::ScrollArea::vertical().auto_shrink([false, false]).show(ui, |ui| {
             ui.heading("Tether");
             let scene_path = self.scene.as_ref().map(|s| s.path.as_path());
-            if let Some(action) = scenes::ui(ui, scene_path, &self.scene_list, self.load_error.as_deref()) {
+            if let Some(action) = scenes::ui(ui, scene_path, &self.scene_list, self.load_error()) {
                 self.scene_action(action);
             }
             ui.separator();
@@ -250,11 +251,15 @@ impl ControlPanel {
         let Some(watch) = &open.watch else { return };
         match watch.settled(SETTLE) {
             Some(true) => {
-                let unchanged = std::fs::read_to_string(&open.path).is_ok_and(|text| text == open.text);
+                let path = open.path.clone();
+                let unchanged = std::fs::read_to_string(&path).is_ok_and(|text| text == open.text);
                 if !unchanged {
-                    let path = open.path.clone();
                     self.note(format!("{} changed on disk: reloading", path.display()));
                     self.open_scene(&path);
+                } else if self.load_error.as_ref().is_some_and(|(failed, _)| *failed == path) {
+                    // A broken save undone: the file says again what runs, so its error goes.
+                    self.load_error = None;
+                    self.note(format!("{} is back to the running scene", path.display()));
                 }
             }
             Some(false) => ctx.request_repaint_after(SETTLE),

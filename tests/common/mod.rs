@@ -1,6 +1,8 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)] // each test binary uses its own subset
 
+pub mod x11;
+
 use std::path::{Path, PathBuf};
 use tether::scene::{self, Scene};
 

@@ -131,7 +131,8 @@ impl Contact {
         match &self.against {
             Opposing::Planes(planes) => {
                 let faces = self.boundary.faces();
-                for (view, batches) in plane_views(&self.boundary, &self.law, planes, shortlists, frame) {
+                for (plane, shortlist) in planes.iter().zip(shortlists) {
+                    let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else { continue };
                     for batch in batches {
                         let (contacts, mut in_range) = batch.contacts(&self.law, &view);
                         while in_range != 0 {
@@ -156,7 +157,8 @@ impl Contact {
         match &self.against {
             Opposing::Planes(planes) => {
                 let mut sums = Accumulated::default();
-                for (view, batches) in plane_views(&self.boundary, &self.law, planes, &mut self.shortlists, frame) {
+                for (plane, shortlist) in planes.iter().zip(&mut self.shortlists) {
+                    let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else { continue };
                     sums.merge(&batch::summed_law(batches, &self.law, &view));
                 }
                 sums
@@ -215,27 +217,20 @@ impl Contact {
     }
 }
 
-/// The planes in range of `boundary`'s bounding ball as its faces see them (PHYSICS.md §4: a
-/// plane at height `h = n·(x_G − p)` is at distance `d_f = h + n_b·r_f` from face f,
-/// `n_b = Rᵀ n`), each with the batches of faces on its [`Shortlist`].
-fn plane_views<'a>(
-    boundary: &'a BoundaryMesh,
-    law: &'a ContactLaw,
-    planes: &'a [Plane],
-    shortlists: &'a mut [Shortlist],
-    frame: &'a BodyFrame,
-) -> impl Iterator<Item = (PlaneView, &'a [FaceBatch])> + 'a {
-    let reach = boundary.bounding_radius();
-    planes.iter().zip(shortlists).filter_map(move |(plane, shortlist)| {
-        let height = plane.normal.dot(&(frame.position - plane.point));
-        if height - reach >= law.range {
-            return None;
-        }
-        let rotation: &Mat3 = &frame.rotation;
-        let normal = rotation.tr_mul(&plane.normal);
-        let view = PlaneView { height, normal, velocity: rotation.tr_mul(&frame.velocity), spin: frame.angular_velocity };
-        Some((view, shortlist.batches(boundary, height, &normal, law.range)))
-    })
+/// Plane `plane` as the faces of `boundary` see it (PHYSICS.md §4: a plane at height
+/// `h = n·(x_G − p)` is at distance `d_f = h + n_b·r_f` from face f, `n_b = Rᵀ n`), with the
+/// batches of faces on its `shortlist`; `None` when the plane is out of range of the boundary's
+/// bounding ball.
+#[inline]
+fn plane_view<'a>(boundary: &BoundaryMesh, law: &ContactLaw, plane: &Plane, shortlist: &'a mut Shortlist, frame: &BodyFrame) -> Option<(PlaneView, &'a [FaceBatch])> {
+    let height = plane.normal.dot(&(frame.position - plane.point));
+    if height - boundary.bounding_radius() >= law.range {
+        return None;
+    }
+    let rotation: &Mat3 = &frame.rotation;
+    let normal = rotation.tr_mul(&plane.normal);
+    let view = PlaneView { height, normal, velocity: rotation.tr_mul(&frame.velocity), spin: frame.angular_velocity };
+    Some((view, shortlist.batches(boundary, height, &normal, law.range)))
 }
 
 /// Every face of body A's `boundary` against body B's `surface`, evaluated in B's principal

@@ -14,10 +14,12 @@ use super::batch::FaceBatch;
 use crate::physics::Vec3;
 use crate::physics::mesh::BoundaryMesh;
 
-/// Margin of a list [m]: `max(d0, r_max/10)`. Wider lists are longer; narrower ones are drawn
-/// up more often (a sphere rolls `margin/r_max` rad, 0.1 rad, before its list expires).
-fn margin(range: f64, bounding_radius: f64) -> f64 {
-    range.max(0.1 * bounding_radius)
+/// Margin of a list [m]: `d0/2`. Wider lists are longer (more faces evaluated every step);
+/// narrower ones are drawn up more often. On chain100 (d0 = 5 mm, 5 cm spheres rolling on the
+/// ground) `d0/2` gives 8% fewer instructions per step than `max(d0, r_max/10)`, whose lists
+/// held twice the faces in range.
+fn margin(range: f64) -> f64 {
+    0.5 * range
 }
 
 /// The drift may use this share of the margin: the rest absorbs the round-off of the distances
@@ -58,7 +60,7 @@ impl Shortlist {
     #[inline]
     pub fn batches(&mut self, boundary: &BoundaryMesh, height: f64, normal: &Vec3, range: f64) -> &[FaceBatch] {
         let reach = boundary.bounding_radius();
-        let margin = margin(range, reach);
+        let margin = margin(range);
         // drift ≤ usable margin, as |Δn_b|² r_max² ≤ (usable margin − |Δh|)² (no square root).
         let turning_allowance = USABLE_MARGIN * margin - (height - self.height).abs();
         let turning = (normal - self.normal).norm_squared() * reach * reach;
@@ -136,14 +138,14 @@ mod tests {
         let mut list = Shortlist::new();
         let first = list.batches(&boundary, 0.049, &Vec3::z(), 0.005).to_vec();
         let listed = listed(&first).len();
-        // Within d0 + margin = 10 mm of the lowest point: the faces around it, not the 80.
+        // Within d0 + margin = 7.5 mm of the lowest point: the faces around it, not the 80.
         assert!(listed > 0 && listed <= 12, "{listed} faces listed");
-        // 2 mm lower and turned 0.02 rad: drift 2 mm + 1 mm < 0.99 × 5 mm, the same list.
+        // 1 mm lower and turned 0.02 rad: drift 1 mm + 1 mm < 0.99 × 2.5 mm, the same list.
         let turned = Rotation::from_scaled_axis(Vec3::new(0.02, 0.0, 0.0)).inverse_transform_vector(&Vec3::z());
-        assert_eq!(list.batches(&boundary, 0.047, &turned, 0.005), first);
+        assert_eq!(list.batches(&boundary, 0.048, &turned, 0.005), first);
         assert_eq!(list.height, 0.049, "kept, not drawn up again");
         // A longer range expires it.
-        list.batches(&boundary, 0.047, &turned, 0.006);
+        list.batches(&boundary, 0.048, &turned, 0.006);
         assert_eq!(list.range, 0.006);
     }
 }

@@ -27,14 +27,20 @@ impl Xvfb {
         // A test that failed holding it poisoned it; the next one may still go.
         let turn = ONE_AT_A_TIME.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
         let mut process = Command::new("Xvfb")
-            .args(["-displayfd", "1", "-screen", "0", "1600x1000x24", "-nolisten", "tcp"])
+            // -noreset: without it the server resets each time its last client leaves (every
+            // xdotool call), and a client connecting during a reset is refused.
+            .args(["-displayfd", "1", "-screen", "0", "1600x1000x24", "-nolisten", "tcp", "-noreset"])
             .stdout(Stdio::piped())
             .stderr(Stdio::null())
             .spawn()
             .expect("Xvfb must be installed (apt-get install xvfb; .ci/run does it)");
         let mut line = String::new();
         BufReader::new(process.stdout.take().expect("piped")).read_line(&mut line).unwrap();
-        Self { process, display: format!(":{}", line.trim()), _turn: turn }
+        let x = Self { process, display: format!(":{}", line.trim()), _turn: turn };
+        // A client must be able to connect before the GUI is started on it (once in a full
+        // suite run the GUI could not, right after the previous test's server was stopped).
+        wait_for("the X server to take clients", Duration::from_secs(20), || x.xdotool(&["getdisplaygeometry"]).status.success());
+        x
     }
 
     /// `xdotool` on this display.
@@ -54,8 +60,13 @@ impl Xvfb {
 }
 
 impl Drop for Xvfb {
+    /// Stops the server with SIGTERM, so that it removes its lock file and socket before the next
+    /// test's server looks for a free display; SIGKILL if that fails.
     fn drop(&mut self) {
-        self.process.kill().ok();
+        let terminated = Command::new("kill").args(["-TERM", &self.process.id().to_string()]).status().is_ok_and(|s| s.success());
+        if !terminated {
+            self.process.kill().ok();
+        }
         self.process.wait().ok();
     }
 }

@@ -13,7 +13,7 @@ use rerun::external::re_viewer::{self, SystemCommand, SystemCommandSender as _};
 use rerun::external::{egui, tokio};
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use std::sync::Arc;
+use std::sync::{Arc, LazyLock};
 use std::time::{Duration, Instant};
 use tether::gui::GuiOptions;
 use tether::gui::app::TetherApp;
@@ -22,16 +22,8 @@ use tether::physics::world::World;
 /// Longest wait for the simulation thread or the viewer's loader.
 const PATIENCE: Duration = Duration::from_secs(30);
 
-/// A one-spring oscillator along x, body "bob" (released at 1.1 m, k = 100 N/m, x0 = 1 m).
-const SPRING: &str = r#"Scene(
-    gravity: (0.0, 0.0, 0.0),
-    dt: 0.001,
-    bodies: [Body(name: "bob", master: Node(position: (1.1, 0.0, 0.0), mass: 1.0, inertia: Inertia(xx: 0.01, yy: 0.01, zz: 0.01)),
-        support: Fixed(translation: (false, true, true), rotation: true), shape: Sphere(radius: 0.1))],
-    couplings: [SpringDamper(name: "spring", end1: World((0.0, 0.0, 0.0)), end2: Body(body: "bob"),
-        law: Linear(stiffness: 100.0, rest_length: 1.0), damping: 0.0)],
-)
-"#;
+/// The GUI tests' oscillator, body "bob".
+static SPRING: LazyLock<String> = LazyLock::new(|| common::spring_scene_text("bob"));
 
 /// A file as the windowing layer (egui-winit) hands a dropped file to egui: its path.
 #[derive(Debug)]
@@ -96,7 +88,7 @@ fn recording_in_file(path: &Path) -> (String, i64) {
 fn dropped_scenes_open_dropped_recordings_play_back_and_other_files_are_refused() {
     let dir = tempfile::tempdir().unwrap();
     let scene = dir.path().join("dropped.ron");
-    std::fs::write(&scene, SPRING).unwrap();
+    std::fs::write(&scene, SPRING.as_str()).unwrap();
     let recording = dir.path().join("spring_mass.rrd");
     let record = Command::new(env!("CARGO_BIN_EXE_tether"))
         .args(["record", repo("scenes/spring_mass.ron").to_str().unwrap(), "-o", recording.to_str().unwrap(), "--duration", "0.5"])
@@ -148,7 +140,7 @@ fn dropped_scenes_open_dropped_recordings_play_back_and_other_files_are_refused(
 fn the_body_selected_in_the_viewer_is_shown_with_its_state() {
     let dir = tempfile::tempdir().unwrap();
     let scene = dir.path().join("spring.ron");
-    std::fs::write(&scene, SPRING).unwrap();
+    std::fs::write(&scene, SPRING.as_str()).unwrap();
     let runtime = runtime();
     let mut harness = app(&runtime, GuiOptions { scene: Some(scene), scenes_dir: dir.path().to_path_buf(), ..Default::default() });
     until(&mut harness, "the scene", |app| app.panel().status().is_some_and(|s| s.label == "spring"));

@@ -11,7 +11,7 @@ use egui_kittest::kittest::{NodeT as _, Queryable as _};
 use egui_kittest::{Harness, SnapshotOptions};
 use rerun::external::egui::{self, accesskit};
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
+use std::sync::{Arc, LazyLock};
 use std::time::{Duration, Instant};
 use tether::gui::panel::ControlPanel;
 use tether::gui::stream::Sinks;
@@ -21,16 +21,8 @@ use tether::physics::world::World;
 /// Longest wait for the simulation thread.
 const PATIENCE: Duration = Duration::from_secs(20);
 
-/// A one-spring oscillator (m = 1 kg, k = 100 N/m, x0 = 1 m, released at 1.1 m), dt = 1 ms.
-const SPRING: &str = r#"Scene(
-    gravity: (0.0, 0.0, 0.0),
-    dt: 0.001,
-    bodies: [Body(name: "m", master: Node(position: (1.1, 0.0, 0.0), mass: 1.0, inertia: Inertia(xx: 0.01, yy: 0.01, zz: 0.01)),
-        support: Fixed(translation: (false, true, true), rotation: true), shape: Sphere(radius: 0.1))],
-    couplings: [SpringDamper(name: "spring", end1: World((0.0, 0.0, 0.0)), end2: Body(body: "m"),
-        law: Linear(stiffness: 100.0, rest_length: 1.0), damping: 0.0)],
-)
-"#;
+/// The GUI tests' oscillator, body "m".
+static SPRING: LazyLock<String> = LazyLock::new(|| common::spring_scene_text("m"));
 
 /// A folder of scenes for the panel's list.
 fn scenes_folder(files: &[(&str, &str)]) -> tempfile::TempDir {
@@ -94,7 +86,7 @@ fn open_from_list(harness: &mut Harness<'_, ControlPanel>, name: &str) {
 
 #[test]
 fn a_tuned_stiffness_reaches_the_running_simulation_and_a_bad_one_is_refused() {
-    let dir = scenes_folder(&[("spring.ron", SPRING)]);
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
     let mut harness = harness(panel(dir.path()));
     open_from_list(&mut harness, "spring.ron");
     assert_eq!(spring_stiffness(&world(&harness)), 100.0);
@@ -120,7 +112,7 @@ fn a_tuned_stiffness_reaches_the_running_simulation_and_a_bad_one_is_refused() {
 
 #[test]
 fn space_arrow_and_backspace_play_step_and_reset() {
-    let dir = scenes_folder(&[("spring.ron", SPRING)]);
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
     let mut harness = harness(panel(dir.path()));
     open_from_list(&mut harness, "spring.ron");
 
@@ -145,7 +137,7 @@ fn space_arrow_and_backspace_play_step_and_reset() {
 #[test]
 fn a_bad_scene_shows_its_place_and_the_previous_one_keeps_running() {
     let bad = SPRING.replace("mass: 1.0,", "mass: -1.0,");
-    let dir = scenes_folder(&[("spring.ron", SPRING), ("bad.ron", &bad)]);
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str()), ("bad.ron", &bad)]);
     let mut harness = harness(panel(dir.path()));
     open_from_list(&mut harness, "spring.ron");
     harness.key_press(egui::Key::Space);
@@ -179,7 +171,7 @@ fn a_diverging_run_pauses_and_says_why() {
 
 #[test]
 fn the_tuned_scene_is_saved_as_ron_that_loads_back() {
-    let dir = scenes_folder(&[("spring.ron", SPRING)]);
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
     let mut harness = harness(panel(dir.path()));
     open_from_list(&mut harness, "spring.ron");
     set_knob(&mut harness, "damping k_d", 0.75);
@@ -196,7 +188,7 @@ fn the_tuned_scene_is_saved_as_ron_that_loads_back() {
 /// restart; a fixed save written in place reloads again.
 #[test]
 fn the_open_scene_reloads_when_its_file_changes_on_disk() {
-    let dir = scenes_folder(&[("spring.ron", SPRING)]);
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
     let path = dir.path().join("spring.ron");
     let save_by_rename = |text: &str| {
         let swap = dir.path().join(".spring.ron.new");

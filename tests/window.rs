@@ -102,21 +102,6 @@ fn with_connect_the_window_streams_its_runs_to_an_external_viewer() {
     assert!(simulated > 1.0, "Space played the scene for about 3 s; the receiver got up to {simulated} s (last seen {last} s)");
 }
 
-/// Two scenes in a `scenes/` folder of their own: the one the window starts on, and the one
-/// picked in the dialog (its body is named `picked_body`).
-fn scene_with_body(name: &str) -> String {
-    format!(
-        r#"Scene(
-    gravity: (0.0, 0.0, 0.0),
-    dt: 0.001,
-    bodies: [Body(name: "{name}", master: Node(position: (1.1, 0.0, 0.0), mass: 1.0, inertia: Inertia(xx: 0.01, yy: 0.01, zz: 0.01)),
-        support: Fixed(translation: (false, true, true), rotation: true), shape: Sphere(radius: 0.1))],
-    couplings: [SpringDamper(name: "spring", end1: World((0.0, 0.0, 0.0)), end2: Body(body: "{name}"),
-        law: Linear(stiffness: 100.0, rest_length: 1.0))],
-)
-"#
-    )
-}
 
 #[test]
 fn open_scene_shows_a_file_dialog_in_the_scenes_folder_and_loads_the_file_picked() {
@@ -126,8 +111,8 @@ fn open_scene_shows_a_file_dialog_in_the_scenes_folder_and_loads_the_file_picked
     let home = tempfile::tempdir().unwrap();
     let folder = tempfile::tempdir().unwrap();
     std::fs::create_dir(folder.path().join("scenes")).unwrap();
-    std::fs::write(folder.path().join("scenes/start.ron"), scene_with_body("start_body")).unwrap();
-    std::fs::write(folder.path().join("scenes/picked.ron"), scene_with_body("picked_body")).unwrap();
+    std::fs::write(folder.path().join("scenes/start.ron"), common::spring_scene_text("start_body")).unwrap();
+    std::fs::write(folder.path().join("scenes/picked.ron"), common::spring_scene_text("picked_body")).unwrap();
     let out = folder.path().join("shown.rrd");
     // Run from the folder above `scenes/`: a dialog opened in the working folder would not find
     // `picked.ron` by its bare name.

@@ -34,6 +34,23 @@ pub fn scene_files() -> Vec<PathBuf> {
     files
 }
 
+/// The scene the GUI tests open, as file text: body `body` (1 kg, released at x = 1.1 m, free
+/// only along x) on coupling "spring" to the world origin (k = 100 N/m, x0 = 1 m, no damping),
+/// dt = 1 ms.
+pub fn spring_scene_text(body: &str) -> String {
+    format!(
+        r#"Scene(
+    gravity: (0.0, 0.0, 0.0),
+    dt: 0.001,
+    bodies: [Body(name: "{body}", master: Node(position: (1.1, 0.0, 0.0), mass: 1.0, inertia: Inertia(xx: 0.01, yy: 0.01, zz: 0.01)),
+        support: Fixed(translation: (false, true, true), rotation: true), shape: Sphere(radius: 0.1))],
+    couplings: [SpringDamper(name: "spring", end1: World((0.0, 0.0, 0.0)), end2: Body(body: "{body}"),
+        law: Linear(stiffness: 100.0, rest_length: 1.0), damping: 0.0)],
+)
+"#
+    )
+}
+
 /// A one-body oscillator along x: a body of mass `mass` attached to the world origin by a
 /// spring with law `law` (RON) and damping `damping`, starting at `x` with speed `v`, free
 /// only along x.

@@ -1,12 +1,13 @@
 //! Faces against a plane four at a time: the face law (PHYSICS.md §4) in vector instructions.
 //!
 //! A [`FaceBatch`] holds up to [`LANES`] faces lane by lane (centroid coordinates and area in
-//! the body's principal frame). [`FaceBatch::contacts`] evaluates [`ContactLaw::face_force`]
-//! for every lane with the same scalar code, which the compiler turns into vector
-//! instructions: four lanes per AVX2 instruction where the processor has it (chosen at run time),
-//! two with the SSE2 every x86-64 has. Lanes are independent and IEEE arithmetic is the same in
-//! vector and scalar form (no fused multiply–add is introduced), so the result is that of the
-//! face-by-face evaluation, bit for bit.
+//! the body's principal frame). Every lane runs the same scalar code, [`ContactLaw::face_force`],
+//! which the compiler turns into vector instructions: [`summed_law`], the step's sums, is built
+//! for AVX2 as well (four lanes per instruction, chosen at run time where the processor has it),
+//! and otherwise, like [`FaceBatch::contacts`] for display, uses the SSE2 every x86-64 has. Lanes
+//! are independent and IEEE arithmetic is the same in vector and scalar form (no fused
+//! multiply–add is introduced), so each face's contact is that of the face-by-face evaluation,
+//! bit for bit.
 
 use super::law::{ContactLaw, FaceContact};
 use crate::physics::Vec3;
@@ -44,11 +45,19 @@ impl Accumulated {
     /// Adds face contact `contact` at `centroid`.
     #[inline]
     pub fn add(&mut self, centroid: &Vec3, contact: &FaceContact) {
-        self.force += contact.force;
-        self.moment += centroid.cross(&contact.force);
-        self.normal += contact.normal_force;
-        self.potential += contact.potential;
-        self.dissipated_power += contact.dissipated_power;
+        self.add_times(centroid, contact, 1.0);
+    }
+
+    /// Adds `share` (1 or 0) times face contact `contact` at `centroid`: a product rather than a
+    /// branch, for lanes side by side.
+    #[inline]
+    fn add_times(&mut self, centroid: &Vec3, contact: &FaceContact, share: f64) {
+        let force = contact.force * share;
+        self.force += force;
+        self.moment += centroid.cross(&force);
+        self.normal += contact.normal_force * share;
+        self.potential += contact.potential * share;
+        self.dissipated_power += contact.dissipated_power * share;
     }
 
     /// Adds the sums `other`.
@@ -139,13 +148,8 @@ pub fn summed_law(batches: &[FaceBatch], law: &ContactLaw, plane: &PlaneView) ->
         let in_range = in_range & batch.lanes;
         for (lane, (sums, contact)) in lanes.iter_mut().zip(&contacts).enumerate() {
             // Lanes out of range add zero rather than branch.
-            let keep = if in_range & (1 << lane) != 0 { 1.0 } else { 0.0 };
-            let force = contact.force * keep;
-            sums.force += force;
-            sums.moment += batch.centroid(lane).cross(&force);
-            sums.normal += contact.normal_force * keep;
-            sums.potential += contact.potential * keep;
-            sums.dissipated_power += contact.dissipated_power * keep;
+            let share = if in_range & (1 << lane) != 0 { 1.0 } else { 0.0 };
+            sums.add_times(&batch.centroid(lane), contact, share);
         }
     }
     let mut total = Accumulated::default();

@@ -16,8 +16,7 @@ use crate::physics::mesh::BoundaryMesh;
 
 /// Margin of a list [m]: `d0/2`. Wider lists are longer (more faces evaluated every step);
 /// narrower ones are drawn up more often. On chain100 (d0 = 5 mm, 5 cm spheres rolling on the
-/// ground) `d0/2` gives 8% fewer instructions per step than `max(d0, r_max/10)`, whose lists
-/// held twice the faces in range.
+/// ground) the wider `max(d0, r_max/10)` listed about twice the faces in range.
 fn margin(range: f64) -> f64 {
     0.5 * range
 }
@@ -31,8 +30,6 @@ const USABLE_MARGIN: f64 = 0.99;
 pub struct Shortlist {
     /// The faces, in the order of [`BoundaryMesh::faces`] (group by group), in batches.
     batches: Vec<FaceBatch>,
-    /// Their indices in [`BoundaryMesh::faces`] (kept to draw up the next list in place).
-    faces: Vec<usize>,
     /// `h₀` [m] and `n_b₀` when the list was drawn up.
     height: f64,
     normal: Vec3,
@@ -73,7 +70,7 @@ impl Shortlist {
 
     /// The faces with `d_f < range + margin`, found by culling the boundary's groups.
     fn draw_up(&mut self, boundary: &BoundaryMesh, height: f64, normal: &Vec3, range: f64, margin: f64) {
-        self.faces.clear();
+        let mut faces = Vec::new();
         let limit = range + margin;
         for group in boundary.groups() {
             if height + normal.dot(&group.center) - group.radius >= limit {
@@ -81,11 +78,11 @@ impl Shortlist {
             }
             let mut in_range = group.below(height, normal, limit);
             while in_range != 0 {
-                self.faces.push(group.first + in_range.trailing_zeros() as usize);
+                faces.push(group.first + in_range.trailing_zeros() as usize);
                 in_range &= in_range - 1;
             }
         }
-        self.batches = FaceBatch::pack(boundary.faces(), &self.faces);
+        self.batches = FaceBatch::pack(boundary.faces(), &faces);
         (self.height, self.normal, self.range) = (height, *normal, range);
     }
 }

@@ -31,6 +31,11 @@ pub struct Face {
 /// Farthest a vertex may be from the origin [m]: distances squared must not overflow.
 pub const MAX_EXTENT: f64 = 1e12;
 
+/// A boundary thinner than this along an axis [m] (but not flat) is refused: the distance
+/// queries' bounding-volume hierarchy divides by the thickness, which for a subnormal one
+/// overflows (a box of size 1e-320 made parry's tree build index out of bounds).
+pub const MIN_THICKNESS: f64 = 1e-9;
+
 /// Why a triangle list is not a usable boundary.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum MeshError {
@@ -44,6 +49,8 @@ pub enum MeshError {
     TooFar { vertex: usize, distance: f64 },
     #[error("the mesh has zero area: every triangle is degenerate")]
     ZeroArea,
+    #[error("the mesh is {thickness:e} m thick along axis {axis}: below {MIN_THICKNESS:e} m, too thin to tell its sides apart (a flat mesh has thickness 0)")]
+    TooThin { axis: char, thickness: f64 },
     #[error("the mesh cannot be used for distance queries: {0}")]
     Topology(String),
 }
@@ -123,6 +130,10 @@ impl BoundaryMesh {
         }
         if let Some(vertex) = vertices.iter().position(|v| v.amax() > MAX_EXTENT) {
             return Err(MeshError::TooFar { vertex, distance: vertices[vertex].norm() });
+        }
+        let (low, high) = vertices.iter().fold((Vec3::repeat(f64::INFINITY), Vec3::repeat(f64::NEG_INFINITY)), |(low, high), v| (low.inf(v), high.sup(v)));
+        if let Some(axis) = (0..3).find(|&axis| (high[axis] - low[axis]) > 0.0 && high[axis] - low[axis] < MIN_THICKNESS) {
+            return Err(MeshError::TooThin { axis: ['x', 'y', 'z'][axis], thickness: high[axis] - low[axis] });
         }
         for (triangle, corners) in triangles.iter().enumerate() {
             if let Some(&vertex) = corners.iter().find(|&&i| i as usize >= vertices.len()) {
@@ -323,6 +334,16 @@ mod tests {
         assert!(matches!(BoundaryMesh::new(flat, vec![[0, 1, 3]]), Err(MeshError::VertexOutOfRange { vertex: 3, .. })));
         let nan = vec![Vec3::zeros(), Vec3::x(), Vec3::new(f64::NAN, 0.0, 0.0)];
         assert_eq!(BoundaryMesh::new(nan, vec![[0, 1, 2]]), Err(MeshError::NotFinite { vertex: 2 }));
+    }
+
+    #[test]
+    fn a_box_too_thin_to_query_is_refused_and_one_just_thick_enough_is_queried() {
+        let thin = primitives::cuboid(&Vec3::new(1e-320, 0.3, 0.3), &Vec3::zeros(), 1);
+        assert!(matches!(BoundaryMesh::new(thin.0, thin.1), Err(MeshError::TooThin { axis: 'x', .. })));
+        let (vertices, triangles) = primitives::cuboid(&Vec3::new(2.0 * MIN_THICKNESS, 0.3, 0.3), &Vec3::zeros(), 1);
+        let surface = Surface::new(&BoundaryMesh::new(vertices, triangles).expect("thick enough")).expect("closed box");
+        let above = surface.nearest(&Vec3::new(0.0, 0.0, 0.16), 0.1).expect("within range");
+        assert_relative_eq!(above.distance, 0.01, epsilon = 1e-12);
     }
 
     #[test]

@@ -20,6 +20,7 @@ pub struct Acceleration {
 
 /// `α = I⁻¹ (M − ω × Iω)` in the principal frame, for moment `moment` and angular velocity
 /// `omega` (both principal frame). The integrator chooses at which instant `omega` is taken.
+#[inline(always)]
 pub fn euler_angular_acceleration(body: &RigidBody, moment: &Vec3, omega: &Vec3) -> Vec3 {
     let inertia = body.principal_moments();
     let gyroscopic = omega.cross(&inertia.component_mul(omega));
@@ -49,6 +50,7 @@ pub fn accelerations(body: &RigidBody, rotation: &Mat3, load: &Load, omega: &Vec
     }
 }
 
+#[inline(always)]
 fn free_accelerations(body: &RigidBody, rotation: &Mat3, load: &Load, omega: &Vec3) -> Acceleration {
     // Bodies held only at G (point masses on springs) carry no moment: skip the rotation.
     let m = &load.moment;

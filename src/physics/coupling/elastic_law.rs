@@ -94,7 +94,7 @@ impl ElasticLaw {
 
     /// Elastic potential `V(x)` [J], with `dV/dx = f_e`. It is zero at `x0` (at `x_r` for the
     /// reference-force form, at the first point for a force curve without a zero crossing).
-    #[inline]
+    #[inline(always)]
     pub fn potential(&self, x: f64) -> f64 {
         match self {
             Self::Linear { stiffness, rest_length } => 0.5 * stiffness * (x - rest_length).powi(2),

@@ -193,7 +193,7 @@ impl Coupling {
 
     /// Evaluates the forces at the kinematics `frames` under `gravity`, adds them to the end
     /// bodies' `loads` and writes what the coupling did to `out`.
-    #[inline]
+    #[inline(always)]
     pub fn apply(&mut self, frames: &[BodyFrame], gravity: &Vec3, loads: &mut [Load], out: &mut CouplingForces) -> Result<(), CouplingError> {
         match &mut self.kind {
             CouplingKind::SpringDamper(spring) => spring.apply(frames, loads, out),

@@ -41,7 +41,7 @@ impl SpringDamper {
 
     /// Forces at the kinematics `frames` (seed [4944]–[4945]), added to the end bodies' `loads`
     /// and written to `out`.
-    #[inline]
+    #[inline(always)]
     pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load], out: &mut CouplingForces) {
         let (end1, end2) = (self.end1.motion(frames), self.end2.motion(frames));
         let (length, direction) = self.length_and_direction(&(end2.position - end1.position));

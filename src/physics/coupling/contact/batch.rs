@@ -2,9 +2,10 @@
 //!
 //! A [`FaceBatch`] holds up to [`LANES`] faces lane by lane (centroid coordinates and area in
 //! the body's principal frame). Every lane runs the same scalar code, [`ContactLaw::face_force`],
-//! which the compiler turns into vector instructions: [`summed_law`], the step's sums, is built
-//! for AVX2 as well (four lanes per instruction, chosen at run time where the processor has it),
-//! and otherwise, like [`FaceBatch::contacts`] for display, uses the SSE2 every x86-64 has. Lanes
+//! which the compiler turns into vector instructions: [`summed_law`], the step's sums, is inlined
+//! into the couplings stage, which is built for AVX2 as well (four lanes per instruction, chosen
+//! at run time where the processor has it), and otherwise, like [`FaceBatch::contacts`] for
+//! display, uses the SSE2 every x86-64 has. Lanes
 //! are independent and IEEE arithmetic is the same in vector and scalar form (no fused
 //! multiply–add is introduced), so each face's contact is that of the face-by-face evaluation,
 //! bit for bit.
@@ -85,23 +86,18 @@ pub struct PlaneView {
 }
 
 impl FaceBatch {
-    /// The batches of `indices` (faces of `faces`), [`LANES`] at a time in order.
-    pub fn pack(faces: &[Face], indices: &[usize]) -> Vec<Self> {
-        indices
-            .chunks(LANES)
-            .map(|chunk| {
-                let face = |lane: usize| chunk.get(lane).map(|&i| &faces[i]);
-                let coordinate = |axis: usize| std::array::from_fn(|lane| face(lane).map_or(0.0, |f| f.centroid[axis]));
-                Self {
-                    index: std::array::from_fn(|lane| chunk.get(lane).copied().unwrap_or(0)),
-                    x: coordinate(0),
-                    y: coordinate(1),
-                    z: coordinate(2),
-                    area: std::array::from_fn(|lane| face(lane).map_or(0.0, |f| f.area)),
-                    lanes: (1 << chunk.len()) - 1,
-                }
-            })
-            .collect()
+    /// The faces `chunk` (at most [`LANES`] indices into `faces`), lane by lane in order.
+    pub fn of(faces: &[Face], chunk: &[usize]) -> Self {
+        let face = |lane: usize| chunk.get(lane).map(|&i| &faces[i]);
+        let coordinate = |axis: usize| std::array::from_fn(|lane| face(lane).map_or(0.0, |f| f.centroid[axis]));
+        Self {
+            index: std::array::from_fn(|lane| chunk.get(lane).copied().unwrap_or(0)),
+            x: coordinate(0),
+            y: coordinate(1),
+            z: coordinate(2),
+            area: std::array::from_fn(|lane| face(lane).map_or(0.0, |f| f.area)),
+            lanes: (1 << chunk.len()) - 1,
+        }
     }
 
     /// The law at every lane against `plane`, and which lanes hold a face in range
@@ -138,9 +134,11 @@ fn law_at_lanes(batch: &FaceBatch, law: &ContactLaw, plane: &PlaneView) -> ([Fac
 }
 
 /// The sums over the faces in range of `batches` against `plane`: lane by lane through the
-/// batches, then across the lanes. Compiled for AVX2 as well; one call takes every batch, so that
-/// the processor overlaps the batches' chains of square root, exponential and division.
-#[multiversion::multiversion(targets("x86_64+avx2+fma"))]
+/// batches, then across the lanes. One call takes every batch, so that the processor overlaps the
+/// batches' chains of square root, exponential and division. Always inlined, so that it is built
+/// with the instructions of its caller (the couplings stage's AVX2 build) and its sums stay in
+/// registers rather than being returned through memory.
+#[inline(always)]
 pub fn summed_law(batches: &[FaceBatch], law: &ContactLaw, plane: &PlaneView) -> Accumulated {
     let mut lanes = [Accumulated::default(); LANES];
     for batch in batches {
@@ -186,7 +184,7 @@ mod tests {
         let faces = boundary.faces();
         // Every face, so that most lanes are out of range, and 81 = 20 batches and one lane.
         let indices: Vec<usize> = (0..faces.len()).chain([7]).collect();
-        let batches = FaceBatch::pack(faces, &indices);
+        let batches: Vec<FaceBatch> = indices.chunks(LANES).map(|chunk| FaceBatch::of(faces, chunk)).collect();
         let mut expected = Accumulated::default();
         let mut in_range = 0;
         for (batch, chunk) in batches.iter().zip(indices.chunks(LANES)) {

@@ -151,7 +151,7 @@ impl Contact {
 
     /// The sums over the faces in contact at the kinematics `frames`, in the body's principal
     /// frame (against planes, batch by batch), bringing the shortlists up to date.
-    #[inline]
+    #[inline(always)]
     fn summed(&mut self, frames: &[BodyFrame]) -> Accumulated {
         let frame = &frames[self.body];
         match &self.against {
@@ -190,7 +190,7 @@ impl Contact {
     /// Evaluates the faces at the kinematics `frames`, adds the forces to the bodies' `loads`
     /// and writes the totals to `out` (`f1` on the body at its G, `f2 = −f1` on the opposing
     /// side at its G or, for planes, at the body's; `tension` = `Σ |f_n|`).
-    #[inline]
+    #[inline(always)]
     pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load], out: &mut CouplingForces) {
         let sums = self.summed(frames);
         let frame = &frames[self.body];
@@ -221,7 +221,7 @@ impl Contact {
 /// `h = n·(x_G − p)` is at distance `d_f = h + n_b·r_f` from face f, `n_b = Rᵀ n`), with the
 /// batches of faces on its `shortlist`; `None` when the plane is out of range of the boundary's
 /// bounding ball.
-#[inline]
+#[inline(always)]
 fn plane_view<'a>(boundary: &BoundaryMesh, law: &ContactLaw, plane: &Plane, shortlist: &'a mut Shortlist, frame: &BodyFrame) -> Option<(PlaneView, &'a [FaceBatch])> {
     let height = plane.normal.dot(&(frame.position - plane.point));
     if height - boundary.bounding_radius() >= law.range {

@@ -10,7 +10,7 @@
 //! drawn up again when the drift reaches the margin: the result is exactly that of testing every
 //! face, in the same order.
 
-use super::batch::FaceBatch;
+use super::batch::{FaceBatch, LANES};
 use crate::physics::Vec3;
 use crate::physics::mesh::BoundaryMesh;
 
@@ -68,21 +68,31 @@ impl Shortlist {
         &self.batches
     }
 
-    /// The faces with `d_f < range + margin`, found by culling the boundary's groups.
+    /// The faces with `d_f < range + margin`, found by culling the boundary's groups, packed
+    /// [`LANES`] to a batch in the list's own storage (drawing up allocates nothing once the list
+    /// has held its longest).
     fn draw_up(&mut self, boundary: &BoundaryMesh, height: f64, normal: &Vec3, range: f64, margin: f64) {
-        let mut faces = Vec::new();
         let limit = range + margin;
+        let (mut chunk, mut filled) = ([0; LANES], 0);
+        self.batches.clear();
         for group in boundary.groups() {
             if height + normal.dot(&group.center) - group.radius >= limit {
                 continue;
             }
             let mut in_range = group.below(height, normal, limit);
             while in_range != 0 {
-                faces.push(group.first + in_range.trailing_zeros() as usize);
+                chunk[filled] = group.first + in_range.trailing_zeros() as usize;
                 in_range &= in_range - 1;
+                filled += 1;
+                if filled == LANES {
+                    self.batches.push(FaceBatch::of(boundary.faces(), &chunk));
+                    filled = 0;
+                }
             }
         }
-        self.batches = FaceBatch::pack(boundary.faces(), &faces);
+        if filled > 0 {
+            self.batches.push(FaceBatch::of(boundary.faces(), &chunk[..filled]));
+        }
         (self.height, self.normal, self.range) = (height, *normal, range);
     }
 }

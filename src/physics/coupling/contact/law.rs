@@ -47,7 +47,7 @@ impl ContactLaw {
     /// The force on a face of area `area` [m²] at distance `distance` [m] < d0 from the opposing
     /// boundary, whose unit normal there is `normal` (pointing towards the face), moving at
     /// `relative_velocity` [m/s] relative to the boundary (same axes as `normal`).
-    #[inline]
+    #[inline(always)]
     pub fn face_force(&self, area: f64, distance: f64, normal: &Vec3, relative_velocity: &Vec3) -> FaceContact {
         let penetration = self.range - distance;
         let approach = -normal.dot(relative_velocity);
@@ -76,7 +76,7 @@ impl ContactLaw {
 /// within 5e-16 (absolute; the friction force is then within 5e-16 μ f_n of the law's, below the
 /// round-off of summing the faces) with one division and an inlined, branch-free exponential
 /// (no library call), so that faces side by side run as vector instructions.
-#[inline]
+#[inline(always)]
 fn tanh_over(x: f64, y: f64) -> f64 {
     // Below −40 (and for NaN), e⁻⁴⁰ = 4.2e-18 already gives tanh = 1 in double precision.
     let e = exp_of_non_positive((-2.0 * x).max(EXP_FLOOR));
@@ -90,7 +90,7 @@ const EXP_FLOOR: f64 = -40.0;
 /// `|r| ≤ ln2/2` (Cody–Waite: `k ln2` in two parts, the first exact), `e^r` from its Taylor
 /// series to `r¹³` (remainder < 5e-18 relative) in Estrin's scheme (four levels of products
 /// instead of thirteen in sequence), and `2ᵏ` written into the exponent bits.
-#[inline]
+#[inline(always)]
 fn exp_of_non_positive(x: f64) -> f64 {
     const LN2_HIGH: f64 = 0.693_147_180_369_123_816_49; // 0x3fe62e42fee00000: 32 bits
     const LN2_LOW: f64 = 1.908_214_929_270_587_7e-10; // ln 2 − LN2_HIGH

@@ -150,16 +150,17 @@ impl Contact {
     }
 
     /// The sums over the faces in contact at the kinematics `frames`, in the body's principal
-    /// frame (against planes, batch by batch), bringing the shortlists up to date.
+    /// frame (against planes, batch by batch), bringing the shortlists up to date; `None` when
+    /// the opposing boundary is out of range of the body's bounding ball (no face evaluated).
     #[inline(always)]
-    fn summed(&mut self, frames: &[BodyFrame]) -> Accumulated {
+    fn summed(&mut self, frames: &[BodyFrame]) -> Option<Accumulated> {
         let frame = &frames[self.body];
         match &self.against {
             Opposing::Planes(planes) => {
-                let mut sums = Accumulated::default();
+                let mut sums: Option<Accumulated> = None;
                 for (plane, shortlist) in planes.iter().zip(&mut self.shortlists) {
                     let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else { continue };
-                    sums.merge(&batch::summed_law(batches, &self.law, &view));
+                    sums.get_or_insert_default().merge(&batch::summed_law(batches, &self.law, &view));
                 }
                 sums
             }
@@ -192,8 +193,14 @@ impl Contact {
     /// side at its G or, for planes, at the body's; `tension` = `Σ |f_n|`).
     #[inline(always)]
     pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load], out: &mut CouplingForces) {
-        let sums = self.summed(frames);
         let frame = &frames[self.body];
+        let point2 = self.other_body().map_or(frame.position, |body| frames[body].position);
+        let Some(sums) = self.summed(frames) else {
+            // Out of range: no force, and nothing to add to the loads.
+            *out = CouplingForces { point1: frame.position, point2, ..CouplingForces::default() };
+            self.normal_force = 0.0;
+            return;
+        };
         if let Opposing::Body { body, .. } = self.against {
             // The reaction −f_f at the same points: moment (r_f − x_B) × (−f_f).
             let force = frame.rotation * sums.force;
@@ -206,7 +213,7 @@ impl Contact {
         loads[self.body].moment += frame.rotation * sums.moment;
         *out = CouplingForces {
             point1: frame.position,
-            point2: self.other_body().map_or(frame.position, |body| frames[body].position),
+            point2,
             f1: force,
             f2: -force,
             tension: sums.normal,
@@ -235,12 +242,12 @@ fn plane_view<'a>(boundary: &BoundaryMesh, law: &ContactLaw, plane: &Plane, shor
 
 /// Every face of body A's `boundary` against body B's `surface`, evaluated in B's principal
 /// frame (where the surface is) and returned in A's; a group of faces whose ball is out of range
-/// of B's bounding box is skipped whole.
-fn against_body(boundary: &BoundaryMesh, law: &ContactLaw, surface: &Surface, a: &BodyFrame, b: &BodyFrame, mut on_face: impl FnMut(&Face, &FaceContact)) -> Accumulated {
-    let mut sums = Accumulated::default();
+/// of B's bounding box is skipped whole. `None` when the bodies' bounding balls are out of range.
+fn against_body(boundary: &BoundaryMesh, law: &ContactLaw, surface: &Surface, a: &BodyFrame, b: &BodyFrame, mut on_face: impl FnMut(&Face, &FaceContact)) -> Option<Accumulated> {
     if (a.position - b.position).norm() >= boundary.bounding_radius() + surface.bounding_radius() + law.range {
-        return sums;
+        return None;
     }
+    let mut sums = Accumulated::default();
     // B's frame: x_B = b.position, axes b.rotation; A's faces are carried into it.
     let a_to_b = b.rotation.tr_mul(&a.rotation);
     let offset = b.rotation.tr_mul(&(a.position - b.position));
@@ -262,5 +269,5 @@ fn against_body(boundary: &BoundaryMesh, law: &ContactLaw, surface: &Surface, a:
         sums.add(&face.centroid, &in_a);
         on_face(face, &in_a);
     }
-    sums
+    Some(sums)
 }

@@ -147,9 +147,13 @@ fn kick_and_drift(state: &mut BodyState, acceleration: &Acceleration, support: &
 /// `v += γ h`, `ω += α h`, fixed components held at rest.
 #[inline(always)]
 pub(crate) fn kick(state: &mut BodyState, acceleration: &Acceleration, support: &Support, h: f64) {
-    state.velocity += acceleration.linear * h;
-    state.angular_velocity += acceleration.angular * h;
-    support.hold(&mut state.velocity, &mut state.angular_velocity);
+    // Worked out in locals and written once: updated in place, the state was written
+    // component by component and read straight back as vectors, which stalled the processor
+    // (a load spanning two stores is not forwarded from them).
+    let mut velocity = state.velocity + acceleration.linear * h;
+    let mut angular_velocity = state.angular_velocity + acceleration.angular * h;
+    support.hold(&mut velocity, &mut angular_velocity);
+    (state.velocity, state.angular_velocity) = (velocity, angular_velocity);
 }
 
 /// `q ⊗ exp(φ)` for a rotation vector `φ` in the body frame [rad], renormalised.

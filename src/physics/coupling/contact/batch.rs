@@ -2,7 +2,7 @@
 //!
 //! A [`FaceBatch`] holds up to [`LANES`] faces lane by lane (centroid coordinates and area in
 //! the body's principal frame). Every lane runs the same scalar code, [`ContactLaw::face_force`],
-//! which the compiler turns into vector instructions: [`summed_law`], the step's sums, is inlined
+//! which the compiler turns into vector instructions: [`accumulate`], the step's sums, is inlined
 //! into the couplings stage, which is built for AVX2 as well (four lanes per instruction, chosen
 //! at run time where the processor has it), and otherwise, like [`FaceBatch::contacts`] for
 //! display, uses the SSE2 every x86-64 has. A face out of range is given zero area rather than
@@ -53,16 +53,6 @@ impl Accumulated {
         self.potential += contact.potential;
         self.dissipated_power += contact.dissipated_power;
     }
-
-    /// Adds the sums `other`.
-    #[inline]
-    pub fn merge(&mut self, other: &Self) {
-        self.force += other.force;
-        self.moment += other.moment;
-        self.normal += other.normal;
-        self.potential += other.potential;
-        self.dissipated_power += other.dissipated_power;
-    }
 }
 
 /// A plane as the faces of one body see it, in the body's principal frame.
@@ -95,7 +85,7 @@ impl FaceBatch {
 
     /// The law at every lane against `plane`, and which lanes hold a face in range
     /// (`d_f < d0`, bit i for lane i); the other lanes are to be ignored (they are given zero
-    /// area, as in [`summed_law`]).
+    /// area, as in [`accumulate`]).
     pub fn contacts(&self, law: &ContactLaw, plane: &PlaneView) -> ([FaceContact; LANES], u32) {
         let mut in_range = 0;
         let contacts = std::array::from_fn(|lane| {
@@ -116,14 +106,12 @@ impl FaceBatch {
     }
 }
 
-/// The sums over the faces in range of `batches` against `plane`: lane by lane through the
-/// batches, then across the lanes. One call takes every batch, so that the processor overlaps the
-/// batches' chains of square root, exponential and division. Always inlined, so that it is built
-/// with the instructions of its caller (the couplings stage's AVX2 build) and its sums stay in
-/// registers rather than being returned through memory.
+/// Adds the faces in range of `batches` against `plane` to `lanes`, lane by lane. One call
+/// takes every batch, so that the processor overlaps the batches' chains of square root,
+/// exponential and division. Always inlined, so that it is built with the instructions of its
+/// caller (the couplings stage's AVX-512 or AVX2 build) and the sums stay in vector registers.
 #[inline(always)]
-pub fn summed_law(batches: &[FaceBatch], law: &ContactLaw, plane: &PlaneView) -> Accumulated {
-    let mut lanes = LaneSums::default();
+pub fn accumulate(batches: &[FaceBatch], law: &ContactLaw, plane: &PlaneView, lanes: &mut LaneSums) {
     for batch in batches {
         // Each lane runs the same code: one vector instruction for the four. The lane's code is
         // written out here rather than shared with `contacts` through a function returning the
@@ -137,13 +125,12 @@ pub fn summed_law(batches: &[FaceBatch], law: &ContactLaw, plane: &PlaneView) ->
             lanes.add(lane, &centroid, &law.face_force(area, distance, &plane.normal, &face_velocity));
         }
     }
-    lanes.total()
 }
 
 /// [`Accumulated`] lane by lane, each component's lanes side by side (so that adding four
 /// faces' contacts is one vector addition per component).
 #[derive(Default)]
-struct LaneSums {
+pub struct LaneSums {
     force: [[f64; LANES]; 3],
     moment: [[f64; LANES]; 3],
     normal: [f64; LANES],
@@ -167,7 +154,7 @@ impl LaneSums {
 
     /// The sums across the lanes.
     #[inline(always)]
-    fn total(&self) -> Accumulated {
+    pub fn total(&self) -> Accumulated {
         let sum = |lanes: &[f64; LANES]| lanes.iter().fold(0.0, |total, value| total + value);
         Accumulated {
             force: Vec3::from_fn(|axis, _| sum(&self.force[axis])),
@@ -225,7 +212,9 @@ mod tests {
             assert_eq!(lanes >> chunk.len(), 0, "no unused lane is in range");
         }
         assert!(in_range > 5, "{in_range} faces in range");
-        let sums = summed_law(&batches, &law, &plane);
+        let mut lanes = LaneSums::default();
+        accumulate(&batches, &law, &plane, &mut lanes);
+        let sums = lanes.total();
         assert_relative_eq!(sums.force, expected.force, max_relative = 1e-14);
         assert_relative_eq!(sums.moment, expected.moment, max_relative = 1e-14);
         assert_relative_eq!(sums.normal, expected.normal, max_relative = 1e-14);

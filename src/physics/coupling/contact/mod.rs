@@ -22,7 +22,7 @@ use super::{BodyFrame, CouplingForces, Load};
 use crate::physics::mesh::{BoundaryMesh, Face, Surface};
 use crate::physics::{Mat3, Vec3};
 pub use law::{ContactLaw, FaceContact};
-use batch::{Accumulated, FaceBatch, PlaneView};
+use batch::{Accumulated, FaceBatch, LaneSums, PlaneView};
 use shortlist::Shortlist;
 use std::sync::Arc;
 
@@ -144,27 +144,8 @@ impl Contact {
                 }
             }
             Opposing::Body { body, surface } => {
-                against_body(&self.boundary, &self.law, surface, frame, &frames[*body], on_face);
+                against_body(&self.boundary, &self.law, surface, frame, &frames[*body], &mut Accumulated::default(), on_face);
             }
-        }
-    }
-
-    /// The sums over the faces in contact at the kinematics `frames`, in the body's principal
-    /// frame (against planes, batch by batch), bringing the shortlists up to date; `None` when
-    /// the opposing boundary is out of range of the body's bounding ball (no face evaluated).
-    #[inline(always)]
-    fn summed(&mut self, frames: &[BodyFrame]) -> Option<Accumulated> {
-        let frame = &frames[self.body];
-        match &self.against {
-            Opposing::Planes(planes) => {
-                let mut sums: Option<Accumulated> = None;
-                for (plane, shortlist) in planes.iter().zip(&mut self.shortlists) {
-                    let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else { continue };
-                    sums.get_or_insert_default().merge(&batch::summed_law(batches, &self.law, &view));
-                }
-                sums
-            }
-            Opposing::Body { body, surface } => against_body(&self.boundary, &self.law, surface, frame, &frames[*body], |_, _| {}),
         }
     }
 
@@ -195,12 +176,31 @@ impl Contact {
     pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load], out: &mut CouplingForces) {
         let frame = &frames[self.body];
         let point2 = self.other_body().map_or(frame.position, |body| frames[body].position);
-        let Some(sums) = self.summed(frames) else {
-            // Out of range: no force, and nothing to add to the loads.
+        // The sums over the faces in contact, in the body's principal frame; none when the
+        // opposing boundary is out of range of the body's bounding ball. (Kept apart from
+        // whether there are any: an `Option` of the sums went through memory, where the
+        // processor stalled reading back parts of what it had just written.)
+        let (in_range, sums) = match &self.against {
+            Opposing::Planes(planes) => {
+                let (mut in_range, mut lanes) = (false, LaneSums::default());
+                for (plane, shortlist) in planes.iter().zip(&mut self.shortlists) {
+                    let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else { continue };
+                    batch::accumulate(batches, &self.law, &view, &mut lanes);
+                    in_range = true;
+                }
+                (in_range, lanes.total())
+            }
+            Opposing::Body { body, surface } => {
+                let mut sums = Accumulated::default();
+                (against_body(&self.boundary, &self.law, surface, frame, &frames[*body], &mut sums, |_, _| {}), sums)
+            }
+        };
+        if !in_range {
+            // No force, and nothing to add to the loads.
             *out = CouplingForces { point1: frame.position, point2, ..CouplingForces::default() };
             self.normal_force = 0.0;
             return;
-        };
+        }
         if let Opposing::Body { body, .. } = self.against {
             // The reaction −f_f at the same points: moment (r_f − x_B) × (−f_f).
             let force = frame.rotation * sums.force;
@@ -242,12 +242,12 @@ fn plane_view<'a>(boundary: &BoundaryMesh, law: &ContactLaw, plane: &Plane, shor
 
 /// Every face of body A's `boundary` against body B's `surface`, evaluated in B's principal
 /// frame (where the surface is) and returned in A's; a group of faces whose ball is out of range
-/// of B's bounding box is skipped whole. `None` when the bodies' bounding balls are out of range.
-fn against_body(boundary: &BoundaryMesh, law: &ContactLaw, surface: &Surface, a: &BodyFrame, b: &BodyFrame, mut on_face: impl FnMut(&Face, &FaceContact)) -> Option<Accumulated> {
+/// of B's bounding box is skipped whole. The faces in contact are added to `sums`; returns
+/// whether the bodies' bounding balls are in range.
+fn against_body(boundary: &BoundaryMesh, law: &ContactLaw, surface: &Surface, a: &BodyFrame, b: &BodyFrame, sums: &mut Accumulated, mut on_face: impl FnMut(&Face, &FaceContact)) -> bool {
     if (a.position - b.position).norm() >= boundary.bounding_radius() + surface.bounding_radius() + law.range {
-        return None;
+        return false;
     }
-    let mut sums = Accumulated::default();
     // B's frame: x_B = b.position, axes b.rotation; A's faces are carried into it.
     let a_to_b = b.rotation.tr_mul(&a.rotation);
     let offset = b.rotation.tr_mul(&(a.position - b.position));
@@ -269,5 +269,5 @@ fn against_body(boundary: &BoundaryMesh, law: &ContactLaw, surface: &Surface, a:
         sums.add(&face.centroid, &in_a);
         on_face(face, &in_a);
     }
-    Some(sums)
+    true
 }

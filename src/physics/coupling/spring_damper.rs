@@ -47,7 +47,8 @@ impl SpringDamper {
         let (length, direction) = self.length_and_direction(&(end2.position - end1.position));
         let rate = (end2.velocity - end1.velocity).dot(&direction);
         let damping_force = self.damping * rate;
-        let tension = self.law.force(length) + damping_force;
+        let (elastic_force, potential) = self.law.force_and_potential(length);
+        let tension = elastic_force + damping_force;
         let f1 = direction * tension;
         end1.apply(&f1, loads);
         end2.apply(&-f1, loads);
@@ -58,7 +59,7 @@ impl SpringDamper {
             f2: -f1,
             tension,
             dissipated_power: damping_force * rate,
-            potential: self.law.potential(length),
+            potential,
         };
     }
 

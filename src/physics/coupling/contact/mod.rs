@@ -149,6 +149,31 @@ impl Contact {
         }
     }
 
+    /// Whether the opposing boundary is in range of the body's bounding ball at the kinematics
+    /// `frames`, and the sums over the faces in contact, in the body's principal frame (against
+    /// planes, batch by batch), bringing the shortlists up to date. (Not an `Option` of the
+    /// sums: that went through memory, where the processor stalled reading back parts of what it
+    /// had just written.)
+    #[inline(always)]
+    fn summed(&mut self, frames: &[BodyFrame]) -> (bool, Accumulated) {
+        let frame = &frames[self.body];
+        match &self.against {
+            Opposing::Planes(planes) => {
+                let (mut in_range, mut lanes) = (false, LaneSums::default());
+                for (plane, shortlist) in planes.iter().zip(&mut self.shortlists) {
+                    let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else { continue };
+                    batch::accumulate(batches, &self.law, &view, &mut lanes);
+                    in_range = true;
+                }
+                (in_range, lanes.total())
+            }
+            Opposing::Body { body, surface } => {
+                let mut sums = Accumulated::default();
+                (against_body(&self.boundary, &self.law, surface, frame, &frames[*body], &mut sums, |_, _| {}), sums)
+            }
+        }
+    }
+
     /// The area behind the time step limit [m²]: the larger of the expected contact area and
     /// the area in contact at the kinematics `frames`.
     pub fn limit_area(&self, frames: &[BodyFrame]) -> f64 {
@@ -176,25 +201,7 @@ impl Contact {
     pub fn apply(&mut self, frames: &[BodyFrame], loads: &mut [Load], out: &mut CouplingForces) {
         let frame = &frames[self.body];
         let point2 = self.other_body().map_or(frame.position, |body| frames[body].position);
-        // The sums over the faces in contact, in the body's principal frame; none when the
-        // opposing boundary is out of range of the body's bounding ball. (Kept apart from
-        // whether there are any: an `Option` of the sums went through memory, where the
-        // processor stalled reading back parts of what it had just written.)
-        let (in_range, sums) = match &self.against {
-            Opposing::Planes(planes) => {
-                let (mut in_range, mut lanes) = (false, LaneSums::default());
-                for (plane, shortlist) in planes.iter().zip(&mut self.shortlists) {
-                    let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else { continue };
-                    batch::accumulate(batches, &self.law, &view, &mut lanes);
-                    in_range = true;
-                }
-                (in_range, lanes.total())
-            }
-            Opposing::Body { body, surface } => {
-                let mut sums = Accumulated::default();
-                (against_body(&self.boundary, &self.law, surface, frame, &frames[*body], &mut sums, |_, _| {}), sums)
-            }
-        };
+        let (in_range, sums) = self.summed(frames);
         if !in_range {
             // No force, and nothing to add to the loads.
             *out = CouplingForces { point1: frame.position, point2, ..CouplingForces::default() };

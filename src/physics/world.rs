@@ -516,8 +516,9 @@ pub(crate) fn gravity_load(gravity: &Vec3, body: &RigidBody) -> Load {
 /// couplings' forces are inlined here, so the contact faces run four to a vector instruction
 /// ([`super::coupling::contact`]) and what each coupling computes stays in registers from one
 /// stage of its evaluation to the next. AVX-512's 32 vector registers hold the face batch's
-/// constants and sums that AVX2's 16 cannot (131 instructions per batch instead of 191). The arithmetic is the same IEEE arithmetic in either
-/// build (no fused multiply–add is introduced), so the results are too, bit for bit.
+/// constants and sums that AVX2's 16 cannot (157 instructions per batch instead of 190, by the
+/// disassembly of the bench binary). The arithmetic is the same IEEE arithmetic in every build
+/// (no fused multiply–add is introduced), so the results are too, bit for bit.
 #[multiversion::multiversion(targets("x86_64+avx512f+avx512vl+avx2+fma", "x86_64+avx2+fma"))]
 fn apply_each_coupling(couplings: &mut [Coupling], forces: &mut [CouplingForces], frames: &[BodyFrame], gravity: &Vec3, loads: &mut [Load]) -> Result<f64, (usize, CouplingError)> {
     let mut dissipated = 0.0;

@@ -264,7 +264,7 @@ impl World {
     /// coupling ends at the current time.
     fn fall_energy(&self) -> f64 {
         let points = self.states.iter().map(|s| s.position).chain(self.coupling_forces.iter().flat_map(|f| [f.point1, f.point2]));
-        let (low, high) = points.fold((Vec3::repeat(f64::INFINITY), Vec3::repeat(f64::NEG_INFINITY)), |(lo, hi), p| (lo.inf(&p), hi.sup(&p)));
+        let (low, high) = super::bounding_box(points);
         let size = if low.x.is_finite() { (high - low).norm() } else { 0.0 };
         let mass: f64 = self.bodies.iter().filter(|b| !b.is_kinematic()).map(|b| b.mass()).sum();
         mass * self.gravity.norm() * size
@@ -516,8 +516,8 @@ pub(crate) fn gravity_load(gravity: &Vec3, body: &RigidBody) -> Load {
 /// couplings' forces are inlined here, so the contact faces run four to a vector instruction
 /// ([`super::coupling::contact`]) and what each coupling computes stays in registers from one
 /// stage of its evaluation to the next. AVX-512's 32 vector registers hold the face batch's
-/// constants and sums that AVX2's 16 cannot (157 instructions per batch instead of 190, by the
-/// disassembly of the bench binary). The arithmetic is the same IEEE arithmetic in every build
+/// constants and sums that AVX2's 16 cannot (about 160 instructions per batch instead of about
+/// 190, by the disassembly of the bench binary). The arithmetic is the same IEEE arithmetic in every build
 /// (no fused multiply–add is introduced), so the results are too, bit for bit.
 #[multiversion::multiversion(targets("x86_64+avx512f+avx512vl+avx2+fma", "x86_64+avx2+fma"))]
 fn apply_each_coupling(couplings: &mut [Coupling], forces: &mut [CouplingForces], frames: &[BodyFrame], gravity: &Vec3, loads: &mut [Load]) -> Result<f64, (usize, CouplingError)> {

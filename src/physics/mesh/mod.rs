@@ -11,7 +11,7 @@
 
 pub mod primitives;
 
-use super::Vec3;
+use super::{Vec3, bounding_box};
 use super::body::{RigidBody, Shape};
 use parry3d_f64::math::Point;
 use parry3d_f64::query::PointQueryWithLocation as _;
@@ -131,7 +131,7 @@ impl BoundaryMesh {
         if let Some(vertex) = vertices.iter().position(|v| v.amax() > MAX_EXTENT) {
             return Err(MeshError::TooFar { vertex, distance: vertices[vertex].norm() });
         }
-        let (low, high) = vertices.iter().fold((Vec3::repeat(f64::INFINITY), Vec3::repeat(f64::NEG_INFINITY)), |(low, high), v| (low.inf(v), high.sup(v)));
+        let (low, high) = bounding_box(vertices.iter().copied());
         if let Some(axis) = (0..3).find(|&axis| (high[axis] - low[axis]) > 0.0 && high[axis] - low[axis] < MIN_THICKNESS) {
             return Err(MeshError::TooThin { axis: ['x', 'y', 'z'][axis], thickness: high[axis] - low[axis] });
         }
@@ -222,7 +222,7 @@ fn split_into_groups(faces: &mut [Face], first: usize, groups: &mut Vec<FaceGrou
         groups.push(FaceGroup::new(first, faces));
         return;
     }
-    let (low, high) = faces.iter().fold((Vec3::repeat(f64::INFINITY), Vec3::repeat(f64::NEG_INFINITY)), |(lo, hi), f| (lo.inf(&f.centroid), hi.sup(&f.centroid)));
+    let (low, high) = bounding_box(faces.iter().map(|f| f.centroid));
     let axis = (high - low).imax();
     let middle = faces.len() / 2;
     faces.select_nth_unstable_by(middle, |a, b| a.centroid[axis].total_cmp(&b.centroid[axis]));

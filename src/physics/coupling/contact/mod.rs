@@ -208,16 +208,16 @@ impl Contact {
             self.normal_force = 0.0;
             return;
         }
+        // The sums in world axes.
+        let (force, moment) = (frame.rotation * sums.force, frame.rotation * sums.moment);
         if let Opposing::Body { body, .. } = self.against {
             // The reaction −f_f at the same points: moment (r_f − x_B) × (−f_f).
-            let force = frame.rotation * sums.force;
             let lever = frame.position - frames[body].position;
             loads[body].force -= force;
-            loads[body].moment -= lever.cross(&force) + frame.rotation * sums.moment;
+            loads[body].moment -= lever.cross(&force) + moment;
         }
-        let force = frame.rotation * sums.force;
         loads[self.body].force += force;
-        loads[self.body].moment += frame.rotation * sums.moment;
+        loads[self.body].moment += moment;
         *out = CouplingForces {
             point1: frame.position,
             point2,

@@ -1,0 +1,185 @@
+//! `tether check SCENE`: what the scene is, in numbers.
+
+use std::fmt::Write as _;
+use tether_physics::body::Support;
+use tether_physics::coupling::contact::Opposing;
+use tether_physics::coupling::{Contact, CouplingKind, ElasticLaw, Endpoint};
+use tether_physics::stability;
+use tether_physics::world::World;
+use tether_physics::math::{Mat3, Vec3};
+use tether_scene::Scene;
+
+pub fn run(scene: &Scene) -> anyhow::Result<()> {
+    super::print(&report(&scene.world, &scene.path.display().to_string()))
+}
+
+fn report(world: &World, label: &str) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{label}: ok — {} bodies, {} couplings, dt = {} s, integrator {}{}, {} substep(s) of {:.6e} s",
+        world.bodies().len(),
+        world.couplings().len(),
+        world.dt(),
+        world.integrator().name(),
+        adaptive(world),
+        world.substeps(),
+        world.step_size()
+    );
+    let _ = writeln!(out, "gravity {} m/s²", v(&world.gravity()));
+    for body in world.bodies() {
+        let p = &body.mass_properties;
+        let _ = writeln!(out, "\nbody \"{}\" ({})", body.name, support(&body.support));
+        let _ = writeln!(out, "  mass               {:.6} kg", p.mass);
+        let _ = writeln!(out, "  centre of mass     {} m", v(&p.center_of_mass));
+        let _ = writeln!(out, "  inertia about G    {} kg·m²", m(&p.inertia_about_g));
+        let _ = writeln!(out, "  principal moments  {} kg·m²", v(&p.principal_moments));
+        let axes = p.principal_axes.to_rotation_matrix().into_inner();
+        for i in 0..3 {
+            let _ = writeln!(out, "  principal axis {}   {}", i + 1, v(&axes.column(i).into_owned()));
+        }
+        if !body.slave_nodes.is_empty() {
+            let _ = writeln!(out, "  slave nodes        {}", body.slave_nodes.len());
+        }
+    }
+    for (index, (coupling, forces)) in world.couplings().iter().zip(world.coupling_forces()).enumerate() {
+        let [end1, end2] = coupling.ends();
+        let _ = writeln!(out, "\ncoupling \"{}\" ({})", coupling.name, coupling.kind_name());
+        let chord = (forces.point2 - forces.point1).norm();
+        let ends = format!("  end 1 {}   end 2 {}", end(world, &end1), end(world, &end2));
+        match &coupling.kind {
+            CouplingKind::SpringDamper(spring) => {
+                let _ = writeln!(out, "{ends}");
+                let _ = writeln!(out, "  law {}, damping {} N·s/m", law(&spring.law), spring.damping);
+                let _ = writeln!(out, "  length {chord:.6} m, tension {:.6} N", forces.tension);
+            }
+            CouplingKind::Catenary(line) => {
+                let _ = writeln!(out, "{ends}");
+                let _ = writeln!(out, "  λ0 = {} kg/m, L_eq = {} m, D = {} N/m (EA = {} N)", line.mass_per_length, line.length, line.stiffness, line.stiffness * line.length);
+                if let Some(state) = world.line_state(index) {
+                    let (t1, t2) = state.end_tensions();
+                    let _ = writeln!(
+                        out,
+                        "  chord {chord:.6} m, H = {:.6} N, V1 = {:.6} N, V2 = {:.6} N, end tensions {t1:.6} / {t2:.6} N ({} Newton iterations)",
+                        state.horizontal_tension, state.vertical1, state.vertical2(), state.iterations
+                    );
+                }
+            }
+            CouplingKind::Contact(contact) => contact_report(&mut out, world, contact),
+        }
+    }
+    let limits = world.limits();
+    let adaptive = world.integrator().is_adaptive();
+    let title = if adaptive { "stiffness limit (dopri45 adapts its step; explicit steps are held below these)" } else { "stable time step" };
+    let _ = writeln!(out, "\n{title} ({}):", world.integrator().name());
+    for limit in &limits {
+        let _ = writeln!(out, "  {:<40} {:.6e} s", limit.describe(world.system()), limit.dt);
+    }
+    match stability::binding(&limits) {
+        Some(binding) if adaptive => {
+            let verdict = if world.step_size() <= binding.dt { "does not hold it back" } else { "holds its steps near this" };
+            let _ = writeln!(out, "  binding: {} at {:.6e} s; with the integrator step {:.6e} s it {verdict}", binding.describe(world.system()), binding.dt, world.step_size());
+        }
+        Some(binding) => {
+            let verdict = if world.step_size() <= binding.dt { "stable" } else { "UNSTABLE: lower dt or add substeps" };
+            let _ = writeln!(out, "  binding: {} at {:.6e} s; the integrator step {:.6e} s is {verdict}", binding.describe(world.system()), binding.dt, world.step_size());
+        }
+        None => {
+            let _ = writeln!(out, "  nothing limits the time step");
+        }
+    }
+    for impact in world.impact_limits() {
+        let verdict = if world.step_size() <= impact.dt { "resolved" } else { "UNDER-RESOLVED: the rebound will be wrong; lower dt or add substeps" };
+        let _ = writeln!(out, "  {:<40} {:.6e} s; the integrator step is {verdict}", impact.describe(world.system()), impact.dt);
+    }
+    let e = world.energy();
+    let _ = writeln!(
+        out,
+        "\ninitial energy: kinetic {:.6} J, gravity {:.6} J, elastic {:.6} J, total {:.6} J",
+        e.kinetic + 0.0, e.gravity + 0.0, e.elastic + 0.0, e.total() + 0.0
+    );
+    out
+}
+
+/// ` (rtol …, atol …, max step …)` for the adaptive scheme, nothing for the others.
+fn adaptive(world: &World) -> String {
+    if !world.integrator().is_adaptive() {
+        return String::new();
+    }
+    let t = world.tolerances();
+    let max_step = t.max_step.map_or_else(|| "the integrator step".to_string(), |m| format!("{m} s"));
+    format!(" (rtol {:e}, atol {:e}, max step {max_step})", t.rtol, t.atol)
+}
+
+fn contact_report(out: &mut String, world: &World, contact: &Contact) {
+    let body = &world.bodies()[contact.body];
+    let against = match &contact.against {
+        Opposing::Planes(planes) if planes.len() == 1 => format!("the plane through {} m with normal {}", v(&planes[0].point), v(&planes[0].normal)),
+        Opposing::Planes(planes) => format!("{} walls of the domain box", planes.len()),
+        Opposing::Body { body, .. } => format!("body \"{}\"", world.bodies()[*body].name),
+    };
+    let boundary = &contact.boundary;
+    let _ = writeln!(out, "  faces of body \"{}\" ({} faces, {:.6} m²) against {against}", body.name, boundary.faces().len(), boundary.area());
+    let law = &contact.law;
+    let _ = writeln!(
+        out,
+        "  k1 = {} N/m³, k2 = {} N·s/m³, d0 = {} m, μ = {}, k_t = {} s/m, expected area {:.6e} m²",
+        law.stiffness, law.damping, law.range, law.friction, law.friction_sharpness, contact.expected_area
+    );
+    let mass = |i: usize| if world.bodies()[i].is_kinematic() { 0.0 } else { world.bodies()[i].inverse_mass };
+    let inverse_mass = mass(contact.body) + contact.other_body().map_or(0.0, mass);
+    let totals = contact.totals(world.frames());
+    let _ = writeln!(
+        out,
+        "  stopping time τ = {:.6e} s; now {} faces in contact over {:.6e} m², normal force {:.6} N, friction {:.6} N",
+        contact.stopping_time(contact.limit_area(world.frames()), inverse_mass),
+        totals.faces,
+        totals.area,
+        totals.normal,
+        totals.friction
+    );
+}
+
+/// `(x, y, z)` with 6 decimals; `+ 0.0` prints −0 as 0.
+fn v(x: &Vec3) -> String {
+    format!("({:.6}, {:.6}, {:.6})", x.x + 0.0, x.y + 0.0, x.z + 0.0)
+}
+
+fn m(x: &Mat3) -> String {
+    let rows: Vec<String> = (0..3).map(|r| v(&x.row(r).transpose())).collect();
+    format!("[{}]", rows.join(", "))
+}
+
+fn support(s: &Support) -> String {
+    match s {
+        Support::Free => "free".into(),
+        Support::Fixed { translation, rotation } => {
+            let axes: String = ["x", "y", "z"].iter().zip(translation).filter(|(_, f)| **f).map(|(a, _)| *a).collect();
+            format!("fixed translation [{axes}]{}", if *rotation { ", fixed rotation" } else { "" })
+        }
+        Support::Kinematic(_) => "kinematic".into(),
+    }
+}
+
+fn end(world: &World, e: &Endpoint) -> String {
+    match e.body() {
+        None => format!("world {} m", v(&e.point())),
+        Some(body) => {
+            let b = &world.bodies()[body];
+            let reference = b.reference_in_principal.inverse_transform_point(&e.point().into()).coords;
+            format!("body \"{}\" at {} m", b.name, v(&reference))
+        }
+    }
+}
+
+fn law(l: &ElasticLaw) -> String {
+    match l {
+        ElasticLaw::Linear { stiffness, rest_length } => format!("linear k = {stiffness} N/m, x0 = {rest_length} m"),
+        ElasticLaw::Polynomial { a, b, c, rest_length } => format!("polynomial k_eff = {a} + {b} s + {c} s² N/m, x0 = {rest_length} m"),
+        ElasticLaw::ForceCurve { curve } => format!("force curve ({} points), x0 = {:.6} m", curve.points().len(), l.rest_length()),
+        ElasticLaw::StiffnessCurve { stiffness, rest_length } => format!("stiffness curve ({} points), x0 = {rest_length} m", stiffness.points().len()),
+        ElasticLaw::ReferenceForce { stiffness, reference_length, reference_force, .. } => {
+            format!("reference force f_r = {reference_force} N at x_r = {reference_length} m, stiffness curve ({} points)", stiffness.points().len())
+        }
+    }
+}

@@ -1,0 +1,112 @@
+//! Subcommands of `tether`, one module each.
+
+mod check;
+mod estimate_contact;
+mod forces;
+mod gui;
+mod record;
+mod study;
+
+use anyhow::Context as _;
+use clap::{Parser, Subcommand};
+use std::path::{Path, PathBuf};
+use tether_scene::{self as scene, Scene};
+
+/// Coupled rigid bodies — springs, catenaries, contact — simulated, tuned live and recorded for
+/// Rerun. With no command: the window, with the default scene.
+#[derive(Debug, Parser)]
+#[command(name = "tether", version, about)]
+pub struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Validate a scene; print each body's mass properties, the couplings and the initial energy.
+    Check {
+        /// Scene file (.ron).
+        scene: PathBuf,
+    },
+    /// Run a scene headless and write a Rerun recording (.rrd).
+    Record(record::RecordArgs),
+    /// Open the window: control panel and Rerun viewer, a scene running live (the default).
+    Gui(gui::GuiArgs),
+    /// Play a recording (.rrd) back in the window's viewer.
+    View {
+        /// Recording file (.rrd).
+        recording: PathBuf,
+    },
+    /// Run the scene with each integrator at a ladder of time steps against a reference run;
+    /// print the accuracy-versus-cost table and write it as CSV, Markdown and a PNG chart.
+    Study(study::StudyArgs),
+    /// Print the forces of the initial state.
+    Forces {
+        /// Scene file (.ron).
+        scene: PathBuf,
+        /// Print JSON (world frame, N and N·m; f1/f2 are exerted by the coupling on end 1 / end 2).
+        #[arg(long)]
+        json: bool,
+    },
+    /// Contact parameters k1, k2, the stopping time τ and a time step from an expected impact.
+    EstimateContact(estimate_contact::EstimateArgs),
+}
+
+/// Exit code of a run stopped by Ctrl-C or SIGTERM (128 + SIGINT, the shell's convention).
+pub const INTERRUPTED: u8 = 130;
+
+/// Runs one subcommand; returns the process exit code.
+pub fn run(cli: Cli) -> anyhow::Result<u8> {
+    let command = cli.command.unwrap_or(Command::Gui(gui::GuiArgs::default()));
+    match command {
+        Command::Gui(args) => gui::run(args).map(|()| 0),
+        Command::View { recording } => gui::view(recording).map(|()| 0),
+        Command::Check { scene } => check::run(&load(&scene)?).map(|()| 0),
+        Command::Record(args) => record::run(&args).map(|outcome| match outcome {
+            record::Outcome::Finished => 0,
+            record::Outcome::Interrupted => INTERRUPTED,
+        }),
+        Command::Forces { scene, json } => forces::run(&load(&scene)?, json).map(|()| 0),
+        Command::EstimateContact(args) => estimate_contact::run(&args).map(|()| 0),
+        Command::Study(args) => study::run(&args).map(|()| 0),
+    }
+}
+
+/// Loads a scene and prints its warnings to stderr.
+fn load(path: &Path) -> anyhow::Result<Scene> {
+    let scene = scene::load(path)?;
+    for warning in &scene.warnings {
+        eprintln!("warning: {}: {warning}", path.display());
+    }
+    Ok(scene)
+}
+
+/// Warns once when the integrator step exceeds the binding stable time step of the world's
+/// integrator; for the adaptive one, notes that a stiff coupling will hold its steps.
+fn warn_if_unstable(world: &tether_physics::world::World) {
+    let limits = world.limits();
+    let Some(binding) = tether_physics::stability::binding(&limits).filter(|b| world.step_size() > b.dt) else { return };
+    let name = world.integrator().name();
+    if world.integrator().is_adaptive() {
+        eprintln!(
+            "note: {} holds {name}'s steps near {:.3e} s (stiff for an explicit scheme): expect about {:.0} steps per integrator step of {:.3e} s",
+            binding.describe(world.system()),
+            binding.dt,
+            (world.step_size() / binding.dt).ceil(),
+            world.step_size()
+        );
+    } else {
+        eprintln!(
+            "warning: the integrator step {:.3e} s exceeds the stable time step {:.3e} s of {name}, set by {}: the run will likely diverge (lower dt or set substeps: Auto)",
+            world.step_size(),
+            binding.dt,
+            binding.describe(world.system())
+        );
+    }
+}
+
+/// Writes `text` to stdout; a closed pipe is not an error worth a panic.
+fn print(text: &str) -> anyhow::Result<()> {
+    use std::io::Write as _;
+    std::io::stdout().lock().write_all(text.as_bytes()).context("writing to stdout")
+}

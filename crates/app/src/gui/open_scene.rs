@@ -1,0 +1,143 @@
+//! The scene being run and tuned, with no egui in it: what its file says, what is tuned, what
+//! the knobs show and why a value was refused; loading it, checking a tuned value with the scene
+//! builder, reverting to the file and saving as RON. The panel draws it and sends the
+//! simulation what it accepts.
+
+use super::simulation::Run;
+use super::watch::FileWatch;
+use super::simulation::Wake;
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+use tether_physics::coupling::Coupling;
+use tether_physics::integrator::Timing;
+use tether_scene::build::{self, Bodies};
+use tether_scene::file::CouplingDef;
+use tether_scene::{self as scene, SceneError, SceneFile};
+
+/// The scene being run: what its file says, and what is tuned.
+pub struct OpenScene {
+    pub path: PathBuf,
+    /// The file's text when it was loaded (a change on disk to the same text is no change).
+    text: String,
+    /// What the file says.
+    pub file: SceneFile,
+    /// What runs: the file with the accepted tuned values.
+    pub tuned: SceneFile,
+    /// What the knobs show, accepted or not.
+    pub drafts: Vec<CouplingDef>,
+    /// Why a draft was refused, per coupling.
+    pub refusals: Vec<Option<String>>,
+    /// The scene's bodies as built: a tuned coupling is built against them.
+    bodies: Bodies,
+    watch: Option<FileWatch>,
+}
+
+/// A scene loaded from its file: the model, the run to send the simulation, and what to tell
+/// the user.
+pub struct Loaded {
+    pub scene: OpenScene,
+    pub run: Run,
+    /// The loader's warnings, and a note when the file will not be watched.
+    pub notes: Vec<String>,
+}
+
+/// What the file on disk is doing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OnDisk {
+    /// Nothing happened since it was loaded.
+    Quiet,
+    /// It changed and is still being written.
+    Settling,
+    /// It changed, settled, and says something else than what was loaded.
+    Changed,
+    /// It changed and settled back to the text that was loaded.
+    Restored,
+}
+
+impl OpenScene {
+    /// Loads the scene at `path`, watched on disk (`wake` repaints when it changes).
+    ///
+    /// # Errors
+    /// The file cannot be read or built: `path:line:col: message`.
+    pub fn load(path: &Path, wake: Wake) -> Result<Loaded, SceneError> {
+        let loaded = scene::load(path)?;
+        let mut notes: Vec<String> = loaded.warnings.iter().map(|w| format!("warning: {w}")).collect();
+        let label = path.file_stem().map_or_else(|| path.display().to_string(), |s| s.to_string_lossy().into_owned());
+        let watch = match FileWatch::new(path, wake) {
+            Ok(watch) => Some(watch),
+            Err(error) => {
+                notes.push(format!("{} will not reload on change: {error}", path.display()));
+                None
+            }
+        };
+        let scene = Self {
+            path: path.to_path_buf(),
+            text: loaded.text,
+            drafts: loaded.file.couplings.clone(),
+            refusals: vec![None; loaded.file.couplings.len()],
+            tuned: loaded.file.clone(),
+            file: loaded.file,
+            bodies: loaded.bodies,
+            watch,
+        };
+        Ok(Loaded { scene, run: Run { label, world: loaded.world }, notes })
+    }
+
+    /// What the file on disk is doing, once it has been quiet for `settle`.
+    pub fn on_disk(&self, settle: Duration) -> OnDisk {
+        let Some(watch) = &self.watch else { return OnDisk::Quiet };
+        match watch.settled(settle) {
+            None => OnDisk::Quiet,
+            Some(false) => OnDisk::Settling,
+            Some(true) => {
+                let same = std::fs::read_to_string(&self.path).is_ok_and(|text| text == self.text);
+                if same { OnDisk::Restored } else { OnDisk::Changed }
+            }
+        }
+    }
+
+    /// Checks draft `index` with the scene builder (same checks and messages as loading): an
+    /// accepted value goes into the tuned scene and comes back as the coupling to run; a
+    /// refused one stays in its knob with the reason.
+    pub fn tune(&mut self, index: usize) -> Option<Coupling> {
+        let (Some(draft), Some(_)) = (self.drafts.get(index), self.refusals.get(index)) else { return None };
+        let mut candidate = self.tuned.clone();
+        candidate.couplings[index] = draft.clone();
+        match build::coupling(&candidate, index, &mut self.bodies) {
+            Ok(coupling) => {
+                self.refusals[index] = None;
+                self.tuned = candidate;
+                Some(coupling)
+            }
+            Err(problem) => {
+                self.refusals[index] = Some(problem.message);
+                None
+            }
+        }
+    }
+
+    /// The time step settings of `candidate` (the tuned scene with the timing knobs written in),
+    /// checked by the scene builder; accepted into the tuned scene.
+    pub fn retime(&mut self, candidate: SceneFile) -> Result<Timing, String> {
+        let timing = build::timing(&candidate).map_err(|p| p.message)?;
+        self.tuned = candidate;
+        Ok(timing)
+    }
+
+    /// Every knob back to what the file says; returns the couplings to apply again (those
+    /// tuned, or refused).
+    pub fn revert_to_file(&mut self) -> Vec<usize> {
+        self.drafts.clone_from(&self.file.couplings);
+        (0..self.drafts.len()).filter(|&i| self.tuned.couplings[i] != self.file.couplings[i] || self.refusals[i].is_some()).collect()
+    }
+
+    /// Writes the tuned scene to `path` as RON that loads back to the same scene (mesh files
+    /// found from the new folder too).
+    pub fn save_as(&self, path: &Path) -> Result<(), String> {
+        let mut tuned = self.tuned.clone();
+        let folder = |p: &Path| std::path::absolute(p.parent().unwrap_or(Path::new("."))).unwrap_or_default();
+        scene::relocate_meshes(&mut tuned, &folder(&self.path), &folder(path));
+        let text = scene::to_ron(&tuned).map_err(|e| e.to_string())?;
+        std::fs::write(path, text).map_err(|e| e.to_string())
+    }
+}

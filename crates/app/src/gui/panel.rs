@@ -1,0 +1,391 @@
+//! The control panel: the layout of the sub-panels, the simulation handle and the open scene
+//! ([`OpenScene`]). The sub-panels draw and return what they want done; this module does it
+//! (loads a scene, has a tuned value checked, sends the simulation a command).
+//!
+//! State is split the egui-demo way: [`Settings`] is plain data worth keeping between sessions;
+//! the runtime handles (thread, watcher, dialogs) live beside it.
+
+use super::contact_estimator::{self, ImpactDraft, UseEstimate};
+use super::dialogs::{Dialogs, Purpose};
+use super::indicators::{self, EnergyHistory};
+use super::open_scene::{OnDisk, OpenScene};
+use super::run_controls::{self, RunAction, TimingDraft};
+use super::scenes::{self, SceneAction};
+use super::simulation::{Command, Report, Simulation, Speed, Status, Wake};
+use super::stream::Sinks;
+use super::tuning::{self, TuningAction};
+use rerun::external::egui;
+use tether_scene::file::CouplingDef;
+use std::collections::VecDeque;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+/// Keys of the run shortcuts: play/pause, one step, reset.
+const SHORTCUTS: [egui::Key; 3] = [egui::Key::Space, egui::Key::ArrowRight, egui::Key::Backspace];
+
+/// Messages kept in the panel's log.
+const LOG_LINES: usize = 6;
+
+/// How long the open file must stay quiet after a change before it is reloaded (editors write
+/// in several steps).
+const SETTLE: Duration = Duration::from_millis(150);
+
+/// What is worth keeping between sessions.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Settings {
+    pub speed: Speed,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Self { speed: Speed::Factor(1.0) }
+    }
+}
+
+/// A line of the panel's log.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LogLine {
+    pub text: String,
+    pub error: bool,
+}
+
+/// The control panel.
+pub struct ControlPanel {
+    pub settings: Settings,
+    simulation: Simulation,
+    wake: Wake,
+    scene: Option<OpenScene>,
+    /// The file the last scene came from that could not be opened, and why (the previous scene
+    /// keeps running).
+    load_error: Option<(PathBuf, String)>,
+    status: Option<Status>,
+    history: EnergyHistory,
+    timing: TimingDraft,
+    log: VecDeque<LogLine>,
+    dialogs: Dialogs,
+    scenes_dir: PathBuf,
+    scene_list: Vec<PathBuf>,
+    recordings_to_open: Vec<PathBuf>,
+    impact: ImpactDraft,
+}
+
+impl ControlPanel {
+    /// A panel with its simulation thread (no scene yet) writing to `sinks`; `wake` repaints.
+    pub fn new(sinks: Sinks, wake: Wake, scenes_dir: PathBuf) -> std::io::Result<Self> {
+        let simulation = Simulation::spawn(sinks, wake.clone())?;
+        let scene_list = tether_scene::list(&scenes_dir);
+        Ok(Self {
+            settings: Settings::default(),
+            simulation,
+            wake,
+            scene: None,
+            load_error: None,
+            status: None,
+            history: EnergyHistory::default(),
+            timing: TimingDraft::default(),
+            log: VecDeque::new(),
+            dialogs: Dialogs::default(),
+            scenes_dir,
+            scene_list,
+            recordings_to_open: Vec::new(),
+            impact: ImpactDraft::default(),
+        })
+    }
+
+    /// The simulation thread's handle (tests query it).
+    pub fn simulation(&self) -> &Simulation {
+        &self.simulation
+    }
+
+    /// The latest status of the simulation.
+    pub fn status(&self) -> Option<&Status> {
+        self.status.as_ref()
+    }
+
+    /// The scene being run.
+    pub fn scene(&self) -> Option<&OpenScene> {
+        self.scene.as_ref()
+    }
+
+    /// Why the last scene could not be opened.
+    pub fn load_error(&self) -> Option<&str> {
+        self.load_error.as_ref().map(|(_, message)| message.as_str())
+    }
+
+    /// The panel's log, oldest first.
+    pub fn log(&self) -> impl Iterator<Item = &LogLine> {
+        self.log.iter()
+    }
+
+    /// Recordings the user asked to play back (the app gives them to the viewer).
+    pub fn take_recordings_to_open(&mut self) -> Vec<PathBuf> {
+        std::mem::take(&mut self.recordings_to_open)
+    }
+
+    /// Adds a line to the log.
+    pub fn note(&mut self, text: String) {
+        self.push_log(LogLine { text, error: false });
+    }
+
+    /// Adds an error line to the log.
+    pub fn note_error(&mut self, text: String) {
+        self.push_log(LogLine { text, error: true });
+    }
+
+    fn push_log(&mut self, line: LogLine) {
+        if self.log.len() == LOG_LINES {
+            self.log.pop_front();
+        }
+        self.log.push_back(line);
+    }
+
+    /// Loads the scene at `path` and runs it paused at t = 0. A bad file keeps the previous
+    /// scene running and shows its `path:line:col: message`.
+    pub fn open_scene(&mut self, path: &Path) {
+        let loaded = match OpenScene::load(path, self.wake.clone()) {
+            Ok(loaded) => loaded,
+            Err(error) => {
+                self.load_error = Some((path.to_path_buf(), error.to_string()));
+                return;
+            }
+        };
+        for note in loaded.notes {
+            self.note(note);
+        }
+        self.load_error = None;
+        self.timing = TimingDraft::from_file(&loaded.scene.file);
+        self.history = EnergyHistory::default();
+        self.scene = Some(loaded.scene);
+        self.simulation.send(Command::Load(Box::new(loaded.run)));
+        self.simulation.send(Command::SetSpeed(self.settings.speed));
+    }
+
+    /// Stops the simulation thread and flushes its recording.
+    pub fn shutdown(&mut self) {
+        self.simulation.stop();
+    }
+
+    /// Draws the panel and does what it asks; `selected` is the entity selected in the viewer.
+    pub fn ui(&mut self, ui: &mut egui::Ui, selected: Option<&str>) {
+        self.receive();
+        self.reload_if_changed(ui.ctx());
+        self.poll_dialogs();
+        self.shortcuts(ui.ctx());
+        egui::ScrollArea::vertical().auto_shrink([false, false]).show(ui, |ui| {
+            ui.heading("Tether");
+            let scene_path = self.scene.as_ref().map(|s| s.path.as_path());
+            if let Some(action) = scenes::ui(ui, scene_path, &self.scene_list, self.load_error()) {
+                self.scene_action(action);
+            }
+            ui.separator();
+            let actions = run_controls::ui(ui, self.status.as_ref(), &mut self.timing, &mut self.settings.speed);
+            for action in actions {
+                self.run_action(action);
+            }
+            ui.separator();
+            indicators::ui(ui, self.status.as_ref(), &self.history, selected);
+            ui.separator();
+            let contacts = self.status.as_ref().map_or(&[][..], |s| s.contacts.as_slice());
+            if let Some(estimate) = contact_estimator::ui(ui, contacts, &mut self.impact) {
+                self.use_estimate(estimate);
+            }
+            self.tuning_ui(ui);
+            ui.separator();
+            self.log_ui(ui);
+        });
+        if self.status.as_ref().is_some_and(|s| s.running) {
+            ui.ctx().request_repaint_after(super::simulation::TICK);
+        }
+    }
+
+    /// Takes the simulation's reports.
+    fn receive(&mut self) {
+        for report in self.simulation.drain() {
+            match report {
+                Report::Status(status) => {
+                    self.history.push(&status);
+                    self.status = Some(*status);
+                }
+                Report::Message(text) => self.note(text),
+                Report::Error(text) => self.note_error(text),
+            }
+        }
+    }
+
+    /// Reloads the open scene when its file changed on disk and has settled.
+    fn reload_if_changed(&mut self, ctx: &egui::Context) {
+        let Some(open) = &self.scene else { return };
+        let path = open.path.clone();
+        match open.on_disk(SETTLE) {
+            OnDisk::Changed => {
+                self.note(format!("{} changed on disk: reloading", path.display()));
+                self.open_scene(&path);
+            }
+            OnDisk::Restored if self.load_error.as_ref().is_some_and(|(failed, _)| *failed == path) => {
+                // A broken save undone: the file says again what runs, so its error goes.
+                self.load_error = None;
+                self.note(format!("{} is back to the running scene", path.display()));
+            }
+            OnDisk::Settling => ctx.request_repaint_after(SETTLE),
+            OnDisk::Restored | OnDisk::Quiet => {}
+        }
+    }
+
+    fn poll_dialogs(&mut self) {
+        let Some((purpose, path)) = self.dialogs.poll() else { return };
+        match purpose {
+            Purpose::OpenScene => self.open_scene(&path),
+            Purpose::OpenRecording => self.recordings_to_open.push(path),
+            Purpose::SaveScene => self.save_as(&path),
+        }
+    }
+
+    /// Takes the run shortcuts (Space: play/pause; →: one step, repeating while held;
+    /// Backspace: reset) out of the window's raw input before anything else sees them — the
+    /// embedded viewer takes the same keys for its timeline at the start of each frame — and
+    /// acts on them. Nothing is taken while a text field (a knob being typed into) has the
+    /// keyboard.
+    pub fn take_shortcuts(&mut self, ctx: &egui::Context, events: &mut Vec<egui::Event>) {
+        if ctx.text_edit_focused() {
+            return;
+        }
+        let mut pressed = Vec::new();
+        events.retain(|event| match event {
+            egui::Event::Key { key, pressed: down, repeat, modifiers, .. } if modifiers.is_none() && SHORTCUTS.contains(key) => {
+                if *down && (!*repeat || *key == egui::Key::ArrowRight) {
+                    pressed.push(*key);
+                }
+                false
+            }
+            _ => true,
+        });
+        for key in pressed {
+            self.shortcut(key);
+        }
+    }
+
+    /// The run shortcuts, when the panel runs on its own (no window to hook into).
+    fn shortcuts(&mut self, ctx: &egui::Context) {
+        if ctx.text_edit_focused() {
+            return;
+        }
+        for key in SHORTCUTS {
+            if ctx.input_mut(|i| i.consume_key(egui::Modifiers::NONE, key)) {
+                self.shortcut(key);
+            }
+        }
+    }
+
+    fn shortcut(&mut self, key: egui::Key) {
+        let running = self.status.as_ref().is_some_and(|s| s.running);
+        let action = match key {
+            egui::Key::Space if running => RunAction::Pause,
+            egui::Key::Space => RunAction::Play,
+            egui::Key::ArrowRight => RunAction::Step,
+            _ => RunAction::Reset,
+        };
+        self.run_action(action);
+    }
+
+    fn scene_action(&mut self, action: SceneAction) {
+        match action {
+            SceneAction::Open(path) => self.open_scene(&path),
+            SceneAction::Browse => self.dialogs.open(Purpose::OpenScene, &self.scenes_dir, self.wake.clone()),
+            SceneAction::BrowseRecording => self.dialogs.open(Purpose::OpenRecording, Path::new("."), self.wake.clone()),
+            SceneAction::Refresh => self.scene_list = tether_scene::list(&self.scenes_dir),
+        }
+    }
+
+    fn run_action(&mut self, action: RunAction) {
+        let command = match action {
+            RunAction::Play => Command::Play,
+            RunAction::Pause => Command::Pause,
+            RunAction::Step => Command::Step,
+            RunAction::Reset => {
+                self.history = EnergyHistory::default();
+                Command::Reset
+            }
+            RunAction::Speed(speed) => Command::SetSpeed(speed),
+            RunAction::ApplyTiming => match self.checked_timing() {
+                Ok(timing) => Command::SetTiming(timing),
+                Err(message) => return self.timing.refusal = Some(message),
+            },
+        };
+        self.simulation.send(command);
+    }
+
+    /// The timing draft, checked by the scene builder; accepted into the tuned scene.
+    fn checked_timing(&mut self) -> Result<tether_physics::integrator::Timing, String> {
+        let Some(open) = &mut self.scene else { return Err("no scene loaded".into()) };
+        let mut candidate = open.tuned.clone();
+        self.timing.write_to(&mut candidate);
+        let timing = open.retime(candidate)?;
+        self.timing.refusal = None;
+        Ok(timing)
+    }
+
+    fn tuning_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(open) = &mut self.scene else {
+            ui.label("Open a scene to tune its couplings.");
+            return;
+        };
+        let actions = tuning::ui(ui, &mut open.drafts, &open.refusals, &open.file);
+        for action in actions {
+            match action {
+                TuningAction::Edited(index) => self.tune(index),
+                TuningAction::Revert => self.revert_to_file(),
+                TuningAction::SaveAs => {
+                    let folder = self.scene.as_ref().and_then(|s| s.path.parent().map(Path::to_path_buf)).unwrap_or_default();
+                    self.dialogs.open(Purpose::SaveScene, &folder, self.wake.clone());
+                }
+            }
+        }
+    }
+
+    /// Has draft `index` checked by the scene builder (same checks and messages as loading);
+    /// an accepted value goes to the simulation, a refused one stays in its knob with the
+    /// reason and the simulation is untouched.
+    pub fn tune(&mut self, index: usize) {
+        let Some(open) = &mut self.scene else { return };
+        if let Some(coupling) = open.tune(index) {
+            self.simulation.send(Command::SetCoupling { index, coupling, sent: Instant::now() });
+        }
+    }
+
+    /// The estimator's k1 and k2 into a contact's knobs, applied as an edit.
+    fn use_estimate(&mut self, estimate: UseEstimate) {
+        let Some(open) = &mut self.scene else { return };
+        if let Some(CouplingDef::Contact { stiffness, damping, .. }) = open.drafts.get_mut(estimate.index) {
+            (*stiffness, *damping) = (estimate.stiffness, estimate.damping);
+            self.tune(estimate.index);
+        }
+    }
+
+    /// Every coupling back to what the file says, in the running simulation too.
+    pub fn revert_to_file(&mut self) {
+        let Some(open) = &mut self.scene else { return };
+        for index in open.revert_to_file() {
+            self.tune(index);
+        }
+    }
+
+    /// Writes the tuned scene to `path` as RON that loads back to the same scene (mesh files
+    /// found from the new folder too).
+    pub fn save_as(&mut self, path: &Path) {
+        let Some(open) = &self.scene else { return };
+        match open.save_as(path) {
+            Ok(()) => self.note(format!("saved the tuned scene to {}", path.display())),
+            Err(error) => self.note_error(format!("cannot save {}: {error}", path.display())),
+        }
+    }
+
+    fn log_ui(&self, ui: &mut egui::Ui) {
+        for line in &self.log {
+            if line.error {
+                ui.colored_label(ui.visuals().error_fg_color, &line.text);
+            } else {
+                ui.label(&line.text);
+            }
+        }
+    }
+}

@@ -1,0 +1,55 @@
+//! What the GUI and the simulation thread say to each other: commands one way, reports the
+//! other.
+
+use super::status::Status;
+use std::sync::mpsc::Sender;
+use std::time::Instant;
+use tether_physics::coupling::Coupling;
+use tether_physics::integrator::Timing;
+use tether_physics::world::World;
+
+/// How fast simulated time runs.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub enum Speed {
+    /// Simulated seconds per wall-clock second (1 = real time).
+    Factor(f64),
+    /// As fast as the machine steps.
+    Max,
+}
+
+/// A scene ready to run: its world and a label for recordings and messages.
+pub struct Run {
+    pub label: String,
+    pub world: World,
+}
+
+/// What the GUI asks of the simulation thread.
+pub enum Command {
+    Play,
+    Pause,
+    /// One world step (paused).
+    Step,
+    /// Back to t = 0 with the current parameters, as a new recording.
+    Reset,
+    SetSpeed(Speed),
+    /// Time step, integrator and substeps, applied at the current time.
+    SetTiming(Timing),
+    /// Coupling `index` replaced by `coupling` (already checked by the scene builder) without a
+    /// restart; `sent` dates the request, to measure how long it took to apply.
+    SetCoupling { index: usize, coupling: Coupling, sent: Instant },
+    /// A new scene, paused at t = 0.
+    Load(Box<Run>),
+    /// A copy of the running world, for inspection (tests, tools).
+    Snapshot(Sender<Option<World>>),
+}
+
+/// What the simulation thread tells the GUI.
+#[derive(Debug, Clone)]
+pub enum Report {
+    Status(Box<Status>),
+    /// Something happened (a scene loaded, a value applied).
+    Message(String),
+    /// A command was refused, or a step failed (the run is paused).
+    Error(String),
+}
+

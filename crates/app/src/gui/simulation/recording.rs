@@ -1,0 +1,66 @@
+//! The recording of each run: opened when a run starts (a scene loaded, a reset) with the
+//! viewer's layout, fed a frame every so often of simulated time, finished when the run ends.
+//! The sinks outlive the runs ([`Sinks`]).
+
+use crate::gui::stream::Sinks;
+use tether_physics::world::World;
+use tether_record::Recorder;
+
+/// Frames logged per second of simulated time, as `tether record`'s default.
+const LOG_HZ: f64 = 60.0;
+
+/// At most this many frames per tick reach the viewer (faster runs log more sparsely).
+const FRAMES_PER_TICK: f64 = 8.0;
+
+/// The current run's recording.
+pub(super) struct Recording {
+    sinks: Sinks,
+    /// `None` when no run is recorded (none yet, or it could not be opened).
+    recorder: Option<Recorder>,
+    /// Simulated time of the last frame [s].
+    last_logged: f64,
+    /// Simulated time between frames [s].
+    period: f64,
+}
+
+impl Recording {
+    pub(super) fn new(sinks: Sinks) -> Self {
+        Self { sinks, recorder: None, last_logged: f64::NEG_INFINITY, period: 1.0 / LOG_HZ }
+    }
+
+    /// Ends the current recording and starts one for the run `label` of `world`, with the
+    /// viewer's layout and the first frame.
+    pub(super) fn start(&mut self, label: &str, world: &World) -> Result<(), String> {
+        self.finish()?;
+        let stream = self.sinks.stream(label).map_err(|e| format!("recording: {e}"))?;
+        tether_record::layout::send_layout(&stream, world).map_err(|e| format!("recording: {e}"))?;
+        self.recorder = Some(Recorder::new(stream, world).map_err(|e| format!("recording: {e}"))?);
+        self.log(world)
+    }
+
+    /// Logs a frame of `world` now.
+    pub(super) fn log(&mut self, world: &World) -> Result<(), String> {
+        let Some(recorder) = &self.recorder else { return Ok(()) };
+        self.last_logged = world.time();
+        recorder.log_frame(world).map_err(|e| format!("recording: {e}"))
+    }
+
+    /// Logs a frame of `world` if a frame period has passed since the last.
+    pub(super) fn log_if_due(&mut self, world: &World) -> Result<(), String> {
+        if world.time() - self.last_logged >= self.period { self.log(world) } else { Ok(()) }
+    }
+
+    /// Spreads the frames of a tick that advanced `advanced` [s] of simulated time: at most
+    /// [`FRAMES_PER_TICK`], at most [`LOG_HZ`] per simulated second.
+    pub(super) fn pace(&mut self, advanced: f64) {
+        self.period = (advanced / FRAMES_PER_TICK).max(1.0 / LOG_HZ);
+    }
+
+    /// Flushes the current recording (the sinks stay open for the next run).
+    pub(super) fn finish(&mut self) -> Result<(), String> {
+        match self.recorder.take() {
+            Some(recorder) => recorder.finish().map_err(|e| format!("recording: {e}")),
+            None => Ok(()),
+        }
+    }
+}

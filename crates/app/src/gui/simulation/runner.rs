@@ -1,0 +1,274 @@
+//! The simulation thread's loop. It works in ticks of [`TICK`] of wall time. Running, a tick
+//! steps until simulated time reaches `t_anchor + speed × (wall − wall_anchor)` or the tick's
+//! compute budget is spent (then the anchor moves: the simulation runs slower than asked, and
+//! the status says how fast it really goes), and waits for commands for the rest of the tick.
+//! Paused, it blocks on the channel: no core is spent. A command is taken at the latest one tick
+//! after it was sent, before the next step.
+//!
+//! A step that fails (divergence, a coupling without forces) pauses the run with the error's
+//! message, as `tether record` stops with it; the world must then be reset.
+
+use super::Wake;
+use super::protocol::{Command, Report, Run, Speed};
+use super::recording::Recording;
+use super::status::{self, RunState};
+use crate::gui::stream::Sinks;
+use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender, TryRecvError};
+use std::time::{Duration, Instant};
+use tether_physics::coupling::Coupling;
+use tether_physics::integrator::Timing;
+
+/// Wall time of one tick of the thread, about one display frame [s].
+pub const TICK: Duration = Duration::from_millis(16);
+
+/// Share of a tick the thread may spend stepping.
+const BUDGET: Duration = Duration::from_millis(12);
+
+/// Runs the thread until the GUI's handle drops: commands, steps, status.
+pub(super) fn run(sinks: Sinks, reports: Sender<Report>, wake: Wake, inbox: &Receiver<Command>) {
+    Runner::new(sinks, reports, wake).run(inbox);
+}
+
+/// Where simulated time should be: `sim + speed × (now − wall)`.
+#[derive(Debug, Clone, Copy)]
+struct Anchor {
+    wall: Instant,
+    sim: f64,
+}
+
+/// The thread's state.
+struct Runner {
+    reports: Sender<Report>,
+    wake: Wake,
+    run: Option<Run>,
+    recording: Recording,
+    running: bool,
+    failure: Option<String>,
+    speed: Speed,
+    anchor: Anchor,
+    initial_balance: f64,
+    /// Simulated seconds and steps of the last tick, and the wall time since the tick before.
+    last_tick: (f64, u64, Duration),
+    last_advance: Instant,
+}
+
+impl Runner {
+    fn new(sinks: Sinks, reports: Sender<Report>, wake: Wake) -> Self {
+        Self {
+            reports,
+            wake,
+            run: None,
+            recording: Recording::new(sinks),
+            running: false,
+            failure: None,
+            speed: Speed::Factor(1.0),
+            anchor: Anchor { wall: Instant::now(), sim: 0.0 },
+            initial_balance: 0.0,
+            last_tick: (0.0, 0, TICK),
+            last_advance: Instant::now(),
+        }
+    }
+
+    /// The loop: commands, steps, status, until the GUI's handle drops.
+    fn run(mut self, inbox: &Receiver<Command>) {
+        loop {
+            // Running: wait out the tick (not at all as fast as possible); paused: sleep until told.
+            let first = match (self.running, self.speed) {
+                (true, Speed::Max) => inbox.try_recv().map_err(|e| e == TryRecvError::Disconnected),
+                (true, Speed::Factor(_)) => inbox.recv_timeout(TICK.saturating_sub(self.last_advance.elapsed())).map_err(|e| e == RecvTimeoutError::Disconnected),
+                (false, _) => inbox.recv().map_err(|_| true),
+            };
+            match first {
+                Ok(command) => self.handle(command),
+                Err(true) => break,
+                Err(false) => {}
+            }
+            while let Ok(command) = inbox.try_recv() {
+                self.handle(command);
+            }
+            if self.running {
+                self.advance();
+            }
+            self.send_status();
+        }
+        self.finish_recording();
+    }
+
+    fn handle(&mut self, command: Command) {
+        match command {
+            Command::Play => self.play(),
+            Command::Pause => self.running = false,
+            Command::Step => {
+                self.running = false;
+                self.step_once();
+            }
+            Command::Reset => self.reset(),
+            Command::SetSpeed(speed) => {
+                self.speed = speed;
+                self.restart_clock();
+            }
+            Command::SetTiming(timing) => self.set_timing(timing),
+            Command::SetCoupling { index, coupling, sent } => self.set_coupling(index, coupling, sent),
+            Command::Load(run) => self.load(*run),
+            Command::Snapshot(reply) => {
+                reply.send(self.run.as_ref().map(|run| run.world.clone())).ok();
+            }
+        }
+    }
+
+    fn report(&self, report: Report) {
+        // The GUI dropped its receiver only when it is closing: nothing to tell then.
+        self.reports.send(report).ok();
+        (self.wake)();
+    }
+
+    fn play(&mut self) {
+        if self.run.is_none() {
+            return self.report(Report::Error("no scene loaded".into()));
+        }
+        if let Some(failure) = &self.failure {
+            return self.report(Report::Error(format!("the run stopped ({failure}): reset it first")));
+        }
+        self.running = true;
+        self.restart_clock();
+    }
+
+    fn restart_clock(&mut self) {
+        self.anchor = Anchor { wall: Instant::now(), sim: self.world_time() };
+        self.last_advance = Instant::now();
+    }
+
+    fn world_time(&self) -> f64 {
+        self.run.as_ref().map_or(0.0, |run| run.world.time())
+    }
+
+    fn world_steps(&self) -> u64 {
+        self.run.as_ref().map_or(0, |run| run.world.steps())
+    }
+
+    /// Steps until simulated time catches up with the wall clock, or the budget is spent.
+    fn advance(&mut self) {
+        let start = Instant::now();
+        let since_last = start.duration_since(self.last_advance);
+        self.last_advance = start;
+        let (t0, steps0) = (self.world_time(), self.world_steps());
+        let target = match self.speed {
+            Speed::Factor(factor) => self.anchor.sim + factor * start.duration_since(self.anchor.wall).as_secs_f64(),
+            Speed::Max => f64::INFINITY,
+        };
+        while self.running && self.world_time() < target && start.elapsed() < BUDGET {
+            self.step_once();
+        }
+        if self.running && self.world_time() < target && matches!(self.speed, Speed::Factor(_)) {
+            // Behind the wall clock: go on from here rather than run to catch up.
+            self.anchor = Anchor { wall: Instant::now(), sim: self.world_time() };
+        }
+        let advanced = self.world_time() - t0;
+        self.last_tick = (advanced, self.world_steps() - steps0, since_last);
+        self.recording.pace(advanced);
+    }
+
+    /// One world step; a failure pauses the run with its message. Frames are logged every
+    /// frame period of simulated time, and after every single step.
+    fn step_once(&mut self) {
+        let Some(run) = &mut self.run else { return };
+        if self.failure.is_some() {
+            return;
+        }
+        if let Err(error) = run.world.step() {
+            self.running = false;
+            let message = error.to_string();
+            self.failure = Some(message.clone());
+            return self.report(Report::Error(message));
+        }
+        let logged = if self.running { self.recording.log_if_due(&run.world) } else { self.recording.log(&run.world) };
+        self.report_failure(logged);
+    }
+
+    /// Logs a frame of the current world now.
+    fn log_frame(&mut self) {
+        let Some(run) = &self.run else { return };
+        let logged = self.recording.log(&run.world);
+        self.report_failure(logged);
+    }
+
+    /// Reports what went wrong, if anything did.
+    fn report_failure(&self, result: Result<(), String>) {
+        if let Err(message) = result {
+            self.report(Report::Error(message));
+        }
+    }
+
+    fn reset(&mut self) {
+        let Some(run) = &mut self.run else { return };
+        match run.world.reset() {
+            Ok(()) => {
+                let label = run.label.clone();
+                self.failure = None;
+                self.start_recording();
+                self.report(Report::Message(format!("{label}: reset to t = 0")));
+            }
+            Err(error) => self.report(Report::Error(format!("reset: {error}"))),
+        }
+    }
+
+    fn load(&mut self, run: Run) {
+        let label = run.label.clone();
+        self.run = Some(run);
+        self.running = false;
+        self.failure = None;
+        self.start_recording();
+        self.report(Report::Message(format!("loaded {label}")));
+    }
+
+    /// Ends the current recording and starts a new one for the current world, its first frame
+    /// logged.
+    fn start_recording(&mut self) {
+        let Some(run) = &self.run else { return };
+        self.initial_balance = run.world.energy().balance();
+        let started = self.recording.start(&run.label, &run.world);
+        self.report_failure(started);
+        self.restart_clock();
+    }
+
+    /// Flushes the current recording (the sinks stay open for the next run).
+    fn finish_recording(&mut self) {
+        let finished = self.recording.finish();
+        self.report_failure(finished);
+    }
+
+    fn set_timing(&mut self, timing: Timing) {
+        let Some(run) = &mut self.run else { return };
+        let report = match run.world.set_timing(timing) {
+            Ok(()) => Report::Message(format!(
+                "dt = {:e} s, {} substep(s), {:?} from t = {:.4} s",
+                timing.dt,
+                run.world.substeps(),
+                timing.integrator.name(),
+                run.world.time()
+            )),
+            Err(error) => Report::Error(error.to_string()),
+        };
+        self.report(report);
+    }
+
+    fn set_coupling(&mut self, index: usize, coupling: Coupling, sent: Instant) {
+        let Some(run) = &mut self.run else { return };
+        let name = coupling.name.clone();
+        match run.world.replace_coupling(index, coupling) {
+            Ok(()) => {
+                let (time, latency) = (run.world.time(), sent.elapsed().as_secs_f64() * 1e3);
+                self.log_frame();
+                self.report(Report::Message(format!("coupling \"{name}\" applied at t = {time:.4} s, {latency:.2} ms after the edit")));
+            }
+            Err(error) => self.report(Report::Error(error.to_string())),
+        }
+    }
+
+    fn send_status(&self) {
+        let Some(run) = &self.run else { return };
+        let (advanced, steps, wall) = self.last_tick;
+        let state = RunState { label: run.label.clone(), running: self.running, failure: self.failure.clone(), initial_balance: self.initial_balance, advanced, steps, wall: wall.as_secs_f64() };
+        self.report(Report::Status(Box::new(status::status(&run.world, &state))));
+    }
+}

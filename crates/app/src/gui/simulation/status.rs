@@ -1,0 +1,137 @@
+//! The running simulation at one instant, as the panel shows it: time, energies, the stable time
+//! steps, the contacts the estimator needs, the bodies' states. Built from the world by the
+//! simulation thread once per tick.
+
+use tether_physics::body::BodyState;
+use tether_physics::coupling::contact::Opposing;
+use tether_physics::coupling::{Coupling, CouplingKind};
+use tether_physics::energy::EnergyReport;
+use tether_physics::integrator::Timing;
+use tether_physics::math::Vec3;
+use tether_physics::stability::Limiter;
+use tether_physics::world::World;
+
+/// The running simulation at one instant.
+#[derive(Debug, Clone, Default)]
+pub struct Status {
+    pub label: String,
+    /// Simulated time [s] and world steps since t = 0.
+    pub time: f64,
+    pub steps: u64,
+    pub running: bool,
+    /// Why the run stopped, if a step failed.
+    pub failure: Option<String>,
+    pub energy: EnergyReport,
+    /// `balance()` at t = 0 [J]: the drift is measured from it.
+    pub initial_balance: f64,
+    pub timing: Option<Timing>,
+    /// Integrator step `dt / substeps` [s] and substeps per world step.
+    pub step_size: f64,
+    pub substeps: u32,
+    /// Stable time step of every coupling [s] (`None`: nothing limits it), in scene order.
+    pub coupling_limits: Vec<(String, Option<f64>)>,
+    /// Stable time step set by the fastest spinning body, if any spins [s].
+    pub rotation_limit: Option<(String, f64)>,
+    /// Time step that resolves each contact's impact, `τ/10` [s] (not a stability limit).
+    pub impact_limits: Vec<(String, f64)>,
+    /// What the contact estimator needs of each contact.
+    pub contacts: Vec<ContactStatus>,
+    pub bodies: Vec<BodyStatus>,
+    /// Simulated seconds per wall second, and world steps per wall second, over the last tick.
+    pub rate: f64,
+    pub steps_per_second: f64,
+}
+
+/// A contact coupling as the estimator sees it (PHYSICS.md §4).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactStatus {
+    /// Coupling index in the scene, and name.
+    pub index: usize,
+    pub name: String,
+    /// Mass of the body [kg], and of the opposing body (`None` against the environment).
+    pub mass: f64,
+    pub other_mass: Option<f64>,
+    /// Expected contact area `A` [m²] and range `d0` [m].
+    pub area: f64,
+    pub range: f64,
+}
+
+/// A body's state, synchronised at the current time.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyStatus {
+    pub name: String,
+    /// Position of G [m], velocity of G [m/s], angular velocity [rad/s], world axes.
+    pub position: Vec3,
+    pub velocity: Vec3,
+    pub angular_velocity: Vec3,
+}
+
+/// What the thread knows of the run beside its world.
+#[derive(Debug, Clone)]
+pub struct RunState {
+    pub label: String,
+    pub running: bool,
+    pub failure: Option<String>,
+    /// `balance()` at the start of the recording [J].
+    pub initial_balance: f64,
+    /// Simulated seconds and world steps over the last tick, and the tick's wall time [s].
+    pub advanced: f64,
+    pub steps: u64,
+    pub wall: f64,
+}
+
+/// The status of `world` in the run `run`.
+pub fn status(world: &World, run: &RunState) -> Status {
+    let limits = world.limits();
+    let coupling_limit = |i: usize| limits.iter().find(|l| l.limiter == Limiter::Coupling(i)).map(|l| l.dt);
+    let rotation_limit = limits
+        .iter()
+        .filter_map(|l| match l.limiter {
+            Limiter::Rotation(body) => Some((world.bodies()[body].name.clone(), l.dt)),
+            Limiter::Coupling(_) | Limiter::Impact(_) => None,
+        })
+        .min_by(|a, b| a.1.total_cmp(&b.1));
+    let wall = run.wall.max(1e-6);
+    Status {
+        label: run.label.clone(),
+        time: world.time(),
+        steps: world.steps(),
+        running: run.running,
+        failure: run.failure.clone(),
+        energy: world.energy(),
+        initial_balance: run.initial_balance,
+        timing: Some(world.timing()),
+        step_size: world.step_size(),
+        substeps: world.substeps(),
+        coupling_limits: world.couplings().iter().enumerate().map(|(i, c)| (c.name.clone(), coupling_limit(i))).collect(),
+        rotation_limit,
+        impact_limits: world.impact_limits().iter().map(|l| (l.describe(world.system()), l.dt)).collect(),
+        contacts: contacts(world),
+        bodies: (0..world.bodies().len()).map(|i| body_status(world, i)).collect(),
+        rate: if run.running { run.advanced / wall } else { 0.0 },
+        steps_per_second: if run.running { run.steps as f64 / wall } else { 0.0 },
+    }
+}
+
+fn contacts(world: &World) -> Vec<ContactStatus> {
+    let contact = |(index, coupling): (usize, &Coupling)| match &coupling.kind {
+        CouplingKind::Contact(contact) => Some(ContactStatus {
+            index,
+            name: coupling.name.clone(),
+            mass: world.bodies()[contact.body].mass(),
+            other_mass: match &contact.against {
+                Opposing::Body { body, .. } => Some(world.bodies()[*body].mass()),
+                Opposing::Planes(_) => None,
+            },
+            area: contact.expected_area,
+            range: contact.law.range,
+        }),
+        CouplingKind::SpringDamper(_) | CouplingKind::Catenary(_) => None,
+    };
+    world.couplings().iter().enumerate().filter_map(contact).collect()
+}
+
+fn body_status(world: &World, index: usize) -> BodyStatus {
+    let BodyState { position, orientation, velocity, angular_velocity } = world.state(index);
+    BodyStatus { name: world.bodies()[index].name.clone(), position, velocity, angular_velocity: orientation * angular_velocity }
+}

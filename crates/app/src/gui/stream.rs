@@ -1,0 +1,84 @@
+//! Where the live simulation's recordings go: the embedded viewer, an external viewer
+//! (`--connect`) and an `.rrd` file (`--save`), all at once.
+//!
+//! Every run (a scene loaded, a reset) is a new Rerun recording, so the viewer shows it from its
+//! start and keeps the earlier runs beside it. The sinks outlive the runs: each recording stream
+//! gets a [`Forward`] sink onto the same shared ones, so one `.rrd` file holds every run of the
+//! session and one connection serves them all. The file's footer is written when the last
+//! [`Sinks`] handle is dropped, after the simulation thread has flushed and stopped.
+
+use rerun::RecordingStream;
+use rerun::log::LogMsg;
+use rerun::sink::{LogSink, MultiSink, SinkFlushError};
+use std::sync::Arc;
+use std::time::Duration;
+use tether_record::APPLICATION_ID;
+
+/// The shared sinks of a session (none: recordings are not kept, as in tests).
+#[derive(Clone)]
+pub struct Sinks {
+    shared: Option<Arc<MultiSink>>,
+}
+
+/// A sink that could not be opened.
+#[derive(Debug, thiserror::Error)]
+pub enum SinkError {
+    #[error("cannot write the recording {path}: {source}")]
+    File { path: String, source: rerun::sink::FileSinkError },
+    #[error("not a Rerun viewer address {url:?} (e.g. rerun+http://127.0.0.1:9876/proxy): {source}")]
+    Url { url: String, source: rerun::external::re_uri::Error },
+}
+
+impl Sinks {
+    /// No sinks: recordings go nowhere.
+    pub fn none() -> Self {
+        Self { shared: None }
+    }
+
+    /// These sinks, shared by every run.
+    pub fn new(sinks: Vec<Box<dyn LogSink>>) -> Self {
+        Self { shared: (!sinks.is_empty()).then(|| Arc::new(MultiSink::new(sinks))) }
+    }
+
+    /// An `.rrd` file sink at `path` (created now, so a bad path fails before any run).
+    pub fn file(path: &std::path::Path) -> Result<Box<dyn LogSink>, SinkError> {
+        let sink = rerun::sink::FileSink::new(path).map_err(|source| SinkError::File { path: path.display().to_string(), source })?;
+        Ok(Box::new(sink))
+    }
+
+    /// A sink streaming to the external viewer at `url` (`rerun+http://host:port/proxy`).
+    pub fn connect(url: &str) -> Result<Box<dyn LogSink>, SinkError> {
+        let uri = url.parse().map_err(|source| SinkError::Url { url: url.to_string(), source })?;
+        Ok(Box::new(rerun::sink::GrpcSink::new(uri)))
+    }
+
+    /// A new recording stream for one run, writing to the shared sinks (a disabled stream,
+    /// which costs nothing, when there are none).
+    pub fn stream(&self, run_name: &str) -> rerun::RecordingStreamResult<RecordingStream> {
+        match &self.shared {
+            None => Ok(RecordingStream::disabled()),
+            Some(shared) => {
+                let forward: Box<dyn LogSink> = Box::new(Forward(Arc::clone(shared)));
+                rerun::RecordingStreamBuilder::new(APPLICATION_ID).recording_name(run_name).set_sinks(vec![forward])
+            }
+        }
+    }
+}
+
+/// Forwards one recording stream's messages to the shared sinks; dropping it (the stream ended)
+/// leaves them open for the next run.
+struct Forward(Arc<MultiSink>);
+
+impl LogSink for Forward {
+    fn send(&self, msg: LogMsg) {
+        self.0.send(msg);
+    }
+
+    fn send_all(&self, messages: Vec<LogMsg>) {
+        self.0.send_all(messages);
+    }
+
+    fn flush_blocking(&self, timeout: Duration) -> Result<(), SinkFlushError> {
+        self.0.flush_blocking(timeout)
+    }
+}

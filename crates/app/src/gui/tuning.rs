@@ -1,0 +1,134 @@
+//! Live tuning: every parameter of every coupling, with its unit, edited in place (spring law
+//! coefficients and tables, rest length, damping; catenary λ0, L_eq, D; contact k1, k2, d0, μ,
+//! k_t and the expected area when the scene sets it). The knobs
+//! edit the panel's drafts (scene-file data, [`CouplingDef`]); the panel checks an edited draft
+//! with the scene builder and sends the simulation the coupling it builds. "Revert to file"
+//! and "save as" act on the whole scene.
+//!
+//! The matches on [`CouplingDef`] and [`LawDef`] are exhaustive: a new coupling kind or elastic
+//! law does not compile until it has its knobs here.
+
+use tether_scene::SceneFile;
+use tether_scene::file::{CouplingDef, LawDef};
+use rerun::external::egui;
+
+/// What the tuning panel asks for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TuningAction {
+    /// Draft `index` was edited: check it and apply it.
+    Edited(usize),
+    Revert,
+    SaveAs,
+}
+
+/// Draws a section per coupling with its knobs; `refusals` are the reasons drafts were refused,
+/// `file` what the scene file says (edited couplings are marked).
+pub fn ui(ui: &mut egui::Ui, drafts: &mut [CouplingDef], refusals: &[Option<String>], file: &SceneFile) -> Vec<TuningAction> {
+    let mut actions = Vec::new();
+    ui.horizontal(|ui| {
+        ui.strong("Couplings");
+        if ui.button("Revert to file").on_hover_text("Every coupling back to what the scene file says").clicked() {
+            actions.push(TuningAction::Revert);
+        }
+        if ui.button("Save as…").on_hover_text("Write the scene with the tuned values (RON)").clicked() {
+            actions.push(TuningAction::SaveAs);
+        }
+    });
+    if drafts.is_empty() {
+        ui.label("This scene has no couplings.");
+    }
+    for (index, draft) in drafts.iter_mut().enumerate() {
+        let edited = file.couplings.get(index) != Some(&*draft);
+        let title = format!("{}{} ({})", draft.name(), if edited { " •" } else { "" }, kind_name(draft));
+        egui::CollapsingHeader::new(title).id_salt(("coupling", index)).default_open(index < 4).show(ui, |ui| {
+            if coupling_knobs(ui, index, draft) {
+                actions.push(TuningAction::Edited(index));
+            }
+            if let Some(Some(refusal)) = refusals.get(index) {
+                ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refusal}"));
+            }
+        });
+    }
+    actions
+}
+
+fn kind_name(def: &CouplingDef) -> &'static str {
+    match def {
+        CouplingDef::SpringDamper { .. } => "spring-damper",
+        CouplingDef::Catenary { .. } => "catenary",
+        CouplingDef::Contact { .. } => "contact",
+    }
+}
+
+/// The knobs of one coupling; true when one was edited.
+fn coupling_knobs(ui: &mut egui::Ui, index: usize, def: &mut CouplingDef) -> bool {
+    egui::Grid::new(("knobs", index))
+        .num_columns(3)
+        .show(ui, |ui| match def {
+            CouplingDef::SpringDamper { law, damping, .. } => law_knobs(ui, law) | knob(ui, "damping k_d", damping, "N·s/m"),
+            CouplingDef::Catenary { mass_per_length, length, stiffness, .. } => {
+                knob(ui, "mass per length λ0", mass_per_length, "kg/m") | knob(ui, "length L_eq", length, "m") | knob(ui, "stiffness D", stiffness, "N/m")
+            }
+            CouplingDef::Contact { stiffness, damping, range, friction, friction_sharpness, expected_area, .. } => {
+                let law = knob(ui, "stiffness k1", stiffness, "N/m³")
+                    | knob(ui, "damping k2", damping, "N·s/m³")
+                    | knob(ui, "range d0", range, "m")
+                    | knob(ui, "friction μ", friction, "–")
+                    | knob(ui, "friction sharpness k_t", friction_sharpness, "s/m");
+                law | expected_area.as_mut().is_some_and(|area| knob(ui, "expected area A", area, "m²"))
+            }
+        })
+        .inner
+}
+
+/// The knobs of an elastic law (PHYSICS.md §2).
+fn law_knobs(ui: &mut egui::Ui, law: &mut LawDef) -> bool {
+    match law {
+        LawDef::Linear { stiffness, rest_length } => knob(ui, "stiffness k", stiffness, "N/m") | knob(ui, "rest length x0", rest_length, "m"),
+        LawDef::Polynomial { a, b, c, rest_length } => {
+            knob(ui, "a", a, "N/m") | knob(ui, "b", b, "N/m²") | knob(ui, "c", c, "N/m³") | knob(ui, "rest length x0", rest_length, "m")
+        }
+        LawDef::ForceCurve { points } => table_knobs(ui, points, ("x", "m"), ("f", "N")),
+        LawDef::StiffnessCurve { points, rest_length } => {
+            table_knobs(ui, points, ("ξ", "m"), ("k", "N/m")) | knob(ui, "rest length x0", rest_length, "m")
+        }
+        LawDef::ReferenceForce { points, reference_length, reference_force, rest_length } => {
+            table_knobs(ui, points, ("ξ", "m"), ("k", "N/m"))
+                | knob(ui, "reference length x_r", reference_length, "m")
+                | knob(ui, "reference force f_r", reference_force, "N")
+                | knob(ui, "rest length x0", rest_length, "m")
+        }
+    }
+}
+
+/// One number with its label and unit, in a grid row; true when it was edited. The drag speed
+/// is 1 % of the value, so a knob tunes coarse and fine values alike; typing any number works,
+/// and the scene builder refuses the bad ones.
+fn knob(ui: &mut egui::Ui, label: &str, value: &mut f64, unit: &str) -> bool {
+    let name = ui.label(label);
+    let speed = value.abs().max(1e-3) * 0.01;
+    let response = ui.add(egui::DragValue::new(value).speed(speed).max_decimals(6)).labelled_by(name.id);
+    ui.label(unit);
+    ui.end_row();
+    response.changed()
+}
+
+/// The points of a table, one grid row each.
+fn table_knobs(ui: &mut egui::Ui, points: &mut [(f64, f64)], x: (&str, &str), y: (&str, &str)) -> bool {
+    let mut edited = false;
+    for (row, (px, py)) in points.iter_mut().enumerate() {
+        let name = ui.label(format!("point {}", row + 1));
+        ui.horizontal(|ui| {
+            edited |= ui.add(point_knob(px, x)).labelled_by(name.id).changed();
+            edited |= ui.add(point_knob(py, y)).labelled_by(name.id).changed();
+        });
+        ui.end_row();
+    }
+    edited
+}
+
+/// A table coordinate: its symbol before the number, its unit after.
+fn point_knob<'a>(value: &'a mut f64, (symbol, unit): (&str, &str)) -> egui::DragValue<'a> {
+    let speed = value.abs().max(1e-3) * 0.01;
+    egui::DragValue::new(value).speed(speed).max_decimals(6).prefix(format!("{symbol} ")).suffix(format!(" {unit}"))
+}

@@ -1,0 +1,154 @@
+//! The `tether` command line, run as a user runs it.
+
+mod common;
+
+use approx::assert_relative_eq;
+use std::process::{Command, Output};
+use tether_physics::coupling::{Catenary, Endpoint};
+use tether_physics::math::Vec3;
+
+const G: f64 = 9.80665;
+
+fn tether(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_tether")).args(args).output().unwrap()
+}
+
+#[test]
+fn check_passes_on_every_shipped_scene() {
+    for file in common::scene_files() {
+        let out = tether(&["check", file.to_str().unwrap()]);
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert!(out.status.success(), "{}: {}", file.display(), String::from_utf8_lossy(&out.stderr));
+        assert!(stdout.contains(": ok — ") && stdout.contains("initial energy"), "{stdout}");
+    }
+}
+
+#[test]
+fn check_prints_mass_properties_of_the_t_handle() {
+    let out = tether(&["check", common::repo("scenes/t_handle.ron").to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("mass               4.000000 kg"), "{stdout}");
+    assert!(stdout.contains("principal moments  (1.000000, 2.000000, 3.000000) kg·m²"), "{stdout}");
+    // E = ½ (1·0.05² + 2·1²) = 1.00125 J.
+    assert!(stdout.contains("kinetic 1.001250 J"), "{stdout}");
+}
+
+#[test]
+fn a_bad_scene_exits_1_with_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("bad.ron");
+    std::fs::write(&path, "Scene(dt: -1.0, bodies: [])").unwrap();
+    let out = tether(&["check", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.trim(), format!("error: {}:1:7: time step dt must be > 0 s, got -1", path.display()));
+}
+
+#[test]
+fn record_refuses_bad_flags_and_unwritable_paths_before_running() {
+    let scene = common::repo("scenes/spring_mass.ron");
+    let scene = scene.to_str().unwrap();
+    let out = tether(&["record", scene, "-o", "/tmp/x.rrd", "--duration=-1"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--duration must be a positive number of seconds, got -1"));
+    let out = tether(&["record", scene, "-o", "/tmp/x.rrd", "--log-hz", "0"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--log-hz must be a positive"));
+    let out = tether(&["record", scene, "-o", "/no/such/dir/x.rrd"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot write /no/such/dir/x.rrd"), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
+/// One spring per elastic law, each from the world origin to a fixed body 1.2 m away on x:
+/// the JSON forces are the closed forms.
+#[test]
+fn forces_json_gives_every_law_its_closed_form() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("laws.ron");
+    let laws = [
+        ("linear", "Linear(stiffness: 250.0, rest_length: 1.0)", 250.0 * 0.2),
+        ("polynomial", "Polynomial(a: 100.0, b: 20.0, c: 4000.0, rest_length: 1.0)", 100.0 * 0.2 + 20.0 * 0.04 + 4000.0 * 0.008),
+        ("force_curve", "ForceCurve(points: [(0.5, -80.0), (1.0, 0.0), (1.4, 100.0)])", 50.0),
+        // k = 100 + 400(ξ − 1) on [1, 1.5]: ∫_1^1.2 = 0.2·(100 + 180)/2 = 28.
+        ("stiffness_curve", "StiffnessCurve(points: [(1.0, 100.0), (1.5, 300.0)], rest_length: 1.0)", 28.0),
+        // f_r = 10 N at x_r = 1.1, plus ∫_1.1^1.2 = 0.1·(140 + 180)/2 = 16.
+        ("reference_force", "ReferenceForce(points: [(1.0, 100.0), (1.5, 300.0)], reference_length: 1.1, reference_force: 10.0, rest_length: 3.0)", 26.0),
+    ];
+    let couplings: Vec<String> = laws
+        .iter()
+        .map(|(name, law, _)| format!("SpringDamper(name: \"{name}\", end1: World((0.0, 0.0, 0.0)), end2: Body(body: \"b\"), law: {law}, damping: 7.0)"))
+        .collect();
+    std::fs::write(
+        &path,
+        format!(
+            "Scene(dt: 0.001, bodies: [Body(name: \"b\", master: Node(position: (1.2, 0.0, 0.0), mass: 2.0, inertia: Inertia(xx: 1, yy: 1, zz: 1)),
+              velocity: (0.5, 0.0, 0.0), support: Fixed(translation: (true, true, true), rotation: true), shape: Sphere(radius: 0.1))],
+              couplings: [{}])",
+            couplings.join(",\n")
+        ),
+    )
+    .unwrap();
+    let out = tether(&["forces", path.to_str().unwrap(), "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let mut total = 0.0;
+    for (coupling, (name, _, elastic)) in json["couplings"].as_array().unwrap().iter().zip(&laws) {
+        assert_eq!(coupling["name"], *name);
+        assert_eq!(coupling["kind"], "spring_damper");
+        // Fixed bodies do not move: the damper sees ẋ = 0 even with an initial velocity set.
+        let tension = elastic;
+        assert_relative_eq!(coupling["f1"][0].as_f64().unwrap(), *tension, max_relative = 1e-12);
+        assert_relative_eq!(coupling["f2"][0].as_f64().unwrap(), -tension, max_relative = 1e-12);
+        assert_eq!(coupling["f1"][1].as_f64().unwrap(), 0.0);
+        total -= tension;
+    }
+    let body = &json["bodies"][0];
+    assert_eq!(body["name"], "b");
+    assert_relative_eq!(body["force"][0].as_f64().unwrap(), total, max_relative = 1e-12);
+    assert_relative_eq!(body["force"][2].as_f64().unwrap(), -2.0 * 9.80665, max_relative = 1e-12);
+    assert_eq!(body["moment"], serde_json::json!([0.0, 0.0, 0.0]));
+}
+
+#[test]
+fn estimate_contact_prints_the_formulas_values() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_tether"))
+        .args(["estimate-contact", "--mass", "1", "--area", "0.01", "--speed", "1", "--d0", "0.001", "--dmin", "-0.002", "--zeta", "0.1", "--dt", "0.002"])
+        .output()
+        .expect("tether runs");
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{text}");
+    // k1 = 1·1²/(0.01·0.003²) = 1.111111e7, k2 = 0.2·√(1·k1/0.01) = 6.666667e3, τ = (π/2)(0.003/1).
+    for expected in ["k1  = 1.111111e7", "k2  = 6.666667e3", "τ   = 4.712389e-3", "τ/10 = 4.712389e-4", "substeps: Fixed(5)"] {
+        assert!(text.contains(expected), "missing {expected:?} in\n{text}");
+    }
+    let refused = std::process::Command::new(env!("CARGO_BIN_EXE_tether"))
+        .args(["estimate-contact", "--mass", "1", "--area", "0.01", "--speed", "1", "--d0", "0.001", "--dmin", "0.002"])
+        .output()
+        .expect("tether runs");
+    assert_eq!(refused.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("must be below d0"));
+}
+
+/// `tether forces --json` reports a catenary's horizontal tension and parameters u1, u2.
+#[test]
+fn forces_json_reports_the_catenary_solution() {
+    let scene = common::repo("scenes/sagging_chain.ron");
+    let out = tether(&["forces", scene.to_str().unwrap(), "--json"]);
+    assert!(out.status.success());
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let chain = &json["couplings"][0];
+    assert_eq!(chain["name"], "chain");
+    assert_eq!(chain["kind"], "catenary");
+    // Ends (2, 0, 0) and (18, 0, 0): level, span 16 m, L = 30 m, λ0 = 20 kg/m, D = 1e6 N/m.
+    let line = Catenary::new(Endpoint::World(Vec3::zeros()), Endpoint::World(Vec3::zeros()), 20.0, 30.0, 1e6);
+    let s = line.solve(&Vec3::new(2.0, 0.0, 0.0), &Vec3::new(18.0, 0.0, 0.0), &Vec3::new(0.0, 0.0, -G), None).unwrap();
+    let h = chain["horizontal_tension"].as_f64().unwrap();
+    assert_relative_eq!(h, s.horizontal_tension, max_relative = 1e-12);
+    let (u1, u2) = (chain["u1"].as_f64().unwrap(), chain["u2"].as_f64().unwrap());
+    // Level ends: symmetric, u1 = −u2, and c (sinh u2 − sinh u1) = W.
+    assert_relative_eq!(u1, -u2, max_relative = 1e-9);
+    assert_relative_eq!(h * (u2.sinh() - u1.sinh()), 20.0 * G * 30.0, max_relative = 1e-9);
+    let f1: Vec<f64> = chain["f1"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+    assert_relative_eq!(f1[0], h, max_relative = 1e-12);
+    assert_relative_eq!(f1[2], h * u1.sinh(), max_relative = 1e-9);
+}

@@ -1,0 +1,280 @@
+//! The control panel driven headlessly with egui_kittest, on the real simulation thread: load a
+//! scene from the list, tune a stiffness and find it in the running world, refuse a bad value,
+//! pause/step/reset by keyboard, keep running through a bad scene, pause on divergence, save the
+//! tuned scene; and a render of the panel on the CPU (wgpu on lavapipe) checked against its
+//! snapshot.
+
+mod common;
+
+use common::{here, repo};
+use egui_kittest::kittest::{NodeT as _, Queryable as _};
+use egui_kittest::{Harness, SnapshotOptions};
+use rerun::external::egui::{self, accesskit};
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, LazyLock};
+use std::time::{Duration, Instant};
+use tether::gui::panel::ControlPanel;
+use tether::gui::stream::Sinks;
+use tether_physics::coupling::{CouplingKind, ElasticLaw};
+use tether_physics::world::World;
+
+/// Longest wait for the simulation thread.
+const PATIENCE: Duration = Duration::from_secs(20);
+
+/// The GUI tests' oscillator, body "m".
+static SPRING: LazyLock<String> = LazyLock::new(|| common::spring_scene_text("m"));
+
+/// A folder of scenes for the panel's list.
+fn scenes_folder(files: &[(&str, &str)]) -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    for (name, text) in files {
+        std::fs::write(dir.path().join(name), text).unwrap();
+    }
+    dir
+}
+
+fn panel(scenes: &Path) -> ControlPanel {
+    ControlPanel::new(Sinks::none(), Arc::new(|| {}), scenes.to_path_buf()).unwrap()
+}
+
+fn harness(panel: ControlPanel) -> Harness<'static, ControlPanel> {
+    Harness::builder().with_size([440.0, 1100.0]).build_ui_state(|ui, panel: &mut ControlPanel| panel.ui(ui, None), panel)
+}
+
+/// Runs frames until `done` holds for the panel, or fails after [`PATIENCE`].
+fn until(harness: &mut Harness<'_, ControlPanel>, what: &str, done: impl Fn(&ControlPanel) -> bool) {
+    let start = Instant::now();
+    loop {
+        harness.step();
+        if done(harness.state()) {
+            return;
+        }
+        assert!(start.elapsed() < PATIENCE, "timed out waiting for {what}; log: {:?}", harness.state().log().collect::<Vec<_>>());
+        std::thread::yield_now();
+    }
+}
+
+/// The running world, from the simulation thread.
+fn world(harness: &Harness<'_, ControlPanel>) -> World {
+    harness.state().simulation().snapshot(PATIENCE).expect("a scene is running")
+}
+
+fn spring_stiffness(world: &World) -> f64 {
+    match &world.couplings()[0].kind {
+        CouplingKind::SpringDamper(spring) => match spring.law {
+            ElasticLaw::Linear { stiffness, .. } => stiffness,
+            ref law => panic!("not linear: {law:?}"),
+        },
+        kind => panic!("not a spring: {kind:?}"),
+    }
+}
+
+/// Types `value` into the knob labelled `label`, as a screen reader (AccessKit `SetValue`) would.
+fn set_knob(harness: &mut Harness<'_, ControlPanel>, label: &str, value: f64) {
+    let (target_node, target_tree) = harness.get_by_label(label).accesskit_node().locate();
+    let request = accesskit::ActionRequest { action: accesskit::Action::SetValue, target_tree, target_node, data: Some(accesskit::ActionData::NumericValue(value)) };
+    harness.event(egui::Event::AccessKitActionRequest(request));
+    // One frame takes the edit, the next shows what became of it.
+    harness.run_steps(2);
+}
+
+/// Clicks the scene `name` in the list and waits for it to run.
+fn open_from_list(harness: &mut Harness<'_, ControlPanel>, name: &str) {
+    harness.get_by_label(name).click();
+    until(harness, "the scene to load", |p| p.status().is_some_and(|s| s.label == name.trim_end_matches(".ron")));
+}
+
+#[test]
+fn a_tuned_stiffness_reaches_the_running_simulation_and_a_bad_one_is_refused() {
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
+    let mut harness = harness(panel(dir.path()));
+    open_from_list(&mut harness, "spring.ron");
+    assert_eq!(spring_stiffness(&world(&harness)), 100.0);
+
+    set_knob(&mut harness, "stiffness k", 2500.0);
+    until(&mut harness, "the applied message", |p| p.log().any(|l| l.text.starts_with("coupling \"spring\" applied")));
+    assert_eq!(spring_stiffness(&world(&harness)), 2500.0, "the thread runs the tuned stiffness");
+    for line in harness.state().log().filter(|l| l.text.contains("applied")) {
+        println!("{}", line.text);
+    }
+    assert!(harness.query_by_label_contains("spring •").is_some(), "the coupling is marked as tuned");
+
+    set_knob(&mut harness, "stiffness k", -5.0);
+    harness.get_by_label_contains("Refused: coupling \"spring\": stiffness must be ≥ 0 N/m, got -5");
+    assert_eq!(spring_stiffness(&world(&harness)), 2500.0, "a refused value leaves the simulation alone");
+
+    harness.get_by_label("Revert to file").click();
+    until(&mut harness, "the revert", |p| p.scene().is_some_and(|s| s.tuned == s.file));
+    harness.step();
+    assert_eq!(spring_stiffness(&world(&harness)), 100.0);
+    assert!(harness.query_by_label_contains("Refused").is_none());
+}
+
+#[test]
+fn space_arrow_and_backspace_play_step_and_reset() {
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
+    let mut harness = harness(panel(dir.path()));
+    open_from_list(&mut harness, "spring.ron");
+
+    harness.key_press(egui::Key::ArrowRight);
+    until(&mut harness, "one step", |p| p.status().is_some_and(|s| s.steps == 1));
+    assert!((world(&harness).time() - 0.001).abs() < 1e-15);
+
+    harness.key_press(egui::Key::Space);
+    until(&mut harness, "0.05 s of simulated time", |p| p.status().is_some_and(|s| s.running && s.time > 0.05));
+    harness.key_press(egui::Key::Space);
+    until(&mut harness, "the pause", |p| p.status().is_some_and(|s| !s.running));
+    let paused = world(&harness).time();
+    assert_eq!(world(&harness).time(), paused, "paused time must not advance");
+    assert!(paused > 0.05);
+
+    harness.key_press(egui::Key::Backspace);
+    until(&mut harness, "the reset", |p| p.status().is_some_and(|s| s.steps == 0));
+    let reset = world(&harness);
+    assert_eq!((reset.time(), reset.state(0).position.x), (0.0, 1.1));
+}
+
+#[test]
+fn a_bad_scene_shows_its_place_and_the_previous_one_keeps_running() {
+    let bad = SPRING.replace("mass: 1.0,", "mass: -1.0,");
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str()), ("bad.ron", &bad)]);
+    let mut harness = harness(panel(dir.path()));
+    open_from_list(&mut harness, "spring.ron");
+    harness.key_press(egui::Key::Space);
+
+    harness.get_by_label("bad.ron").click();
+    harness.run_steps(2);
+    let error = harness.state().load_error().expect("the bad scene is refused").to_string();
+    assert!(error.contains("bad.ron:4:"), "{error}");
+    assert!(error.contains("body \"m\""), "{error}");
+    harness.get_by_label(&error);
+
+    let before = world(&harness).time();
+    until(&mut harness, "the previous scene to go on", |p| p.status().is_some_and(|s| s.label == "spring" && s.running && s.time > before + 0.02));
+}
+
+#[test]
+fn a_diverging_run_pauses_and_says_why() {
+    let stiff = SPRING.replace("stiffness: 100.0", "stiffness: 1e7");
+    let dir = scenes_folder(&[("stiff.ron", &stiff)]);
+    let mut harness = harness(panel(dir.path()));
+    open_from_list(&mut harness, "stiff.ron");
+    harness.key_press(egui::Key::Space);
+    until(&mut harness, "the divergence", |p| p.status().is_some_and(|s| !s.running && s.failure.is_some()));
+    let failure = harness.state().status().and_then(|s| s.failure.clone()).unwrap();
+    assert!(failure.contains("the simulation diverged") && failure.contains("stable time step"), "{failure}");
+    harness.get_by_label(&format!("Paused: {failure}"));
+    // Play is refused until a reset.
+    harness.key_press(egui::Key::Space);
+    until(&mut harness, "the refusal", |p| p.log().any(|l| l.error && l.text.contains("reset it first")));
+}
+
+#[test]
+fn the_tuned_scene_is_saved_as_ron_that_loads_back() {
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
+    let mut harness = harness(panel(dir.path()));
+    open_from_list(&mut harness, "spring.ron");
+    set_knob(&mut harness, "damping k_d", 0.75);
+    let saved: PathBuf = dir.path().join("tuned.ron");
+    harness.state_mut().save_as(&saved);
+    let loaded = tether_scene::load(&saved).unwrap();
+    assert_eq!(Some(&loaded.file), harness.state().scene().map(|s| &s.tuned));
+    assert!(matches!(&loaded.world.couplings()[0].kind, CouplingKind::SpringDamper(s) if s.damping == 0.75));
+}
+
+/// The open file is watched. An editor's save (a new file renamed over the old one) with another
+/// stiffness reloads the scene into the running simulation; a broken save shows its
+/// `path:line:col` and the running scene goes on; undoing that save clears the error without a
+/// restart; a fixed save written in place reloads again.
+#[test]
+fn the_open_scene_reloads_when_its_file_changes_on_disk() {
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
+    let path = dir.path().join("spring.ron");
+    let save_by_rename = |text: &str| {
+        let swap = dir.path().join(".spring.ron.new");
+        std::fs::write(&swap, text).unwrap();
+        std::fs::rename(&swap, &path).unwrap();
+    };
+    let mut harness = harness(panel(dir.path()));
+    open_from_list(&mut harness, "spring.ron");
+    assert_eq!(spring_stiffness(&world(&harness)), 100.0);
+
+    let stiffer = SPRING.replace("stiffness: 100.0", "stiffness: 2500.0");
+    save_by_rename(&stiffer);
+    until(&mut harness, "the reload", |p| p.log().any(|l| l.text.ends_with("spring.ron changed on disk: reloading")));
+    until(&mut harness, "k = 2500 N/m in the running world", |p| p.simulation().snapshot(PATIENCE).is_some_and(|w| spring_stiffness(&w) == 2500.0));
+    assert_eq!(harness.state().scene().map(|s| s.file.clone()), Some(tether_scene::parse(&stiffer, &path).unwrap().file));
+
+    harness.key_press(egui::Key::Space);
+    until(&mut harness, "the run", |p| p.status().is_some_and(|s| s.running && s.time > 0.02));
+    save_by_rename(&stiffer.replace("rest_length: 1.0)", "rest_length: 1.0"));
+    until(&mut harness, "the load error", |p| p.load_error().is_some());
+    let error = harness.state().load_error().unwrap().to_string();
+    assert!(error.starts_with(&format!("{}:7:", path.display())), "{error}");
+    harness.get_by_label(&error);
+    let broken_at = world(&harness).time();
+    until(&mut harness, "the previous scene to go on", |p| p.status().is_some_and(|s| s.running && s.time > broken_at + 0.02));
+    assert_eq!(spring_stiffness(&world(&harness)), 2500.0, "the broken file left the simulation alone");
+
+    // The broken save undone: the file is what runs again.
+    save_by_rename(&stiffer);
+    until(&mut harness, "the error to clear", |p| p.load_error().is_none());
+    assert!(harness.state().log().any(|l| l.text.ends_with("spring.ron is back to the running scene")));
+    assert!(harness.query_by_label(&error).is_none());
+    assert!(world(&harness).time() > broken_at, "no restart: the file says what already runs");
+
+    std::fs::write(&path, SPRING.replace("stiffness: 100.0", "stiffness: 400.0")).unwrap();
+    until(&mut harness, "k = 400 N/m in the running world", |p| p.simulation().snapshot(PATIENCE).is_some_and(|w| spring_stiffness(&w) == 400.0));
+    assert_eq!(world(&harness).time(), 0.0, "a reloaded scene starts paused at t = 0");
+    assert!(harness.state().load_error().is_none());
+}
+
+/// The panel with the moored buoy at t = 0, rendered by wgpu on the CPU (lavapipe in CI) and
+/// compared with `tests/snapshots/control_panel.png` (`UPDATE_SNAPSHOTS=1` rewrites it).
+#[test]
+fn the_panel_renders_on_the_cpu_like_its_snapshot() {
+    // A folder of its own: the scene list stays the same when scenes are added to the repository.
+    let dir = scenes_folder(&[("moored_buoy.ron", &std::fs::read_to_string(repo("scenes/moored_buoy.ron")).unwrap())]);
+    let panel = panel(dir.path());
+    let mut harness = Harness::builder()
+        .with_size([440.0, 1100.0])
+        .with_options(SnapshotOptions::new().threshold(2.0).output_path(here("snapshots")))
+        .wgpu()
+        .build_ui_state(|ui, panel: &mut ControlPanel| panel.ui(ui, None), panel);
+    open_from_list(&mut harness, "moored_buoy.ron");
+    harness.run_steps(4);
+    let image = harness.render().expect("wgpu renders on this machine");
+    let colors: std::collections::HashSet<_> = image.pixels().map(|p| p.0).collect();
+    assert!(colors.len() > 20, "a blank render: {} colours", colors.len());
+    harness.snapshot("control_panel");
+}
+
+/// Where there is contact: its knobs reach the running contact law, and the estimator's k1, k2
+/// (from the default impact) go into them with one click.
+#[test]
+fn contact_knobs_and_the_estimator_tune_the_running_contact() {
+    let mut harness = harness(panel(&repo("scenes")));
+    open_from_list(&mut harness, "box_drop.ron");
+    set_knob(&mut harness, "stiffness k1", 2.5e8);
+    until(&mut harness, "the applied message", |p| p.log().any(|l| l.text.contains("applied")));
+    let contact_stiffness = |world: &World| match &world.couplings()[0].kind {
+        CouplingKind::Contact(contact) => contact.law.stiffness,
+        kind => panic!("not a contact: {kind:?}"),
+    };
+    assert_eq!(contact_stiffness(&world(&harness)), 2.5e8);
+
+    harness.get_by_label_contains("Use k1, k2 for").click();
+    harness.run_steps(2);
+    let estimated = harness.state().status().map(|s| s.contacts[0].clone()).unwrap();
+    let impact = tether_physics::coupling::contact::estimator::Impact {
+        mass: estimated.mass,
+        other_mass: estimated.other_mass,
+        area: estimated.area,
+        speed: 1.0,
+        range: estimated.range,
+        min_distance: -0.005,
+        damping_ratio: 0.1,
+    };
+    let expected = tether_physics::coupling::contact::estimator::estimate(&impact).unwrap().stiffness;
+    until(&mut harness, "the estimate in the running contact", |p| p.simulation().snapshot(PATIENCE).is_some_and(|w| contact_stiffness(&w) == expected));
+}

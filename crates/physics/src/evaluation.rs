@@ -1,0 +1,75 @@
+//! What a force evaluation leaves behind, per run: the kinematics the forces saw, the loads on
+//! the bodies, what each coupling did, and what each coupling remembers for the next evaluation
+//! (MuJoCo's mutable data, beside the constant system of bodies and couplings).
+
+use crate::body::{BodyFrame, Load};
+use crate::coupling::catenary::LineState;
+use crate::coupling::{Coupling, CouplingCache, CouplingForces};
+
+/// The buffers of the force evaluation, one entry per body or coupling of a [`System`].
+#[derive(Debug, Clone)]
+pub struct Evaluation {
+    /// Body kinematics at the last evaluation, world axes.
+    pub(crate) frames: Vec<BodyFrame>,
+    /// Force and moment about G on each body [N, N·m], world axes.
+    pub(crate) loads: Vec<Load>,
+    /// What each coupling did.
+    pub(crate) forces: Vec<CouplingForces>,
+    /// What each coupling remembers (warm starts, face lists).
+    pub(crate) caches: Vec<CouplingCache>,
+}
+
+impl Evaluation {
+    /// Empty buffers for `bodies` bodies and `couplings`, each coupling's cache fresh.
+    pub fn new(bodies: usize, couplings: &[Coupling]) -> Self {
+        Self {
+            frames: vec![BodyFrame::default(); bodies],
+            loads: vec![Load::default(); bodies],
+            forces: vec![CouplingForces::default(); couplings.len()],
+            caches: couplings.iter().map(Coupling::new_cache).collect(),
+        }
+    }
+
+    /// Starts coupling `index`'s cache afresh for `coupling`, which replaced it.
+    pub(crate) fn forget(&mut self, index: usize, coupling: &Coupling) {
+        self.caches[index] = coupling.new_cache();
+    }
+
+    /// Body kinematics at the last evaluation, world axes.
+    pub fn frames(&self) -> &[BodyFrame] {
+        &self.frames
+    }
+
+    /// The load on each body at the last evaluation: couplings, plus gravity for bodies that
+    /// respond to forces.
+    pub fn loads(&self) -> &[Load] {
+        &self.loads
+    }
+
+    /// What each coupling did at the last evaluation.
+    pub fn forces(&self) -> &[CouplingForces] {
+        &self.forces
+    }
+
+    /// What each coupling remembers.
+    pub fn caches(&self) -> &[CouplingCache] {
+        &self.caches
+    }
+
+    /// The solved shape of catenary coupling `index` at the last evaluation (`None` for another
+    /// kind, or before the first).
+    pub fn line_state(&self, index: usize) -> Option<&LineState> {
+        match self.caches.get(index) {
+            Some(CouplingCache::Catenary(cache)) => cache.last.as_ref(),
+            _ => None,
+        }
+    }
+
+    /// `Σ |f_n|` [N] of contact coupling `index` at the last evaluation (0 for another kind).
+    pub fn normal_force(&self, index: usize) -> f64 {
+        match self.caches.get(index) {
+            Some(CouplingCache::Contact(cache)) => cache.normal_force,
+            _ => 0.0,
+        }
+    }
+}

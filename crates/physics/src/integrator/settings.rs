@@ -1,0 +1,105 @@
+//! The time step settings a scene declares: which integrator, the world step, its substeps and
+//! the adaptive scheme's tolerances.
+
+/// The scheme that advances a world by one step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Integrator {
+    /// The seed's central-difference scheme ([`super::leapfrog`]).
+    #[default]
+    Leapfrog,
+    /// The leapfrog with the gyroscopic term at a predicted ω(t) ([`super::leapfrog2`]).
+    Leapfrog2,
+    /// Kick–drift–kick with the free rigid body split into exact rotations about the principal
+    /// axes ([`super::splitting`]).
+    Splitting,
+    /// Classical fourth-order Runge–Kutta ([`super::rk4`]).
+    Rk4,
+    /// Adaptive Dormand–Prince 5(4) ([`super::dopri45`]), settings in [`Tolerances`].
+    Dopri45,
+}
+
+impl Integrator {
+    /// Every scheme, in the order of the table above.
+    pub const ALL: [Self; 5] = [Self::Leapfrog, Self::Leapfrog2, Self::Splitting, Self::Rk4, Self::Dopri45];
+
+    /// The name scene files and the command line use.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Leapfrog => "leapfrog",
+            Self::Leapfrog2 => "leapfrog2",
+            Self::Splitting => "splitting",
+            Self::Rk4 => "rk4",
+            Self::Dopri45 => "dopri45",
+        }
+    }
+
+    /// The scheme called `name` (as in scene files), if there is one.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|i| i.name() == name)
+    }
+
+    /// Whether the scheme chooses its own steps (and so has no stability limit to respect).
+    pub fn is_adaptive(self) -> bool {
+        self == Self::Dopri45
+    }
+
+    /// Whether the scheme's stored velocities are at `t − ½dt` (the leapfrogs) rather than at `t`.
+    pub fn is_staggered(self) -> bool {
+        matches!(self, Self::Leapfrog | Self::Leapfrog2)
+    }
+}
+
+/// How many integrator steps one world step takes: the world advances by `dt`, its integrator
+/// by `dt / n` (recordings log world steps).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Substeps {
+    /// `n ≥ 1` integrator steps per world step.
+    Fixed(u32),
+    /// Enough integrator steps to keep each under 0.9 of the binding stable time step of the
+    /// scene's integrator at t = 0 and of every contact's impact resolution τ/10 (one for the
+    /// adaptive `dopri45`, whose steps adapt), up to [`MAX_AUTO_SUBSTEPS`].
+    Auto,
+}
+
+/// `Substeps::Auto` takes at most this many integrator steps per world step: a scene that needs
+/// more (a stiffness typed a million times too high) runs unstable and the health check stops
+/// it with the stable time step in the message, rather than seeming to hang.
+pub const MAX_AUTO_SUBSTEPS: u32 = 10_000;
+
+impl Default for Substeps {
+    fn default() -> Self {
+        Self::Fixed(1)
+    }
+}
+
+/// Settings of the adaptive [`Integrator::Dopri45`]: a step is accepted when its estimated
+/// error is below `atol + rtol·|y|` for every component (position [m], velocity [m/s],
+/// orientation quaternion [–], angular velocity [rad/s]), in the root-mean-square sense.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tolerances {
+    /// Relative tolerance [–] > 0.
+    pub rtol: f64,
+    /// Absolute tolerance [SI unit of each component] > 0.
+    pub atol: f64,
+    /// Largest step [s] > 0, if any; the integrator step `dt / substeps` bounds it anyway, as
+    /// every world step ends exactly on its boundary.
+    pub max_step: Option<f64>,
+}
+
+impl Default for Tolerances {
+    fn default() -> Self {
+        Self { rtol: 1e-6, atol: 1e-9, max_step: None }
+    }
+}
+
+/// The time step settings of a world.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Timing {
+    /// World step [s] > 0.
+    pub dt: f64,
+    pub integrator: Integrator,
+    pub substeps: Substeps,
+    /// Used by [`Integrator::Dopri45`] only.
+    pub tolerances: Tolerances,
+}

@@ -1,0 +1,48 @@
+//! Pure rigid-body physics for Tether: no GUI, no viewer, no file format (`docs/PHYSICS.md`).
+//!
+//! The crate is a constant [`system::System`] (gravity, bodies, couplings) and a
+//! [`world::World`] that runs it in time with one of five [`integrator`]s.
+//!
+//! - [`math`]: the shared numeric types;
+//! - [`mass_properties`]: mass, centre of mass and principal inertia from master + slave nodes (§1);
+//! - [`body`]: a rigid body's constant properties; its state, load, support and kinematics (§1);
+//! - [`dynamics`]: accelerations from loads, Euler's equations (§1);
+//! - [`table`]: piecewise-linear tables with exact integrals, for curve-defined laws;
+//! - [`mesh`]: boundary meshes of bodies for contact, and their distance queries (§4);
+//! - [`coupling`]: the forces between bodies and the world (§2–4);
+//! - [`evaluation`]: what a force evaluation leaves behind (kinematics, loads, coupling records
+//!   and caches);
+//! - [`system`]: bodies, couplings and gravity, and the named stages of a force evaluation;
+//! - [`integrator`]: how states advance in time (§1, time integration), on a narrow interface;
+//! - [`energy`]: the energy balance that checks it all (§5);
+//! - [`stability`]: the stable time step of each coupling and spinning body;
+//! - [`simd`]: which vector instructions the hot stages are built for;
+//! - [`world`]: a system running in time: clock, ledger, health check, live edits.
+//!
+//! Units are SI throughout:
+//!
+//! | quantity            | unit      | quantity              | unit        |
+//! |---------------------|-----------|-----------------------|-------------|
+//! | length, position    | m         | force                 | N = kg·m/s² |
+//! | mass                | kg        | moment                | N·m         |
+//! | time                | s         | stiffness (spring)    | N/m         |
+//! | velocity            | m/s       | damping (spring)      | N·s/m       |
+//! | angular velocity    | rad/s     | inertia               | kg·m²       |
+//! | energy, work        | J = N·m   | gravity               | m/s²        |
+//!
+//! The world frame is right-handed with z up.
+
+pub mod body;
+pub mod coupling;
+pub mod dynamics;
+pub mod energy;
+pub mod evaluation;
+pub mod integrator;
+pub mod mass_properties;
+pub mod math;
+pub mod mesh;
+pub mod simd;
+pub mod stability;
+pub mod system;
+pub mod table;
+pub mod world;

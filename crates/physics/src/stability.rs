@@ -1,0 +1,249 @@
+//! Stable time step of the world's integrator for each coupling and each spinning body.
+//!
+//! Each coupling is an oscillator along its axis: `ω² = k/m_eff` [1/s²] with the tangent
+//! stiffness `k` [N/m] and the effective mass of both ends along the coupling, rotation about
+//! the attachment points included: `1/m_eff = Σ_ends (1/m + (r × d)ᵀ I⁻¹ (r × d))` [1/kg]
+//! (world ends and kinematic bodies add nothing), and `β = k_d/(2 m_eff)` [1/s], `ζ = β/ω`.
+//! For a catenary `k` is the largest eigenvalue of the line's tangent stiffness and `d` its
+//! eigenvector; it has no damper. For a contact, the oscillator of stiffness `k1 A` and damping
+//! `k2 A` over the effective mass of the two bodies' translation, `A` the larger of the
+//! expected contact area and the area in contact now; and friction, which near rest is a damper
+//! of `c = μ k_t Σ|f_n|` [N·s/m] (an oscillator with `k = 0`: `dt ≤ 2 m_e/c` for the leapfrog).
+//! Stability is not enough for an impact: PHYSICS.md §4 asks for a step well below the
+//! stopping time τ, and [`impact_limits`] gives `τ/10` per contact (stability alone would allow
+//! `4τ/π`); `substeps: Auto` honours both.
+//!
+//! - Leapfrog, leapfrog2, splitting (the same central difference in translation, dampers seeing
+//!   `v(t−½dt)`): stable for `dt ≤ 2/(√(ω² + β²) + β)`, which is `2(√(1+ζ²) − ζ)/ω`
+//!   (Belytschko), `2/ω` undamped.
+//! - RK4 and Dormand–Prince: a linear oscillator's step multiplies each eigenvalue's mode by the
+//!   scheme's stability polynomial `R(z)`, `z = dt λ`, `λ = −β ± i√(ω² − β²)` (or the most
+//!   negative real `−β − √(β² − ω²)` when overdamped). The limit is the first `dt` along that
+//!   ray where `|R(dt λ)| = 1`, found by a scan and bisection: `2√2/ω` undamped for RK4
+//!   (`R = 1 + z + z²/2 + z³/6 + z⁴/24`), `2.785/ω` critically damped. For the adaptive
+//!   Dormand–Prince (`R = Σ_{k≤5} zᵏ/k! + z⁶/600`) this is no limit on the user's step but a
+//!   stiffness warning: its steps will be held near it. Near critical damping (ζ ≈ 1) RK4's
+//!   step map is nearly defective: below the limit the energy of a critically damped spring
+//!   still swings up before it decays (19× at 0.9 of the limit, 2.5× at 0.8), which the
+//!   divergence check stops; the leapfrog family has no such transient.
+//! - Rotation, fixed-step schemes: `|ω| dt < 1` (Radioss aborts beyond).
+
+use crate::body::{BodyFrame, BodyState};
+use crate::coupling::contact::estimator::STEPS_PER_STOPPING_TIME;
+use crate::coupling::{CouplingKind, Endpoint};
+use crate::evaluation::Evaluation;
+use crate::integrator::Integrator;
+use crate::math::Vec3;
+use crate::system::System;
+use nalgebra::Complex;
+
+/// What limits the time step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Limiter {
+    /// Coupling index in the world.
+    Coupling(usize),
+    /// Body index: its spin.
+    Rotation(usize),
+    /// Coupling index of a contact: the step that resolves its impact (not a stability limit).
+    Impact(usize),
+}
+
+/// A stable time step [s] and what sets it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Limit {
+    pub limiter: Limiter,
+    pub dt: f64,
+}
+
+impl Limit {
+    /// "coupling \"name\"", "rotation of body \"name\"" or "impact of contact \"name\" (τ/10)".
+    pub fn describe(&self, system: &System) -> String {
+        match self.limiter {
+            Limiter::Coupling(i) => format!("coupling \"{}\"", system.couplings()[i].name),
+            Limiter::Rotation(i) => format!("rotation of body \"{}\"", system.bodies()[i].name),
+            Limiter::Impact(i) => format!("impact of contact \"{}\" (τ/10)", system.couplings()[i].name),
+        }
+    }
+}
+
+/// What the limits are estimated from: the system, its last force evaluation, and the bodies'
+/// synchronised states at that instant.
+#[derive(Debug, Clone, Copy)]
+pub struct Situation<'a> {
+    pub system: &'a System,
+    pub evaluation: &'a Evaluation,
+    pub states: &'a [BodyState],
+}
+
+/// The stable step [s] of `integrator` for an oscillator of stiffness `k` [N/m], damping
+/// `damping` [N·s/m] and inverse effective mass `inverse_mass` [1/kg]; infinite when nothing
+/// oscillates.
+pub fn oscillator_limit(integrator: Integrator, k: f64, damping: f64, inverse_mass: f64) -> f64 {
+    let omega_squared = k.max(0.0) * inverse_mass;
+    let beta = 0.5 * damping.max(0.0) * inverse_mass;
+    match integrator {
+        Integrator::Leapfrog | Integrator::Leapfrog2 | Integrator::Splitting => {
+            let denominator = (omega_squared + beta * beta).sqrt() + beta;
+            if denominator > 0.0 { 2.0 / denominator } else { f64::INFINITY }
+        }
+        Integrator::Rk4 => polynomial_limit(&RK4, omega_squared, beta),
+        Integrator::Dopri45 => polynomial_limit(&DORMAND_PRINCE, omega_squared, beta),
+    }
+}
+
+/// Coefficients of the stability polynomial `R(z) = Σ c_k zᵏ` of RK4.
+pub const RK4: [f64; 5] = [1.0, 1.0, 1.0 / 2.0, 1.0 / 6.0, 1.0 / 24.0];
+/// Of the fifth-order Dormand–Prince solution.
+pub const DORMAND_PRINCE: [f64; 7] = [1.0, 1.0, 1.0 / 2.0, 1.0 / 6.0, 1.0 / 24.0, 1.0 / 120.0, 1.0 / 600.0];
+
+/// `R(z)` for the coefficients `c`.
+pub fn amplification(c: &[f64], z: Complex<f64>) -> Complex<f64> {
+    c.iter().rev().fold(Complex::new(0.0, 0.0), |acc, &ck| acc * z + ck)
+}
+
+/// The first `dt` [s] at which `|R(dt λ)|` exceeds 1 for the oscillator eigenvalue `λ` of
+/// `ω²` [1/s²] and `β` [1/s]: a scan of `|z|` by 1/64 up to 8 (beyond every explicit
+/// scheme's region), then bisection to round-off.
+fn polynomial_limit(c: &[f64], omega_squared: f64, beta: f64) -> f64 {
+    let lambda = if beta * beta < omega_squared {
+        Complex::new(-beta, (omega_squared - beta * beta).sqrt())
+    } else {
+        Complex::new(-beta - (beta * beta - omega_squared).sqrt(), 0.0)
+    };
+    let modulus = lambda.norm();
+    if !(modulus > 0.0) {
+        return f64::INFINITY;
+    }
+    let direction = lambda / modulus;
+    let grows = |s: f64| amplification(c, direction * s).norm() > 1.0;
+    const SCAN: f64 = 1.0 / 64.0;
+    let Some(first) = (1..=512).map(|i| f64::from(i) * SCAN).find(|&s| grows(s)) else { return f64::INFINITY };
+    let (mut stable, mut unstable) = (first - SCAN, first);
+    for _ in 0..60 {
+        let middle = 0.5 * (stable + unstable);
+        if grows(middle) {
+            unstable = middle;
+        } else {
+            stable = middle;
+        }
+    }
+    stable / modulus
+}
+
+/// Every finite limit of `integrator` in `situation`.
+pub fn limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
+    let Situation { system, evaluation, states } = *situation;
+    let frames = evaluation.frames();
+    let mut limits = Vec::new();
+    for (index, (coupling, forces)) in system.couplings().iter().zip(evaluation.forces()).enumerate() {
+        let [end1, end2] = coupling.ends();
+        let along = |d: &Vec3| inverse_mass_along(system, frames, &end1, d) + inverse_mass_along(system, frames, &end2, d);
+        let dt = match &coupling.kind {
+            CouplingKind::SpringDamper(spring) => {
+                let chord = forces.point2 - forces.point1;
+                let length = chord.norm();
+                let Some(d) = chord.try_normalize(0.0) else { continue };
+                oscillator_limit(integrator, spring.law.tangent_stiffness(length), spring.damping, along(&d))
+            }
+            CouplingKind::Catenary(_) => {
+                let Some(state) = evaluation.line_state(index) else { continue };
+                let k = state.tangent_stiffness();
+                let eigen = nalgebra::SymmetricEigen::new(0.5 * (k + k.transpose()));
+                let (largest, _) = eigen.eigenvalues.argmax();
+                let d = eigen.eigenvectors.column(largest).into_owned();
+                oscillator_limit(integrator, eigen.eigenvalues[largest], 0.0, along(&d))
+            }
+            CouplingKind::Contact(contact) => {
+                let inverse: f64 = [Some(contact.body), contact.other_body()].into_iter().flatten().map(|i| translational_inverse_mass(system, i)).sum();
+                let area = contact.limit_area(frames);
+                let normal = oscillator_limit(integrator, contact.law.stiffness * area, contact.law.damping * area, inverse);
+                let friction = contact.law.friction * contact.law.friction_sharpness * evaluation.normal_force(index);
+                // Friction acts across the surface at the faces in contact: it turns the bodies
+                // as much as it pushes them.
+                let faces = contact.active_faces(frames);
+                let frame = &frames[contact.body];
+                let on_body = faces.iter().map(|face| face.centroid);
+                let mut sliding_inverse = translational_inverse_mass(system, contact.body) + turning_inverse_mass(system, contact.body, on_body);
+                if let Some(other) = contact.other_body() {
+                    let to_other = |c: Vec3| frames[other].rotation.tr_mul(&(frame.position + frame.rotation * c - frames[other].position));
+                    sliding_inverse += translational_inverse_mass(system, other) + turning_inverse_mass(system, other, faces.iter().map(|face| to_other(face.centroid)));
+                }
+                normal.min(oscillator_limit(integrator, 0.0, friction, sliding_inverse))
+            }
+        };
+        if dt.is_finite() {
+            limits.push(Limit { limiter: Limiter::Coupling(index), dt });
+        }
+    }
+    // The adaptive scheme keeps its own rotation accurate.
+    let spinning = if integrator.is_adaptive() { 0 } else { system.bodies().len() };
+    for index in (0..spinning).filter(|&i| !system.bodies()[i].is_kinematic()) {
+        let spin = states[index].angular_velocity.norm();
+        if spin > 0.0 {
+            limits.push(Limit { limiter: Limiter::Rotation(index), dt: 1.0 / spin });
+        }
+    }
+    limits
+}
+
+/// The time step that resolves an impact of each contact, `τ/10` [s] (PHYSICS.md §4).
+pub fn impact_limits(situation: &Situation) -> Vec<Limit> {
+    let system = situation.system;
+    let inverse_mass = |i: usize| translational_inverse_mass(system, i);
+    system
+        .couplings()
+        .iter()
+        .enumerate()
+        .filter_map(|(index, coupling)| match &coupling.kind {
+            CouplingKind::Contact(contact) => {
+                let inverse = inverse_mass(contact.body) + contact.other_body().map_or(0.0, inverse_mass);
+                Some(Limit { limiter: Limiter::Impact(index), dt: contact.stopping_time(contact.limit_area(situation.evaluation.frames()), inverse) / STEPS_PER_STOPPING_TIME })
+            }
+            _ => None,
+        })
+        .filter(|limit| limit.dt.is_finite())
+        .collect()
+}
+
+/// The smallest limit, if any.
+pub fn binding(limits: &[Limit]) -> Option<Limit> {
+    limits.iter().copied().min_by(|a, b| a.dt.total_cmp(&b.dt))
+}
+
+/// `1/m` [1/kg] of a body that responds to forces, 0 for a kinematic one.
+fn translational_inverse_mass(system: &System, index: usize) -> f64 {
+    let body = &system.bodies()[index];
+    if body.is_kinematic() { 0.0 } else { body.inverse_mass }
+}
+
+/// `max over the points r and unit directions t of (r × t)ᵀ I⁻¹ (r × t)` [1/kg]: the most a unit
+/// force at one of `points` (principal frame of body `index`, relative to G) adds to the
+/// acceleration of its point through rotation, the largest eigenvalue of `[r]×ᵀ I⁻¹ [r]×`;
+/// 0 for a kinematic body.
+fn turning_inverse_mass(system: &System, index: usize, points: impl Iterator<Item = Vec3>) -> f64 {
+    let body = &system.bodies()[index];
+    if body.is_kinematic() {
+        return 0.0;
+    }
+    let inverse_inertia = nalgebra::Matrix3::from_diagonal(&body.inverse_principal_moments);
+    points
+        .map(|r| {
+            let cross = r.cross_matrix();
+            nalgebra::SymmetricEigen::new(cross.transpose() * inverse_inertia * cross).eigenvalues.max()
+        })
+        .fold(0.0, f64::max)
+}
+
+/// `1/m + (r × d)ᵀ I⁻¹ (r × d)` of the body an end is on, for a unit force direction `d`.
+fn inverse_mass_along(system: &System, frames: &[BodyFrame], end: &Endpoint, d: &Vec3) -> f64 {
+    let Some(index) = end.body() else { return 0.0 };
+    let body = &system.bodies()[index];
+    if body.is_kinematic() {
+        return 0.0;
+    }
+    let frame = &frames[index];
+    let arm = frame.rotation * end.point();
+    // r × d in the principal frame, where I⁻¹ is diagonal.
+    let lever = frame.rotation.tr_mul(&arm.cross(d));
+    body.inverse_mass + lever.dot(&lever.component_mul(&body.inverse_principal_moments))
+}

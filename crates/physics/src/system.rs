@@ -1,0 +1,233 @@
+//! The system: what a scene declares and a run does not change — gravity, the bodies, the
+//! couplings and the bodies' states at t = 0 (the start of prescribed motions) — and the force
+//! evaluation for given states (MuJoCo's constant model beside its mutable data).
+//!
+//! An evaluation runs these stages, each its own function, in this order:
+//! 1. *prescribe*: kinematic bodies are put where their motion says at the time
+//!    ([`System::prescribe`]);
+//! 2. *predict*: each body's kinematics for the force evaluation ([`BodyState::frame`]);
+//! 3. *clear* the loads and add *gravity* ([`System::gravity_load`]);
+//! 4. *couplings*: each coupling's forces, kept per coupling and summed into the bodies' loads
+//!    ([`System::apply_couplings`]);
+//! 5. *powers*: dissipated by the couplings, put in by prescribed motions
+//!    ([`System::external_power`]).
+//!
+//! [`System::evaluate`] runs 2–5; the leapfrog fuses 1–3 into its pass over the bodies.
+
+use crate::body::{BodyState, Load, RigidBody, Support};
+use crate::coupling::{Coupling, CouplingError, CouplingKind};
+use crate::energy::Powers;
+use crate::evaluation::Evaluation;
+use crate::math::Vec3;
+use crate::simd::Level;
+
+/// Bodies, couplings and gravity: what a run does not change (live edits aside).
+#[derive(Debug, Clone)]
+pub struct System {
+    /// Gravity [m/s²].
+    gravity: Vec3,
+    bodies: Vec<RigidBody>,
+    couplings: Vec<Coupling>,
+    /// States at t = 0: the start of prescribed motions, and of a reset.
+    initial_states: Vec<BodyState>,
+    /// Indices of the kinematic bodies.
+    kinematic_bodies: Vec<usize>,
+    /// The build of the couplings stage this processor runs.
+    level: Level,
+}
+
+/// A system that does not hold together.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SystemError {
+    #[error("{bodies} bodies but {states} initial states")]
+    StateCount { bodies: usize, states: usize },
+    #[error("coupling \"{coupling}\" refers to body {body}, but the system has {count} bodies")]
+    UnknownBody { coupling: String, body: usize, count: usize },
+}
+
+/// A coupling that could not give its forces: its index, and why.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EvaluationError {
+    pub coupling: usize,
+    pub source: CouplingError,
+}
+
+impl System {
+    /// A system of `bodies` starting from `initial_states` (synchronised: velocities at t = 0),
+    /// joined by `couplings`, under `gravity` [m/s²].
+    ///
+    /// # Errors
+    /// As many states as bodies are needed, and every coupling's bodies must exist.
+    pub fn new(gravity: Vec3, bodies: Vec<RigidBody>, couplings: Vec<Coupling>, initial_states: Vec<BodyState>) -> Result<Self, SystemError> {
+        if bodies.len() != initial_states.len() {
+            return Err(SystemError::StateCount { bodies: bodies.len(), states: initial_states.len() });
+        }
+        for coupling in &couplings {
+            check_bodies(coupling, bodies.len())?;
+        }
+        let kinematic_bodies = (0..bodies.len()).filter(|&i| bodies[i].is_kinematic()).collect();
+        Ok(Self { gravity, bodies, couplings, initial_states, kinematic_bodies, level: Level::best() })
+    }
+
+    /// Gravity [m/s²].
+    pub fn gravity(&self) -> &Vec3 {
+        &self.gravity
+    }
+
+    pub fn bodies(&self) -> &[RigidBody] {
+        &self.bodies
+    }
+
+    pub fn couplings(&self) -> &[Coupling] {
+        &self.couplings
+    }
+
+    /// The states at t = 0.
+    pub fn initial_states(&self) -> &[BodyState] {
+        &self.initial_states
+    }
+
+    /// Replaces coupling `index` (a live edit: the world restarts its integrator after it).
+    pub(crate) fn replace_coupling(&mut self, index: usize, coupling: Coupling) -> Result<Coupling, SystemError> {
+        check_bodies(&coupling, self.bodies.len())?;
+        Ok(std::mem::replace(&mut self.couplings[index], coupling))
+    }
+
+    /// The build of the hot stages this system runs.
+    pub fn level(&self) -> Level {
+        self.level
+    }
+
+    /// Runs the couplings stage built for `level` from now on, if the processor has it (tests
+    /// compare the builds); returns whether it does.
+    pub fn use_level(&mut self, level: Level) -> bool {
+        let supported = level.supported();
+        if supported {
+            self.level = level;
+        }
+        supported
+    }
+
+    /// Stage *prescribe*: kinematic bodies to their pose and velocity at time `time` [s].
+    pub fn prescribe(&self, states: &mut [BodyState], time: f64) {
+        for &index in &self.kinematic_bodies {
+            if let Support::Kinematic(motion) = &self.bodies[index].support {
+                states[index] = motion.state_at(&self.initial_states[index], time);
+            }
+        }
+    }
+
+    /// Stages *predict*, *clear*, *gravity*, *couplings* and *powers* at the (prescribed)
+    /// `states`, into `evaluation`.
+    ///
+    /// # Errors
+    /// A coupling that cannot give its forces (only non-finite states make one).
+    pub fn evaluate(&self, states: &[BodyState], evaluation: &mut Evaluation) -> Result<Powers, EvaluationError> {
+        for (frame, state) in evaluation.frames.iter_mut().zip(states) {
+            *frame = state.frame();
+        }
+        for (load, body) in evaluation.loads.iter_mut().zip(&self.bodies) {
+            *load = self.gravity_load(body);
+        }
+        let dissipated = self.apply_couplings(evaluation)?;
+        Ok(Powers { dissipated, external: self.external_power(evaluation) })
+    }
+
+    /// Stages *clear* and *gravity* for one body: `F = m g`, `M = 0` (nothing for a kinematic
+    /// body, which forces do not move).
+    #[inline(always)]
+    pub fn gravity_load(&self, body: &RigidBody) -> Load {
+        if body.is_kinematic() { Load::default() } else { Load { force: self.gravity * body.mass(), moment: Vec3::zeros() } }
+    }
+
+    /// Stage *couplings* at the kinematics `evaluation.frames`: each coupling's forces, kept per
+    /// coupling and added to the loads; returns the power dissipated [W].
+    ///
+    /// # Errors
+    /// The first coupling that cannot give its forces.
+    pub fn apply_couplings(&self, evaluation: &mut Evaluation) -> Result<f64, EvaluationError> {
+        let Evaluation { frames, loads, forces, caches } = evaluation;
+        let stage = CouplingsStage { couplings: &self.couplings, gravity: &self.gravity, frames, caches, forces, loads };
+        stage.run(self.level).map_err(|(coupling, source)| EvaluationError { coupling, source })
+    }
+
+    /// Stage *powers*: what the prescribed motions put in, `−Σ (F_k·v_k + M_k·ω_k)` [W].
+    pub fn external_power(&self, evaluation: &Evaluation) -> f64 {
+        self.kinematic_bodies
+            .iter()
+            .map(|&i| {
+                let (load, frame) = (&evaluation.loads[i], &evaluation.frames[i]);
+                -(load.force.dot(&frame.velocity) + load.moment.dot(&(frame.rotation * frame.angular_velocity)))
+            })
+            .sum()
+    }
+}
+
+/// Every body coupling `coupling` refers to must be one of the `count` bodies.
+fn check_bodies(coupling: &Coupling, count: usize) -> Result<(), SystemError> {
+    let mut bodies: Vec<usize> = coupling.ends().iter().filter_map(|end| end.body()).collect();
+    if let CouplingKind::Contact(contact) = &coupling.kind {
+        bodies.extend(contact.other_body());
+    }
+    match bodies.into_iter().find(|&body| body >= count) {
+        Some(body) => Err(SystemError::UnknownBody { coupling: coupling.name.clone(), body, count }),
+        None => Ok(()),
+    }
+}
+
+/// The couplings stage's arguments, borrowed apart so that each build takes them as one.
+struct CouplingsStage<'a> {
+    couplings: &'a [Coupling],
+    gravity: &'a Vec3,
+    frames: &'a [crate::body::BodyFrame],
+    caches: &'a mut [crate::coupling::CouplingCache],
+    forces: &'a mut [crate::coupling::CouplingForces],
+    loads: &'a mut [Load],
+}
+
+impl CouplingsStage<'_> {
+    /// The stage built for `level` (which [`System`] only holds when the processor has it).
+    ///
+    /// Built for AVX-512 and AVX2 as well as the portable build: the couplings' forces are
+    /// inlined here, so the contact faces run four to a vector instruction
+    /// ([`crate::coupling::contact`]) and what each coupling computes stays in registers from one
+    /// stage of its evaluation to the next. AVX-512's 32 vector registers hold the face batch's
+    /// constants and sums that AVX2's 16 cannot (about 160 instructions per batch instead of
+    /// about 190, by the disassembly of the bench binary).
+    #[inline]
+    fn run(self, level: Level) -> Result<f64, (usize, CouplingError)> {
+        match level {
+            // SAFETY (both): `System::level` is `Level::best()` or a level `use_level` found
+            // supported, so the processor has the features these builds enable.
+            #[cfg(target_arch = "x86_64")]
+            Level::Avx512 => unsafe { self.run_avx512() },
+            #[cfg(target_arch = "x86_64")]
+            Level::Avx2 => unsafe { self.run_avx2() },
+            _ => self.run_each(),
+        }
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    fn run_avx512(self) -> Result<f64, (usize, CouplingError)> {
+        self.run_each()
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    fn run_avx2(self) -> Result<f64, (usize, CouplingError)> {
+        self.run_each()
+    }
+
+    /// Each coupling in turn; the error names the index of the one that failed.
+    #[inline(always)]
+    fn run_each(self) -> Result<f64, (usize, CouplingError)> {
+        let mut dissipated = 0.0;
+        let each = self.couplings.iter().zip(self.caches.iter_mut()).zip(self.forces.iter_mut());
+        for (index, ((coupling, cache), out)) in each.enumerate() {
+            coupling.apply(cache, self.frames, self.gravity, self.loads, out).map_err(|source| (index, source))?;
+            dissipated += out.dissipated_power;
+        }
+        Ok(dissipated)
+    }
+}

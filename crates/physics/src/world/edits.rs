@@ -1,0 +1,97 @@
+//! Live edits of a running world: a coupling replaced, the time step changed, a reset. The first
+//! two start the integrator again from the synchronised state at the current time (positions and
+//! velocities do not move), keeping the energy ledger, so the motion goes on under what changed;
+//! a refused edit leaves the world as it was.
+
+use super::error::{StepError, TimingError};
+use super::World;
+use crate::coupling::{Coupling, CouplingError};
+use crate::energy::Work;
+use crate::integrator::{Substeps, Timing};
+use crate::stability;
+
+impl World {
+    /// Restarts from t = 0 with the current parameters; on error the world is unchanged.
+    pub fn reset(&mut self) -> Result<(), StepError> {
+        *self = Self::new(self.system.clone(), self.timing)?;
+        Ok(())
+    }
+
+    /// Replaces coupling `index` while running, without a restart (live tuning): the integrator
+    /// starts again at the current time from the synchronised state, with the forces of the
+    /// new coupling, so the motion goes on under them at the scheme's order across the change.
+    /// Its energy does jump: the elastic energy of the new parameters at the same positions
+    /// differs from the old one. That jump is booked as external work (PHYSICS.md §5), so
+    /// `balance()` stays continuous across the swap and keeps checking the motion after it; the
+    /// divergence message then quotes the stable time step of the new parameters.
+    ///
+    /// # Errors
+    /// The new coupling cannot give its forces here, refers to a body the world does not have,
+    /// or `index` is out of range; the world is then unchanged.
+    pub fn replace_coupling(&mut self, index: usize, coupling: Coupling) -> Result<(), StepError> {
+        if index >= self.system.couplings().len() {
+            return Err(StepError::Coupling { coupling: coupling.name, time: self.clock.time, source: CouplingError::NoSuchCoupling(index) });
+        }
+        let before = self.clone();
+        let name = coupling.name.clone();
+        self.states = self.synchronized_states();
+        if self.system.replace_coupling(index, coupling).is_err() {
+            *self = before;
+            return Err(StepError::Coupling { coupling: name, time: self.clock.time, source: CouplingError::NoSuchCoupling(index) });
+        }
+        self.evaluation.forget(index, &self.system.couplings()[index]);
+        if let Err(error) = self.start_integrator() {
+            *self = before;
+            return Err(error);
+        }
+        let jump = self.energy().total() - before.energy().total();
+        self.ledger.add(&Work { dissipated: 0.0, external: jump });
+        self.health.limit = stability::binding(&self.limits());
+        Ok(())
+    }
+
+    /// Changes the time step, the integrator, the substeps and the adaptive tolerances at the
+    /// current time, keeping the state: the new integrator starts from the synchronised
+    /// positions and velocities, so the motion goes on where it was. `Substeps::Auto` is
+    /// resolved from the stable time steps of the current state.
+    ///
+    /// # Errors
+    /// `dt` not finite and positive, zero substeps, or forces that cannot be evaluated; the
+    /// world is then unchanged.
+    pub fn set_timing(&mut self, timing: Timing) -> Result<(), TimingError> {
+        if !(timing.dt.is_finite() && timing.dt > 0.0) {
+            return Err(TimingError::Step(timing.dt));
+        }
+        if timing.substeps == Substeps::Fixed(0) {
+            return Err(TimingError::NoSubsteps);
+        }
+        let before = self.clone();
+        if let Err(error) = self.retime(timing) {
+            *self = before;
+            return Err(TimingError::Forces(error));
+        }
+        Ok(())
+    }
+
+    /// [`World::set_timing`] once checked: the new integrator from the synchronised states, with
+    /// `Substeps::Auto` resolved by the limits of the new scheme at one substep.
+    fn retime(&mut self, timing: Timing) -> Result<(), StepError> {
+        let synchronized = self.synchronized_states();
+        self.states.clone_from(&synchronized);
+        self.timing = timing;
+        self.substeps = match timing.substeps {
+            Substeps::Fixed(n) => n,
+            Substeps::Auto => 1,
+        };
+        self.start_integrator()?;
+        if timing.substeps == Substeps::Auto {
+            let needed = self.auto_substeps();
+            if needed > 1 {
+                self.substeps = needed;
+                self.states = synchronized;
+                self.start_integrator()?;
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,26 @@
+//! What stops a world: a step that could not be completed, a time step setting refused.
+
+use crate::coupling::CouplingError;
+
+/// A step that could not be completed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum StepError {
+    /// A coupling could not give its forces.
+    #[error("coupling \"{coupling}\" at t = {time} s: {source}")]
+    Coupling { coupling: String, time: f64, source: CouplingError },
+    /// The state blew up: `body` is the body at fault (non-finite, or the most energetic),
+    /// `advice` names the binding stable time step of the starting configuration.
+    #[error("the simulation diverged at t = {time} s: body \"{body}\" {cause}; {advice}")]
+    Diverged { time: f64, body: String, cause: String, advice: String },
+}
+
+/// A time step setting refused by [`super::World::set_timing`].
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum TimingError {
+    #[error("time step dt must be > 0 s, got {0}")]
+    Step(f64),
+    #[error("substeps must be at least 1")]
+    NoSubsteps,
+    #[error(transparent)]
+    Forces(StepError),
+}

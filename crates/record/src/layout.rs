@@ -1,0 +1,39 @@
+//! How the viewer lays out a run: the 3D scene large on the left, the plots stacked on the
+//! right (energy; tension when there are couplings; the catenaries' end tensions and the
+//! contacts' forces when there are any); the `sim_time` timeline; the viewer's own side panels
+//! folded, room being short beside the control panel.
+
+use crate::paths;
+use rerun::RecordingStream;
+use rerun::blueprint::components::PanelState;
+use rerun::blueprint::{Blueprint, BlueprintActivation, BlueprintPanel, ContainerLike, Horizontal, SelectionPanel, Spatial3DView, TimePanel, TimeSeriesView, Vertical};
+use tether_physics::coupling::CouplingKind;
+use tether_physics::world::World;
+
+/// The layout of a run of `world`.
+pub fn layout(world: &World) -> Blueprint {
+    let couplings = world.couplings();
+    let mut plots: Vec<ContainerLike> = vec![TimeSeriesView::new("energy [J]").with_origin(paths::ENERGY).into()];
+    if !couplings.is_empty() {
+        plots.push(TimeSeriesView::new("tension [N]").with_origin(paths::TENSION).into());
+    }
+    if couplings.iter().any(|c| matches!(c.kind, CouplingKind::Catenary(_))) {
+        plots.push(TimeSeriesView::new("catenary end tensions [N]").with_origin(paths::CATENARY_PLOTS).into());
+    }
+    if couplings.iter().any(|c| matches!(c.kind, CouplingKind::Contact(_))) {
+        plots.push(TimeSeriesView::new("contact forces [N]").with_origin(paths::CONTACT_PLOTS).into());
+    }
+    let scene: ContainerLike = Spatial3DView::new("scene").with_origin(paths::WORLD).into();
+    Blueprint::new(Horizontal::new([scene, Vertical::new(plots).into()]).with_column_shares([3.0, 2.0]))
+        .with_blueprint_panel(BlueprintPanel::from_state(PanelState::Collapsed))
+        .with_selection_panel(SelectionPanel::from_state(PanelState::Collapsed))
+        .with_time_panel(TimePanel::new().with_timeline("sim_time"))
+}
+
+/// Sends `world`'s [`layout`] to the viewer behind `stream` (nothing for a disabled stream).
+pub fn send_layout(stream: &RecordingStream, world: &World) -> rerun::RecordingStreamResult<()> {
+    if !stream.is_enabled() {
+        return Ok(());
+    }
+    layout(world).send(stream, BlueprintActivation { make_active: true, make_default: true })
+}

@@ -1,0 +1,82 @@
+//! The recording's entity paths, in one table: the recorder writes them, the viewer layout and
+//! the GUI's selection read them.
+//!
+//! | path | what |
+//! |---|---|
+//! | `world` | view coordinates (right-handed, z up) |
+//! | `world/bodies/<name>` | a body's pose: G and its principal axes |
+//! | `world/bodies/<name>/shape`, `…/nodes` | its static shape and slave nodes |
+//! | `world/couplings/<name>` | a spring's or a line's drawing |
+//! | `world/contacts/<name>` | a contact's face forces |
+//! | `plots/energy` | the energy balance |
+//! | `plots/tension` | every coupling's tension |
+//! | `plots/catenary/<name>` | a catenary's end tensions |
+//! | `plots/contact/<name>` | a contact's normal force and friction |
+
+use tether_physics::coupling::{Coupling, CouplingKind};
+
+/// The 3D scene.
+pub const WORLD: &str = "world";
+/// Where the bodies are.
+pub const BODIES: &str = "world/bodies";
+/// The energy plot.
+pub const ENERGY: &str = "plots/energy";
+/// Every coupling's tension, one series each.
+pub const TENSION: &str = "plots/tension";
+/// The catenaries' end tension plots.
+pub const CATENARY_PLOTS: &str = "plots/catenary";
+/// The contacts' force plots.
+pub const CONTACT_PLOTS: &str = "plots/contact";
+
+/// `world/bodies/<name>`: the body's pose.
+pub fn body(name: &str) -> String {
+    format!("{BODIES}/{name}")
+}
+
+/// `world/bodies/<name>/shape`.
+pub fn body_shape(name: &str) -> String {
+    format!("{BODIES}/{name}/shape")
+}
+
+/// `world/bodies/<name>/nodes`.
+pub fn body_nodes(name: &str) -> String {
+    format!("{BODIES}/{name}/nodes")
+}
+
+/// Where a coupling is drawn: `world/contacts/<name>` for a contact (its face forces),
+/// `world/couplings/<name>` for the others (a line).
+pub fn coupling(coupling: &Coupling) -> String {
+    match coupling.kind {
+        CouplingKind::Contact(_) => format!("world/contacts/{}", coupling.name),
+        CouplingKind::SpringDamper(_) | CouplingKind::Catenary(_) => format!("world/couplings/{}", coupling.name),
+    }
+}
+
+/// `plots/catenary/<name>`.
+pub fn catenary_plot(name: &str) -> String {
+    format!("{CATENARY_PLOTS}/{name}")
+}
+
+/// `plots/contact/<name>`.
+pub fn contact_plot(name: &str) -> String {
+    format!("{CONTACT_PLOTS}/{name}")
+}
+
+/// The body an entity path (`world/bodies/<name>` or below, with or without a leading `/`)
+/// belongs to.
+pub fn body_of(path: &str) -> Option<&str> {
+    path.trim_start_matches('/').strip_prefix(BODIES)?.strip_prefix('/')?.split('/').next().filter(|name| !name.is_empty())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_selected_entity_names_its_body() {
+        assert_eq!(body_of("/world/bodies/buoy/shape"), Some("buoy"));
+        assert_eq!(body_of(&body("hull")), Some("hull"));
+        assert_eq!(body_of("world/couplings/rope"), None);
+        assert_eq!(body_of("world/bodies/"), None);
+    }
+}

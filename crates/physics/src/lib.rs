@@ -9,7 +9,9 @@
 //! - [`dynamics`]: accelerations from loads, Euler's equations (§1);
 //! - [`table`]: piecewise-linear tables with exact integrals, for curve-defined laws;
 //! - [`mesh`]: boundary meshes of bodies for contact, and their distance queries (§4);
-//! - [`coupling`]: the forces between bodies and the world (§2–4);
+//! - [`coupling`]: the forces between bodies and the world (§2–4, lines on the seabed §7);
+//! - [`seabed`]: the flat bottom lines lie on and bodies touch (§7);
+//! - [`surroundings`]: gravity, fluid and seabed as the couplings see them;
 //! - [`evaluation`]: what a force evaluation leaves behind (kinematics, loads, coupling records
 //!   and caches);
 //! - [`system`]: bodies, couplings and gravity, and the named stages of a force evaluation;
@@ -41,8 +43,10 @@ pub mod integrator;
 pub mod mass_properties;
 pub mod math;
 pub mod mesh;
+pub mod seabed;
 pub mod simd;
 pub mod stability;
+pub mod surroundings;
 pub mod system;
 pub mod table;
 pub mod world;

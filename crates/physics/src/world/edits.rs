@@ -1,5 +1,5 @@
-//! Live edits of a running world: a coupling replaced, the time step changed, a reset. The first
-//! two start the integrator again from the synchronised state at the current time (positions and
+//! Live edits of a running world: a coupling replaced, the seabed changed, the time step
+//! changed, a reset. The first three start the integrator again from the synchronised state at the current time (positions and
 //! velocities do not move), keeping the energy ledger, so the motion goes on under what changed;
 //! a refused edit leaves the world as it was.
 
@@ -8,6 +8,7 @@ use super::World;
 use crate::coupling::{Coupling, CouplingError};
 use crate::energy::Work;
 use crate::integrator::{Substeps, Timing};
+use crate::seabed::Seabed;
 use crate::stability;
 
 impl World {
@@ -40,6 +41,30 @@ impl World {
             return Err(StepError::Coupling { coupling: name, time: self.clock.time, source: CouplingError::NoSuchCoupling(index) });
         }
         self.evaluation.forget(index, &self.system.couplings()[index]);
+        if let Err(error) = self.start_integrator() {
+            *self = before;
+            return Err(error);
+        }
+        let jump = self.energy().total() - before.energy().total();
+        self.ledger.add(&Work { dissipated: 0.0, external: jump });
+        self.health.limit = stability::binding(&self.limits());
+        Ok(())
+    }
+
+    /// Replaces the seabed while running (live tuning of its line friction `C_B`): as
+    /// [`World::replace_coupling`], the integrator starts again at the current time from the
+    /// synchronised state, and the jump of the lines' energy is booked as external work.
+    ///
+    /// # Errors
+    /// A catenary anchor would lie below the new seabed, or the lines cannot give their forces
+    /// on it; the world is then unchanged.
+    pub fn set_seabed(&mut self, seabed: Seabed) -> Result<(), StepError> {
+        let before = self.clone();
+        self.states = self.synchronized_states();
+        if let Err(error) = self.system.replace_seabed(seabed) {
+            *self = before;
+            return Err(error.into());
+        }
         if let Err(error) = self.start_integrator() {
             *self = before;
             return Err(error);

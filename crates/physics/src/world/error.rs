@@ -1,6 +1,7 @@
 //! What stops a world: a step that could not be completed, a time step setting refused.
 
 use crate::coupling::CouplingError;
+use crate::system::SystemError;
 
 /// A step that could not be completed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -12,6 +13,9 @@ pub enum StepError {
     /// `advice` names the binding stable time step of the starting configuration.
     #[error("the simulation diverged at t = {time} s: body \"{body}\" {cause}; {advice}")]
     Diverged { time: f64, body: String, cause: String, advice: String },
+    /// A live edit that would make the system inconsistent (an anchor below a raised seabed).
+    #[error(transparent)]
+    System(#[from] SystemError),
 }
 
 /// A time step setting refused by [`super::World::set_timing`].

@@ -140,8 +140,8 @@ impl Catenary {
     /// The line above `seabed`: grounded where it reaches the bottom (PHYSICS.md §7), free
     /// elsewhere.
     fn solve_on_seabed(&self, frame: LineState, seabed: &Seabed, vertical: bool, last: Option<&LineState>) -> Result<LineState, CatenaryError> {
-        if let Some(ground) = last.and_then(|s| s.ground) {
-            if let Some(state) = self.solve_grounded(&frame, seabed, Some(ground.profile.h)) {
+        if let Some(ground) = last.and_then(|s| s.ground.as_ref()) {
+            if let Some(state) = self.solve_grounded(&frame, seabed, Warm::Grounded(ground)) {
                 return Ok(state);
             }
         }
@@ -149,13 +149,13 @@ impl Catenary {
         if free.lowest_height() >= seabed.elevation {
             return Ok(free);
         }
-        Ok(self.solve_grounded(&frame, seabed, Some(free.horizontal_tension / free.weight)).unwrap_or(free))
+        Ok(self.solve_grounded(&frame, seabed, Warm::Tension(free.horizontal_tension / free.weight)).unwrap_or(free))
     }
 
-    /// The grounded line in the frame of `frame`, from the warm start `warm` (`h = H/W`);
-    /// `None` when it does not reach the bottom. The anchor is the end that lies on the seabed
-    /// (within [`ON_SEABED`]; an end below it counts as on it), else end 1.
-    fn solve_grounded(&self, frame: &LineState, seabed: &Seabed, warm: Option<f64>) -> Option<LineState> {
+    /// The grounded line in the frame of `frame`, from the warm start `warm`; `None` when it
+    /// does not reach the bottom. The anchor is the end that lies on the seabed (within
+    /// [`ON_SEABED`]; an end below it counts as on it), else end 1.
+    fn solve_grounded(&self, frame: &LineState, seabed: &Seabed, warm: Warm) -> Option<LineState> {
         let height = |y: f64| {
             let z = (y - seabed.elevation) / self.length;
             if z <= ON_SEABED { 0.0 } else { z }
@@ -164,7 +164,12 @@ impl Catenary {
         let (z1, z2) = (height(y1), height(y1 + frame.rise));
         let (anchor, z_anchor, z_other) = if z1 == 0.0 || z2 > 0.0 { (LineEnd::First, z1, z2) } else { (LineEnd::Second, z2, z1) };
         let grounding = Grounding { x: frame.span / self.length, z1: z_anchor, z2: z_other, epsilon: frame.weight / frame.axial_stiffness, friction: seabed.line_friction };
-        let Outcome::Grounded(solved) = grounded::solver::solve(&grounding, warm)? else { return None };
+        let start = match warm {
+            Warm::Tension(h) => h,
+            Warm::Grounded(last) if last.anchor == anchor => last.profile.predict(&last.grounding, &grounding),
+            Warm::Grounded(last) => last.profile.h,
+        };
+        let Outcome::Grounded(solved) = grounded::solver::solve(&grounding, Some(start))? else { return None };
         let profile = solved.profile;
         let ground = Ground { anchor, grounding, profile, seabed: seabed.elevation };
         let mut state = LineState { horizontal_tension: profile.h * frame.weight, iterations: solved.iterations, residual: solved.residual, ground: Some(ground), ..*frame };
@@ -194,6 +199,15 @@ impl Catenary {
         cache.last = Some(state);
         Ok(())
     }
+}
+
+/// Where a grounded solve starts.
+#[derive(Debug, Clone, Copy)]
+enum Warm<'a> {
+    /// From `h = H/W` (of the free line that turned out to reach the bottom).
+    Tension(f64),
+    /// From the last grounded solution, moved along its tangent to the new ends.
+    Grounded(&'a Ground),
 }
 
 /// A unit vector perpendicular to `axis` (unit).

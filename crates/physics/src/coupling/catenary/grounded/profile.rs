@@ -65,19 +65,20 @@ impl Suspended {
     /// The part reaching height `z` ≥ 0 with horizontal tension `h` ≥ 0, compliance `epsilon`.
     #[inline]
     pub fn new(h: f64, z: f64, epsilon: f64) -> Self {
-        let b = 1.0 + epsilon * (z + h);
-        let c = z * (z + 2.0 * h);
-        let d = 1.0 + 2.0 * epsilon * (z + h) + (epsilon * h) * (epsilon * h);
-        let squared = 2.0 * c / (b + d.sqrt());
-        let length = squared.sqrt();
-        let radius = (h * h + squared).sqrt();
-        if !(length > 0.0) {
+        if !(z > 0.0) {
             // An end on the bottom: nothing hangs, and ξ = 0 whatever h.
             return Self { radius: h, extent_length: 1.0 + epsilon * h, ..Self::default() };
         }
+        let b = 1.0 + epsilon * (z + h);
+        let d = 1.0 + 2.0 * epsilon * (z + h) + (epsilon * h) * (epsilon * h);
+        let squared = 2.0 * z * (z + 2.0 * h) / (b + d.sqrt());
+        let length = squared.sqrt();
+        // ρ = √(h² + ℓ²) from the part's own equation, without a square root.
+        let radius = z + h - 0.5 * epsilon * squared;
         let stiffening = 1.0 + epsilon * radius;
         let (extent, extent_h) = if h > 0.0 {
-            let angle = (length / h).asinh();
+            // asinh(ℓ/h) = ln(1 + (ℓ + ρ − h)/h), ρ − h = ℓ²/(ρ + h): no cancellation.
+            let angle = (length * (1.0 + length / (radius + h)) / h).ln_1p();
             (h * angle + epsilon * h * length, angle - length / radius + epsilon * length)
         } else {
             (0.0, f64::INFINITY)
@@ -222,6 +223,17 @@ impl Profile {
             dh
         };
         Sensitivity { h: dh, first, second, anchor }
+    }
+
+    /// The tension `h` at `to`, predicted to first order from this profile solved at `from`:
+    /// `h + (Δx − X_z1 Δz1 − X_z2 Δz2)/X_h`, kept positive (a warm start of [`super::solver`]).
+    pub fn predict(&self, from: &Grounding, to: &Grounding) -> f64 {
+        if self.is_slack() || !(self.closure_h > 0.0) {
+            return self.h;
+        }
+        let change = (to.x - from.x) - self.closure_z1 * (to.z1 - from.z1) - self.closure_z2 * (to.z2 - from.z2);
+        let predicted = self.h + change / self.closure_h;
+        if predicted > 0.25 * self.h { predicted } else { 0.25 * self.h }
     }
 
     /// Potential energy in units of `W L_eq`, heights measured from the bottom: the suspended

@@ -18,6 +18,7 @@
 //! - [`integrator`]: how states advance in time (§1, time integration), on a narrow interface;
 //! - [`energy`]: the energy balance that checks it all (§5);
 //! - [`stability`]: the stable time step of each coupling and spinning body;
+//! - [`statics`]: the system at rest — tangent stiffness, static equilibrium, offset curves;
 //! - [`simd`]: which vector instructions the hot stages are built for;
 //! - [`world`]: a system running in time: clock, ledger, health check, live edits.
 //!
@@ -46,6 +47,7 @@ pub mod mesh;
 pub mod seabed;
 pub mod simd;
 pub mod stability;
+pub mod statics;
 pub mod surroundings;
 pub mod system;
 pub mod table;

@@ -1,10 +1,11 @@
-//! Live edits of a running world: a coupling replaced, the seabed changed, the time step
-//! changed, a reset. The first three start the integrator again from the synchronised state at the current time (positions and
+//! Live edits of a running world: a coupling replaced, the seabed changed, the bodies placed
+//! (at a static equilibrium), the time step changed, a reset. All but the reset start the integrator again from the synchronised state at the current time (positions and
 //! velocities do not move), keeping the energy ledger, so the motion goes on under what changed;
 //! a refused edit leaves the world as it was.
 
 use super::error::{StepError, TimingError};
 use super::World;
+use crate::body::BodyState;
 use crate::coupling::{Coupling, CouplingError};
 use crate::energy::Work;
 use crate::integrator::{Substeps, Timing};
@@ -65,6 +66,30 @@ impl World {
             *self = before;
             return Err(error.into());
         }
+        if let Err(error) = self.start_integrator() {
+            *self = before;
+            return Err(error);
+        }
+        let jump = self.energy().total() - before.energy().total();
+        self.ledger.add(&Work { dissipated: 0.0, external: jump });
+        self.health.limit = stability::binding(&self.limits());
+        Ok(())
+    }
+
+    /// Puts the bodies at `states` at the current time, velocities included (the GUI's
+    /// equilibrium button: the scene jumps to its static pose, at rest). The integrator starts
+    /// again from them; the jump in energy is booked as external work, as for a tuned coupling.
+    ///
+    /// # Errors
+    /// A state per body is needed, and the couplings must give their forces there; the world is
+    /// then unchanged.
+    pub fn place(&mut self, states: &[BodyState]) -> Result<(), StepError> {
+        if states.len() != self.states.len() {
+            let error = crate::system::SystemError::StateCount { bodies: self.states.len(), states: states.len() };
+            return Err(error.into());
+        }
+        let before = self.clone();
+        self.states = states.to_vec();
         if let Err(error) = self.start_integrator() {
             *self = before;
             return Err(error);

@@ -141,6 +141,10 @@ fn placed(source: &Source, label: &str, problem: Problem) -> SceneError {
             let at_field = field.and_then(|f| source.field(item, f)).unwrap_or(item);
             literal.as_deref().and_then(|l| source.literal(at_field, l)).unwrap_or(at_field)
         }),
+        Place::Section { section, field, literal } => source.field(0, section).map(|start| {
+            let at_field = field.and_then(|f| source.field(start, f)).unwrap_or(start);
+            literal.as_deref().and_then(|l| source.literal(at_field, l)).unwrap_or(at_field)
+        }),
     };
     let (line, col) = source.line_col(offset.unwrap_or(0));
     SceneError { path: label.to_string(), line, col, message: problem.message }

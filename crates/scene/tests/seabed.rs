@@ -1,0 +1,125 @@
+//! The `seabed` section, a line's displaced area and a body's initial rotation (issue 16): what
+//! they build, and a one-line `path:line:col` error naming the item for each bad value.
+
+mod common;
+
+use approx::assert_relative_eq;
+use std::path::Path;
+use tether_physics::coupling::CouplingKind;
+use tether_scene as scene;
+
+/// A block on the seabed 40 m down, a buoy held by a chain anchored on the bottom.
+const MOORED: &str = r#"Scene(
+    dt: 0.002,
+    bodies: [
+        Body(
+            name: "buoy",
+            master: Node(position: (60.0, 0.0, 0.0), mass: 3000.0, inertia: Inertia(xx: 1750.0, yy: 1750.0, zz: 1500.0)),
+            shape: Cylinder(radius: 1.0, length: 2.0),
+        ),
+        Body(
+            name: "block",
+            master: Node(position: (-5.0, 0.0, -39.5), mass: 2000.0, inertia: Inertia(xx: 300.0, yy: 300.0, zz: 300.0)),
+            shape: Box(size: (1.0, 1.0, 1.0)),
+        ),
+    ],
+    couplings: [
+        Catenary(
+            name: "chain",
+            end1: World((0.0, 0.0, -40.0)),
+            end2: Body(body: "buoy", point: (0.0, 0.0, -1.0)),
+            mass_per_length: 50.0,
+            length: 100.0,
+            stiffness: 5e6,
+            displaced_area: 0.0064,
+        ),
+    ],
+    seabed: Seabed(
+        elevation: -40.0,
+        line_friction: 0.6,
+        contact: SeabedContact(bodies: ["block"], stiffness: 2e5, damping: 1000.0, range: 0.01, friction: 0.5),
+    ),
+)
+"#;
+
+fn error_of(text: &str) -> String {
+    match scene::parse(text, Path::new("bad.ron")) {
+        Ok(_) => panic!("accepted:\n{text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+fn assert_error(edit: (&str, &str), expected: &str) {
+    assert!(MOORED.contains(edit.0), "edit target {:?} missing", edit.0);
+    let error = error_of(&MOORED.replacen(edit.0, edit.1, 1));
+    assert_eq!(error, expected);
+}
+
+#[test]
+fn a_chain_anchored_on_the_seabed_lies_on_it_and_a_block_touches_it() {
+    let loaded = common::scene(MOORED);
+    assert!(loaded.warnings.iter().any(|w| w.contains("displaced_area is ignored")), "{:?}", loaded.warnings);
+    let world = &loaded.world;
+    let line = world.line_state(0).expect("a catenary");
+    assert!(line.grounded_length() > 20.0, "L_B = {}", line.grounded_length());
+    assert_eq!(world.system().seabed().map(|s| (s.elevation, s.line_friction)), Some((-40.0, 0.6)));
+    let contact = &world.couplings()[1];
+    assert_eq!(contact.name, "seabed.block");
+    assert!(matches!(contact.kind, CouplingKind::Contact(_)));
+}
+
+#[test]
+fn a_body_starts_turned_by_its_rotation_about_its_master_node() {
+    let turned = MOORED.replacen("name: \"buoy\",", "name: \"buoy\",\n            rotation: (0.0, 0.0, 1.5707963267948966),", 1);
+    let world = common::scene(&turned).world;
+    // The fairlead 1 m below the master node stays there; a point 1 m along x goes to y.
+    let state = world.state(0);
+    assert_relative_eq!(state.position, nalgebra::Vector3::new(60.0, 0.0, 0.0), epsilon = 1e-12);
+    let body = &world.bodies()[0];
+    let along_x = state.point(&body.principal_point(&nalgebra::Vector3::new(1.0, 0.0, 0.0)));
+    assert_relative_eq!(along_x, nalgebra::Vector3::new(60.0, 1.0, 0.0), epsilon = 1e-12);
+}
+
+#[test]
+fn the_seabed_section_round_trips_through_ron() {
+    let turned = MOORED.replacen("name: \"buoy\",", "name: \"buoy\",\n            rotation: (0.1, 0.0, 0.2),", 1);
+    let loaded = common::scene(&turned);
+    let text = scene::to_ron(&loaded.file).unwrap();
+    let again = scene::parse(&text, Path::new("saved.ron")).unwrap_or_else(|e| panic!("{e}\n{text}"));
+    assert_eq!(again.file, loaded.file);
+    assert_eq!(again.world.couplings(), loaded.world.couplings());
+}
+
+#[test]
+fn a_seabed_needs_an_elevation_without_water() {
+    assert_error(("        elevation: -40.0,\n", ""), "bad.ron:26:5: seabed: the seabed needs an elevation (z_b, m): the scene has no water depth to take it from");
+}
+
+#[test]
+fn negative_line_friction() {
+    assert_error(("line_friction: 0.6", "line_friction: -0.1"), "bad.ron:28:9: seabed: line_friction must be ≥ 0, got -0.1");
+}
+
+#[test]
+fn negative_displaced_area() {
+    assert_error(("displaced_area: 0.0064", "displaced_area: -0.01"), "bad.ron:23:13: coupling \"chain\": displaced_area must be ≥ 0 m², got -0.01");
+}
+
+#[test]
+fn an_anchor_below_the_seabed() {
+    assert_error(
+        ("World((0.0, 0.0, -40.0))", "World((0.0, 0.0, -42.5))"),
+        "bad.ron:18:13: coupling \"chain\": end 1 is 2.5 m below the seabed (z_b = -40 m): an anchor lies on the seabed or above it",
+    );
+}
+
+#[test]
+fn an_unknown_body_on_the_seabed() {
+    assert_error(("bodies: [\"block\"]", "bodies: [\"blok\"]"), "bad.ron:29:41: seabed: unknown body \"blok\" (bodies: buoy, block)");
+}
+
+#[test]
+fn bad_seabed_contact_parameters() {
+    assert_error(("stiffness: 2e5", "stiffness: 0.0"), "bad.ron:29:51: seabed: stiffness must be > 0 N/m³, got 0");
+    assert_error(("bodies: [\"block\"]", "bodies: [\"block\", \"block\"]"), "bad.ron:29:41: seabed: body \"block\" is listed twice");
+}

@@ -3,7 +3,9 @@
 //! `tether-physics` (pure numerics, no GUI or viewer), `tether-scene` (RON files into a world),
 //! `tether-record` (the Rerun adapter that logs a world). [`gui`] sends a running world
 //! commands; [`study`] measures the integrators against a reference run and writes tables and a
-//! chart. The `tether` binary's command line lives beside `main.rs`.
+//! chart; [`statics`] reports static equilibria and offset curves. The `tether` binary's command
+//! line lives beside `main.rs`.
 
 pub mod gui;
+pub mod statics;
 pub mod study;

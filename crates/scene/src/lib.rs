@@ -7,6 +7,7 @@ pub mod build;
 pub mod file;
 mod finite;
 pub mod mesh_file;
+pub mod pose;
 pub mod source;
 
 use build::{Bodies, Place, Problem};

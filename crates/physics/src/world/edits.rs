@@ -3,7 +3,7 @@
 //! velocities do not move), keeping the energy ledger, so the motion goes on under what changed;
 //! a refused edit leaves the world as it was.
 
-use super::error::{StepError, TimingError};
+use super::error::{EditError, StepError, TimingError};
 use super::World;
 use crate::body::BodyState;
 use crate::coupling::{Coupling, CouplingError};
@@ -59,7 +59,7 @@ impl World {
     /// # Errors
     /// A catenary anchor would lie below the new seabed, or the lines cannot give their forces
     /// on it; the world is then unchanged.
-    pub fn set_seabed(&mut self, seabed: Seabed) -> Result<(), StepError> {
+    pub fn set_seabed(&mut self, seabed: Seabed) -> Result<(), EditError> {
         let before = self.clone();
         self.states = self.synchronized_states();
         if let Err(error) = self.system.replace_seabed(seabed) {
@@ -68,7 +68,7 @@ impl World {
         }
         if let Err(error) = self.start_integrator() {
             *self = before;
-            return Err(error);
+            return Err(error.into());
         }
         let jump = self.energy().total() - before.energy().total();
         self.ledger.add(&Work { dissipated: 0.0, external: jump });
@@ -83,7 +83,7 @@ impl World {
     /// # Errors
     /// A state per body is needed, and the couplings must give their forces there; the world is
     /// then unchanged.
-    pub fn place(&mut self, states: &[BodyState]) -> Result<(), StepError> {
+    pub fn place(&mut self, states: &[BodyState]) -> Result<(), EditError> {
         if states.len() != self.states.len() {
             let error = crate::system::SystemError::StateCount { bodies: self.states.len(), states: states.len() };
             return Err(error.into());
@@ -92,7 +92,7 @@ impl World {
         self.states = states.to_vec();
         if let Err(error) = self.start_integrator() {
             *self = before;
-            return Err(error);
+            return Err(error.into());
         }
         let jump = self.energy().total() - before.energy().total();
         self.ledger.add(&Work { dissipated: 0.0, external: jump });

@@ -30,9 +30,11 @@ pub struct StudyArgs {
     /// Simulated duration [s] (default: the scene's, rounded to the sample interval).
     #[arg(long)]
     duration: Option<f64>,
-    /// Reference: `dopri45:RTOL` or `NAME:DT` (a fixed-step integrator at time step DT). The default
-    /// is accurate to about 1e-10 relative over tens of seconds of tumbling; a finer fixed-step
-    /// reference gains nothing (its round-off grows with its steps).
+    /// Reference: `dopri45:RTOL`, `NAME:DT` (a fixed-step integrator at time step DT), or
+    /// `closed-form` (the exact solution, for a scene that is a damped linear oscillator: one body
+    /// free along one axis on one linear spring-damper to a world point). The default is accurate
+    /// to about 1e-10 relative over tens of seconds of tumbling; a finer fixed-step reference
+    /// gains nothing (its round-off grows with its steps).
     #[arg(long, default_value = "dopri45:1e-13", value_parser = parse_reference)]
     reference: Reference,
     /// Number of common sample times (errors are compared there; dopri45 ends a step on each).
@@ -43,9 +45,12 @@ pub struct StudyArgs {
     output: Option<PathBuf>,
 }
 
-/// `dopri45:1e-12` or `rk4:1e-5`.
+/// `dopri45:1e-12`, `rk4:1e-5` or `closed-form`.
 fn parse_reference(text: &str) -> Result<Reference, String> {
-    let (name, value) = text.split_once(':').ok_or_else(|| format!("expected NAME:VALUE (e.g. dopri45:1e-12 or rk4:1e-5), got `{text}`"))?;
+    if text == "closed-form" {
+        return Ok(Reference::ClosedForm);
+    }
+    let (name, value) = text.split_once(':').ok_or_else(|| format!("expected closed-form or NAME:VALUE (e.g. dopri45:1e-12 or rk4:1e-5), got `{text}`"))?;
     let integrator = super::record::parse_integrator(name)?;
     let value: f64 = value.parse().map_err(|_| format!("`{value}` is not a number"))?;
     if !(value.is_finite() && value > 0.0) {
@@ -69,7 +74,7 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<()> {
     // Sample at a multiple of the largest step, about --samples times.
     let largest = dts.iter().copied().fold(0.0_f64, f64::max).max(match args.reference {
         Reference::Fixed { dt, .. } => dt,
-        Reference::Adaptive { .. } => 0.0,
+        Reference::Adaptive { .. } | Reference::ClosedForm => 0.0,
     });
     let wanted = args.duration.unwrap_or(scene.file.duration);
     if !(wanted.is_finite() && wanted > 0.0) {

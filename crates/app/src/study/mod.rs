@@ -10,9 +10,13 @@
 //! reference run. The cost is the thread's CPU time per simulated second, and the integrator
 //! steps taken (rejected ones included for `dopri45`). A run that diverges is reported as such.
 //!
+//! The reference is a run of a fine integrator or, where the scene is a damped linear
+//! oscillator, its [`closed_form`].
+//!
 //! [`report`] writes the CSV and Markdown tables, [`chart`] the work-precision chart.
 
 pub mod chart;
+pub mod closed_form;
 pub mod report;
 
 use tether_physics::math::Vec3;
@@ -43,14 +47,17 @@ pub enum Reference {
     Adaptive { rtol: f64 },
     /// A fixed-step scheme at time step `dt` [s] (dividing the sample interval).
     Fixed { integrator: Integrator, dt: f64 },
+    /// The exact solution of a scene that is a damped linear oscillator ([`closed_form`]).
+    ClosedForm,
 }
 
 impl Reference {
-    /// `dopri45 rtol 1e-12` or `rk4 dt 1e-5 s`.
+    /// `dopri45 at rtol 1e-12`, `rk4 at dt 1e-5 s` or `the closed form`.
     pub fn describe(&self) -> String {
         match self {
             Self::Adaptive { rtol } => format!("dopri45 at rtol {rtol:e}"),
             Self::Fixed { integrator, dt } => format!("{} at dt {dt:e} s", integrator.name()),
+            Self::ClosedForm => "the closed form of the damped oscillator".into(),
         }
     }
 }
@@ -198,12 +205,7 @@ struct Samples {
 pub fn run(scene: &Scene, plan: &Plan, mut progress: impl FnMut(&str)) -> Result<Study, StudyError> {
     plan.check()?;
     let samples = (plan.duration / plan.sample_interval).round() as usize;
-    let mut reference_world = match plan.reference {
-        Reference::Adaptive { rtol } => world(scene, Integrator::Dopri45, plan.sample_interval, Some(rtol))?,
-        Reference::Fixed { integrator, dt } => world(scene, integrator, dt, None)?,
-    };
-    let reference = sample(&mut reference_world, plan.sample_interval, samples)
-        .map_err(|source| StudyError::Reference { reference: plan.reference.describe(), source })?;
+    let reference = reference_samples(scene, plan, samples)?;
     progress(&format!("reference ({}) done in {:.2} s of CPU", plan.reference.describe(), reference.cpu_seconds));
     let energy_budget = if reference.peak_energy > 0.0 { reference.peak_energy } else { 1.0 };
     let start = &reference.poses[0];
@@ -228,6 +230,35 @@ pub fn run(scene: &Scene, plan: &Plan, mut progress: impl FnMut(&str)) -> Result
     }
     let scene_name = scene.path.file_name().map_or_else(|| scene.path.display().to_string(), |n| n.to_string_lossy().into_owned());
     Ok(Study { scene: scene_name, duration: plan.duration, sample_interval: plan.sample_interval, reference: plan.reference, energy_budget, translates, runs })
+}
+
+/// The reference's samples: a run of the reference integrator, or the closed form at the
+/// sample times.
+///
+/// # Errors
+/// A scene that the closed form does not describe, or a reference run that fails.
+fn reference_samples(scene: &Scene, plan: &Plan, samples: usize) -> Result<Samples, StudyError> {
+    let mut reference_world = match plan.reference {
+        Reference::Adaptive { rtol } => world(scene, Integrator::Dopri45, plan.sample_interval, Some(rtol))?,
+        Reference::Fixed { integrator, dt } => world(scene, integrator, dt, None)?,
+        Reference::ClosedForm => {
+            let oscillator = closed_form::Oscillator::of_scene(scene).map_err(|why| StudyError::Plan(format!("the scene has no closed form: {why}")))?;
+            return Ok(exact_samples(&oscillator, plan.sample_interval, samples));
+        }
+    };
+    sample(&mut reference_world, plan.sample_interval, samples).map_err(|source| StudyError::Reference { reference: plan.reference.describe(), source })
+}
+
+/// The closed form at `samples` sample intervals `interval` [s] (t = 0 included): the motion
+/// keeps its energy balance exactly.
+fn exact_samples(oscillator: &closed_form::Oscillator, interval: f64, samples: usize) -> Samples {
+    let states: Vec<closed_form::Exact> = (0..=samples).map(|k| oscillator.at(k as f64 * interval)).collect();
+    Samples {
+        poses: states.iter().map(|s| vec![(s.position, s.orientation)]).collect(),
+        balances: vec![0.0; samples + 1],
+        peak_energy: states.iter().map(|s| s.kinetic + s.elastic).fold(0.0, f64::max),
+        cpu_seconds: 0.0,
+    }
 }
 
 /// The scene's world with `integrator` at world step `dt` [s], one sub-step, and (dopri45)

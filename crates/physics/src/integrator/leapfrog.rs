@@ -50,7 +50,7 @@ impl Leapfrog {
     /// Evaluates `time` and turns the synchronised velocities into `v(t − ½h) = v(t) − ½h γ(t)`.
     pub fn start(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, h: f64) -> Result<BodyEnergy, EvaluationError> {
         system.prescribe(states, time);
-        self.powers = system.evaluate(states, evaluation)?;
+        self.powers = system.evaluate(states, evaluation, time)?;
         // The velocities are synchronised: ω(t) is exact for either variant.
         self.accelerate(system, states, evaluation, Gyroscopic::Lagged, 0.0);
         let half = 0.5 * h;
@@ -83,7 +83,7 @@ impl Leapfrog {
     /// One step. Stages *advance*, *prescribe*, *predict*, *clear* and *gravity* run in two
     /// passes over the bodies, translation first and rotation second (a short loop, in which
     /// the processor overlaps one body's chain of rotation arithmetic with the next's); then
-    /// *couplings*, *accelerations* and *powers*. Built for AVX2 as well, with the per-body
+    /// *couplings*, *water*, *accelerations* and *powers*. Built for AVX2 as well, with the per-body
     /// stages inlined (same results, bit for bit).
     #[inline(always)]
     fn step_built(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, h: f64) -> Result<StepReport, EvaluationError> {
@@ -113,8 +113,9 @@ impl Leapfrog {
             }
         }
         let dissipated = system.apply_couplings(evaluation)?;
+        let water = system.apply_water(evaluation, time);
         let energy = self.accelerate(system, states, evaluation, self.gyroscopic, 0.5 * h);
-        let powers = Powers { dissipated, external: system.external_power(evaluation) };
+        let powers = Powers { dissipated, external: system.external_power(evaluation) + water };
         let work = Work::trapezoid(h, &self.powers, &powers);
         self.powers = powers;
         Ok(StepReport::accepted(h, work, energy))

@@ -195,7 +195,7 @@ impl Stages {
     /// the force evaluation, then each body's derivative.
     fn evaluate(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, slot: usize) -> Result<(), EvaluationError> {
         system.prescribe(states, time);
-        self.powers[slot] = system.evaluate(states, evaluation)?;
+        self.powers[slot] = system.evaluate(states, evaluation, time)?;
         let per_body = system.bodies().iter().zip(states.iter()).zip(&evaluation.frames).zip(&evaluation.loads);
         for ((((body, state), frame), load), rate) in per_body.zip(self.rates[slot].iter_mut()) {
             *rate = derivative(body, state, frame, load);

@@ -48,7 +48,7 @@ impl Splitting {
     /// synchronised).
     pub fn start(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64) -> Result<BodyEnergy, EvaluationError> {
         system.prescribe(states, time);
-        self.powers = system.evaluate(states, evaluation)?;
+        self.powers = system.evaluate(states, evaluation, time)?;
         Ok(self.kick_and_energies(system, states, evaluation, 0.0))
     }
 
@@ -74,8 +74,9 @@ impl Splitting {
             *load = system.gravity_load(body);
         }
         let dissipated = system.apply_couplings(evaluation)?;
+        let water = system.apply_water(evaluation, time);
         let energy = self.kick_and_energies(system, states, evaluation, 0.5 * h);
-        let powers = Powers { dissipated, external: system.external_power(evaluation) };
+        let powers = Powers { dissipated, external: system.external_power(evaluation) + water };
         let work = Work::trapezoid(h, &self.powers, &powers);
         self.powers = powers;
         Ok(StepReport::accepted(h, work, energy))

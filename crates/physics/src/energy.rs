@@ -38,12 +38,14 @@ impl EnergyReport {
     }
 }
 
-/// Power [W] at one force evaluation: dissipated by dampers (≥ 0) and put in by prescribed
-/// motions and the water.
+/// Power [W] at one force evaluation: dissipated by dampers (≥ 0), put in by prescribed
+/// motions, and put in by the water (kept apart: the staggered schemes integrate it with their
+/// half-step velocities, see [`crate::integrator::leapfrog`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Powers {
     pub dissipated: f64,
     pub external: f64,
+    pub water: f64,
 }
 
 /// Work [J] over a span of time: dissipated by dampers, and put in by prescribed motions and the
@@ -55,7 +57,8 @@ pub struct Work {
 }
 
 impl Work {
-    /// `½ h (P_a + P_b)`: the trapezoid rule over a step `h` [s] between two evaluations.
+    /// `½ h (P_a + P_b)`: the trapezoid rule over a step `h` [s] between two evaluations, of the
+    /// dissipated and the external power (the water's is the caller's).
     pub fn trapezoid(h: f64, a: &Powers, b: &Powers) -> Self {
         Self { dissipated: 0.5 * h * (a.dissipated + b.dissipated), external: 0.5 * h * (a.external + b.external) }
     }

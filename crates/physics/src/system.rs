@@ -192,7 +192,7 @@ impl System {
         }
         let dissipated = self.apply_couplings(evaluation)?;
         let water = self.apply_water(evaluation, time);
-        Ok(Powers { dissipated, external: self.external_power(evaluation) + water })
+        Ok(Powers { dissipated, external: self.external_power(evaluation), water })
     }
 
     /// Stages *clear* and *gravity* for one body: `F = m g`, `M = 0` (nothing for a kinematic
@@ -224,6 +224,16 @@ impl System {
             water.resize(stage.floating.len(), crate::water::WaterForces::default());
         }
         stage.apply(&self.bodies, frames, loads, water, water_scratch, time)
+    }
+
+    /// `Σ F·v + M·ω` [W] of the water's forces still in `evaluation` (those of the previous
+    /// evaluation) at the kinematics now in its frames: the left end of the staggered schemes'
+    /// water work (see [`crate::integrator::leapfrog`]).
+    pub fn water_power(&self, evaluation: &Evaluation) -> f64 {
+        if self.water.is_none() {
+            return 0.0;
+        }
+        evaluation.water.iter().map(|record| crate::water::stage::power(&record.total(), &evaluation.frames[record.body])).sum()
     }
 
     /// Stage *powers*: what the prescribed motions put in, `−Σ (F_k·v_k + M_k·ω_k)` [W] (of

@@ -153,6 +153,10 @@ mod tests {
         let submerged = -up.dot(&result.head_flux);
         // Buoyancy ρ g V_sub straight up, to round-off of sums over 96 faces.
         assert_relative_eq!(result.force, up * (rho_g * submerged), epsilon = 1e-9 * rho_g * submerged);
-        assert!(submerged > 300.0 && submerged < 500.0);
+        // Through the centre of buoyancy, which the hydrostatics find by other integrals.
+        let statics = crate::water::hydrostatics::Hydrostatics::at(&hull, &Vec3::new(0.0, 0.0, -0.5), rotation.matrix(), 0.0);
+        assert_relative_eq!(submerged, statics.displaced_volume, max_relative = 1e-12);
+        let arm = rotation.transpose() * (statics.center_of_buoyancy - Vec3::new(0.0, 0.0, -0.5));
+        assert_relative_eq!(result.moment, arm.cross(&result.force), epsilon = 1e-9 * rho_g * submerged);
     }
 }

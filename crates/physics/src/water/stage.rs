@@ -88,6 +88,11 @@ impl WaterStage {
         let mut power = 0.0;
         for (floating, record) in self.floating.iter().zip(out.iter_mut()) {
             let (body, frame) = (&bodies[floating.body], &frames[floating.body]);
+            // A prescribed motion is not moved by forces: the water does nothing to it.
+            if body.is_kinematic() {
+                *record = WaterForces { body: floating.body, ..WaterForces::default() };
+                continue;
+            }
             *record = self.body_forces(floating, body, frame, &loads[floating.body], scratch, time, ramp, waves);
             let total = record.total();
             loads[floating.body].force += total.force;
@@ -125,8 +130,7 @@ impl WaterStage {
                 record.added_mass = added.reaction(body, frame, &before, &acceleration);
             }
         }
-        let total = record.total();
-        record.power = total.force.dot(&frame.velocity) + total.moment.dot(&(frame.rotation * frame.angular_velocity));
+        record.power = power(&record.total(), frame);
         record
     }
 
@@ -146,4 +150,10 @@ impl WaterStage {
             *pressure = rho_g * (*head + dynamic);
         }
     }
+}
+
+/// `F·v + M·ω` [W] of `load` on a body moving as `frame`.
+#[inline(always)]
+pub fn power(load: &Load, frame: &BodyFrame) -> f64 {
+    load.force.dot(&frame.velocity) + load.moment.dot(&(frame.rotation * frame.angular_velocity))
 }

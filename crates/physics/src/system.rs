@@ -223,7 +223,7 @@ impl System {
         if water.len() != stage.floating.len() {
             water.resize(stage.floating.len(), crate::water::WaterForces::default());
         }
-        stage.apply(&self.bodies, frames, loads, water, water_scratch, time)
+        stage.apply(self.level, &self.bodies, frames, loads, water, water_scratch, time)
     }
 
     /// `Σ F·v + M·ω` [W] of the water's forces still in `evaluation` (those of the previous

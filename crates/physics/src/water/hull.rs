@@ -25,6 +25,8 @@ pub enum HullError {
     NotFinite { vertex: usize },
     #[error("the hull is open: its faces' area vectors sum to {gap:.3e} m² (of {area:.3e} m²), not zero; a body in water needs a closed mesh")]
     Open { gap: f64, area: f64 },
+    #[error("the hull encloses no volume (a flat or degenerate mesh); a body in water needs a closed mesh")]
+    NoVolume,
     #[error("the hull is inside out (its normals point inwards: signed volume {volume:.6e} m³); a body in water needs an outward-oriented mesh")]
     InsideOut { volume: f64 },
 }
@@ -72,6 +74,9 @@ impl Hull {
         }
         // (1/3) Σ A n·x_c = (1/6) Σ (2 A n)·(a + b + c)/3.
         let volume = triangles.iter().zip(&double_area_normals).map(|(t, n)| n.dot(&(corner(t, 0) + corner(t, 1) + corner(t, 2)))).sum::<f64>() / 18.0;
+        if volume == 0.0 || !(area > 0.0) {
+            return Err(HullError::NoVolume);
+        }
         if !(volume > 0.0) {
             return Err(HullError::InsideOut { volume });
         }

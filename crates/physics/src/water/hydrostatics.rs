@@ -16,8 +16,12 @@
 //! The integrands are polynomials of the corners' coordinates, integrated exactly per wet
 //! triangle: `∫ f g dA = (A/12) [Σ f_i g_i + (Σ f_i)(Σ g_i)]` for linear f, g.
 
+use super::added_mass::AddedMass;
+use super::environment::Water;
 use super::hull::Hull;
 use super::pressure::wet_parts;
+use super::stage::FloatingBody;
+use crate::body::{BodyState, RigidBody};
 use crate::math::{Mat3, Vec3};
 
 /// A hull's still-water properties at one pose (world axes).
@@ -113,6 +117,46 @@ pub fn equilibrium_height(hull: &Hull, rotation: &Mat3, level: f64, x: f64, y: f
         }
     }
     Some(z)
+}
+
+/// A floating body at its free-floating equilibrium in still water: what `tether check` prints.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FloatingEquilibrium {
+    /// Height of G [m] at equilibrium.
+    pub height: f64,
+    /// The hydrostatics there.
+    pub statics: Hydrostatics,
+    /// `GM_T`, `GM_L` [m].
+    pub metacentric_heights: [f64; 2],
+    /// Natural periods [s] of heave, roll and pitch with the added mass and inertia; `None`
+    /// where nothing restores (a negative metacentric height: the body capsizes).
+    pub periods: [Option<f64>; 3],
+}
+
+/// The equilibrium of `floating` (`body`, turned as in `state`) in `water` under its weight
+/// and a vertical pull `pull` [N] (the couplings' at t = 0, positive up): heave only, the
+/// orientation and horizontal position kept. `None` if it sinks (its hull cannot displace
+/// enough) or is pulled out of the water.
+pub fn floating_equilibrium(body: &RigidBody, floating: &FloatingBody, water: &Water, state: &BodyState, pull: f64) -> Option<FloatingEquilibrium> {
+    let hull = &floating.hull;
+    let rotation = state.rotation_matrix();
+    let volume = (body.mass() * water.gravity() - pull) / water.specific_weight();
+    let height = equilibrium_height(hull, &rotation, water.level(), state.position.x, state.position.y, volume)?;
+    let statics = Hydrostatics::at(hull, &Vec3::new(state.position.x, state.position.y, height), &rotation, water.level());
+    let metacentric_heights = statics.metacentric_heights(height);
+    let hydro = &floating.hydro;
+    let wetted = (statics.displaced_volume / hull.volume()).min(1.0);
+    let added = AddedMass::new(&hydro.axes, &hydro.spec.added_mass, &hydro.spec.added_inertia, hull.volume(), water.density(), wetted);
+    let world = |principal: &Mat3| rotation * principal * rotation.transpose();
+    let (mass, inertia) = (world(&added.translational), world(&(Mat3::from_diagonal(&body.principal_moments()) + added.rotational)));
+    let rho_g = water.specific_weight();
+    let period = |inertia: f64, stiffness: f64| (stiffness > 0.0).then(|| std::f64::consts::TAU * (inertia / stiffness).sqrt());
+    let periods = [
+        period(body.mass() + mass[(2, 2)], rho_g * statics.waterplane_area),
+        period(inertia[(0, 0)], rho_g * statics.displaced_volume * metacentric_heights[0]),
+        period(inertia[(1, 1)], rho_g * statics.displaced_volume * metacentric_heights[1]),
+    ];
+    Some(FloatingEquilibrium { height, statics, metacentric_heights, periods })
 }
 
 #[cfg(test)]

@@ -39,7 +39,7 @@ pub struct HydroSpec {
 /// Coefficients that cannot be.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum HydroError {
-    #[error("{field} must be finite and ≥ 0 {unit} on every axis, got ({}, {}, {})", value.x, value.y, value.z)]
+    #[error("{field} must be finite and ≥ 0{unit} on every axis, got ({}, {}, {})", value.x, value.y, value.z)]
     Negative { field: &'static str, unit: &'static str, value: Vec3 },
     #[error("drag_areas must be finite and > 0 m² on every axis, got ({}, {}, {})", .0.x, .0.y, .0.z)]
     Area(Vec3),
@@ -67,11 +67,11 @@ impl Hydro {
     pub fn new(spec: HydroSpec, body: &RigidBody, hull: &Hull) -> Result<Self, HydroError> {
         for (field, unit, value) in [
             ("drag", "", spec.drag),
-            ("rotational_drag", "N·m·s²", spec.rotational_drag),
-            ("linear_damping", "N·s/m", spec.linear_damping),
-            ("rotational_damping", "N·m·s", spec.rotational_damping),
+            ("rotational_drag", " N·m·s²", spec.rotational_drag),
+            ("linear_damping", " N·s/m", spec.linear_damping),
+            ("rotational_damping", " N·m·s", spec.rotational_damping),
             ("added_mass", "", spec.added_mass),
-            ("added_inertia", "kg·m²", spec.added_inertia),
+            ("added_inertia", " kg·m²", spec.added_inertia),
         ] {
             if !value.iter().all(|x| *x >= 0.0 && x.is_finite()) {
                 return Err(HydroError::Negative { field, unit, value });

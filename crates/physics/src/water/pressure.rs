@@ -88,6 +88,7 @@ pub struct PressureIntegral {
 
 /// Integrates the vertex pressures `pressures` [Pa] over `hull`'s wet surface, with the vertex
 /// heads below the still level `heads` = `z_w − z` [m] for the submerged volume.
+#[inline(always)]
 pub fn integrate(hull: &Hull, pressures: &[f64], heads: &[f64]) -> PressureIntegral {
     let mut total = PressureIntegral::default();
     let vertices = hull.vertices();

@@ -87,7 +87,7 @@ pub fn status(world: &World, run: &RunState) -> Status {
     let rotation_limit = limits
         .iter()
         .filter_map(|l| match l.limiter {
-            Limiter::Rotation(body) => Some((world.bodies()[body].name.clone(), l.dt)),
+            Limiter::Rotation(body) | Limiter::Water(body) => Some((world.bodies()[body].name.clone(), l.dt)),
             Limiter::Coupling(_) | Limiter::Impact(_) => None,
         })
         .min_by(|a, b| a.1.total_cmp(&b.1));

@@ -8,11 +8,11 @@ use super::forces::WaterForces;
 use super::hull::{Hull, HullError};
 use super::morison::{Hydro, HydroError, HydroSpec};
 use super::pressure::integrate;
+use super::waves::SeaInstant;
 use crate::body::{BodyFrame, Load, RigidBody};
 use crate::math::Vec3;
 use crate::simd::Level;
 use std::sync::Arc;
-use wide::f64x4;
 
 /// A body in the water: its index, hull and coefficients.
 #[derive(Debug, Clone, PartialEq)]
@@ -54,8 +54,8 @@ pub struct WaterStage {
 /// The stage's buffers, kept with the evaluation (sized on first use, then reused).
 #[derive(Debug, Clone, Default)]
 pub struct WaterScratch {
-    /// `φ − ω t` of each wave component at the evaluation, four to a vector.
-    phases: Vec<f64x4>,
+    /// The sea at the evaluation's time.
+    sea: SeaInstant,
     /// Pressure [Pa] and head below the still level `z_w − z` [m] of each hull vertex.
     pressures: Vec<f64>,
     heads: Vec<f64>,
@@ -80,10 +80,9 @@ impl WaterStage {
     /// other force of the evaluation: the added mass reacts to the total); returns their power
     /// `Σ F·v + M·ω` [W].
     ///
-    /// Built for AVX2 with FMA as well as the portable build, chosen by `level`: the waves'
-    /// sines, cosines and exponentials are polynomials of fused multiply–adds, which the
-    /// portable build makes in software (correctly rounded, as the instruction is: the same
-    /// results, bit for bit, about three times slower).
+    /// Built for AVX2 as well as the portable build, chosen by `level` (the same IEEE
+    /// arithmetic: the same results, bit for bit): the four chains of complex powers of the
+    /// waves' sums run in one vector instruction each.
     #[allow(clippy::too_many_arguments)]
     pub fn apply(&self, level: Level, bodies: &[RigidBody], frames: &[BodyFrame], loads: &mut [Load], out: &mut [WaterForces], scratch: &mut WaterScratch, time: f64) -> f64 {
         match level {
@@ -95,7 +94,7 @@ impl WaterStage {
     }
 
     #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,fma")]
+    #[target_feature(enable = "avx2")]
     fn apply_avx2(&self, bodies: &[RigidBody], frames: &[BodyFrame], loads: &mut [Load], out: &mut [WaterForces], scratch: &mut WaterScratch, time: f64) -> f64 {
         self.apply_built(bodies, frames, loads, out, scratch, time)
     }
@@ -106,7 +105,7 @@ impl WaterStage {
         let ramp = water.ramp(time);
         let waves = ramp > 0.0 && !water.sea().is_calm();
         if waves {
-            water.sea().phases_at(time, &mut scratch.phases);
+            water.sea().instant(time, &mut scratch.sea);
         }
         let mut power = 0.0;
         for (floating, record) in self.floating.iter().zip(out.iter_mut()) {
@@ -171,7 +170,7 @@ impl WaterStage {
         for ((vertex, pressure), head) in each {
             let x = frame.position + frame.rotation * vertex;
             *head = level - x.z;
-            let dynamic = if waves { ramp * water.sea().pressure_head(&scratch.phases, x.x, x.y, x.z) } else { 0.0 };
+            let dynamic = if waves { ramp * water.sea().pressure_head(&scratch.sea, x.x, x.y, x.z) } else { 0.0 };
             *pressure = rho_g * (*head + dynamic);
         }
     }

@@ -19,6 +19,7 @@ use std::path::Path;
 use std::sync::Arc;
 
 mod water;
+pub use water::{hydro_spec, water_spec};
 
 /// Where a problem is in the file.
 #[derive(Debug, Clone, PartialEq)]

@@ -1,13 +1,16 @@
 //! The scene's water and its floating bodies into the system (PHYSICS.md §6), with each problem
 //! placed at the field at fault: the water section's, or the body's `hydro`/`shape`.
 
-use super::{ItemAt, Place, Problem};
+use super::{Bodies, ItemAt, Place, Problem};
 use crate::file::SceneFile;
 use crate::source::ItemKind;
 use crate::water::WaterDef;
 use tether_physics::body::RigidBody;
 use tether_physics::system::{System, SystemError};
+use tether_physics::math::Vec3;
+use tether_physics::water::morison::HydroSpec;
 use tether_physics::water::stage::FloatingError;
+use tether_physics::water::{Hull, Hydro, Water, WaterSpec};
 
 /// `system` with the water of `file` and its bodies that declare `hydro` in it (unchanged
 /// without water); warns of a body under the surface that declares no `hydro`, and of `hydro`
@@ -51,4 +54,27 @@ fn placed(error: SystemError) -> Problem {
         }
         other => Problem { place: Place::Top("water"), message: other.to_string() },
     }
+}
+
+/// The water of `file`, checked as loading checks it (live tuning checks an edited water this
+/// way before it reaches a running world).
+pub fn water_spec(file: &SceneFile) -> Result<WaterSpec, Problem> {
+    let Some(def) = &file.water else { return Err(Problem { place: Place::Top("water"), message: "the scene has no water".into() }) };
+    let spec = def.spec();
+    let gravity = Vec3::new(file.gravity[0], file.gravity[1], file.gravity[2]);
+    Water::new(spec, &gravity).map_err(|error| placed(SystemError::Water(error)))?;
+    Ok(spec)
+}
+
+/// The coefficients of body `index` of `file` against its built body, checked as loading checks
+/// them (live tuning).
+pub fn hydro_spec(file: &SceneFile, index: usize, bodies: &Bodies) -> Result<HydroSpec, Problem> {
+    let (Some(def), Some(body)) = (file.bodies.get(index), bodies.bodies().get(index)) else {
+        return Err(Problem { place: Place::Top("bodies"), message: format!("the scene has no body {index}") });
+    };
+    let Some(hydro) = &def.hydro else { return Err(ItemAt::new(ItemKind::Body, &def.name, 0).at_name("declares no hydro".into())) };
+    let spec = hydro.spec();
+    let hull = Hull::of_body(body).map_err(|e| placed(SystemError::Hydro { body: def.name.clone(), source: FloatingError::Hull(e) }))?;
+    Hydro::new(spec, body, &hull).map_err(|e| placed(SystemError::Hydro { body: def.name.clone(), source: FloatingError::Hydro(e) }))?;
+    Ok(spec)
 }

@@ -17,10 +17,12 @@
 //!   above a thousandth of the body's weight (`m·max(|g|, 1 m/s²)`), the largest of the frame
 //!   one body radius long (the force itself is in `plots/contact/<name>`);
 //! - `plots/contact/<name>`: a contact's total normal force `Σ|f_n|` and friction `|Σ f_t|`,
-//!   series `normal` and `friction` [N]; its `plots/tension` series is the normal force.
+//!   series `normal` and `friction` [N]; its `plots/tension` series is the normal force;
+//! - the water, when the scene has some: [`water`].
 
 pub mod layout;
 pub mod paths;
+pub mod water;
 
 use rerun::RecordingStream;
 use std::path::Path;
@@ -38,6 +40,8 @@ pub struct Recorder {
     stream: RecordingStream,
     body_paths: Vec<String>,
     coupling_paths: Vec<String>,
+    /// The water's part, if the scene has water.
+    water: Option<water::WaterRecorder>,
 }
 
 /// Face forces below this fraction of the body's weight are not drawn.
@@ -73,7 +77,8 @@ impl Recorder {
             }
         }
         let coupling_paths = world.couplings().iter().map(paths::coupling).collect();
-        Ok(Self { stream, body_paths, coupling_paths })
+        let water = water::WaterRecorder::new(&stream, world)?;
+        Ok(Self { stream, body_paths, coupling_paths, water })
     }
 
     /// Logs the world's current state at its `sim_time` and `step`.
@@ -106,6 +111,9 @@ impl Recorder {
         let energy = world.energy();
         let values = [energy.kinetic, energy.gravity, energy.elastic, energy.dissipated, energy.external_work, energy.total(), energy.balance()];
         self.stream.log(paths::ENERGY, &rerun::Scalars::new(values))?;
+        if let Some(water) = &self.water {
+            water.log_frame(&self.stream, world)?;
+        }
         Ok(())
     }
 

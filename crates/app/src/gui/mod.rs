@@ -27,6 +27,7 @@ pub mod simulation;
 pub mod stream;
 pub mod tuning;
 pub mod watch;
+pub mod water;
 
 use rerun::external::{eframe, egui, re_viewer};
 use std::path::PathBuf;

@@ -14,6 +14,7 @@ use super::scenes::{self, SceneAction};
 use super::simulation::{Command, Report, Simulation, Speed, Status, Wake};
 use super::stream::Sinks;
 use super::tuning::{self, TuningAction};
+use super::water::{self, WaterAction};
 use rerun::external::egui;
 use tether_scene::file::CouplingDef;
 use std::collections::VecDeque;
@@ -190,6 +191,7 @@ impl ControlPanel {
                 self.use_estimate(estimate);
             }
             self.tuning_ui(ui);
+            self.water_ui(ui);
             ui.separator();
             self.log_ui(ui);
         });
@@ -342,6 +344,44 @@ impl ControlPanel {
         }
     }
 
+    fn water_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(open) = &mut self.scene else { return };
+        let drafts = open.water_draft.as_mut().map(|water| water::WaterDrafts {
+            water,
+            water_refusal: open.water_refusal.as_deref(),
+            bodies: open
+                .hydro_drafts
+                .iter_mut()
+                .zip(&open.hydro_refusals)
+                .zip(&open.file.bodies)
+                .enumerate()
+                .filter_map(|(index, ((draft, refusal), body))| draft.as_mut().map(|hydro| (index, body.name.as_str(), hydro, refusal.as_deref())))
+                .collect(),
+        });
+        for action in water::ui(ui, drafts) {
+            match action {
+                WaterAction::Water => self.tune_water(),
+                WaterAction::Hydro(index) => self.tune_hydro(index),
+            }
+        }
+    }
+
+    /// Has the water draft checked by the scene builder; sends the simulation what it accepts.
+    pub fn tune_water(&mut self) {
+        let Some(open) = &mut self.scene else { return };
+        if let Some(spec) = open.tune_water() {
+            self.simulation.send(Command::SetWater(spec));
+        }
+    }
+
+    /// Has body `index`'s coefficients draft checked; sends the simulation what it accepts.
+    pub fn tune_hydro(&mut self, index: usize) {
+        let Some(open) = &mut self.scene else { return };
+        if let Some(spec) = open.tune_hydro(index) {
+            self.simulation.send(Command::SetHydro { body: index, spec });
+        }
+    }
+
     /// Has draft `index` checked by the scene builder (same checks and messages as loading);
     /// an accepted value goes to the simulation, a refused one stays in its knob with the
     /// reason and the simulation is untouched.
@@ -361,11 +401,19 @@ impl ControlPanel {
         }
     }
 
-    /// Every coupling back to what the file says, in the running simulation too.
+    /// Every coupling and the water back to what the file says, in the running simulation too.
     pub fn revert_to_file(&mut self) {
         let Some(open) = &mut self.scene else { return };
-        for index in open.revert_to_file() {
+        let couplings = open.revert_to_file();
+        let (water, bodies) = open.revert_water_to_file();
+        for index in couplings {
             self.tune(index);
+        }
+        if water {
+            self.tune_water();
+        }
+        for index in bodies {
+            self.tune_hydro(index);
         }
     }
 

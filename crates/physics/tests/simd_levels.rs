@@ -108,7 +108,7 @@ fn evaluations(system: &System, level: Level, sets: &[Vec<BodyState>]) -> Vec<Ev
     let mut evaluation = Evaluation::new(system.bodies().len(), system.couplings());
     sets.iter()
         .map(|states| {
-            system.evaluate(states, &mut evaluation).expect("every coupling gives its forces");
+            system.evaluate(states, &mut evaluation, 0.0).expect("every coupling gives its forces");
             evaluation.clone()
         })
         .collect()

@@ -351,7 +351,7 @@ impl<'m> Observer<'m> {
         let energy = world.energy();
         self.drift = self.drift.max((energy.balance() - self.balance0).abs());
         self.peak_energy = self.peak_energy.max(energy.kinetic + energy.elastic.abs());
-        if world.steps() % self.settle.stride == 0 {
+        if world.steps().is_multiple_of(self.settle.stride) {
             self.settle.take(world);
         }
     }
@@ -362,7 +362,7 @@ impl<'m> Observer<'m> {
     /// The name of a metric whose value is not finite (a run the health check let through
     /// with an infinite force, say): such a value never reaches the results.
     pub fn finish(mut self, world: &World, settle_band: f64) -> Result<Vec<f64>, String> {
-        if world.steps() % self.settle.stride != 0 {
+        if !world.steps().is_multiple_of(self.settle.stride) {
             self.settle.take(world);
         }
         let budget = if self.peak_energy > 0.0 { self.peak_energy } else { 1.0 };

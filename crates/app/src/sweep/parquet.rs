@@ -107,7 +107,7 @@ fn unit(unit: &str) -> HashMap<String, String> {
 
 /// The columns of `rows` as arrays, in the schema's order.
 fn arrays(columns: &Columns, rows: &[Row]) -> Vec<ArrayRef> {
-    let whole = |f: &dyn Fn(&Row) -> u64| -> ArrayRef { Arc::new(rows.iter().map(|r| f(r)).collect::<arrow_array::UInt64Array>()) };
+    let whole = |f: &dyn Fn(&Row) -> u64| -> ArrayRef { Arc::new(rows.iter().map(f).collect::<arrow_array::UInt64Array>()) };
     let real = |f: &dyn Fn(&Row) -> Option<f64>| -> ArrayRef {
         let mut builder = Float64Builder::with_capacity(rows.len());
         rows.iter().for_each(|r| builder.append_option(f(r)));

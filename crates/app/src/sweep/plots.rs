@@ -156,6 +156,12 @@ fn values(rows: &Rows, series: &[Series]) -> Result<Vec<Vec<Option<f64>>>, Sweep
     Ok(values)
 }
 
+/// A curve: its legend, if it has one, and its points.
+type Curve = (Option<String>, Vec<(f64, f64)>);
+
+/// The cases of a curve, with its legend.
+type Group = (Option<String>, Vec<usize>);
+
 /// One chart's data.
 struct Chart<'a> {
     title: String,
@@ -165,7 +171,7 @@ struct Chart<'a> {
     y_log: bool,
     /// Level names along a factor of names or flags (drawn at 0, 1, 2…).
     categories: &'a [String],
-    curves: Vec<(Option<String>, Vec<(f64, f64)>)>,
+    curves: Vec<Curve>,
     /// Whether the curves are drawn as lines (else as points).
     lines: bool,
     /// The factor's values of the cases without a value.
@@ -341,7 +347,7 @@ fn category(x: f64, categories: &[String]) -> String {
 }
 
 /// The cases of each curve of a chart against factor `factor`, and whether they are lines.
-fn groups(plan: &Plan, axes: &Axes, factor: usize) -> (Vec<(Option<String>, Vec<usize>)>, bool) {
+fn groups(plan: &Plan, axes: &Axes, factor: usize) -> (Vec<Group>, bool) {
     let cases = axes.ok.len();
     let others: Vec<usize> = (0..plan.factors.len()).filter(|&f| f != factor).collect();
     match plan.design {
@@ -354,7 +360,7 @@ fn groups(plan: &Plan, axes: &Axes, factor: usize) -> (Vec<(Option<String>, Vec<
                 (vec![(None, (0..cases).collect())], true)
             } else if curves.len() <= MAX_CURVES {
                 // Grid cases come in order, so each curve's first case labels it.
-                let mut labelled: Vec<(Option<String>, Vec<usize>)> = curves.into_values().map(|cases| (Some(label(plan, axes, &others, cases[0])), cases)).collect();
+                let mut labelled: Vec<Group> = curves.into_values().map(|cases| (Some(label(plan, axes, &others, cases[0])), cases)).collect();
                 labelled.sort_by_key(|(_, cases)| cases[0]);
                 (labelled, true)
             } else {

@@ -69,7 +69,8 @@ impl Summary {
     pub fn markdown(&self, plan: &Plan, charts: &[String]) -> String {
         let mut out = String::new();
         let _ = writeln!(out, "# Sweep {}\n", plan.name);
-        let _ = writeln!(out, "Spec `{}`, base scene `{}`; design: {}, {} cases.\n", plan.spec_path.display(), plan.scene_path.display(), plan.design.describe(), plan.cases.len());
+        let absolute = |p: &std::path::Path| std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf());
+        let _ = writeln!(out, "Spec `{}`, base scene `{}`; design: {}, {} cases.\n", absolute(&plan.spec_path).display(), absolute(&plan.scene_path).display(), plan.design.describe(), plan.cases.len());
         out.push_str("| factor | sets | values | base scene |\n|---|---|---|---|\n");
         for factor in &plan.factors {
             let base = factor.base.as_ref().map_or_else(|| "(default)".to_string(), ToString::to_string);

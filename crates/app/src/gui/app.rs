@@ -224,3 +224,22 @@ impl eframe::App for TetherApp {
         self.panel.shutdown();
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A sweep directory is known by its manifest, whether the folder or the manifest is dropped.
+    #[test]
+    fn dropped_sweep_directories_are_told_from_scenes_and_recordings() {
+        let dir = tempfile::tempdir().unwrap();
+        assert_eq!(Dropped::of(dir.path()), Dropped::Other, "a folder with no sweep in it");
+        let manifest = dir.path().join(crate::sweep::store::MANIFEST);
+        std::fs::write(&manifest, "{}").unwrap();
+        assert_eq!(Dropped::of(dir.path()), Dropped::Sweep(dir.path().to_path_buf()));
+        assert_eq!(Dropped::of(&manifest), Dropped::Sweep(dir.path().to_path_buf()));
+        assert_eq!(Dropped::of(Path::new("scenes/chain.ron")), Dropped::Scene);
+        assert_eq!(Dropped::of(Path::new("out.RRD")), Dropped::Recording);
+        assert_eq!(Dropped::of(Path::new("notes.txt")), Dropped::Other);
+    }
+}

@@ -342,6 +342,38 @@ fn a_killed_sweep_resumes_where_it_stopped() {
     assert_eq!(without_cpu(&here.join("out/results.csv")), without_cpu(&here.join("fresh/results.csv")));
 }
 
+/// Ctrl-C (SIGINT) stops the cases in flight and keeps the rows written: exit code 130, and
+/// `--resume` finishes the sweep.
+#[test]
+fn ctrl_c_keeps_the_rows_written_and_resume_finishes() {
+    let spec = r#"Sweep(
+        scene: "oscillator.ron",
+        duration: 20.0,
+        design: Grid,
+        factors: [Factor(path: "couplings.spring.law.stiffness", values: Linear(from: 100.0, to: 200.0, count: 12))],
+    )"#;
+    let dir = folder(&oscillator(0.5, 1.0), spec);
+    let here = dir.path();
+    let child = Command::new(env!("CARGO_BIN_EXE_tether")).args(["sweep", "sweep.ron", "-o", "out", "--jobs", "2"]).current_dir(here).stdout(std::process::Stdio::piped()).spawn().unwrap();
+    let rows_file = here.join("out/runs/all.csv");
+    let start = std::time::Instant::now();
+    while std::fs::read_to_string(&rows_file).map_or(0, |t| t.lines().count()) < 3 {
+        assert!(start.elapsed().as_secs() < 60, "no rows after a minute");
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    // SAFETY: signalling the child this test started.
+    unsafe { libc::kill(child.id() as libc::pid_t, libc::SIGINT) };
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(130));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("interrupted: the finished cases are kept; run again with --resume"), "{}", String::from_utf8_lossy(&out.stdout));
+    let (_, kept) = table(&rows_file);
+    assert!((2..12).contains(&kept.len()), "{} rows kept", kept.len());
+    let resumed = tether_ok(&["sweep", "sweep.ron", "-o", "out", "--resume"], here);
+    assert!(resumed.contains(&format!("ran {} of 12 cases", 12 - kept.len())), "{resumed}");
+    let (_, rows) = table(&here.join("out/results.csv"));
+    assert_eq!(rows.len(), 12);
+}
+
 /// A torn last line (a machine that went down mid-write) is cut off on resume, and its case
 /// run again.
 #[test]

@@ -488,6 +488,19 @@ fn factor_paths_reach_every_part_of_a_scene() {
     assert_eq!(plan.scene(&plan.values(1)).unwrap().world.tolerances().rtol, 1e-4);
 }
 
+/// The specs shipped in `examples/sweeps/` load and check against their scenes.
+#[test]
+fn shipped_specs_load() {
+    let folder = common::repo("examples/sweeps");
+    let specs: Vec<PathBuf> = std::fs::read_dir(&folder).unwrap().map(|e| e.unwrap().path()).filter(|p| p.extension().is_some_and(|e| e == "ron")).collect();
+    assert!(!specs.is_empty());
+    for spec in specs {
+        let plan = Plan::load(&spec).unwrap_or_else(|e| panic!("{e}"));
+        plan.check_factors().unwrap_or_else(|e| panic!("{e}"));
+        plan.check_cases(&runner(2), 0..plan.cases.len()).unwrap_or_else(|e| panic!("{e}"));
+    }
+}
+
 /// Each bad input is one line naming what is wrong (the spec's `path:line:col`, the factor, the
 /// case), exit code 1 or clap's 2, and nothing written or overwritten.
 #[test]

@@ -58,6 +58,15 @@ impl Recorder {
         Self::new(stream, world)
     }
 
+    /// A recorder writing to the `.rrd` file `path` under application id `application` and
+    /// recording id `recording` (a sweep's: one application, one recording per case, so that
+    /// several cases open side by side in the viewer); the file is created now.
+    pub fn to_file_as(path: &Path, world: &World, application: &str, recording: &str) -> Result<Self, rerun::RecordingStreamError> {
+        let application = rerun::ApplicationId::new_or_unknown(application);
+        let stream = rerun::RecordingStreamBuilder::new(application).recording_id(recording).save(path)?;
+        Self::new(stream, world)
+    }
+
     /// A recorder on an existing stream; logs the static scene (view coordinates, shapes, nodes).
     pub fn new(stream: RecordingStream, world: &World) -> Result<Self, rerun::RecordingStreamError> {
         stream.log_static(paths::WORLD, &rerun::ViewCoordinates::RIGHT_HAND_Z_UP())?;

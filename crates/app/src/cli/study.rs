@@ -1,11 +1,14 @@
-//! `tether study SCENE`: every integrator at a ladder of time steps against a reference run;
-//! prints the table and writes `study.csv`, `study.md` and the chart `study.png`.
+//! `tether study SCENE`: every integrator at a ladder of time steps against a reference run, the
+//! runs on every core (the sweep's runner); prints the table and writes `study.csv`, `study.md`
+//! and the chart `study.png`.
 
 use anyhow::{Context as _, bail};
 use clap::Args;
+use std::num::NonZeroUsize;
 use std::path::PathBuf;
-use tether_physics::integrator::Integrator;
+use tether::runner::{Runner, all_cores};
 use tether::study::{self, Plan, Reference};
+use tether_physics::integrator::Integrator;
 
 #[derive(Debug, Args)]
 pub struct StudyArgs {
@@ -43,6 +46,9 @@ pub struct StudyArgs {
     /// Output directory (default: study-<scene name>).
     #[arg(short, long)]
     output: Option<PathBuf>,
+    /// Runs measured at once (default: every core; each run's CPU time is its own thread's).
+    #[arg(long)]
+    jobs: Option<NonZeroUsize>,
 }
 
 /// `dopri45:1e-12`, `rk4:1e-5` or `closed-form`.
@@ -87,7 +93,8 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<()> {
     let sample_interval = base * (wanted / (f64::from(args.samples) * base)).round().max(1.0);
     let duration = sample_interval * (wanted / sample_interval).round().max(1.0);
     let plan = Plan { integrators, dts, tolerances: args.tolerances.clone(), duration, sample_interval, reference: args.reference };
-    let result = study::run(&scene, &plan, |line| eprintln!("{line}"))?;
+    let runner = Runner::new(args.jobs.unwrap_or_else(all_cores));
+    let result = study::run_on(&runner, &scene, &plan, |line| eprintln!("{line}"))?;
 
     let stem = args.scene.file_stem().map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());
     let directory = args.output.clone().unwrap_or_else(|| PathBuf::from(format!("study-{stem}")));

@@ -96,6 +96,20 @@ impl OpenScene {
         Ok(Loaded { scene, run: Run { label, world: loaded.world }, notes })
     }
 
+    /// Loads the scene at `path` as its file says it, and runs `variant` of it (a sweep's
+    /// case: the same scene with some values changed), shown as tuned values: "revert to file"
+    /// goes back to what the file says. `label` names the run.
+    ///
+    /// # Errors
+    /// The file cannot be read or built, or the loader refuses the variant.
+    pub fn load_variant(path: &Path, variant: SceneFile, label: String, wake: Wake) -> Result<Loaded, SceneError> {
+        let Loaded { scene: base, mut notes, .. } = Self::load(path, wake)?;
+        let case = scene::build_variant(&base.text, path, variant)?;
+        notes.extend(case.warnings.iter().map(|w| format!("warning: {w}")));
+        let scene = Self { drafts: case.file.couplings.clone(), refusals: vec![None; case.file.couplings.len()], tuned: case.file, bodies: case.bodies, ..base };
+        Ok(Loaded { scene, run: Run { label, world: case.world }, notes })
+    }
+
     /// What the file on disk is doing, once it has been quiet for `settle`.
     pub fn on_disk(&self, settle: Duration) -> OnDisk {
         let Some(watch) = &self.watch else { return OnDisk::Quiet };

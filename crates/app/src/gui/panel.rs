@@ -13,6 +13,7 @@ use super::run_controls::{self, RunAction, TimingDraft};
 use super::scenes::{self, SceneAction};
 use super::simulation::{Command, Report, Simulation, Speed, Status, Wake};
 use super::stream::Sinks;
+use super::sweep_table::{SweepAction, SweepTable};
 use super::tuning::{self, TuningAction};
 use super::water::{self, WaterAction};
 use rerun::external::egui;
@@ -68,6 +69,8 @@ pub struct ControlPanel {
     scene_list: Vec<PathBuf>,
     recordings_to_open: Vec<PathBuf>,
     impact: ImpactDraft,
+    /// The sweep directory open beside the scene, if any.
+    sweep: Option<SweepTable>,
 }
 
 impl ControlPanel {
@@ -90,6 +93,7 @@ impl ControlPanel {
             scene_list,
             recordings_to_open: Vec::new(),
             impact: ImpactDraft::default(),
+            sweep: None,
         })
     }
 
@@ -143,18 +147,71 @@ impl ControlPanel {
     /// Loads the scene at `path` and runs it paused at t = 0. A bad file keeps the previous
     /// scene running and shows its `path:line:col: message`.
     pub fn open_scene(&mut self, path: &Path) {
-        let loaded = match OpenScene::load(path, self.wake.clone()) {
-            Ok(loaded) => loaded,
-            Err(error) => {
-                self.load_error = Some((path.to_path_buf(), error.to_string()));
-                return;
+        match OpenScene::load(path, self.wake.clone()) {
+            Ok(loaded) => self.start(loaded),
+            Err(error) => self.load_error = Some((path.to_path_buf(), error.to_string())),
+        }
+    }
+
+    /// Opens the sweep in directory `dir` in the sweep table (the scene running stays).
+    pub fn open_sweep(&mut self, dir: &Path) {
+        match SweepTable::open(dir) {
+            Ok(table) => {
+                self.note(format!("opened sweep {} ({})", table.name(), dir.display()));
+                self.sweep = Some(table);
             }
+            Err(error) => self.note_error(error),
+        }
+    }
+
+    /// The open sweep (tests look into it).
+    pub fn sweep(&self) -> Option<&SweepTable> {
+        self.sweep.as_ref()
+    }
+
+    /// The open sweep, to sort it (tests).
+    pub fn sweep_mut(&mut self) -> Option<&mut SweepTable> {
+        self.sweep.as_mut()
+    }
+
+    /// Draws the sweep table, if a sweep is open, and loads the case it asks for.
+    pub fn sweep_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(table) = &mut self.sweep else { return };
+        if let Some(SweepAction::Load(case)) = table.ui(ui) {
+            self.open_case(case);
+        }
+    }
+
+    /// Loads case `case` of the open sweep: its base scene with the case's values, paused at
+    /// t = 0, the values in the tuning panel.
+    pub fn open_case(&mut self, case: usize) {
+        let Some(table) = &self.sweep else { return };
+        let label = format!("{} case {case}", table.name());
+        let loaded = match table.case_scene(case) {
+            Ok((path, file, changed)) => {
+                if let Some(changed) = changed {
+                    self.note_error(changed);
+                }
+                OpenScene::load_variant(&path, file, label, self.wake.clone()).map_err(|e| e.to_string())
+            }
+            Err(error) => Err(error),
         };
+        match loaded {
+            Ok(loaded) => {
+                self.note(format!("case {case} loaded: press Space to run it"));
+                self.start(loaded);
+            }
+            Err(error) => self.note_error(format!("case {case}: {error}")),
+        }
+    }
+
+    /// Runs a loaded scene, paused at t = 0.
+    fn start(&mut self, loaded: super::open_scene::Loaded) {
         for note in loaded.notes {
             self.note(note);
         }
         self.load_error = None;
-        self.timing = TimingDraft::from_file(&loaded.scene.file);
+        self.timing = TimingDraft::from_file(&loaded.scene.tuned);
         self.history = EnergyHistory::default();
         self.scene = Some(loaded.scene);
         self.simulation.send(Command::Load(Box::new(loaded.run)));

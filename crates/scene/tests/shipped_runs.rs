@@ -43,8 +43,8 @@ const BOUNDS: &[Bounds] = &[
     // its start, surging ±1.3 m; the slowly varying wave loads of this seed set it drifting
     // 12.9 m to −y in 120 s (nothing moors it). Measured drift 2.08 kJ (first-order dampers).
     Bounds { scene: "barge_in_waves.ron", regions: &[region("barge", [-0.92, -12.9, -0.66], [1.36, 0.42, 2.50])], balance_budget: 3.1e3 },
-    // Dropped 0.5 m, undershoots to −0.428 m, settles at G = 0 (draft 2 m); the roll damper at
-    // the waterline walks it 0.26 m sideways. Measured drift 30.8 J (first-order dampers).
+    // Dropped 0.5 m, undershoots to −0.428 m, settles at G = 0 (draft 2 m); the heave damper,
+    // along the heeled body's z axis, walks it 0.26 m sideways. Measured drift 30.8 J (first-order dampers).
     Bounds { scene: "floating_box.ron", regions: &[region("box", [-1e-6, -0.27, -0.44], [1e-6, 1e-6, 0.5 + 1e-6])], balance_budget: 46.0 },
     // Falls 2 m, sinks at 5.15 m/s, lands on the seabed at z = −30 m (G 2.4 cm into the contact's
     // range at the first impact), bounces and rests at G = −29.494 m. Measured drift 1.51 kJ,

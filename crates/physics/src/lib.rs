@@ -14,7 +14,10 @@
 //! - [`surroundings`]: gravity, fluid and seabed as the couplings see them;
 //! - [`evaluation`]: what a force evaluation leaves behind (kinematics, loads, coupling records
 //!   and caches);
-//! - [`system`]: bodies, couplings and gravity, and the named stages of a force evaluation;
+//! - [`water`]: hydrostatics, waves, current, Morison loads and added mass (§6), an
+//!   environment stage of the force evaluation;
+//! - [`system`]: bodies, couplings, gravity and water, and the named stages of a force
+//!   evaluation;
 //! - [`integrator`]: how states advance in time (§1, time integration), on a narrow interface;
 //! - [`energy`]: the energy balance that checks it all (§5);
 //! - [`stability`]: the stable time step of each coupling and spinning body;
@@ -51,4 +54,5 @@ pub mod statics;
 pub mod surroundings;
 pub mod system;
 pub mod table;
+pub mod water;
 pub mod world;

@@ -45,7 +45,7 @@ fn finite_differences(system: &System, states: &[BodyState]) -> DMatrix<f64> {
     let mut k = DMatrix::zeros(6 * n, 6 * n);
     let loads = |states: &[BodyState]| {
         let mut evaluation = Evaluation::new(n, system.couplings());
-        system.evaluate(states, &mut evaluation).unwrap();
+        system.evaluate(states, &mut evaluation, 0.0).unwrap();
         evaluation.loads().iter().flat_map(|l| [l.force.x, l.force.y, l.force.z, l.moment.x, l.moment.y, l.moment.z]).collect::<Vec<f64>>()
     };
     let step = 1e-6;
@@ -67,7 +67,7 @@ fn finite_differences(system: &System, states: &[BodyState]) -> DMatrix<f64> {
 
 fn assert_stiffness_matches(system: &System, states: &[BodyState], what: &str) {
     let mut evaluation = Evaluation::new(states.len(), system.couplings());
-    system.evaluate(states, &mut evaluation).unwrap();
+    system.evaluate(states, &mut evaluation, 0.0).unwrap();
     let analytic = stiffness::tangent(system, &evaluation);
     let fd = finite_differences(system, states);
     // Central differences of 1e-6 on forces solved to 1e-12 of the line: about 1e-6 of K.

@@ -17,10 +17,12 @@
 //!   above a thousandth of the body's weight (`m·max(|g|, 1 m/s²)`), the largest of the frame
 //!   one body radius long (the force itself is in `plots/contact/<name>`);
 //! - `plots/contact/<name>`: a contact's total normal force `Σ|f_n|` and friction `|Σ f_t|`,
-//!   series `normal` and `friction` [N]; its `plots/tension` series is the normal force.
+//!   series `normal` and `friction` [N]; its `plots/tension` series is the normal force;
+//! - the water, when the scene has some: [`water`].
 
 pub mod layout;
 pub mod paths;
+pub mod water;
 
 use rerun::RecordingStream;
 use std::path::Path;
@@ -38,6 +40,8 @@ pub struct Recorder {
     stream: RecordingStream,
     body_paths: Vec<String>,
     coupling_paths: Vec<String>,
+    /// The water's part, if the scene has water.
+    water: Option<water::WaterRecorder>,
 }
 
 /// Face forces below this fraction of the body's weight are not drawn.
@@ -51,6 +55,15 @@ impl Recorder {
     /// path fails before any simulation.
     pub fn to_file(path: &Path, world: &World) -> Result<Self, rerun::RecordingStreamError> {
         let stream = rerun::RecordingStreamBuilder::new(APPLICATION_ID).save(path)?;
+        Self::new(stream, world)
+    }
+
+    /// A recorder writing to the `.rrd` file `path` under application id `application` and
+    /// recording id `recording` (a sweep's: one application, one recording per case, so that
+    /// several cases open side by side in the viewer); the file is created now.
+    pub fn to_file_as(path: &Path, world: &World, application: &str, recording: &str) -> Result<Self, rerun::RecordingStreamError> {
+        let application = rerun::ApplicationId::new_or_unknown(application);
+        let stream = rerun::RecordingStreamBuilder::new(application).recording_id(recording).save(path)?;
         Self::new(stream, world)
     }
 
@@ -73,7 +86,8 @@ impl Recorder {
             }
         }
         let coupling_paths = world.couplings().iter().map(paths::coupling).collect();
-        Ok(Self { stream, body_paths, coupling_paths })
+        let water = water::WaterRecorder::new(&stream, world)?;
+        Ok(Self { stream, body_paths, coupling_paths, water })
     }
 
     /// Logs the world's current state at its `sim_time` and `step`.
@@ -106,6 +120,9 @@ impl Recorder {
         let energy = world.energy();
         let values = [energy.kinetic, energy.gravity, energy.elastic, energy.dissipated, energy.external_work, energy.total(), energy.balance()];
         self.stream.log(paths::ENERGY, &rerun::Scalars::new(values))?;
+        if let Some(water) = &self.water {
+            water.log_frame(&self.stream, world)?;
+        }
         Ok(())
     }
 

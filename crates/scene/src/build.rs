@@ -14,9 +14,13 @@ use tether_physics::math::{Mat3, Rotation, Vec3};
 use tether_physics::mesh::{BoundaryMesh, MeshError, Surface};
 use tether_physics::seabed::Seabed;
 use tether_physics::system::{System, SystemError};
+use tether_physics::water::Hull;
 use tether_physics::world::{StepError, World};
 use std::path::Path;
 use std::sync::Arc;
+
+mod water;
+pub use water::{hydro_spec, water_spec};
 
 /// Where a problem is in the file.
 #[derive(Debug, Clone, PartialEq)]
@@ -26,7 +30,7 @@ pub enum Place {
     /// An item of a list: its `occurrence`-th `name: "…"`, then optionally a field after it and
     /// a string literal after that.
     Item { kind: ItemKind, name: String, occurrence: usize, field: Option<&'static str>, literal: Option<String> },
-    /// A top-level section (`seabed: Seabed(…)`), then optionally a field in it and a string
+    /// A top-level section (`seabed: Seabed(…)`, `water: Water(…)`), then optionally a field in it and a string
     /// literal after that.
     Section { section: &'static str, field: Option<&'static str>, literal: Option<String> },
 }
@@ -61,7 +65,8 @@ impl Bodies {
         for (index, def) in file.bodies.iter().enumerate() {
             let at = ItemAt::new(ItemKind::Body, &def.name, file.bodies[..index].iter().filter(|b| b.name == def.name).count());
             check_name(&at, file.bodies[..index].iter().map(|b| b.name.as_str()))?;
-            bodies.push(build_body(def, directory, &at)?);
+            let in_water = file.water.is_some() && def.hydro.is_some();
+            bodies.push(build_body(def, directory, &at, in_water)?);
         }
         let boundaries = Boundaries::new(bodies.len());
         Ok(Self { bodies, boundaries })
@@ -105,7 +110,8 @@ pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
         None => None,
     };
     warn_about_lines(file, &mut warnings);
-    let mut system = System::new(vec3(file.gravity), bodies.bodies.clone(), couplings, states).map_err(|e| Problem { place: Place::Top("couplings"), message: e.to_string() })?;
+    let system = System::new(vec3(file.gravity), bodies.bodies.clone(), couplings, states).map_err(|e| Problem { place: Place::Top("couplings"), message: e.to_string() })?;
+    let mut system = water::add_water(system, file, &bodies.bodies, &mut warnings)?;
     if let Some(seabed) = seabed {
         system = system.with_seabed(seabed).map_err(|e| system_problem(file, e))?;
     }
@@ -132,14 +138,36 @@ fn initial_state(def: &BodyDef, body: &RigidBody) -> BodyState {
 /// `seabed.<body>` against its plane for each body listed (added to `couplings`).
 fn build_seabed(def: &SeabedDef, file: &SceneFile, built: &mut Bodies, couplings: &mut Vec<Coupling>) -> Result<Seabed, Problem> {
     let at = ItemAt::section("seabed");
-    let Some(elevation) = def.elevation else {
-        return Err(at.at_name("the seabed needs an elevation (z_b, m): the scene has no water depth to take it from".into()));
-    };
+    let elevation = seabed_elevation(def, file, &at)?;
     let seabed = Seabed::new(elevation, at.require("line_friction", def.line_friction, Bound::NonNegative, "")?).map_err(|e| at.at_field("line_friction", e.to_string()))?;
     if let Some(contact) = &def.contact {
         couplings.extend(seabed_contacts(contact, &seabed, file, built, &at)?);
     }
     Ok(seabed)
+}
+
+/// The seabed's height `z_b` [m]: the water's bottom `z_w − h` when the scene has water with a
+/// depth (a declared elevation must then agree with it), the declared one in a scene without
+/// water. Deep water (no depth) has no bottom for a seabed to be.
+fn seabed_elevation(def: &SeabedDef, file: &SceneFile, at: &ItemAt) -> Result<f64, Problem> {
+    match (&file.water, def.elevation) {
+        (None, Some(elevation)) => Ok(elevation),
+        (None, None) => Err(at.at_name("the seabed needs an elevation (z_b, m): the scene has no water depth to take it from".into())),
+        (Some(water), declared) => {
+            let Some(depth) = water.depth else {
+                return Err(at.at_name("the water is deep (no depth): give the water a depth, and the seabed lies there".into()));
+            };
+            let bottom = water.level - depth;
+            match declared {
+                // Agreement to round-off of the sum `z_w − h`.
+                Some(elevation) if (elevation - bottom).abs() > 1e-9 * (1.0 + bottom.abs()) => Err(at.at_field(
+                    "elevation",
+                    format!("the seabed elevation {elevation} m disagrees with the water's bottom (level {} m − depth {depth} m = {bottom} m): leave it out and it lies there", water.level),
+                )),
+                _ => Ok(bottom),
+            }
+        }
+    }
 }
 
 /// A contact coupling against the seabed's plane for each body of `def`.
@@ -186,13 +214,18 @@ fn strip_coupling(message: &str) -> String {
     message.split_once("\": ").map_or(message, |(_, rest)| rest).to_string()
 }
 
-/// Warnings about lines: a displaced volume where there is no water to displace.
+/// Warnings about lines: a displaced volume where there is no water to displace; a line that
+/// floats (`ρ A_d > λ0`: it arches upward, and nothing stops it at the surface).
 fn warn_about_lines(file: &SceneFile, warnings: &mut Vec<String>) {
     for def in &file.couplings {
-        if let CouplingDef::Catenary { name, displaced_area, .. } = def
-            && *displaced_area > 0.0
-        {
-            warnings.push(format!("coupling {name:?}: displaced_area is ignored in a scene without water (the line weighs λ0 g per metre)"));
+        let CouplingDef::Catenary { name, displaced_area, mass_per_length, .. } = def else { continue };
+        match &file.water {
+            None if *displaced_area > 0.0 => warnings.push(format!("coupling {name:?}: displaced_area is ignored in a scene without water (the line weighs λ0 g per metre)")),
+            Some(water) if water.density * displaced_area > *mass_per_length => warnings.push(format!(
+                "coupling {name:?}: the line floats (ρ A_d = {} kg/m > λ0 = {mass_per_length} kg/m): it arches upward from its ends, and nothing stops it at the water surface",
+                water.density * displaced_area
+            )),
+            _ => {}
         }
     }
 }
@@ -329,7 +362,7 @@ fn node(def: &NodeDef) -> Node {
     Node { position: vec3(def.position), mass: def.mass, inertia: tensor(&def.inertia) }
 }
 
-fn build_body(def: &BodyDef, directory: &Path, at: &ItemAt) -> Result<RigidBody, Problem> {
+fn build_body(def: &BodyDef, directory: &Path, at: &ItemAt, in_water: bool) -> Result<RigidBody, Problem> {
     let slaves: Vec<Node> = def.slaves.iter().map(node).collect();
     let mass_properties = MassProperties::from_nodes(&node(&def.master), &slaves).map_err(|e| {
         let field = match e {
@@ -339,7 +372,7 @@ fn build_body(def: &BodyDef, directory: &Path, at: &ItemAt) -> Result<RigidBody,
         at.at_field(field, e.to_string())
     })?;
     let support = build_support(&def.support, at)?;
-    let shape = build_shape(&def.shape, directory, at)?;
+    let shape = build_shape(&def.shape, directory, at, in_water)?;
     let slave_positions: Vec<Vec3> = slaves.iter().map(|n| n.position).collect();
     Ok(RigidBody::new(def.name.clone(), mass_properties, vec3(def.master.position), &slave_positions, support, shape))
 }
@@ -374,7 +407,9 @@ const MAX_SUBDIVISIONS: u32 = 6;
 /// 64 gives 49,152.
 const MAX_BOX_SUBDIVISIONS: u32 = 64;
 
-fn build_shape(def: &ShapeDef, directory: &Path, at: &ItemAt) -> Result<Shape, Problem> {
+/// The body's shape; `in_water`: a mesh file must also be a closed, outward hull as written
+/// (a contact boundary wound inwards is turned over, a hull is refused).
+fn build_shape(def: &ShapeDef, directory: &Path, at: &ItemAt, in_water: bool) -> Result<Shape, Problem> {
     let positive = |field: &'static str, value: f64| at.require(field, value, Bound::Positive, "m").map(|_| ());
     Ok(match def {
         ShapeDef::Box { size, center, subdivisions } => {
@@ -406,6 +441,9 @@ fn build_shape(def: &ShapeDef, directory: &Path, at: &ItemAt) -> Result<Shape, P
             at.require("scale", *scale, Bound::Positive, "")?;
             let (vertices, triangles) = mesh_file::read(&directory.join(file)).map_err(|e| at.problem(Some("file"), Some(file), e))?;
             let vertices: Vec<Vec3> = vertices.iter().map(|v| v * *scale + vec3(*center)).collect();
+            if in_water {
+                Hull::new(vertices.clone(), triangles.clone()).map_err(|e| at.problem(Some("file"), Some(file), format!("mesh file {file:?} as a hull in water: {e}")))?;
+            }
             // Checked now, so that a contact can always mesh the body.
             let mesh = BoundaryMesh::new(vertices, triangles).map_err(|e| at.problem(Some("file"), Some(file), format!("mesh file {file:?}: {e}")))?;
             Shape::Mesh { vertices: mesh.vertices, triangles: mesh.triangles }

@@ -9,6 +9,7 @@ mod finite;
 pub mod mesh_file;
 pub mod pose;
 pub mod source;
+pub mod water;
 
 use build::{Bodies, Place, Problem};
 use tether_physics::world::World;
@@ -56,7 +57,15 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     // Optional sections (`adaptive: (…)`) are written without `Some(…)`.
     let options = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
     let file: SceneFile = options.from_str(text).map_err(|e| syntax_error(&source, &label, &e))?;
-    let built = build::build(&file, directory(path)).map_err(|p| placed(&source, &label, p))?;
+    build_variant(text, path, file)
+}
+
+/// Builds `file`, a variant of the scene whose text is `text` at `path`: the same bodies and
+/// couplings by name, some values changed (a sweep's case, a value typed into the window). The
+/// checks are those of [`parse`]; a problem is placed in `text` at the item and field it
+/// concerns, so that the message points at the value the variant changed.
+pub fn build_variant(text: &str, path: &Path, file: SceneFile) -> Result<Scene, SceneError> {
+    let built = build::build(&file, directory(path)).map_err(|p| placed(&Source::new(text), &path.display().to_string(), p))?;
     Ok(Scene { path: path.to_path_buf(), text: text.to_string(), file, world: built.world, bodies: built.bodies, warnings: built.warnings })
 }
 

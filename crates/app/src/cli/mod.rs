@@ -8,6 +8,7 @@ mod gui;
 mod offsets;
 mod record;
 mod study;
+mod sweep;
 
 use anyhow::Context as _;
 use clap::{Parser, Subcommand};
@@ -42,6 +43,11 @@ enum Command {
     /// Run the scene with each integrator at a ladder of time steps against a reference run;
     /// print the accuracy-versus-cost table and write it as CSV, Markdown and a PNG chart.
     Study(study::StudyArgs),
+    /// Run the scene over a design of factor values (grid, one at a time, Latin hypercube) on
+    /// every core or as a shard of a cluster's job array; write each case's metrics and status
+    /// to results.csv, results.parquet, summary.md and charts. `tether sweep merge DIR` joins
+    /// the shards' rows.
+    Sweep(sweep::SweepArgs),
     /// Print the forces of the initial state.
     Forces {
         /// Scene file (.ron).
@@ -79,6 +85,10 @@ pub fn run(cli: Cli) -> anyhow::Result<u8> {
         Command::Study(args) => study::run(&args).map(|()| 0),
         Command::Equilibrium(args) => equilibrium::run(&args).map(|()| 0),
         Command::Offsets(args) => offsets::run(&args).map(|()| 0),
+        Command::Sweep(args) => sweep::run(&args).map(|outcome| match outcome {
+            sweep::Outcome::Finished => 0,
+            sweep::Outcome::Interrupted => INTERRUPTED,
+        }),
     }
 }
 

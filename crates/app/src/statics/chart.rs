@@ -2,9 +2,8 @@
 //! each line's tension at its ends below, one colour per line.
 
 use super::offsets::Table;
-use crate::study::chart::FONT;
+use crate::chart_style::{COLOURS, register_font_family};
 use plotters::prelude::*;
-use plotters::style::{FontStyle, register_font};
 use std::path::Path;
 
 /// A chart that could not be drawn or written.
@@ -15,17 +14,6 @@ pub struct ChartError {
     pub message: String,
 }
 
-const COLOURS: [RGBColor; 8] = [
-    RGBColor(31, 119, 180),
-    RGBColor(255, 127, 14),
-    RGBColor(44, 160, 44),
-    RGBColor(214, 39, 40),
-    RGBColor(148, 103, 189),
-    RGBColor(140, 86, 75),
-    RGBColor(227, 119, 194),
-    RGBColor(127, 127, 127),
-];
-
 /// Writes the chart of `table` (from [`super::offsets::table`]) titled `title` to `path`.
 ///
 /// # Errors
@@ -33,7 +21,7 @@ const COLOURS: [RGBColor; 8] = [
 pub fn write(table: &Table, title: &str, path: &Path) -> Result<(), ChartError> {
     let failed = |message: String| ChartError { path: path.display().to_string(), message };
     let draw = |e: &dyn std::fmt::Display| failed(e.to_string());
-    register_font("sans-serif", FontStyle::Normal, FONT).map_err(|_| failed("the bundled font is not a valid TrueType font".into()))?;
+    register_font_family().map_err(failed)?;
     let column = |index: usize| table.rows.iter().map(move |row| row[index]);
     let offsets: Vec<f64> = column(0).collect();
     let restoring: Vec<(f64, f64)> = offsets.iter().copied().zip(column(2)).collect();

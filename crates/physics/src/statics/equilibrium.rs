@@ -1,7 +1,8 @@
 //! Static equilibrium (MoorPy's `solveEquilibrium`, issue 16): the poses at which every free
 //! direction of every body ([`super::dofs`]) carries no load, the bodies at rest, under every
-//! force source of the system's evaluation (gravity, springs, catenaries, contacts; any source
-//! the evaluation gains later).
+//! force source of the system's evaluation (gravity, springs, catenaries, contacts, the water's
+//! hydrostatics and its current's drag; any source the evaluation gains later), as the system
+//! at rest sees them ([`System::at_rest`]: still water, no added mass), at [`STATIC_TIME`].
 //!
 //! Newton's method on the loads `r(q)` with the tangent stiffness `K = −∂r/∂q`
 //! ([`super::stiffness`]): `(K + λ D) δ = r`, where `D` is the diagonal of `K` (floored, so that
@@ -17,7 +18,7 @@
 //! solve's steps has no equilibrium in that direction: the error names it, the direction and the load along it.
 
 use super::dofs::{Direction, Dof, Dofs, displace_by};
-use super::stiffness;
+use super::stiffness::{self, STATIC_TIME};
 use crate::body::BodyState;
 use crate::coupling::CouplingError;
 use crate::evaluation::Evaluation;
@@ -101,13 +102,15 @@ pub enum EquilibriumError {
 /// # Errors
 /// A body with no restoring force along a load, a coupling without forces, or no convergence.
 pub fn solve(system: &System, start: &[BodyState], held: &[Dof], settings: &Settings) -> Result<Equilibrium, EquilibriumError> {
+    let at_rest = system.at_rest();
+    let system: &System = &at_rest;
     let dofs = Dofs::of(system, held);
     let mut states: Vec<BodyState> = start.iter().map(|s| BodyState { velocity: Vec3::zeros(), angular_velocity: Vec3::zeros(), ..*s }).collect();
     let mut evaluation = Evaluation::new(states.len(), system.couplings());
     let mut evaluations = 0;
     let mut evaluate = |states: &[BodyState], evaluation: &mut Evaluation| {
         evaluations += 1;
-        system.evaluate(states, evaluation).map(|_| ()).map_err(|e| EquilibriumError::Forces { coupling: system.couplings()[e.coupling].name.clone(), source: e.source })
+        system.evaluate(states, evaluation, STATIC_TIME).map(|_| ()).map_err(|e| EquilibriumError::Forces { coupling: system.couplings()[e.coupling].name.clone(), source: e.source })
     };
     evaluate(&states, &mut evaluation)?;
     let scale = Scale::of(system, &states, &evaluation);

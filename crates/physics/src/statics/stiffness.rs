@@ -6,8 +6,9 @@
 //! ends' stiffness blocks `D_ij = ∂f_i/∂p_j` carried to the bodies through the lever arms
 //! `a = x_end − x_G` (`δp = δx − [a]× δθ`, `δM = a × δf + (a fᵀ − (a·f) E) δθ`, the second
 //! term because the arm turns with the body); a contact, whose force is a sum over faces, adds
-//! central differences of its own loads as its bodies move. A new source joins by adding its
-//! part in [`tangent`]; the equilibrium solver only calls it.
+//! central differences of its own loads as its bodies move; so does the water on each floating
+//! body (pressure integrated over the hull cut at the waterline, the current's drag). A new
+//! source joins by adding its part in [`tangent`]; the equilibrium solver only calls it.
 
 use crate::body::{BodyFrame, Load};
 use crate::coupling::ends::Attachment;
@@ -15,8 +16,13 @@ use crate::coupling::{Coupling, CouplingForces, CouplingKind};
 use crate::evaluation::Evaluation;
 use crate::math::{Mat3, Rotation, Vec3};
 use super::dofs::Direction;
+use crate::water::{WaterForces, WaterScratch};
 use crate::system::System;
 use nalgebra::DMatrix;
+
+/// The time [s] of a static evaluation: nothing in the system at rest
+/// ([`System::at_rest`]) depends on it.
+pub const STATIC_TIME: f64 = 0.0;
 
 /// Finite-difference steps: a translation [m] and a rotation [rad] small against any contact
 /// range and large against round-off.
@@ -24,7 +30,7 @@ const TRANSLATION_STEP: f64 = 1e-7;
 const ROTATION_STEP: f64 = 1e-7;
 
 /// `K` [SI] at the kinematics and coupling records of `evaluation` (its last evaluation, with
-/// the bodies at rest).
+/// the bodies at rest, at [`STATIC_TIME`]).
 pub fn tangent(system: &System, evaluation: &Evaluation) -> DMatrix<f64> {
     let n = system.bodies().len();
     let mut jacobian = DMatrix::zeros(6 * n, 6 * n);
@@ -48,6 +54,14 @@ pub fn tangent(system: &System, evaluation: &Evaluation) -> DMatrix<f64> {
                 });
             }
         }
+    }
+    if let Some(stage) = system.water() {
+        let bodies: Vec<usize> = stage.floating.iter().map(|f| f.body).collect();
+        let mut records = vec![WaterForces::default(); bodies.len()];
+        let mut scratch = WaterScratch::default();
+        add_differences(&mut jacobian, system, frames, &bodies, |moved, loads| {
+            stage.apply(system.level(), system.bodies(), moved, loads, &mut records, &mut scratch, STATIC_TIME);
+        });
     }
     -jacobian
 }
@@ -89,7 +103,7 @@ fn add_block(jacobian: &mut DMatrix<f64>, row: usize, column: usize, block: &Mat
 
 /// Adds central differences of the loads that `loads_at` puts on the bodies as each direction
 /// of each of `bodies` moves (kinematic bodies do not move).
-pub fn add_differences(jacobian: &mut DMatrix<f64>, system: &System, frames: &[BodyFrame], bodies: &[usize], loads_at: impl Fn(&[BodyFrame], &mut [Load])) {
+pub fn add_differences(jacobian: &mut DMatrix<f64>, system: &System, frames: &[BodyFrame], bodies: &[usize], mut loads_at: impl FnMut(&[BodyFrame], &mut [Load])) {
     let n = frames.len();
     let mut moved = frames.to_vec();
     let (mut plus, mut minus) = (vec![Load::default(); n], vec![Load::default(); n]);

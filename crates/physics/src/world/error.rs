@@ -37,3 +37,14 @@ pub enum TimingError {
     #[error(transparent)]
     Forces(StepError),
 }
+
+/// A live edit of the water refused by [`super::World::replace_water`] or
+/// [`super::World::replace_hydro`]; the world is then unchanged.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum WaterEditError {
+    /// The new water or coefficients cannot be.
+    #[error(transparent)]
+    Refused(SystemError),
+    #[error(transparent)]
+    Forces(StepError),
+}

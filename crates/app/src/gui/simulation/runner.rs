@@ -17,6 +17,7 @@ use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender, TryRecvError};
 use std::time::{Duration, Instant};
 use tether_physics::coupling::Coupling;
 use tether_physics::integrator::Timing;
+use tether_physics::world::World;
 
 /// Wall time of one tick of the thread, about one display frame [s].
 pub const TICK: Duration = Duration::from_millis(16);
@@ -109,6 +110,8 @@ impl Runner {
             }
             Command::SetTiming(timing) => self.set_timing(timing),
             Command::SetCoupling { index, coupling, sent } => self.set_coupling(index, coupling, sent),
+            Command::SetWater(spec) => self.edit_water("the water", |world| world.replace_water(spec)),
+            Command::SetHydro { body, spec } => self.edit_water("the body's coefficients in the water", |world| world.replace_hydro(body, spec)),
             Command::Load(run) => self.load(*run),
             Command::Snapshot(reply) => {
                 reply.send(self.run.as_ref().map(|run| run.world.clone())).ok();
@@ -260,6 +263,19 @@ impl Runner {
                 let (time, latency) = (run.world.time(), sent.elapsed().as_secs_f64() * 1e3);
                 self.log_frame();
                 self.report(Report::Message(format!("coupling \"{name}\" applied at t = {time:.4} s, {latency:.2} ms after the edit")));
+            }
+            Err(error) => self.report(Report::Error(error.to_string())),
+        }
+    }
+
+    /// A live edit of the water (`what` names it in the report).
+    fn edit_water(&mut self, what: &str, edit: impl FnOnce(&mut World) -> Result<(), tether_physics::world::WaterEditError>) {
+        let Some(run) = &mut self.run else { return };
+        match edit(&mut run.world) {
+            Ok(()) => {
+                let time = run.world.time();
+                self.log_frame();
+                self.report(Report::Message(format!("{what} applied at t = {time:.4} s")));
             }
             Err(error) => self.report(Report::Error(error.to_string())),
         }

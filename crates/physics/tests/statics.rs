@@ -194,3 +194,37 @@ fn the_offset_curve_starts_with_the_condensed_stiffness() {
     let loads: Vec<f64> = far.points.iter().map(|p| p.load).collect();
     assert!(loads.windows(2).all(|w| w[1] < w[0]), "the restoring force grows with the offset: {loads:?}");
 }
+
+/// A box 20 × 10 × 4 m of 410 t floating in still water (ρ = 1025 kg/m³), on a slack vertical
+/// spring pulling down at a point off its centre: at equilibrium its draft carries its weight
+/// and the spring's pull, `T = (m g + F) / (ρ g A)`, and its heave stiffness is the waterplane's
+/// `ρ g A` plus the spring's; the water's stiffness (central differences of its hull pressure)
+/// matches finite differences of the whole evaluation. The scene's wave and added mass are not
+/// seen by the static solve (the system at rest).
+#[test]
+fn a_floating_box_settles_at_the_draft_that_carries_it() {
+    let text = "Scene(dt: 0.01, water: Water(waves: Regular(height: 1.0, period: 8.0)),
+        bodies: [Body(name: \"box\", master: Node(position: (0.0, 0.0, 0.5), mass: 410000.0, inertia: Inertia(xx: 3963333.33, yy: 14213333.33, zz: 17083333.33)),
+            shape: Box(size: (20.0, 10.0, 4.0)), hydro: Hydro(drag: (1.0, 1.0, 1.0), added_mass: (1.0, 1.0, 1.0)))],
+        couplings: [
+            SpringDamper(name: \"pull\", end1: Body(body: \"box\", point: (0.0, 0.0, -2.0)), end2: World((0.0, 0.0, -50.0)), law: Linear(stiffness: 1000.0, rest_length: 20.0)),
+            // Horizontal springs for surge, sway and yaw, which the water does not restore.
+            SpringDamper(name: \"x1\", end1: Body(body: \"box\", point: (10.0, 0.0, 0.0)), end2: World((110.0, 0.0, 0.0)), law: Linear(stiffness: 100.0, rest_length: 100.0)),
+            SpringDamper(name: \"x2\", end1: Body(body: \"box\", point: (-10.0, 0.0, 0.0)), end2: World((-110.0, 0.0, 0.0)), law: Linear(stiffness: 100.0, rest_length: 100.0)),
+            SpringDamper(name: \"y1\", end1: Body(body: \"box\", point: (5.0, 5.0, 0.0)), end2: World((5.0, 105.0, 0.0)), law: Linear(stiffness: 100.0, rest_length: 100.0)),
+            SpringDamper(name: \"y2\", end1: Body(body: \"box\", point: (-5.0, -5.0, 0.0)), end2: World((-5.0, -105.0, 0.0)), law: Linear(stiffness: 100.0, rest_length: 100.0)),
+        ])";
+    let system = world(text).system().clone();
+    let eq = equilibrium::solve(&system, system.initial_states(), &[], &Settings::default()).unwrap();
+    let (rho, area, mass) = (1025.0, 200.0, 410_000.0);
+    let z = eq.states[0].position.z;
+    // The spring (rest 20 m) from the box's bottom at z − 2 down to z = −50: pull k (48 + z − 20).
+    let pull = 1000.0 * (z - 2.0 + 50.0 - 20.0);
+    let draft = (mass * G + pull) / (rho * G * area);
+    // The hull is a box of flat faces: its pressure integral is exact, the equilibrium solved to
+    // 1e-9 of the weight.
+    assert_relative_eq!(z, 2.0 - draft, max_relative = 1e-9);
+    assert_relative_eq!(eq.body_stiffness(0)[(2, 2)], rho * G * area + 1000.0, max_relative = 1e-6);
+    let at_rest = system.at_rest();
+    assert_stiffness_matches(&at_rest, &eq.states, "floating box");
+}

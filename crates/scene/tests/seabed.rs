@@ -123,3 +123,44 @@ fn bad_seabed_contact_parameters() {
     assert_error(("stiffness: 2e5", "stiffness: 0.0"), "bad.ron:29:51: seabed: stiffness must be > 0 N/m³, got 0");
     assert_error(("bodies: [\"block\"]", "bodies: [\"block\", \"block\"]"), "bad.ron:29:41: seabed: body \"block\" is listed twice");
 }
+
+/// `MOORED` in 40 m of water: `water` inserted before the seabed section, its elevation removed.
+fn in_water(water: &str) -> String {
+    MOORED.replacen("    seabed: Seabed(\n        elevation: -40.0,\n", &format!("    water: {water},\n    seabed: Seabed(\n"), 1)
+}
+
+#[test]
+fn in_water_the_seabed_lies_at_its_depth_and_the_lines_weigh_what_they_displace_less() {
+    let text = in_water("Water(density: 1025.0, depth: 40.0)");
+    assert!(!text.contains("elevation"), "{text}");
+    let loaded = common::scene(&text);
+    let system = loaded.world.system();
+    assert_eq!(system.seabed().map(|s| s.elevation), Some(-40.0));
+    assert_eq!(system.surroundings().fluid_density, 1025.0);
+    // The same line dry with λ0 − ρ A_d per metre gives the same forces: W = (λ0 − ρ A_d) g.
+    let dry = common::scene(&MOORED.replacen("mass_per_length: 50.0", &format!("mass_per_length: {}", 50.0 - 1025.0 * 0.0064), 1).replacen("displaced_area: 0.0064,", "", 1));
+    let (wet, reference) = (loaded.world.line_state(0).unwrap(), dry.world.line_state(0).unwrap());
+    // Both solved by the same Newton from the same start to round-off of the line's equations.
+    assert_relative_eq!(wet.horizontal_tension, reference.horizontal_tension, max_relative = 1e-12);
+    assert_relative_eq!(wet.grounded_length(), reference.grounded_length(), max_relative = 1e-12);
+    // A declared elevation that agrees with the water's bottom is accepted.
+    let agreeing = text.replacen("    seabed: Seabed(\n", "    seabed: Seabed(\n        elevation: -40.0,\n", 1);
+    assert_eq!(common::scene(&agreeing).world.system().seabed().map(|s| s.elevation), Some(-40.0));
+}
+
+#[test]
+fn a_seabed_that_disagrees_with_the_water_or_has_none_to_lie_under() {
+    let text = in_water("Water(depth: 40.0)").replacen("    seabed: Seabed(\n", "    seabed: Seabed(\n        elevation: -45.0,\n", 1);
+    assert_eq!(
+        error_of(&text),
+        "bad.ron:28:9: seabed: the seabed elevation -45 m disagrees with the water's bottom (level 0 m − depth 40 m = -40 m): leave it out and it lies there"
+    );
+    assert_eq!(error_of(&in_water("Water()")), "bad.ron:27:5: seabed: the water is deep (no depth): give the water a depth, and the seabed lies there");
+}
+
+#[test]
+fn a_line_that_floats_is_warned_of() {
+    let loaded = common::scene(&in_water("Water(depth: 40.0)").replacen("displaced_area: 0.0064", "displaced_area: 0.1", 1));
+    let warning = loaded.warnings.iter().find(|w| w.contains("chain")).expect("a warning about the chain");
+    assert!(warning.contains("the line floats (ρ A_d = 102.5 kg/m > λ0 = 50 kg/m): it arches upward"), "{warning}");
+}

@@ -18,10 +18,12 @@
 //!   one body radius long (the force itself is in `plots/contact/<name>`);
 //! - `plots/contact/<name>`: a contact's total normal force `Σ|f_n|` and friction `|Σ f_t|`,
 //!   series `normal` and `friction` [N]; its `plots/tension` series is the normal force;
-//! - the water, when the scene has some: [`water`].
+//! - the water, when the scene has some: [`water`];
+//! - the seabed and what lies on it, when the scene has one: [`seabed`].
 
 pub mod layout;
 pub mod paths;
+pub mod seabed;
 pub mod water;
 
 use rerun::RecordingStream;
@@ -42,6 +44,8 @@ pub struct Recorder {
     coupling_paths: Vec<String>,
     /// The water's part, if the scene has water.
     water: Option<water::WaterRecorder>,
+    /// The seabed's part, if the scene has a seabed.
+    seabed: Option<seabed::SeabedRecorder>,
 }
 
 /// Face forces below this fraction of the body's weight are not drawn.
@@ -87,7 +91,8 @@ impl Recorder {
         }
         let coupling_paths = world.couplings().iter().map(paths::coupling).collect();
         let water = water::WaterRecorder::new(&stream, world)?;
-        Ok(Self { stream, body_paths, coupling_paths, water })
+        let seabed = seabed::SeabedRecorder::new(&stream, world)?;
+        Ok(Self { stream, body_paths, coupling_paths, water, seabed })
     }
 
     /// Logs the world's current state at its `sim_time` and `step`.
@@ -122,6 +127,9 @@ impl Recorder {
         self.stream.log(paths::ENERGY, &rerun::Scalars::new(values))?;
         if let Some(water) = &self.water {
             water.log_frame(&self.stream, world)?;
+        }
+        if let Some(seabed) = &self.seabed {
+            seabed.log_frame(&self.stream, world)?;
         }
         Ok(())
     }

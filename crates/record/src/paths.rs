@@ -15,6 +15,9 @@
 //! | `world/water/surface`, `world/water/seabed` | the sea surface, the seabed plane |
 //! | `world/water/forces/<body>` | the water's force on a floating body |
 //! | `plots/water/<body>/motion`, `…/angles` | wave elevation and heave; roll and pitch |
+//! | `world/seabed/plane` | the seabed of a scene without water |
+//! | `world/seabed/grounded/<line>`, `world/seabed/touchdowns/<line>` | a line's part on the bottom, its touchdowns |
+//! | `plots/seabed/<line>` | a line's grounded length |
 
 use tether_physics::coupling::{Coupling, CouplingKind};
 
@@ -37,6 +40,26 @@ pub const WATER_SURFACE: &str = "world/water/surface";
 pub const SEABED: &str = "world/water/seabed";
 /// The floating bodies' plots.
 pub const WATER_PLOTS: &str = "plots/water";
+
+/// The seabed plane of a scene without water.
+pub const SEABED_PLANE: &str = "world/seabed/plane";
+/// The lines' grounded length plots.
+pub const SEABED_PLOTS: &str = "plots/seabed";
+
+/// `world/seabed/grounded/<line>`: the part of a line on the bottom.
+pub fn grounded_line(line: &str) -> String {
+    format!("world/seabed/grounded/{line}")
+}
+
+/// `world/seabed/touchdowns/<line>`.
+pub fn touchdowns(line: &str) -> String {
+    format!("world/seabed/touchdowns/{line}")
+}
+
+/// `plots/seabed/<line>`.
+pub fn seabed_plot(line: &str) -> String {
+    format!("{SEABED_PLOTS}/{line}")
+}
 
 /// `world/water/forces/<body>`.
 pub fn water_force(body: &str) -> String {

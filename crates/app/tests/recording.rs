@@ -150,3 +150,32 @@ fn recorded_values_are_the_worlds() {
     let xs: Vec<f32> = [2000, 4000, 6000].iter().map(|s| positions[s][0]).collect();
     assert!(xs[0] < xs[1] && xs[1] < xs[2], "{xs:?}");
 }
+
+/// The moored buoy's chains on the seabed: each line's grounded part and touchdown are drawn and
+/// its grounded length plotted every frame, and the plotted `L_B` is the world's at steps 1000,
+/// 2000 and 3000 (t = 2, 4, 6 s, the buoy swinging back from its push).
+#[test]
+fn grounded_lines_are_drawn_marked_and_their_grounded_length_plotted() {
+    let (_dir, out) = record("scenes/moored_buoy.ron", &["--duration", "6", "--log-hz", "10"]);
+    let rows = rows_per_entity(&out);
+    // dt = 2 ms, 10 Hz: a frame every 50 steps, 0 to 3000.
+    for line in ["mooring1", "mooring2", "mooring3"] {
+        for entity in [format!("/world/seabed/grounded/{line}"), format!("/world/seabed/touchdowns/{line}"), format!("/plots/seabed/{line}")] {
+            assert_eq!(rows.get(&entity), Some(&61), "{entity}: {rows:?}");
+        }
+    }
+    let grounded = scalars_by_step(&out, "/plots/seabed/mooring1");
+    let mut world = tether_scene::load(&common::repo("scenes/moored_buoy.ron")).unwrap().world;
+    let mut lengths = Vec::new();
+    for step in [1000, 2000, 3000] {
+        while world.steps() < step {
+            world.step().unwrap();
+        }
+        let expected = world.line_state(0).expect("a solved line").grounded_length();
+        let logged = grounded[&(step as i64)][0];
+        // Scalars are logged as f64: the same number.
+        assert_eq!(logged, expected, "step {step}");
+        lengths.push(logged);
+    }
+    assert!(lengths.windows(2).all(|w| w[0] != w[1]), "the grounded length changes as the buoy swings: {lengths:?}");
+}

@@ -5,7 +5,7 @@
 //! - `world/seabed/grounded/<line>`: the part of each catenary lying on the bottom, each frame,
 //!   a thick sand-coloured strip over the line's own drawing (empty while the line hangs free);
 //! - `world/seabed/touchdowns/<line>`: where its suspended parts meet the bottom, as points;
-//! - `plots/seabed/<line>`: its grounded length `L_B` [m] (the end tensions, anchor and
+//! - `plots/seabed/<line>`: its grounded length `L_B` [m], a series named after the line (the end tensions, anchor and
 //!   fairlead, are in `plots/catenary/<line>`).
 
 use crate::paths;
@@ -33,7 +33,7 @@ impl SeabedRecorder {
             log_plane(stream, world, seabed.elevation)?;
         }
         for (_, name) in &lines {
-            stream.log_static(paths::seabed_plot(name), &rerun::SeriesLines::new().with_names(["L_B"]))?;
+            stream.log_static(paths::seabed_plot(name), &rerun::SeriesLines::new().with_names([name.as_str()]))?;
         }
         Ok(Some(Self { lines }))
     }

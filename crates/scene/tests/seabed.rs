@@ -164,3 +164,18 @@ fn a_line_that_floats_is_warned_of() {
     let warning = loaded.warnings.iter().find(|w| w.contains("chain")).expect("a warning about the chain");
     assert!(warning.contains("the line floats (ρ A_d = 102.5 kg/m > λ0 = 50 kg/m): it arches upward"), "{warning}");
 }
+
+/// Edited water carries the seabed and the lines' weight with it: a deeper bottom moves the
+/// seabed down, a denser sea lightens the lines, and a bottom above an anchor is refused with
+/// the world unchanged.
+#[test]
+fn edited_water_moves_the_seabed_and_reweighs_the_lines() {
+    let mut world = common::scene(&in_water("Water(density: 1025.0, depth: 40.0)")).world;
+    let spec = *world.system().water().expect("water").water.spec();
+    world.replace_water(tether_physics::water::WaterSpec { depth: Some(45.0), density: 1030.0, ..spec }).unwrap();
+    assert_eq!(world.system().seabed().map(|s| s.elevation), Some(-45.0));
+    assert_eq!(world.system().surroundings().fluid_density, 1030.0);
+    let error = world.replace_water(tether_physics::water::WaterSpec { depth: Some(35.0), ..spec }).unwrap_err();
+    assert!(error.to_string().contains("coupling \"chain\": end 1 is 5 m below the seabed (z_b = -35 m)"), "{error}");
+    assert_eq!(world.system().seabed().map(|s| s.elevation), Some(-45.0), "unchanged");
+}

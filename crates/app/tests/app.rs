@@ -107,7 +107,7 @@ fn dropped_scenes_open_dropped_recordings_play_back_and_other_files_are_refused(
     until(&mut harness, "the dropped scene to run", |app| app.panel().status().is_some_and(|s| s.label == "dropped"));
     assert_eq!(harness.state().panel().scene().map(|s| s.path.clone()), Some(scene.clone()));
     let running = world(&harness);
-    assert_eq!((running.bodies[0].name.as_str(), running.state(0).position.x), ("bob", 1.1));
+    assert_eq!((running.bodies()[0].name.as_str(), running.state(0).position.x), ("bob", 1.1));
 
     drop_file(&mut harness, &recording);
     let viewer_has_it = |app: &TetherApp| {

@@ -33,7 +33,7 @@ fn chain_scene(n: usize) -> String {
 fn bench_chains(c: &mut Criterion) {
     let mut group = c.benchmark_group("step");
     group.throughput(Throughput::Elements(1));
-    let shipped = |name: &str| scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/bench").join(name)).expect("shipped scene").world;
+    let shipped = |name: &str| scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenes/bench").join(name)).expect("shipped scene").world;
     let mut chain100 = shipped("chain100.ron");
     // 6 s: the chain has fallen and its middle rests on the ground, every step pays for contact.
     for _ in 0..3000 {

@@ -5,5 +5,6 @@
 //! commands; [`study`] measures the integrators against a reference run and writes tables and a
 //! chart. The `tether` binary's command line lives beside `main.rs`.
 
+pub mod cpu_time;
 pub mod gui;
 pub mod study;

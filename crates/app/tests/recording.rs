@@ -41,7 +41,8 @@ fn record_writes_every_entity_once_per_frame() {
     let rows = rows_per_entity(&out);
     // dt = 0.5 ms, 50 Hz → a frame every 40 steps, 2000 steps: frames at steps 0, 40, …, 2000.
     let frames = 51;
-    for entity in ["/world/bodies/car", "/world/bodies/wheel", "/world/couplings/tyre", "/world/couplings/suspension", "/plots/tension", "/plots/energy"] {
+    // Both spring-dampers (tyre, suspension) are strips of the one `world/springs` entity.
+    for entity in ["/world/bodies/car", "/world/bodies/wheel", "/world/springs", "/plots/tension", "/plots/energy"] {
         assert_eq!(rows.get(entity), Some(&frames), "{entity}: {rows:?}");
     }
     for entity in ["/world", "/world/bodies/car/shape", "/world/bodies/wheel/shape"] {
@@ -67,20 +68,37 @@ fn catenary_shape_and_end_tensions_are_recorded() {
     let (_dir, out) = record("scenes/crane.ron", &["--duration", "0.5", "--log-hz", "20"]);
     let rows = rows_per_entity(&out);
     // dt = 1 ms, 20 Hz: frames at steps 0, 50, …, 500.
-    for entity in ["/world/couplings/rope", "/plots/catenary/rope", "/plots/tension", "/world/bodies/load"] {
+    for entity in ["/world/couplings/rope", "/plots/catenary", "/plots/tension", "/world/bodies/load"] {
         assert_eq!(rows.get(entity), Some(&11), "{entity}: {rows:?}");
     }
 }
 
+/// The contact force plots are always there; the face arrows only for the contacts and times
+/// asked for.
 #[test]
-fn a_contact_recording_has_its_face_arrows_and_force_plots() {
+fn a_contact_recording_has_its_force_plots_and_the_face_arrows_asked_for() {
+    // dt = 2 ms, 10 Hz → frames at steps 0, 50, …, 2000: 41.
     let (_dir, out) = record("scenes/fender.ron", &["--duration", "4", "--log-hz", "10"]);
     let rows = rows_per_entity(&out);
-    // dt = 2 ms, 10 Hz → frames at steps 0, 50, …, 2000: 41.
-    for entity in ["/world/contacts/quay", "/world/contacts/hull", "/plots/contact/quay", "/plots/contact/hull", "/world/bodies/fender"] {
+    for entity in ["/plots/contact", "/plots/tension", "/world/bodies/fender"] {
         assert_eq!(rows.get(entity), Some(&41), "{entity}: {rows:?}");
     }
+    // Only the arrows' static colour is there.
+    assert!(rows.iter().filter(|(path, _)| path.starts_with("/world/contacts")).all(|(_, &n)| n == 0), "no face arrows by default: {rows:?}");
     assert!(!rows.contains_key("/world/couplings/quay"), "a contact is not drawn as a line: {rows:?}");
     // The fender mesh is logged once, statically.
     assert_eq!(rows.get("/world/bodies/fender/shape"), Some(&0));
+
+    let (_dir, out) = record("scenes/fender.ron", &["--duration", "4", "--log-hz", "10", "--face-arrows", "all"]);
+    let rows = rows_per_entity(&out);
+    for entity in ["/world/contacts/quay", "/world/contacts/hull"] {
+        assert_eq!(rows.get(entity), Some(&41), "{entity}: {rows:?}");
+    }
+
+    // The quay's from t = 1.95 s (between two frames, so that no rounding of t decides): frames
+    // at 2.0, 2.1, …, 4.0 s, 21 of them; none of the hull's.
+    let (_dir, out) = record("scenes/fender.ron", &["--duration", "4", "--log-hz", "10", "--face-arrows", "quay", "--face-arrows-from", "1.95"]);
+    let rows = rows_per_entity(&out);
+    assert_eq!(rows.get("/world/contacts/quay"), Some(&21), "{rows:?}");
+    assert_eq!(rows.get("/world/contacts/hull"), Some(&0), "{rows:?}");
 }

@@ -18,10 +18,10 @@ pub fn layout(world: &World) -> Blueprint {
         plots.push(TimeSeriesView::new("tension [N]").with_origin(paths::TENSION).into());
     }
     if couplings.iter().any(|c| matches!(c.kind, CouplingKind::Catenary(_))) {
-        plots.push(TimeSeriesView::new("catenary end tensions [N]").with_origin(paths::CATENARY_PLOTS).into());
+        plots.push(TimeSeriesView::new("catenary end tensions [N]").with_origin(paths::CATENARY_PLOT).into());
     }
     if couplings.iter().any(|c| matches!(c.kind, CouplingKind::Contact(_))) {
-        plots.push(TimeSeriesView::new("contact forces [N]").with_origin(paths::CONTACT_PLOTS).into());
+        plots.push(TimeSeriesView::new("contact forces [N]").with_origin(paths::CONTACT_PLOT).into());
     }
     let scene: ContainerLike = Spatial3DView::new("scene").with_origin(paths::WORLD).into();
     Blueprint::new(Horizontal::new([scene, Vertical::new(plots).into()]).with_column_shares([3.0, 2.0]))

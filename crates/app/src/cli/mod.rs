@@ -6,6 +6,7 @@ mod forces;
 mod gui;
 mod record;
 mod study;
+mod timing;
 
 use anyhow::Context as _;
 use clap::{Parser, Subcommand};

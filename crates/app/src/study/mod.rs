@@ -264,7 +264,7 @@ fn sample(world: &mut World, interval: f64, samples: usize) -> Result<Samples, S
     let mut out = Samples { poses: Vec::with_capacity(samples + 1), balances: Vec::with_capacity(samples + 1), peak_energy: 0.0, cpu_seconds: 0.0 };
     record(world, &mut out);
     let dt = world.dt();
-    let start = thread_cpu_seconds();
+    let start = crate::cpu_time::thread_seconds();
     for k in 1..=samples {
         let target = k as f64 * interval;
         while world.time() < target - 0.5 * dt {
@@ -272,7 +272,7 @@ fn sample(world: &mut World, interval: f64, samples: usize) -> Result<Samples, S
         }
         record(world, &mut out);
     }
-    out.cpu_seconds = thread_cpu_seconds() - start;
+    out.cpu_seconds = crate::cpu_time::thread_seconds() - start;
     Ok(out)
 }
 
@@ -303,15 +303,3 @@ fn measure(run: &Samples, reference: &Samples, budget: f64, duration: f64, finis
     }
 }
 
-/// CPU time of the calling thread [s] (`CLOCK_THREAD_CPUTIME_ID`): unlike wall-clock time it
-/// does not count the time other processes take the core.
-fn thread_cpu_seconds() -> f64 {
-    let mut time = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-    // SAFETY: `time` is a valid, writable timespec for the call's duration.
-    if unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut time) } == 0 {
-        time.tv_sec as f64 + time.tv_nsec as f64 * 1e-9
-    } else {
-        // The clock exists on every Linux; elsewhere, fall back to the process's wall clock.
-        std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0.0, |d| d.as_secs_f64())
-    }
-}

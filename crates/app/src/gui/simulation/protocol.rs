@@ -37,6 +37,8 @@ pub enum Command {
     /// Coupling `index` replaced by `coupling` (already checked by the scene builder) without a
     /// restart; `sent` dates the request, to measure how long it took to apply.
     SetCoupling { index: usize, coupling: Coupling, sent: Instant },
+    /// Draw every contact's face forces as arrows in the recording (or not), from now on.
+    SetFaceArrows(bool),
     /// A new scene, paused at t = 0.
     Load(Box<Run>),
     /// A copy of the running world, for inspection (tests, tools).

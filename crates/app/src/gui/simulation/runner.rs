@@ -89,6 +89,9 @@ impl Runner {
             if self.running {
                 self.advance();
             }
+            // The tick's frames to the viewer, one chunk per entity.
+            let flushed = self.recording.flush();
+            self.report_failure(flushed);
             self.send_status();
         }
         self.finish_recording();
@@ -109,6 +112,7 @@ impl Runner {
             }
             Command::SetTiming(timing) => self.set_timing(timing),
             Command::SetCoupling { index, coupling, sent } => self.set_coupling(index, coupling, sent),
+            Command::SetFaceArrows(on) => self.set_face_arrows(on),
             Command::Load(run) => self.load(*run),
             Command::Snapshot(reply) => {
                 reply.send(self.run.as_ref().map(|run| run.world.clone())).ok();
@@ -263,6 +267,11 @@ impl Runner {
             }
             Err(error) => self.report(Report::Error(error.to_string())),
         }
+    }
+
+    fn set_face_arrows(&mut self, on: bool) {
+        let set = self.recording.set_face_arrows(on, self.run.as_ref().map(|run| &run.world));
+        self.report_failure(set);
     }
 
     fn send_status(&self) {

@@ -17,7 +17,7 @@ use std::collections::HashMap;
 use std::path::Path;
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
-use tether::cpu_time;
+use tether::runner::{process_cpu_seconds, thread_cpu_seconds};
 use tether::gui::simulation::{Command, Report, Run, Simulation, Speed};
 use tether::gui::stream::Sinks;
 use tether_physics::world::World;
@@ -96,7 +96,7 @@ fn live(world: World, speed: Speed) -> Live {
     simulation.send(Command::Load(Box::new(Run { label: "chain100".into(), world })));
     simulation.send(Command::SetSpeed(speed));
     simulation.send(Command::Play);
-    let (cpu_start, start) = (cpu_time::process_seconds(), Instant::now());
+    let (cpu_start, start) = (process_cpu_seconds(), Instant::now());
     let mut first: Option<(Instant, u64, f64)> = None;
     let mut last = first;
     while start.elapsed() < SPAN {
@@ -113,7 +113,7 @@ fn live(world: World, speed: Speed) -> Live {
             }
         }
     }
-    let process_cpu = (cpu_time::process_seconds() - cpu_start) / start.elapsed().as_secs_f64();
+    let process_cpu = (process_cpu_seconds() - cpu_start) / start.elapsed().as_secs_f64();
     simulation.stop();
     drop(simulation);
     let ingested = viewer.join().expect("the ingestion thread");
@@ -141,7 +141,7 @@ struct Ingested {
 /// Adds every message to its store, as the viewer does, until the stream closes; times the
 /// moves of the recording's latest `sim_time`.
 fn ingest(inbox: &mpsc::Receiver<Vec<LogMsg>>) -> Ingested {
-    let cpu_start = cpu_time::thread_seconds();
+    let cpu_start = thread_cpu_seconds();
     let mut stores: HashMap<rerun::StoreId, EntityDb> = HashMap::new();
     let (mut latest, mut moved, mut first) = (None, None::<Instant>, None::<Instant>);
     let (mut updates, mut longest_wait) = (0, Duration::ZERO);
@@ -165,5 +165,5 @@ fn ingest(inbox: &mpsc::Receiver<Vec<LogMsg>>) -> Ingested {
         (Some(first), Some(last)) => last - first,
         _ => Duration::ZERO,
     };
-    Ingested { cpu: cpu_time::thread_seconds() - cpu_start, span, updates, longest_wait }
+    Ingested { cpu: thread_cpu_seconds() - cpu_start, span, updates, longest_wait }
 }

@@ -2,9 +2,13 @@
 //! panel and embedded Rerun viewer) around the workspace's library crates:
 //! `tether-physics` (pure numerics, no GUI or viewer), `tether-scene` (RON files into a world),
 //! `tether-record` (the Rerun adapter that logs a world). [`gui`] sends a running world
-//! commands; [`study`] measures the integrators against a reference run and writes tables and a
-//! chart. The `tether` binary's command line lives beside `main.rs`.
+//! commands; [`sweep`] runs a scene over a design of factor values and [`study`] measures the
+//! integrators against a reference run, both on the engine of many cases in [`runner`], and
+//! write tables and charts ([`chart_style`]). The `tether` binary's command line lives beside
+//! `main.rs`.
 
-pub mod cpu_time;
+pub mod chart_style;
 pub mod gui;
+pub mod runner;
 pub mod study;
+pub mod sweep;

@@ -124,7 +124,7 @@ fn dropped_scenes_open_dropped_recordings_play_back_and_other_files_are_refused(
     std::fs::write(&notes, "Scene(").unwrap();
     drop_file(&mut harness, &notes);
     harness.run_steps(2);
-    let refusal = format!("{}: not a scene (.ron) or a recording (.rrd); nothing opened", notes.display());
+    let refusal = format!("{}: not a scene (.ron), a recording (.rrd) or a sweep directory; nothing opened", notes.display());
     assert!(harness.state().panel().log().any(|l| l.error && l.text == refusal), "log: {:?}", harness.state().panel().log().collect::<Vec<_>>());
     harness.get_by_label(&refusal);
     assert_eq!(harness.state().panel().load_error(), None, "not read as a scene");

@@ -278,3 +278,38 @@ fn contact_knobs_and_the_estimator_tune_the_running_contact() {
     let expected = tether_physics::coupling::contact::estimator::estimate(&impact).unwrap().stiffness;
     until(&mut harness, "the estimate in the running contact", |p| p.simulation().snapshot(PATIENCE).is_some_and(|w| contact_stiffness(&w) == expected));
 }
+
+/// The water panel: wave height, current and a body's drag reach the running world; a density
+/// of 0 and a negative drag are refused with the scene builder's reasons, the world untouched.
+#[test]
+fn water_knobs_tune_the_running_water_and_bad_values_are_refused() {
+    let text = r#"Scene(dt: 0.01, water: Water(depth: 30.0, waves: Regular(height: 1.0, period: 6.0)), bodies: [
+        Body(name: "float", master: Node(position: (0.0, 0.0, 0.0), mass: 1025.0, inertia: Inertia(xx: 300.0, yy: 300.0, zz: 300.0)),
+             shape: Box(size: (2.0, 2.0, 1.0)), hydro: Hydro(drag: (1.0, 1.0, 1.0)))])"#;
+    let dir = scenes_folder(&[("float.ron", text)]);
+    let mut harness = harness(panel(dir.path()));
+    open_from_list(&mut harness, "float.ron");
+    let height = |world: &World| match world.system().water().expect("water").water.spec().waves {
+        tether_physics::water::WaveSpec::Regular { height, .. } => height,
+        other => panic!("{other:?}"),
+    };
+    let drag_z = |world: &World| world.system().water().expect("water").floating[0].hydro.spec.drag.z;
+
+    set_knob(&mut harness, "wave height H", 1.5);
+    until(&mut harness, "the water applied", |p| p.log().any(|l| l.text.starts_with("the water applied")));
+    assert_eq!(height(&world(&harness)), 1.5);
+    set_knob(&mut harness, "current speed", 0.4);
+    until(&mut harness, "the current applied", |p| p.log().filter(|l| l.text.starts_with("the water applied")).count() == 2);
+    assert_eq!(world(&harness).system().water().expect("water").water.spec().current.speed, 0.4);
+
+    set_knob(&mut harness, "density ρ", 0.0);
+    harness.get_by_label_contains("Refused: water: density must be > 0 kg/m³, got 0");
+    assert_eq!(world(&harness).system().water().expect("water").water.spec().density, 1025.0);
+
+    set_knob(&mut harness, "drag C_d z", 0.7);
+    until(&mut harness, "the coefficients applied", |p| p.log().any(|l| l.text.starts_with("the body's coefficients in the water applied")));
+    assert_eq!(drag_z(&world(&harness)), 0.7);
+    set_knob(&mut harness, "drag C_d z", -1.0);
+    harness.get_by_label_contains("Refused: body \"float\": hydro: drag must be finite and ≥ 0");
+    assert_eq!(drag_z(&world(&harness)), 0.7);
+}

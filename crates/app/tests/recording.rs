@@ -1,4 +1,5 @@
-//! A recording read back with Rerun's own reader: entities present, one row per logged frame.
+//! A recording read back with Rerun's own reader: entities present, one row per logged frame, and
+//! the values logged equal to the world's.
 
 mod common;
 
@@ -101,4 +102,129 @@ fn a_contact_recording_has_its_force_plots_and_the_face_arrows_asked_for() {
     let rows = rows_per_entity(&out);
     assert_eq!(rows.get("/world/contacts/quay"), Some(&21), "{rows:?}");
     assert_eq!(rows.get("/world/contacts/hull"), Some(&0), "{rows:?}");
+}
+
+
+/// What `rows` finds of `entity` in each store of the `.rrd` file `path`: values by `step`.
+fn rows_by_step<T>(path: &std::path::Path, entity: &str, rows: impl Fn(&rerun::ChunkStore, &str) -> Vec<(i64, T)>) -> BTreeMap<i64, T> {
+    let mut file = std::fs::File::open(path).unwrap();
+    let stores = rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file).unwrap();
+    stores.values().flat_map(|store| rows(store, entity)).collect()
+}
+
+/// The translations logged to `entity`, by `step`.
+fn translations_by_step(path: &std::path::Path, entity: &str) -> BTreeMap<i64, [f32; 3]> {
+    let component = rerun::Transform3D::descriptor_translation().component;
+    rows_by_step(path, entity, |store, entity| {
+        let step = rerun::TimelineName::from_static_str("step");
+        store
+            .iter_physical_chunks()
+            .filter(|chunk| chunk.entity_path().to_string() == entity)
+            .flat_map(|chunk| chunk.iter_component_indices(step, component).zip(chunk.iter_slices::<[f32; 3]>(component)).map(|((time, _), values)| (time.as_i64(), values[0])).collect::<Vec<_>>())
+            .collect()
+    })
+}
+
+/// The scalars logged to `entity`, by `step`.
+fn scalars_by_step(path: &std::path::Path, entity: &str) -> BTreeMap<i64, Vec<f64>> {
+    let component = rerun::Scalars::descriptor_scalars().component;
+    rows_by_step(path, entity, |store, entity| {
+        let step = rerun::TimelineName::from_static_str("step");
+        store
+            .iter_physical_chunks()
+            .filter(|chunk| chunk.entity_path().to_string() == entity)
+            .flat_map(|chunk| chunk.iter_component_indices(step, component).zip(chunk.iter_slices::<f64>(component)).map(|((time, _), values)| (time.as_i64(), values.to_vec())).collect::<Vec<_>>())
+            .collect()
+    })
+}
+
+/// The values in a recording are the world's: the crane's load position and rope tension, read
+/// back from the `.rrd` at steps 2000, 4000 and 6000 (t = 2, 4, 6 s: hanging, swinging behind
+/// the moving trolley, overtaking it), equal those of the same scene stepped here, to f32
+/// precision (positions are logged as f32, scalars as f64).
+#[test]
+fn recorded_values_are_the_worlds() {
+    let (_dir, out) = record("scenes/crane.ron", &["--duration", "6", "--log-hz", "10"]);
+    let positions = translations_by_step(&out, "/world/bodies/load");
+    let tensions = scalars_by_step(&out, "/plots/tension");
+    // dt = 1 ms, 10 Hz: a frame every 100 steps, 0 to 6000.
+    assert_eq!(positions.len(), 61, "{:?}", positions.keys().collect::<Vec<_>>());
+    let scene = tether_scene::load(&common::repo("scenes/crane.ron")).unwrap();
+    let mut world = scene.world;
+    for step in [2000, 4000, 6000] {
+        while world.steps() < step {
+            world.step().unwrap();
+        }
+        let expected = world.state(1).position;
+        let recorded = positions[&(step as i64)];
+        for k in 0..3 {
+            assert!((f64::from(recorded[k]) - expected[k]).abs() <= f64::from(f32::EPSILON) * expected[k].abs().max(1.0), "step {step}, axis {k}: recorded {recorded:?}, world {expected:?}");
+        }
+        let tension = world.coupling_forces()[0].tension;
+        let logged = tensions[&(step as i64)][0];
+        assert!((logged - tension).abs() <= f64::from(f32::EPSILON) * tension.abs(), "step {step}: recorded tension {logged} N, world {tension} N");
+    }
+    // The load moved between the three times: the comparison is not of a body at rest.
+    let xs: Vec<f32> = [2000, 4000, 6000].iter().map(|s| positions[s][0]).collect();
+    assert!(xs[0] < xs[1] && xs[1] < xs[2], "{xs:?}");
+}
+
+/// The contact force plot holds the forces the step summed, the same as the faces evaluated
+/// again one by one (what the recorder logged before it took the step's): the fender against
+/// the quay and the hull, read back at steps 500, 1000 and 2000 (t = 1, 2, 4 s).
+#[test]
+fn recorded_contact_forces_are_the_faces_sums() {
+    let (_dir, out) = record("scenes/fender.ron", &["--duration", "4", "--log-hz", "10"]);
+    let forces = scalars_by_step(&out, "/plots/contact");
+    let mut world = tether_scene::load(&common::repo("scenes/fender.ron")).unwrap().world;
+    let contacts: Vec<usize> = world.couplings().iter().enumerate().filter(|(_, c)| matches!(c.kind, tether_physics::coupling::CouplingKind::Contact(_))).map(|(i, _)| i).collect();
+    let mut pressed = 0;
+    for step in [500, 1000, 2000] {
+        while world.steps() < step {
+            world.step().unwrap();
+        }
+        let logged = &forces[&(step as i64)];
+        assert_eq!(logged.len(), 2 * contacts.len(), "normal and friction of each contact");
+        for (k, &index) in contacts.iter().enumerate() {
+            let tether_physics::coupling::CouplingKind::Contact(contact) = &world.couplings()[index].kind else { unreachable!("filtered on contacts") };
+            let again = contact.totals(world.frames());
+            // The same faces summed in another order: round-off far below 1e-9 of the normal
+            // force (the physics test holds it to 1e-12).
+            let tolerance = 1e-9 * again.normal.max(1.0);
+            assert!((logged[2 * k] - again.normal).abs() <= tolerance, "step {step}, contact {k}: normal {} logged, {} again", logged[2 * k], again.normal);
+            assert!((logged[2 * k + 1] - again.friction).abs() <= tolerance, "step {step}, contact {k}: friction {} logged, {} again", logged[2 * k + 1], again.friction);
+            pressed += usize::from(again.normal > 0.0);
+        }
+    }
+    assert!(pressed >= 3, "the comparison is of contacts that press ({pressed} of 6)");
+}
+
+/// The water: the moving sea surface each frame (its triangles once), the seabed once, the
+/// buoy's water force and motion plots each frame, the heave read back equal to the world's;
+/// a calm sea's surface once.
+#[test]
+fn the_water_is_recorded() {
+    // dt = 2 ms, 10 Hz: a frame every 50 steps, 0 to 1000: 21.
+    let (_dir, out) = record("scenes/moored_buoy.ron", &["--duration", "2", "--log-hz", "10"]);
+    let rows = rows_per_entity(&out);
+    for entity in ["/world/water/surface", "/world/water/forces/buoy", "/plots/water/buoy/motion", "/plots/water/buoy/angles"] {
+        assert_eq!(rows.get(entity), Some(&21), "{entity}: {rows:?}");
+    }
+    assert_eq!(rows.get("/world/water/seabed"), Some(&0), "static: {rows:?}");
+    let motion = scalars_by_step(&out, "/plots/water/buoy/motion");
+    let mut world = tether_scene::load(&common::repo("scenes/moored_buoy.ron")).unwrap().world;
+    let start = world.state(0).position.z;
+    assert_eq!(motion[&0][1], 0.0, "no heave at t = 0");
+    while world.steps() < 1000 {
+        world.step().unwrap();
+    }
+    let heave = world.state(0).position.z - start;
+    assert!((motion[&1000][1] - heave).abs() <= 1e-12 * start.abs().max(1.0), "heave {} logged, {heave} m in the world", motion[&1000][1]);
+    assert!(heave.abs() > 1e-3, "the buoy moved in the waves: {heave} m");
+
+    // dt = 10 ms, 10 Hz: 21 frames; the calm surface once.
+    let (_dir, out) = record("scenes/floating_box.ron", &["--duration", "2", "--log-hz", "10"]);
+    let rows = rows_per_entity(&out);
+    assert_eq!(rows.get("/world/water/surface"), Some(&1), "{rows:?}");
+    assert_eq!(rows.get("/plots/water/box/motion"), Some(&21), "{rows:?}");
 }

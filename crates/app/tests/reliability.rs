@@ -128,7 +128,7 @@ fn empty_wrong_types_huge_and_negative_inputs_are_errors() {
         (format!("Scene(dt: 1e400, bodies: [{BODY}])"), "bad.ron:1:"),
         ("Scene(dt: 0.01, bodies: [Body(name: \"b\", master: Node(position: (0, 0, 0), mass: 1.0), shape: Sphere(radius: 0.1))])".to_string(), "bad.ron:1:"),
     ];
-    let expected_words = ["", "", "mass_kg", "overflow", "radius must be > 0", "rest_length must be ≥ 0", "length must be > 0", "finite", "not positive definite"];
+    let expected_words = ["Expected opening `(` for struct `Scene`", "Expected float", "mass_kg", "overflow", "radius must be > 0", "rest_length must be ≥ 0", "length must be > 0", "finite", "not positive definite"];
     for ((text, prefix), words) in cases.iter().zip(expected_words) {
         let error = error_of(text);
         assert!(error.starts_with(prefix), "{error}");

@@ -1,6 +1,9 @@
 //! Steps per second of spring chains (speed targets on one core in release: chain100_air
 //! ≥ 150,000 steps/s; chain100, the same chain lying on the ground with floor contact on every
-//! sphere, ≥ 75,000 steps/s). Criterion reports the throughput as `elem/s` = steps/s.
+//! sphere, ≥ 75,000 steps/s) and of floating bodies (moored_buoy in its regular wave ≥ 50,000
+//! steps/s; the same buoy in a 50-component JONSWAP sea ≥ 20,000 steps/s; the barge hull of
+//! 578 vertices in its 50-component sea, for scale). Criterion reports the throughput as
+//! `elem/s` = steps/s.
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::fmt::Write as _;
@@ -33,7 +36,7 @@ fn chain_scene(n: usize) -> String {
 fn bench_chains(c: &mut Criterion) {
     let mut group = c.benchmark_group("step");
     group.throughput(Throughput::Elements(1));
-    let shipped = |name: &str| scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenes/bench").join(name)).expect("shipped scene").world;
+    let shipped = |name: &str| shipped_in(&format!("bench/{name}"));
     let mut chain100 = shipped("chain100.ron");
     // 6 s: the chain has fallen and its middle rests on the ground, every step pays for contact.
     for _ in 0..3000 {
@@ -48,7 +51,34 @@ fn bench_chains(c: &mut Criterion) {
     for (name, mut world) in cases {
         group.bench_function(name, |b| b.iter(|| world.step().expect("springs always give a force")));
     }
+    // The buoy once the waves are fully ramped in (20 s: the ramp is 16 s), every step pays for
+    // the waves.
+    let buoy_text = std::fs::read_to_string(scenes().join("moored_buoy.ron")).expect("shipped scene");
+    let jonswap = buoy_text.replace("waves: Regular(height: 2.0, period: 8.0, heading_deg: 0.0)", "waves: Jonswap(hs: 2.0, tp: 8.0, components: 50, seed: 1)");
+    assert_ne!(jonswap, buoy_text, "the shipped buoy's wave line changed: update the bench");
+    let barge = shipped_in("barge_in_waves.ron");
+    let floating = [
+        ("moored_buoy_regular", scene::parse(&buoy_text, Path::new("moored_buoy.ron")).expect("shipped scene").world, 10_000),
+        ("moored_buoy_jonswap50", scene::parse(&jonswap, Path::new("moored_buoy.ron")).expect("edited scene").world, 10_000),
+        ("barge_jonswap50", barge, 1_000),
+    ];
+    for (name, mut world, warm_up) in floating {
+        for _ in 0..warm_up {
+            world.step().expect("the shipped scene is stable");
+        }
+        group.bench_function(name, |b| b.iter(|| world.step().expect("water always gives forces")));
+    }
     group.finish();
+}
+
+/// The repository's `scenes/` (this crate is two levels below the workspace root).
+fn scenes() -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenes")
+}
+
+/// The world of the shipped scene `scenes/<name>`.
+fn shipped_in(name: &str) -> tether_physics::world::World {
+    scene::load(&scenes().join(name)).expect("shipped scene").world
 }
 
 criterion_group!(benches, bench_chains);

@@ -1,8 +1,9 @@
 //! Energy accounting (PHYSICS.md §5).
 //!
 //! `total = kinetic + gravity + elastic` [J]. Dampers dissipate `dissipated = ∫ P_d dt` ≥ 0 and
-//! kinematic (prescribed) bodies inject `external_work = −∫ Σ (F_k·v_k + M_k·ω_k) dt`, the work
-//! the drivers do against the couplings. The balance `total + dissipated − external_work` is
+//! kinematic (prescribed) bodies inject `−∫ Σ (F_k·v_k + M_k·ω_k) dt`, the work the drivers do
+//! against the couplings, and the water (§6) `∫ Σ (F_w·v + M_w·ω) dt` on the floating bodies:
+//! together the `external_work`. The balance `total + dissipated − external_work` is
 //! constant for the exact motion; a numerical run keeps it to the integrator's order. Each
 //! integrator integrates the powers by its own rule ([`crate::integrator::StepReport::work`]);
 //! the world adds up the work in its [`EnergyLedger`].
@@ -21,7 +22,7 @@ pub struct EnergyReport {
     pub elastic: f64,
     /// Work dissipated by dampers since t = 0.
     pub dissipated: f64,
-    /// Work done by prescribed motions on the system since t = 0.
+    /// Work done by prescribed motions and by the water on the system since t = 0.
     pub external_work: f64,
 }
 
@@ -37,15 +38,18 @@ impl EnergyReport {
     }
 }
 
-/// Power [W] at one force evaluation: dissipated by dampers (≥ 0) and put in by prescribed
-/// motions.
+/// Power [W] at one force evaluation: dissipated by dampers (≥ 0), put in by prescribed
+/// motions, and put in by the water (kept apart: the staggered schemes integrate it with their
+/// half-step velocities, see [`crate::integrator::leapfrog`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Powers {
     pub dissipated: f64,
     pub external: f64,
+    pub water: f64,
 }
 
-/// Work [J] over a span of time: dissipated by dampers, and put in by prescribed motions.
+/// Work [J] over a span of time: dissipated by dampers, and put in by prescribed motions and the
+/// water.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Work {
     pub dissipated: f64,
@@ -53,7 +57,8 @@ pub struct Work {
 }
 
 impl Work {
-    /// `½ h (P_a + P_b)`: the trapezoid rule over a step `h` [s] between two evaluations.
+    /// `½ h (P_a + P_b)`: the trapezoid rule over a step `h` [s] between two evaluations, of the
+    /// dissipated and the external power (the water's is the caller's).
     pub fn trapezoid(h: f64, a: &Powers, b: &Powers) -> Self {
         Self { dissipated: 0.5 * h * (a.dissipated + b.dissipated), external: 0.5 * h * (a.external + b.external) }
     }

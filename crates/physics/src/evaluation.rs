@@ -6,6 +6,7 @@ use crate::body::{BodyFrame, Load};
 use crate::coupling::catenary::LineState;
 use crate::coupling::contact::ContactForces;
 use crate::coupling::{Coupling, CouplingCache, CouplingForces};
+use crate::water::{WaterForces, WaterScratch};
 
 /// The buffers of the force evaluation, one entry per body or coupling of a [`System`].
 #[derive(Debug, Clone)]
@@ -18,6 +19,10 @@ pub struct Evaluation {
     pub(crate) forces: Vec<CouplingForces>,
     /// What each coupling remembers (warm starts, face lists).
     pub(crate) caches: Vec<CouplingCache>,
+    /// What the water did to each floating body (empty without water).
+    pub(crate) water: Vec<WaterForces>,
+    /// The water stage's buffers.
+    pub(crate) water_scratch: WaterScratch,
 }
 
 impl Evaluation {
@@ -28,6 +33,8 @@ impl Evaluation {
             loads: vec![Load::default(); bodies],
             forces: vec![CouplingForces::default(); couplings.len()],
             caches: couplings.iter().map(Coupling::new_cache).collect(),
+            water: Vec::new(),
+            water_scratch: WaterScratch::default(),
         }
     }
 
@@ -41,8 +48,8 @@ impl Evaluation {
         &self.frames
     }
 
-    /// The load on each body at the last evaluation: couplings, plus gravity for bodies that
-    /// respond to forces.
+    /// The load on each body at the last evaluation: couplings and water, plus gravity for
+    /// bodies that respond to forces.
     pub fn loads(&self) -> &[Load] {
         &self.loads
     }
@@ -50,6 +57,12 @@ impl Evaluation {
     /// What each coupling did at the last evaluation.
     pub fn forces(&self) -> &[CouplingForces] {
         &self.forces
+    }
+
+    /// What the water did to each floating body at the last evaluation, in the order of the
+    /// system's floating bodies (empty without water).
+    pub fn water(&self) -> &[WaterForces] {
+        &self.water
     }
 
     /// What each coupling remembers.

@@ -12,7 +12,10 @@
 //! - [`coupling`]: the forces between bodies and the world (§2–4);
 //! - [`evaluation`]: what a force evaluation leaves behind (kinematics, loads, coupling records
 //!   and caches);
-//! - [`system`]: bodies, couplings and gravity, and the named stages of a force evaluation;
+//! - [`water`]: hydrostatics, waves, current, Morison loads and added mass (§6), an
+//!   environment stage of the force evaluation;
+//! - [`system`]: bodies, couplings, gravity and water, and the named stages of a force
+//!   evaluation;
 //! - [`integrator`]: how states advance in time (§1, time integration), on a narrow interface;
 //! - [`energy`]: the energy balance that checks it all (§5);
 //! - [`stability`]: the stable time step of each coupling and spinning body;
@@ -45,4 +48,5 @@ pub mod simd;
 pub mod stability;
 pub mod system;
 pub mod table;
+pub mod water;
 pub mod world;

@@ -27,6 +27,13 @@
 //!   still swings up before it decays (19× at 0.9 of the limit, 2.5× at 0.8), which the
 //!   divergence check stops; the leapfrog family has no such transient.
 //! - Rotation, fixed-step schemes: `|ω| dt < 1` (Radioss aborts beyond).
+//! - Water (PHYSICS.md §6), per floating body: along each body axis `b_j` an oscillator of the
+//!   hydrostatic stiffness `ρ g A_wp (b_j·ẑ)²`, the linearised drag `w (ρ C_dj A_j |u_r·b_j| +
+//!   c_j)` and the mass with its added mass `m + w ρ V C_aj`; about each, the righting
+//!   stiffness `ρ g V max(GM_T, GM_L, 0)`, the linearised rotational drag
+//!   `w (2 C_rj |ω_j| + d_j)` and the smallest principal moment (added inertia left out: the
+//!   estimate errs short). The still-water hydrostatics at the current pose stand for the
+//!   waves'.
 
 use crate::body::{BodyFrame, BodyState};
 use crate::coupling::contact::estimator::STEPS_PER_STOPPING_TIME;
@@ -35,6 +42,7 @@ use crate::evaluation::Evaluation;
 use crate::integrator::Integrator;
 use crate::math::Vec3;
 use crate::system::System;
+use crate::water::hydrostatics::Hydrostatics;
 use nalgebra::Complex;
 
 /// What limits the time step.
@@ -46,6 +54,8 @@ pub enum Limiter {
     Rotation(usize),
     /// Coupling index of a contact: the step that resolves its impact (not a stability limit).
     Impact(usize),
+    /// Body index: the water's stiffness and drag on it.
+    Water(usize),
 }
 
 /// A stable time step [s] and what sets it.
@@ -62,6 +72,7 @@ impl Limit {
             Limiter::Coupling(i) => format!("coupling \"{}\"", system.couplings()[i].name),
             Limiter::Rotation(i) => format!("rotation of body \"{}\"", system.bodies()[i].name),
             Limiter::Impact(i) => format!("impact of contact \"{}\" (τ/10)", system.couplings()[i].name),
+            Limiter::Water(i) => format!("water on body \"{}\"", system.bodies()[i].name),
         }
     }
 }
@@ -167,12 +178,51 @@ pub fn limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
             limits.push(Limit { limiter: Limiter::Coupling(index), dt });
         }
     }
+    limits.extend(water_limits(situation, integrator));
     // The adaptive scheme keeps its own rotation accurate.
     let spinning = if integrator.is_adaptive() { 0 } else { system.bodies().len() };
     for index in (0..spinning).filter(|&i| !system.bodies()[i].is_kinematic()) {
         let spin = states[index].angular_velocity.norm();
         if spin > 0.0 {
             limits.push(Limit { limiter: Limiter::Rotation(index), dt: 1.0 / spin });
+        }
+    }
+    limits
+}
+
+/// The stable step of each floating body that responds to forces, under the water's stiffness
+/// and linearised drag (see the module docs).
+fn water_limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
+    let Situation { system, states, .. } = *situation;
+    let Some(stage) = system.water() else { return Vec::new() };
+    let water = &stage.water;
+    let rho = water.density();
+    let rho_g = water.specific_weight();
+    let mut limits = Vec::new();
+    for floating in stage.floating.iter().filter(|f| !system.bodies()[f.body].is_kinematic()) {
+        let (body, state) = (&system.bodies()[floating.body], &states[floating.body]);
+        let frame = state.frame();
+        let hull = &floating.hull;
+        let statics = Hydrostatics::at(hull, &frame.position, &frame.rotation, water.level());
+        let wetted = (statics.displaced_volume / hull.volume()).min(1.0);
+        if !(wetted > 0.0) {
+            continue;
+        }
+        let hydro = &floating.hydro;
+        let speed = water.peak_flow_speed() + frame.velocity.norm() + state.angular_velocity.norm() * hydro.drag_center.norm();
+        let (drag, turning) = hydro.linearised(&frame, speed, rho, wetted);
+        let righting = rho_g * statics.displaced_volume * statics.metacentric_heights(frame.position.z).into_iter().fold(0.0, f64::max);
+        let smallest_moment = body.principal_moments().min();
+        let mut dt = f64::INFINITY;
+        for j in 0..3 {
+            let axis = frame.rotation * hydro.axes.column(j);
+            let heave = rho_g * statics.waterplane_area * axis.z * axis.z;
+            let mass = body.mass() + wetted * rho * hull.volume() * hydro.spec.added_mass[j];
+            dt = dt.min(oscillator_limit(integrator, heave, drag[j], 1.0 / mass));
+            dt = dt.min(oscillator_limit(integrator, righting, turning[j], 1.0 / smallest_moment));
+        }
+        if dt.is_finite() {
+            limits.push(Limit { limiter: Limiter::Water(floating.body), dt });
         }
     }
     limits

@@ -9,10 +9,13 @@
 //! 3. *clear* the loads and add *gravity* ([`System::gravity_load`]);
 //! 4. *couplings*: each coupling's forces, kept per coupling and summed into the bodies' loads
 //!    ([`System::apply_couplings`]);
-//! 5. *powers*: dissipated by the couplings, put in by prescribed motions
+//! 5. *water*, an environment stage declared by the scene ([`System::with_water`]) and skipped
+//!    when it declares none: pressure, Morison loads and added mass on each floating body, kept
+//!    per body and summed into the loads ([`System::apply_water`], [`crate::water`]);
+//! 6. *powers*: dissipated by the couplings, put in by prescribed motions and by the water
 //!    ([`System::external_power`]).
 //!
-//! [`System::evaluate`] runs 2–5; the leapfrog fuses 1–3 into its pass over the bodies.
+//! [`System::evaluate`] runs 2–6; the leapfrog fuses 1–3 into its pass over the bodies.
 
 use crate::body::{BodyState, Load, RigidBody, Support};
 use crate::coupling::{Coupling, CouplingError, CouplingKind};
@@ -20,6 +23,10 @@ use crate::energy::Powers;
 use crate::evaluation::Evaluation;
 use crate::math::Vec3;
 use crate::simd::Level;
+use crate::water::{WaterSpec, WaterStage};
+use crate::water::environment::WaterError;
+use crate::water::morison::HydroSpec;
+use crate::water::stage::{FloatingBody, FloatingError};
 
 /// Bodies, couplings and gravity: what a run does not change (live edits aside).
 #[derive(Debug, Clone)]
@@ -34,6 +41,8 @@ pub struct System {
     kinematic_bodies: Vec<usize>,
     /// The build of the couplings stage this processor runs.
     level: Level,
+    /// The water and the bodies in it, if the scene has water.
+    water: Option<WaterStage>,
 }
 
 /// A system that does not hold together.
@@ -43,6 +52,14 @@ pub enum SystemError {
     StateCount { bodies: usize, states: usize },
     #[error("coupling \"{coupling}\" refers to body {body}, but the system has {count} bodies")]
     UnknownBody { coupling: String, body: usize, count: usize },
+    #[error("floating body {body} of {count} does not exist or floats twice")]
+    FloatingBody { body: usize, count: usize },
+    #[error("{0}")]
+    Water(#[from] WaterError),
+    #[error("body \"{body}\": {source}")]
+    Hydro { body: String, source: FloatingError },
+    #[error("the system has no water")]
+    NoWater,
 }
 
 /// A coupling that could not give its forces: its index, and why.
@@ -66,7 +83,51 @@ impl System {
             check_bodies(coupling, bodies.len())?;
         }
         let kinematic_bodies = (0..bodies.len()).filter(|&i| bodies[i].is_kinematic()).collect();
-        Ok(Self { gravity, bodies, couplings, initial_states, kinematic_bodies, level: Level::best() })
+        Ok(Self { gravity, bodies, couplings, initial_states, kinematic_bodies, level: Level::best(), water: None })
+    }
+
+    /// The system in `water`, with the bodies `floating` in it: each a body index and its
+    /// coefficients (PHYSICS.md §6). Without this the system has no water stage at all.
+    ///
+    /// # Errors
+    /// Water that cannot be (bad values, a breaking wave, gravity not along −z), an unknown or
+    /// repeated body, a body whose shape is not a closed outward hull or whose coefficients are
+    /// bad.
+    pub fn with_water(mut self, water: WaterSpec, floating: Vec<(usize, HydroSpec)>) -> Result<Self, SystemError> {
+        let water = crate::water::Water::new(water, &self.gravity)?;
+        let count = self.bodies.len();
+        let mut bodies = Vec::with_capacity(floating.len());
+        for (index, (body, spec)) in floating.iter().enumerate() {
+            if *body >= count || floating[..index].iter().any(|(b, _)| b == body) {
+                return Err(SystemError::FloatingBody { body: *body, count });
+            }
+            bodies.push(FloatingBody::new(&self.bodies, *body, *spec).map_err(|source| SystemError::Hydro { body: self.bodies[*body].name.clone(), source })?);
+        }
+        self.water = Some(WaterStage { water, floating: bodies });
+        Ok(self)
+    }
+
+    /// The water stage, if the system has water.
+    pub fn water(&self) -> Option<&WaterStage> {
+        self.water.as_ref()
+    }
+
+    /// Replaces the water's spec (a live edit: the world restarts its integrator after it).
+    pub(crate) fn replace_water(&mut self, spec: WaterSpec) -> Result<(), SystemError> {
+        let stage = self.water.as_ref().ok_or(SystemError::NoWater)?.with_spec(spec, &self.gravity)?;
+        self.water = Some(stage);
+        Ok(())
+    }
+
+    /// Replaces the coefficients of floating body `body` (a live edit, as above).
+    pub(crate) fn replace_hydro(&mut self, body: usize, spec: HydroSpec) -> Result<(), SystemError> {
+        let count = self.bodies.len();
+        let stage = self.water.as_mut().ok_or(SystemError::NoWater)?;
+        let entry = stage.floating.iter_mut().find(|f| f.body == body).ok_or(SystemError::FloatingBody { body, count })?;
+        let hydro = crate::water::Hydro::new(spec, &self.bodies[body], &entry.hull)
+            .map_err(|e| SystemError::Hydro { body: self.bodies[body].name.clone(), source: FloatingError::Hydro(e) })?;
+        entry.hydro = hydro;
+        Ok(())
     }
 
     /// Gravity [m/s²].
@@ -117,12 +178,12 @@ impl System {
         }
     }
 
-    /// Stages *predict*, *clear*, *gravity*, *couplings* and *powers* at the (prescribed)
-    /// `states`, into `evaluation`.
+    /// Stages *predict*, *clear*, *gravity*, *couplings*, *water* and *powers* at the
+    /// (prescribed) `states` and time `time` [s], into `evaluation`.
     ///
     /// # Errors
     /// A coupling that cannot give its forces (only non-finite states make one).
-    pub fn evaluate(&self, states: &[BodyState], evaluation: &mut Evaluation) -> Result<Powers, EvaluationError> {
+    pub fn evaluate(&self, states: &[BodyState], evaluation: &mut Evaluation, time: f64) -> Result<Powers, EvaluationError> {
         for (frame, state) in evaluation.frames.iter_mut().zip(states) {
             *frame = state.frame();
         }
@@ -130,7 +191,8 @@ impl System {
             *load = self.gravity_load(body);
         }
         let dissipated = self.apply_couplings(evaluation)?;
-        Ok(Powers { dissipated, external: self.external_power(evaluation) })
+        let water = self.apply_water(evaluation, time);
+        Ok(Powers { dissipated, external: self.external_power(evaluation), water })
     }
 
     /// Stages *clear* and *gravity* for one body: `F = m g`, `M = 0` (nothing for a kinematic
@@ -146,12 +208,36 @@ impl System {
     /// # Errors
     /// The first coupling that cannot give its forces.
     pub fn apply_couplings(&self, evaluation: &mut Evaluation) -> Result<f64, EvaluationError> {
-        let Evaluation { frames, loads, forces, caches } = evaluation;
+        let Evaluation { frames, loads, forces, caches, .. } = evaluation;
         let stage = CouplingsStage { couplings: &self.couplings, gravity: &self.gravity, frames, caches, forces, loads };
         stage.run(self.level).map_err(|(coupling, source)| EvaluationError { coupling, source })
     }
 
-    /// Stage *powers*: what the prescribed motions put in, `−Σ (F_k·v_k + M_k·ω_k)` [W].
+    /// Stage *water* at time `time` [s] (after the couplings: the added mass reacts to every
+    /// other force): each floating body's water forces, kept per body and added to the loads;
+    /// returns their power `Σ F·v + M·ω` [W], external work. Nothing without water.
+    #[inline]
+    pub fn apply_water(&self, evaluation: &mut Evaluation, time: f64) -> f64 {
+        let Some(stage) = &self.water else { return 0.0 };
+        let Evaluation { frames, loads, water, water_scratch, .. } = evaluation;
+        if water.len() != stage.floating.len() {
+            water.resize(stage.floating.len(), crate::water::WaterForces::default());
+        }
+        stage.apply(self.level, &self.bodies, frames, loads, water, water_scratch, time)
+    }
+
+    /// `Σ F·v + M·ω` [W] of the water's forces still in `evaluation` (those of the previous
+    /// evaluation) at the kinematics now in its frames: the left end of the staggered schemes'
+    /// water work (see [`crate::integrator::leapfrog`]).
+    pub fn water_power(&self, evaluation: &Evaluation) -> f64 {
+        if self.water.is_none() {
+            return 0.0;
+        }
+        evaluation.water.iter().map(|record| crate::water::stage::power(&record.total(), &evaluation.frames[record.body])).sum()
+    }
+
+    /// Stage *powers*: what the prescribed motions put in, `−Σ (F_k·v_k + M_k·ω_k)` [W] (of
+    /// the loads on them less the water's, whose power [`System::apply_water`] gives).
     pub fn external_power(&self, evaluation: &Evaluation) -> f64 {
         self.kinematic_bodies
             .iter()

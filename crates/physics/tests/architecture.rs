@@ -165,7 +165,14 @@ fn import_graph() -> BTreeMap<String, BTreeSet<String>> {
 #[test]
 fn no_module_imports_one_that_imports_it_back() {
     let graph = import_graph();
-    for (m, e) in &graph { eprintln!("{m} -> {e:?}"); }
+    // `TETHER_PRINT_IMPORTS=1 cargo test -p tether-physics --test architecture -- --nocapture`
+    // prints the graph (docs/architecture.md shows it).
+    if std::env::var_os("TETHER_PRINT_IMPORTS").is_some() {
+        for (module, edges) in &graph {
+            let edges: Vec<&str> = edges.iter().map(|e| e.trim_start_matches("crate::")).collect();
+            println!("{} → {}", module.trim_start_matches("crate::"), edges.join(", "));
+        }
+    }
     assert!(graph.len() > 30, "the physics crate's modules were found: {:?}", graph.keys());
     if let Some(found) = cycle(&graph) {
         panic!("import circle: {}", found.join(" → "));

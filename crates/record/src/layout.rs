@@ -1,7 +1,8 @@
 //! How the viewer lays out a run: the 3D scene large on the left, the plots stacked on the
 //! right (energy; tension when there are couplings; the catenaries' end tensions and the
-//! contacts' forces when there are any); the `sim_time` timeline; the viewer's own side panels
-//! folded, room being short beside the control panel.
+//! contacts' forces when there are any; each floating body's motion in the water); the
+//! `sim_time` timeline; the viewer's own side panels folded, room being short beside the
+//! control panel.
 
 use crate::paths;
 use rerun::RecordingStream;
@@ -22,6 +23,13 @@ pub fn layout(world: &World) -> Blueprint {
     }
     if couplings.iter().any(|c| matches!(c.kind, CouplingKind::Contact(_))) {
         plots.push(TimeSeriesView::new("contact forces [N]").with_origin(paths::CONTACT_PLOT).into());
+    }
+    if let Some(stage) = world.system().water() {
+        for floating in &stage.floating {
+            let name = &world.bodies()[floating.body].name;
+            plots.push(TimeSeriesView::new(format!("{name}: elevation, heave [m]")).with_origin(paths::water_plot(name, "motion")).into());
+            plots.push(TimeSeriesView::new(format!("{name}: roll, pitch [deg]")).with_origin(paths::water_plot(name, "angles")).into());
+        }
     }
     let scene: ContainerLike = Spatial3DView::new("scene").with_origin(paths::WORLD).into();
     Blueprint::new(Horizontal::new([scene, Vertical::new(plots).into()]).with_column_shares([3.0, 2.0]))

@@ -17,7 +17,9 @@
 //! - `plots/contact`: every contact's total normal force `Σ|f_n|` and friction `|Σ f_t|`, series
 //!   `<name> normal` and `<name> friction` [N];
 //! - `world/contacts/<name>`: a contact's face forces as arrows from the face centroids, for the
-//!   contacts and times asked for ([`FaceArrows`]; none by default).
+//!   contacts and times asked for ([`FaceArrows`]; none by default);
+//! - the water, when the scene has some: `world/water/…` and `plots/water/<body>/…` (the
+//!   `tracks::water` module).
 //!
 //! How it keeps up with the physics: a [`Recorder`] buffers each frame's values in plain
 //! vectors and sends them as columns (`send_columns`), one chunk per entity for many frames,
@@ -86,6 +88,16 @@ impl Recorder {
         face_arrows.check(world)?;
         let stream = rerun::RecordingStreamBuilder::new(APPLICATION_ID).save(path)?;
         Self::new(stream, world, face_arrows)
+    }
+
+    /// A recorder writing to the `.rrd` file `path` under application id `application` and
+    /// recording id `recording` (a sweep's: one application, one recording per case, so that
+    /// several cases open side by side in the viewer), without face arrows; the file is created
+    /// now.
+    pub fn to_file_as(path: &Path, world: &World, application: &str, recording: &str) -> Result<Self, RecordError> {
+        let application = rerun::ApplicationId::new_or_unknown(application);
+        let stream = rerun::RecordingStreamBuilder::new(application).recording_id(recording).save(path)?;
+        Self::new(stream, world, &FaceArrows::default())
     }
 
     /// A recorder on an existing stream, drawing the face arrows `face_arrows`; logs the static

@@ -13,6 +13,9 @@
 //! | `plots/tension` | every coupling's tension |
 //! | `plots/catenary` | every catenary's end tensions |
 //! | `plots/contact` | every contact's normal force and friction |
+//! | `world/water/surface`, `world/water/seabed` | the sea surface, the seabed plane |
+//! | `world/water/forces/<body>` | the water's force on a floating body |
+//! | `plots/water/<body>/motion`, `…/angles` | wave elevation and heave; roll and pitch |
 
 use tether_physics::coupling::{Coupling, CouplingKind};
 
@@ -30,6 +33,23 @@ pub const TENSION: &str = "plots/tension";
 pub const CATENARY_PLOT: &str = "plots/catenary";
 /// Every contact's normal force and friction, two series each.
 pub const CONTACT_PLOT: &str = "plots/contact";
+
+/// The sea surface.
+pub const WATER_SURFACE: &str = "world/water/surface";
+/// The seabed plane.
+pub const SEABED: &str = "world/water/seabed";
+/// The floating bodies' plots.
+pub const WATER_PLOTS: &str = "plots/water";
+
+/// `world/water/forces/<body>`.
+pub fn water_force(body: &str) -> String {
+    format!("world/water/forces/{body}")
+}
+
+/// `plots/water/<body>/<plot>`.
+pub fn water_plot(body: &str, plot: &str) -> String {
+    format!("{WATER_PLOTS}/{body}/{plot}")
+}
 
 /// `world/bodies/<name>`: the body's pose.
 pub fn body(name: &str) -> String {

@@ -13,15 +13,21 @@ use tether_physics::mass_properties::{MassError, MassProperties, Node};
 use tether_physics::math::{Mat3, Vec3};
 use tether_physics::mesh::{BoundaryMesh, MeshError, Surface};
 use tether_physics::system::System;
+use tether_physics::water::Hull;
 use tether_physics::world::{StepError, World};
 use std::path::Path;
 use std::sync::Arc;
+
+mod water;
+pub use water::{hydro_spec, water_spec};
 
 /// Where a problem is in the file.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Place {
     /// A top-level field.
     Top(&'static str),
+    /// A field of a top-level section (`water: Water(... depth: ...)`), or the section itself.
+    Section { section: &'static str, field: &'static str },
     /// An item of a list: its `occurrence`-th `name: "…"`, then optionally a field after it and
     /// a string literal after that.
     Item { kind: ItemKind, name: String, occurrence: usize, field: Option<&'static str>, literal: Option<String> },
@@ -57,7 +63,8 @@ impl Bodies {
         for (index, def) in file.bodies.iter().enumerate() {
             let at = ItemAt::new(ItemKind::Body, &def.name, file.bodies[..index].iter().filter(|b| b.name == def.name).count());
             check_name(&at, file.bodies[..index].iter().map(|b| b.name.as_str()))?;
-            bodies.push(build_body(def, directory, &at)?);
+            let in_water = file.water.is_some() && def.hydro.is_some();
+            bodies.push(build_body(def, directory, &at, in_water)?);
         }
         let boundaries = Boundaries::new(bodies.len());
         Ok(Self { bodies, boundaries })
@@ -97,6 +104,7 @@ pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
         couplings.push(build_coupling(def, &mut bodies, &at)?);
     }
     let system = System::new(vec3(file.gravity), bodies.bodies.clone(), couplings, states).map_err(|e| Problem { place: Place::Top("couplings"), message: e.to_string() })?;
+    let system = water::add_water(system, file, &bodies.bodies, &mut warnings)?;
     // Names are unique by now: the coupling at fault is the first of its name.
     let world = World::new(system, timing).map_err(|e| match e {
         StepError::Coupling { coupling, source, .. } => ItemAt::new(ItemKind::Coupling, &coupling, 0).at_name(format!("at t = 0: {source}")),
@@ -227,7 +235,7 @@ fn node(def: &NodeDef) -> Node {
     Node { position: vec3(def.position), mass: def.mass, inertia: tensor(&def.inertia) }
 }
 
-fn build_body(def: &BodyDef, directory: &Path, at: &ItemAt) -> Result<RigidBody, Problem> {
+fn build_body(def: &BodyDef, directory: &Path, at: &ItemAt, in_water: bool) -> Result<RigidBody, Problem> {
     let slaves: Vec<Node> = def.slaves.iter().map(node).collect();
     let mass_properties = MassProperties::from_nodes(&node(&def.master), &slaves).map_err(|e| {
         let field = match e {
@@ -237,7 +245,7 @@ fn build_body(def: &BodyDef, directory: &Path, at: &ItemAt) -> Result<RigidBody,
         at.at_field(field, e.to_string())
     })?;
     let support = build_support(&def.support, at)?;
-    let shape = build_shape(&def.shape, directory, at)?;
+    let shape = build_shape(&def.shape, directory, at, in_water)?;
     let slave_positions: Vec<Vec3> = slaves.iter().map(|n| n.position).collect();
     Ok(RigidBody::new(def.name.clone(), mass_properties, vec3(def.master.position), &slave_positions, support, shape))
 }
@@ -272,7 +280,9 @@ const MAX_SUBDIVISIONS: u32 = 6;
 /// 64 gives 49,152.
 const MAX_BOX_SUBDIVISIONS: u32 = 64;
 
-fn build_shape(def: &ShapeDef, directory: &Path, at: &ItemAt) -> Result<Shape, Problem> {
+/// The body's shape; `in_water`: a mesh file must also be a closed, outward hull as written
+/// (a contact boundary wound inwards is turned over, a hull is refused).
+fn build_shape(def: &ShapeDef, directory: &Path, at: &ItemAt, in_water: bool) -> Result<Shape, Problem> {
     let positive = |field: &'static str, value: f64| at.require(field, value, Bound::Positive, "m").map(|_| ());
     Ok(match def {
         ShapeDef::Box { size, center, subdivisions } => {
@@ -304,6 +314,9 @@ fn build_shape(def: &ShapeDef, directory: &Path, at: &ItemAt) -> Result<Shape, P
             at.require("scale", *scale, Bound::Positive, "")?;
             let (vertices, triangles) = mesh_file::read(&directory.join(file)).map_err(|e| at.problem(Some("file"), Some(file), e))?;
             let vertices: Vec<Vec3> = vertices.iter().map(|v| v * *scale + vec3(*center)).collect();
+            if in_water {
+                Hull::new(vertices.clone(), triangles.clone()).map_err(|e| at.problem(Some("file"), Some(file), format!("mesh file {file:?} as a hull in water: {e}")))?;
+            }
             // Checked now, so that a contact can always mesh the body.
             let mesh = BoundaryMesh::new(vertices, triangles).map_err(|e| at.problem(Some("file"), Some(file), format!("mesh file {file:?}: {e}")))?;
             Shape::Mesh { vertices: mesh.vertices, triangles: mesh.triangles }

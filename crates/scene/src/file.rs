@@ -5,6 +5,7 @@
 //! must be finite; unknown fields are rejected.
 
 use super::finite::{finite, finite_option, finite3, finite_pairs, finite_velocity_table};
+use super::water::{HydroDef, WaterDef};
 use tether_physics::integrator::{Integrator, Substeps};
 use serde::{Deserialize, Serialize};
 
@@ -36,6 +37,9 @@ pub struct SceneFile {
     pub bodies: Vec<BodyDef>,
     #[serde(default)]
     pub couplings: Vec<CouplingDef>,
+    /// Water (PHYSICS.md §6, see [`crate::water`]); absent: none, and no body feels any.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub water: Option<WaterDef>,
 }
 
 /// Tolerances of the adaptive `dopri45` (PHYSICS.md §1; see [`tether_physics::integrator::Tolerances`]).
@@ -86,6 +90,10 @@ pub struct BodyDef {
     #[serde(default)]
     pub support: SupportDef,
     pub shape: ShapeDef,
+    /// Hydrodynamic coefficients: only a body that declares them feels the scene's water, and
+    /// its shape must then be a closed, outward hull.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub hydro: Option<HydroDef>,
 }
 
 /// A node: position at t = 0 [m], mass [kg], and inertia about itself [kg·m²].

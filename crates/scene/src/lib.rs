@@ -8,6 +8,7 @@ pub mod file;
 mod finite;
 pub mod mesh_file;
 pub mod source;
+pub mod water;
 
 use build::{Bodies, Place, Problem};
 use tether_physics::world::World;
@@ -55,7 +56,15 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     // Optional sections (`adaptive: (…)`) are written without `Some(…)`.
     let options = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
     let file: SceneFile = options.from_str(text).map_err(|e| syntax_error(&source, &label, &e))?;
-    let built = build::build(&file, directory(path)).map_err(|p| placed(&source, &label, p))?;
+    build_variant(text, path, file)
+}
+
+/// Builds `file`, a variant of the scene whose text is `text` at `path`: the same bodies and
+/// couplings by name, some values changed (a sweep's case, a value typed into the window). The
+/// checks are those of [`parse`]; a problem is placed in `text` at the item and field it
+/// concerns, so that the message points at the value the variant changed.
+pub fn build_variant(text: &str, path: &Path, file: SceneFile) -> Result<Scene, SceneError> {
+    let built = build::build(&file, directory(path)).map_err(|p| placed(&Source::new(text), &path.display().to_string(), p))?;
     Ok(Scene { path: path.to_path_buf(), text: text.to_string(), file, world: built.world, bodies: built.bodies, warnings: built.warnings })
 }
 
@@ -137,6 +146,7 @@ fn syntax_error(source: &Source, label: &str, error: &ron::error::SpannedError) 
 fn placed(source: &Source, label: &str, problem: Problem) -> SceneError {
     let offset = match &problem.place {
         Place::Top(field) => source.field(0, field),
+        Place::Section { section, field } => source.field(0, section).map(|at| source.field(at, field).unwrap_or(at)),
         Place::Item { kind, name, occurrence, field, literal } => source.item(*kind, name, *occurrence).map(|item| {
             let at_field = field.and_then(|f| source.field(item, f)).unwrap_or(item);
             literal.as_deref().and_then(|l| source.literal(at_field, l)).unwrap_or(at_field)

@@ -7,6 +7,9 @@ use tether_physics::coupling::{Contact, CouplingKind, ElasticLaw, Endpoint};
 use tether_physics::stability;
 use tether_physics::world::World;
 use tether_physics::math::{Mat3, Vec3};
+use tether_physics::water::WaveSpec;
+use tether_physics::water::dispersion::wavelength;
+use tether_physics::water::hydrostatics::floating_equilibrium;
 use tether_scene::Scene;
 
 pub fn run(scene: &Scene) -> anyhow::Result<()> {
@@ -42,6 +45,7 @@ fn report(world: &World, label: &str) -> String {
             let _ = writeln!(out, "  slave nodes        {}", body.slave_nodes.len());
         }
     }
+    water_report(&mut out, world);
     for (index, (coupling, forces)) in world.couplings().iter().zip(world.coupling_forces()).enumerate() {
         let [end1, end2] = coupling.ends();
         let _ = writeln!(out, "\ncoupling \"{}\" ({})", coupling.name, coupling.kind_name());
@@ -99,6 +103,66 @@ fn report(world: &World, label: &str) -> String {
         e.kinetic + 0.0, e.gravity + 0.0, e.elastic + 0.0, e.total() + 0.0
     );
     out
+}
+
+/// The water (PHYSICS.md §6) and each floating body's hydrostatics at its free-floating
+/// equilibrium: weight and the couplings' vertical pull at t = 0, heave only.
+fn water_report(out: &mut String, world: &World) {
+    let Some(stage) = world.system().water() else { return };
+    let water = &stage.water;
+    let spec = water.spec();
+    let depth = spec.depth.map_or_else(|| "deep".to_string(), |h| format!("depth {h} m (seabed at {} m)", spec.level - h));
+    let waves = match spec.waves {
+        WaveSpec::Calm => "calm".to_string(),
+        WaveSpec::Regular { height, period, heading, phase } => format!(
+            "regular H = {height} m, T = {period} s (λ = {:.3} m), heading {}°, phase {}°",
+            wavelength(period, spec.depth, water.gravity()),
+            heading.to_degrees(),
+            phase.to_degrees()
+        ),
+        WaveSpec::Jonswap { significant_height, peak_period, gamma, heading, components, seed } => {
+            format!("JONSWAP Hs = {significant_height} m, Tp = {peak_period} s, γ = {gamma}, heading {}°, {components} components (seed {seed})", heading.to_degrees())
+        }
+    };
+    let _ = writeln!(out, "\nwater: ρ = {} kg/m³, level {} m, {depth}", spec.density, spec.level);
+    let _ = writeln!(out, "  waves {waves}; ramp {} s", water.ramp_time());
+    if spec.current.speed > 0.0 {
+        let _ = writeln!(out, "  current {} m/s toward {}° ({:?})", spec.current.speed, spec.current.heading.to_degrees(), spec.current.profile);
+    }
+    for (floating, record) in stage.floating.iter().zip(world.water_forces()) {
+        let index = floating.body;
+        let body = &world.bodies()[index];
+        let gravity = world.system().gravity_load(body);
+        let pull = world.load(index).force.z - gravity.force.z - record.total().force.z;
+        let hull = &floating.hull;
+        let _ = writeln!(out, "\nfloating body \"{}\" (hull of {} triangles, {:.6} m³)", body.name, hull.triangles().len(), hull.volume());
+        let _ = writeln!(out, "  at t = 0: submerged {:.6} m³, water force {} N", record.submerged_volume, v(&record.total().force));
+        if body.is_kinematic() {
+            let _ = writeln!(out, "  kinematic: its motion is prescribed and the water does not act on it");
+            continue;
+        }
+        match floating_equilibrium(body, floating, water, &world.state(index), pull) {
+            None => {
+                let _ = writeln!(
+                    out,
+                    "  no floating equilibrium: its whole hull displaces {:.6} N, its weight and the couplings' pull ask {:.6} N (it sinks, or is pulled out)",
+                    water.specific_weight() * hull.volume(),
+                    body.mass() * water.gravity() - pull
+                );
+            }
+            Some(e) => {
+                let s = &e.statics;
+                let _ = writeln!(out, "  free-floating equilibrium (weight, and the couplings' vertical pull at t = 0 of {pull:.6} N), heave only:");
+                let _ = writeln!(out, "  displaced volume   {:.6} m³", s.displaced_volume);
+                let _ = writeln!(out, "  draft              {:.6} m (G at z = {:.6} m)", s.draft, e.height);
+                let _ = writeln!(out, "  centre of buoyancy {} m", v(&s.center_of_buoyancy));
+                let _ = writeln!(out, "  waterplane area    {:.6} m² (centre ({:.6}, {:.6}) m)", s.waterplane_area, s.waterplane_center[0] + 0.0, s.waterplane_center[1] + 0.0);
+                let _ = writeln!(out, "  GM transverse      {:.6} m (roll, about x), longitudinal {:.6} m (pitch, about y)", e.metacentric_heights[0], e.metacentric_heights[1]);
+                let period = |p: Option<f64>| p.map_or_else(|| "none (no restoring)".to_string(), |p| format!("{p:.6} s"));
+                let _ = writeln!(out, "  natural periods    heave {}, roll {}, pitch {} (with added mass)", period(e.periods[0]), period(e.periods[1]), period(e.periods[2]));
+            }
+        }
+    }
 }
 
 /// ` (rtol …, atol …, max step …)` for the adaptive scheme, nothing for the others.

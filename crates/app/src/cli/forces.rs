@@ -37,12 +37,41 @@ fn catenary_report(world: &World, index: usize) -> Option<CatenaryReport> {
     Some(CatenaryReport { horizontal_tension: state.horizontal_tension, u1, u2 })
 }
 
-/// Total force [N] and moment about G [N·m] on a body, world frame.
+/// Total force [N] and moment about G [N·m] on a body, world frame; for a floating body also
+/// what the water does (PHYSICS.md §6).
 #[derive(Serialize)]
 struct BodyReport<'a> {
     name: &'a str,
     force: [f64; 3],
     moment: [f64; 3],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    water: Option<WaterReport>,
+}
+
+/// The water's force [N] and moment about G [N·m] on a body (pressure, drag and added mass
+/// together, and the pressure alone), world frame; its submerged volume [m³] and wetted
+/// fraction.
+#[derive(Serialize)]
+struct WaterReport {
+    force: [f64; 3],
+    moment: [f64; 3],
+    pressure_force: [f64; 3],
+    pressure_moment: [f64; 3],
+    submerged_volume: f64,
+    wetted_fraction: f64,
+}
+
+fn water_report(world: &World, body: usize) -> Option<WaterReport> {
+    let record = world.water_forces().iter().find(|r| r.body == body)?;
+    let total = record.total();
+    Some(WaterReport {
+        force: a(&total.force),
+        moment: a(&total.moment),
+        pressure_force: a(&record.pressure.force),
+        pressure_moment: a(&record.pressure.moment),
+        submerged_volume: record.submerged_volume,
+        wetted_fraction: record.wetted_fraction,
+    })
 }
 
 fn a(v: &Vec3) -> [f64; 3] {
@@ -62,7 +91,7 @@ fn report(world: &World) -> Report<'_> {
             .bodies()
             .iter()
             .enumerate()
-            .map(|(i, b)| BodyReport { name: &b.name, force: a(&world.load(i).force), moment: a(&world.load(i).moment) })
+            .map(|(i, b)| BodyReport { name: &b.name, force: a(&world.load(i).force), moment: a(&world.load(i).moment), water: water_report(world, i) })
             .collect(),
     }
 }
@@ -78,6 +107,9 @@ pub fn run(scene: &Scene, json: bool) -> anyhow::Result<()> {
         }
         for b in &report.bodies {
             out += &format!("body     {:<20} force {:?} N  moment {:?} N·m\n", b.name, b.force, b.moment);
+            if let Some(w) = &b.water {
+                out += &format!("  water  {:<20} force {:?} N  moment {:?} N·m  submerged {} m³\n", "", w.force, w.moment, w.submerged_volume);
+            }
         }
         out
     };

@@ -1,4 +1,5 @@
-//! `tether gui [SCENE] [--connect URL] [--save OUT.rrd]` and `tether view FILE.rrd`: the window.
+//! `tether gui [SCENE] [--connect URL] [--save OUT.rrd] [--sweep DIR]` and `tether view
+//! FILE.rrd`: the window.
 
 use anyhow::{Context as _, bail};
 use clap::Args;
@@ -22,11 +23,19 @@ pub struct GuiArgs {
     /// Also write everything shown to this recording (.rrd).
     #[arg(long)]
     save: Option<PathBuf>,
+    /// Open a sweep's output directory in the sweep table (a case loads in one click).
+    #[arg(long)]
+    sweep: Option<PathBuf>,
 }
 
 pub fn run(args: GuiArgs) -> anyhow::Result<()> {
     let scene = args.scene.or_else(|| Some(PathBuf::from(DEFAULT_SCENE)).filter(|p| p.is_file()));
-    let options = GuiOptions { scene, recording: None, connect: args.connect, save: args.save, scenes_dir: PathBuf::from(SCENES_DIR) };
+    if let Some(dir) = &args.sweep
+        && !dir.join(tether::sweep::store::MANIFEST).is_file()
+    {
+        bail!("{} is not a sweep directory (no {})", dir.display(), tether::sweep::store::MANIFEST);
+    }
+    let options = GuiOptions { scene, recording: None, connect: args.connect, save: args.save, scenes_dir: PathBuf::from(SCENES_DIR), sweep: args.sweep };
     tether::gui::run(options).context("the window")
 }
 

@@ -6,6 +6,7 @@ mod forces;
 mod gui;
 mod record;
 mod study;
+mod sweep;
 mod timing;
 
 use anyhow::Context as _;
@@ -41,6 +42,11 @@ enum Command {
     /// Run the scene with each integrator at a ladder of time steps against a reference run;
     /// print the accuracy-versus-cost table and write it as CSV, Markdown and a PNG chart.
     Study(study::StudyArgs),
+    /// Run the scene over a design of factor values (grid, one at a time, Latin hypercube) on
+    /// every core or as a shard of a cluster's job array; write each case's metrics and status
+    /// to results.csv, results.parquet, summary.md and charts. `tether sweep merge DIR` joins
+    /// the shards' rows.
+    Sweep(sweep::SweepArgs),
     /// Print the forces of the initial state.
     Forces {
         /// Scene file (.ron).
@@ -70,6 +76,10 @@ pub fn run(cli: Cli) -> anyhow::Result<u8> {
         Command::Forces { scene, json } => forces::run(&load(&scene)?, json).map(|()| 0),
         Command::EstimateContact(args) => estimate_contact::run(&args).map(|()| 0),
         Command::Study(args) => study::run(&args).map(|()| 0),
+        Command::Sweep(args) => sweep::run(&args).map(|outcome| match outcome {
+            sweep::Outcome::Finished => 0,
+            sweep::Outcome::Interrupted => INTERRUPTED,
+        }),
     }
 }
 

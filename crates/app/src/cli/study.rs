@@ -1,11 +1,14 @@
-//! `tether study SCENE`: every integrator at a ladder of time steps against a reference run;
-//! prints the table and writes `study.csv`, `study.md` and the chart `study.png`.
+//! `tether study SCENE`: every integrator at a ladder of time steps against a reference run, the
+//! runs on every core (the sweep's runner); prints the table and writes `study.csv`, `study.md`
+//! and the chart `study.png`.
 
 use anyhow::{Context as _, bail};
 use clap::Args;
+use std::num::NonZeroUsize;
 use std::path::PathBuf;
-use tether_physics::integrator::Integrator;
+use tether::runner::{Runner, all_cores};
 use tether::study::{self, Plan, Reference};
+use tether_physics::integrator::Integrator;
 
 #[derive(Debug, Args)]
 pub struct StudyArgs {
@@ -30,9 +33,11 @@ pub struct StudyArgs {
     /// Simulated duration [s] (default: the scene's, rounded to the sample interval).
     #[arg(long)]
     duration: Option<f64>,
-    /// Reference: `dopri45:RTOL` or `NAME:DT` (a fixed-step integrator at time step DT). The default
-    /// is accurate to about 1e-10 relative over tens of seconds of tumbling; a finer fixed-step
-    /// reference gains nothing (its round-off grows with its steps).
+    /// Reference: `dopri45:RTOL`, `NAME:DT` (a fixed-step integrator at time step DT), or
+    /// `closed-form` (the exact solution, for a scene that is a damped linear oscillator: one body
+    /// free along one axis on one linear spring-damper to a world point). The default is accurate
+    /// to about 1e-10 relative over tens of seconds of tumbling; a finer fixed-step reference
+    /// gains nothing (its round-off grows with its steps).
     #[arg(long, default_value = "dopri45:1e-13", value_parser = parse_reference)]
     reference: Reference,
     /// Number of common sample times (errors are compared there; dopri45 ends a step on each).
@@ -41,11 +46,17 @@ pub struct StudyArgs {
     /// Output directory (default: study-<scene name>).
     #[arg(short, long)]
     output: Option<PathBuf>,
+    /// Runs measured at once (default: every core; each run's CPU time is its own thread's).
+    #[arg(long)]
+    jobs: Option<NonZeroUsize>,
 }
 
-/// `dopri45:1e-12` or `rk4:1e-5`.
+/// `dopri45:1e-12`, `rk4:1e-5` or `closed-form`.
 fn parse_reference(text: &str) -> Result<Reference, String> {
-    let (name, value) = text.split_once(':').ok_or_else(|| format!("expected NAME:VALUE (e.g. dopri45:1e-12 or rk4:1e-5), got `{text}`"))?;
+    if text == "closed-form" {
+        return Ok(Reference::ClosedForm);
+    }
+    let (name, value) = text.split_once(':').ok_or_else(|| format!("expected closed-form or NAME:VALUE (e.g. dopri45:1e-12 or rk4:1e-5), got `{text}`"))?;
     let integrator = super::record::parse_integrator(name)?;
     let value: f64 = value.parse().map_err(|_| format!("`{value}` is not a number"))?;
     if !(value.is_finite() && value > 0.0) {
@@ -69,7 +80,7 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<()> {
     // Sample at a multiple of the largest step, about --samples times.
     let largest = dts.iter().copied().fold(0.0_f64, f64::max).max(match args.reference {
         Reference::Fixed { dt, .. } => dt,
-        Reference::Adaptive { .. } => 0.0,
+        Reference::Adaptive { .. } | Reference::ClosedForm => 0.0,
     });
     let wanted = args.duration.unwrap_or(scene.file.duration);
     if !(wanted.is_finite() && wanted > 0.0) {
@@ -82,7 +93,8 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<()> {
     let sample_interval = base * (wanted / (f64::from(args.samples) * base)).round().max(1.0);
     let duration = sample_interval * (wanted / sample_interval).round().max(1.0);
     let plan = Plan { integrators, dts, tolerances: args.tolerances.clone(), duration, sample_interval, reference: args.reference };
-    let result = study::run(&scene, &plan, |line| eprintln!("{line}"))?;
+    let runner = Runner::new(args.jobs.unwrap_or_else(all_cores));
+    let result = study::run_on(&runner, &scene, &plan, |line| eprintln!("{line}"))?;
 
     let stem = args.scene.file_stem().map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());
     let directory = args.output.clone().unwrap_or_else(|| PathBuf::from(format!("study-{stem}")));

@@ -9,7 +9,7 @@
 
 use std::fmt::Write as _;
 use std::time::Instant;
-use tether::cpu_time;
+use tether::runner::{process_cpu_seconds, thread_cpu_seconds};
 use tether_record::RecordStats;
 
 /// The clocks of a run, started with it.
@@ -34,22 +34,22 @@ pub(super) struct Measured<'a> {
 
 impl Stopwatch {
     pub(super) fn start() -> Self {
-        Self { started: Instant::now(), process_cpu: cpu_time::process_seconds(), thread_cpu: cpu_time::thread_seconds(), recorder: 0.0 }
+        Self { started: Instant::now(), process_cpu: process_cpu_seconds(), thread_cpu: thread_cpu_seconds(), recorder: 0.0 }
     }
 
     /// Runs `call` (a call of the recorder) and adds its CPU time to the recorder's.
     pub(super) fn recorder<T>(&mut self, call: impl FnOnce() -> T) -> T {
-        let start = cpu_time::thread_seconds();
+        let start = thread_cpu_seconds();
         let result = call();
-        self.recorder += cpu_time::thread_seconds() - start;
+        self.recorder += thread_cpu_seconds() - start;
         result
     }
 
     /// The report, a few lines for stderr.
     pub(super) fn report(&self, run: &Measured) -> String {
         let wall = self.started.elapsed().as_secs_f64();
-        let process = cpu_time::process_seconds() - self.process_cpu;
-        let physics = (cpu_time::thread_seconds() - self.thread_cpu - self.recorder).max(0.0);
+        let process = process_cpu_seconds() - self.process_cpu;
+        let physics = (thread_cpu_seconds() - self.thread_cpu - self.recorder).max(0.0);
         let recording = (process - physics).max(0.0);
         let rerun_threads = (recording - self.recorder).max(0.0);
         let share = |part: f64| 100.0 * part / process.max(f64::MIN_POSITIVE);

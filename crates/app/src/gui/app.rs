@@ -46,6 +46,9 @@ impl TetherApp {
         if let Some(scene) = &options.scene {
             panel.open_scene(scene);
         }
+        if let Some(sweep) = &options.sweep {
+            panel.open_sweep(sweep);
+        }
         let ctx = cc.egui_ctx.clone();
         // Ctrl-C and SIGTERM close the window as its close button does: the recordings are
         // flushed and the `.rrd` footer written.
@@ -83,30 +86,41 @@ impl TetherApp {
         }
     }
 
-    /// Scenes dropped on the window are opened by the panel, recordings by the viewer; any other
-    /// file is refused with a line in the log.
+    /// Scenes dropped on the window are opened by the panel, recordings by the viewer, sweep
+    /// directories (or their `sweep.json`) by the sweep table; any other file is refused with a
+    /// line in the log.
     fn take_dropped_files(&mut self, ctx: &egui::Context) {
         let dropped: Vec<PathBuf> = ctx.input_mut(|i| std::mem::take(&mut i.raw.dropped_files)).into_iter().map(|f| f.path().to_path_buf()).filter(|p| !p.as_os_str().is_empty()).collect();
         for path in dropped {
             match Dropped::of(&path) {
                 Dropped::Scene => self.panel.open_scene(&path),
                 Dropped::Recording => self.open_recording(&path),
-                Dropped::Other => self.panel.note_error(format!("{}: not a scene (.ron) or a recording (.rrd); nothing opened", path.display())),
+                Dropped::Sweep(dir) => self.panel.open_sweep(&dir),
+                Dropped::Other => self.panel.note_error(format!("{}: not a scene (.ron), a recording (.rrd) or a sweep directory; nothing opened", path.display())),
             }
         }
     }
 }
 
-/// What a dropped file is taken for, by its extension.
+/// What a dropped file is taken for: by its extension, or a sweep's directory.
 #[derive(Debug, PartialEq)]
 enum Dropped {
     Scene,
     Recording,
+    /// A sweep's output directory (dropped itself, or its manifest).
+    Sweep(PathBuf),
     Other,
 }
 
 impl Dropped {
     fn of(path: &Path) -> Self {
+        let manifest = crate::sweep::store::MANIFEST;
+        if path.is_dir() && path.join(manifest).is_file() {
+            return Self::Sweep(path.to_path_buf());
+        }
+        if path.file_name().is_some_and(|n| n == manifest) {
+            return Self::Sweep(path.parent().unwrap_or(Path::new(".")).to_path_buf());
+        }
         let extension = path.extension().map(|e| e.to_string_lossy().to_ascii_lowercase());
         match extension.as_deref() {
             Some("ron") => Self::Scene,
@@ -183,6 +197,11 @@ impl eframe::App for TetherApp {
         egui::Panel::left("tether_controls").resizable(true).default_size(380.0).show(ui, |ui| {
             self.panel.ui(ui, selected.as_deref());
         });
+        if self.panel.sweep().is_some() {
+            egui::Panel::bottom("tether_sweep").resizable(true).default_size(300.0).show(ui, |ui| {
+                self.panel.sweep_ui(ui);
+            });
+        }
         match (&mut self.viewer, &self.connect) {
             (Some(viewer), _) => viewer.ui(ui, frame),
             (None, url) => {
@@ -203,5 +222,24 @@ impl eframe::App for TetherApp {
 
     fn on_exit(&mut self) {
         self.panel.shutdown();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A sweep directory is known by its manifest, whether the folder or the manifest is dropped.
+    #[test]
+    fn dropped_sweep_directories_are_told_from_scenes_and_recordings() {
+        let dir = tempfile::tempdir().unwrap();
+        assert_eq!(Dropped::of(dir.path()), Dropped::Other, "a folder with no sweep in it");
+        let manifest = dir.path().join(crate::sweep::store::MANIFEST);
+        std::fs::write(&manifest, "{}").unwrap();
+        assert_eq!(Dropped::of(dir.path()), Dropped::Sweep(dir.path().to_path_buf()));
+        assert_eq!(Dropped::of(&manifest), Dropped::Sweep(dir.path().to_path_buf()));
+        assert_eq!(Dropped::of(Path::new("scenes/chain.ron")), Dropped::Scene);
+        assert_eq!(Dropped::of(Path::new("out.RRD")), Dropped::Recording);
+        assert_eq!(Dropped::of(Path::new("notes.txt")), Dropped::Other);
     }
 }

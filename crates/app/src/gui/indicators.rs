@@ -97,7 +97,8 @@ fn stability_ui(ui: &mut egui::Ui, status: &Status) {
     ui.label(format!("integrator step {:.3e} s ({} substep(s) per dt)", status.step_size, status.substeps));
     egui::Grid::new("stability").num_columns(2).show(ui, |ui| {
         let rotation = status.rotation_limit.iter().map(|(body, dt)| (format!("rotation of {body}"), Some(*dt)));
-        for (name, limit) in status.coupling_limits.iter().cloned().chain(rotation) {
+        let water = status.water_limits.iter().map(|(body, dt)| (format!("water on {body}"), Some(*dt)));
+        for (name, limit) in status.coupling_limits.iter().cloned().chain(rotation).chain(water) {
             ui.label(name);
             match limit {
                 Some(dt) => {

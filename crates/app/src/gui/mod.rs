@@ -11,6 +11,8 @@
 //!   - [`tuning`]: every parameter of every coupling, with units; revert, save as;
 //!   - [`indicators`]: energy balance, stable time steps, the selected body;
 //!   - [`contact_estimator`]: k1, k2, τ from an impact, where the scene has contact;
+//!   - [`sweep_table`]: a sweep directory's cases, sortable, a case loaded in one click (drawn
+//!     below the viewer when a sweep is open);
 //! - [`simulation`]: the thread that owns the world;
 //! - [`stream`]: where recordings go (embedded viewer, `--connect`, `--save`);
 //! - [`watch`], [`dialogs`]: the open file watched on disk, file dialogs off the GUI thread.
@@ -25,8 +27,10 @@ pub mod run_controls;
 pub mod scenes;
 pub mod simulation;
 pub mod stream;
+pub mod sweep_table;
 pub mod tuning;
 pub mod watch;
+pub mod water;
 
 use rerun::external::{eframe, egui, re_viewer};
 use std::path::PathBuf;
@@ -44,6 +48,8 @@ pub struct GuiOptions {
     pub save: Option<PathBuf>,
     /// Folder listed as the scene list (default `scenes`).
     pub scenes_dir: PathBuf,
+    /// A sweep's output directory to open in the sweep table.
+    pub sweep: Option<PathBuf>,
 }
 
 /// Why the window could not run.

@@ -11,7 +11,10 @@ use std::time::Duration;
 use tether_physics::coupling::Coupling;
 use tether_physics::integrator::Timing;
 use tether_scene::build::{self, Bodies};
+use tether_physics::water::WaterSpec;
+use tether_physics::water::morison::HydroSpec;
 use tether_scene::file::CouplingDef;
+use tether_scene::water::{HydroDef, WaterDef};
 use tether_scene::{self as scene, SceneError, SceneFile};
 
 /// The scene being run: what its file says, and what is tuned.
@@ -27,6 +30,12 @@ pub struct OpenScene {
     pub drafts: Vec<CouplingDef>,
     /// Why a draft was refused, per coupling.
     pub refusals: Vec<Option<String>>,
+    /// What the water knobs show (the file's water, tuned), and why it was refused.
+    pub water_draft: Option<WaterDef>,
+    pub water_refusal: Option<String>,
+    /// What each body's water coefficients' knobs show, and why they were refused.
+    pub hydro_drafts: Vec<Option<HydroDef>>,
+    pub hydro_refusals: Vec<Option<String>>,
     /// The scene's bodies as built: a tuned coupling is built against them.
     bodies: Bodies,
     watch: Option<FileWatch>,
@@ -75,12 +84,30 @@ impl OpenScene {
             text: loaded.text,
             drafts: loaded.file.couplings.clone(),
             refusals: vec![None; loaded.file.couplings.len()],
+            water_draft: loaded.file.water.clone(),
+            water_refusal: None,
+            hydro_drafts: loaded.file.bodies.iter().map(|b| b.hydro.clone()).collect(),
+            hydro_refusals: vec![None; loaded.file.bodies.len()],
             tuned: loaded.file.clone(),
             file: loaded.file,
             bodies: loaded.bodies,
             watch,
         };
         Ok(Loaded { scene, run: Run { label, world: loaded.world }, notes })
+    }
+
+    /// Loads the scene at `path` as its file says it, and runs `variant` of it (a sweep's
+    /// case: the same scene with some values changed), shown as tuned values: "revert to file"
+    /// goes back to what the file says. `label` names the run.
+    ///
+    /// # Errors
+    /// The file cannot be read or built, or the loader refuses the variant.
+    pub fn load_variant(path: &Path, variant: SceneFile, label: String, wake: Wake) -> Result<Loaded, SceneError> {
+        let Loaded { scene: base, mut notes, .. } = Self::load(path, wake)?;
+        let case = scene::build_variant(&base.text, path, variant)?;
+        notes.extend(case.warnings.iter().map(|w| format!("warning: {w}")));
+        let scene = Self { drafts: case.file.couplings.clone(), refusals: vec![None; case.file.couplings.len()], tuned: case.file, bodies: case.bodies, ..base };
+        Ok(Loaded { scene, run: Run { label, world: case.world }, notes })
     }
 
     /// What the file on disk is doing, once it has been quiet for `settle`.
@@ -114,6 +141,52 @@ impl OpenScene {
                 None
             }
         }
+    }
+
+    /// Checks the water draft with the scene builder: accepted into the tuned scene and returned
+    /// as the spec to run; refused with the reason kept.
+    pub fn tune_water(&mut self) -> Option<WaterSpec> {
+        let mut candidate = self.tuned.clone();
+        candidate.water.clone_from(&self.water_draft);
+        match build::water_spec(&candidate) {
+            Ok(spec) => {
+                self.water_refusal = None;
+                self.tuned = candidate;
+                Some(spec)
+            }
+            Err(problem) => {
+                self.water_refusal = Some(problem.message);
+                None
+            }
+        }
+    }
+
+    /// Checks body `index`'s coefficients draft likewise.
+    pub fn tune_hydro(&mut self, index: usize) -> Option<HydroSpec> {
+        let Some(draft) = self.hydro_drafts.get(index) else { return None };
+        let mut candidate = self.tuned.clone();
+        candidate.bodies[index].hydro.clone_from(draft);
+        match build::hydro_spec(&candidate, index, &self.bodies) {
+            Ok(spec) => {
+                self.hydro_refusals[index] = None;
+                self.tuned = candidate;
+                Some(spec)
+            }
+            Err(problem) => {
+                self.hydro_refusals[index] = Some(problem.message);
+                None
+            }
+        }
+    }
+
+    /// The water knobs back to what the file says; returns whether the water and which bodies'
+    /// coefficients are to be applied again (those tuned, or refused).
+    pub fn revert_water_to_file(&mut self) -> (bool, Vec<usize>) {
+        self.water_draft.clone_from(&self.file.water);
+        let water = self.tuned.water != self.file.water || self.water_refusal.is_some();
+        self.hydro_drafts = self.file.bodies.iter().map(|b| b.hydro.clone()).collect();
+        let bodies = (0..self.hydro_drafts.len()).filter(|&i| self.tuned.bodies[i].hydro != self.file.bodies[i].hydro || self.hydro_refusals[i].is_some()).collect();
+        (water, bodies)
     }
 
     /// The time step settings of `candidate` (the tuned scene with the timing knobs written in),

@@ -13,7 +13,9 @@ use super::run_controls::{self, RunAction, TimingDraft};
 use super::scenes::{self, SceneAction};
 use super::simulation::{Command, Report, Simulation, Speed, Status, Wake};
 use super::stream::Sinks;
+use super::sweep_table::{SweepAction, SweepTable};
 use super::tuning::{self, TuningAction};
+use super::water::{self, WaterAction};
 use rerun::external::egui;
 use tether_scene::file::CouplingDef;
 use std::collections::VecDeque;
@@ -70,6 +72,8 @@ pub struct ControlPanel {
     scene_list: Vec<PathBuf>,
     recordings_to_open: Vec<PathBuf>,
     impact: ImpactDraft,
+    /// The sweep directory open beside the scene, if any.
+    sweep: Option<SweepTable>,
 }
 
 impl ControlPanel {
@@ -92,6 +96,7 @@ impl ControlPanel {
             scene_list,
             recordings_to_open: Vec::new(),
             impact: ImpactDraft::default(),
+            sweep: None,
         })
     }
 
@@ -145,18 +150,71 @@ impl ControlPanel {
     /// Loads the scene at `path` and runs it paused at t = 0. A bad file keeps the previous
     /// scene running and shows its `path:line:col: message`.
     pub fn open_scene(&mut self, path: &Path) {
-        let loaded = match OpenScene::load(path, self.wake.clone()) {
-            Ok(loaded) => loaded,
-            Err(error) => {
-                self.load_error = Some((path.to_path_buf(), error.to_string()));
-                return;
+        match OpenScene::load(path, self.wake.clone()) {
+            Ok(loaded) => self.start(loaded),
+            Err(error) => self.load_error = Some((path.to_path_buf(), error.to_string())),
+        }
+    }
+
+    /// Opens the sweep in directory `dir` in the sweep table (the scene running stays).
+    pub fn open_sweep(&mut self, dir: &Path) {
+        match SweepTable::open(dir) {
+            Ok(table) => {
+                self.note(format!("opened sweep {} ({})", table.name(), dir.display()));
+                self.sweep = Some(table);
             }
+            Err(error) => self.note_error(error),
+        }
+    }
+
+    /// The open sweep (tests look into it).
+    pub fn sweep(&self) -> Option<&SweepTable> {
+        self.sweep.as_ref()
+    }
+
+    /// The open sweep, to sort it (tests).
+    pub fn sweep_mut(&mut self) -> Option<&mut SweepTable> {
+        self.sweep.as_mut()
+    }
+
+    /// Draws the sweep table, if a sweep is open, and loads the case it asks for.
+    pub fn sweep_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(table) = &mut self.sweep else { return };
+        if let Some(SweepAction::Load(case)) = table.ui(ui) {
+            self.open_case(case);
+        }
+    }
+
+    /// Loads case `case` of the open sweep: its base scene with the case's values, paused at
+    /// t = 0, the values in the tuning panel.
+    pub fn open_case(&mut self, case: usize) {
+        let Some(table) = &self.sweep else { return };
+        let label = format!("{} case {case}", table.name());
+        let loaded = match table.case_scene(case) {
+            Ok((path, file, changed)) => {
+                if let Some(changed) = changed {
+                    self.note_error(changed);
+                }
+                OpenScene::load_variant(&path, file, label, self.wake.clone()).map_err(|e| e.to_string())
+            }
+            Err(error) => Err(error),
         };
+        match loaded {
+            Ok(loaded) => {
+                self.note(format!("case {case} loaded: press Space to run it"));
+                self.start(loaded);
+            }
+            Err(error) => self.note_error(format!("case {case}: {error}")),
+        }
+    }
+
+    /// Runs a loaded scene, paused at t = 0.
+    fn start(&mut self, loaded: super::open_scene::Loaded) {
         for note in loaded.notes {
             self.note(note);
         }
         self.load_error = None;
-        self.timing = TimingDraft::from_file(&loaded.scene.file);
+        self.timing = TimingDraft::from_file(&loaded.scene.tuned);
         self.history = EnergyHistory::default();
         self.scene = Some(loaded.scene);
         self.simulation.send(Command::Load(Box::new(loaded.run)));
@@ -194,6 +252,7 @@ impl ControlPanel {
                 self.use_estimate(estimate);
             }
             self.tuning_ui(ui);
+            self.water_ui(ui);
             ui.separator();
             self.log_ui(ui);
         });
@@ -347,6 +406,44 @@ impl ControlPanel {
         }
     }
 
+    fn water_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(open) = &mut self.scene else { return };
+        let drafts = open.water_draft.as_mut().map(|water| water::WaterDrafts {
+            water,
+            water_refusal: open.water_refusal.as_deref(),
+            bodies: open
+                .hydro_drafts
+                .iter_mut()
+                .zip(&open.hydro_refusals)
+                .zip(&open.file.bodies)
+                .enumerate()
+                .filter_map(|(index, ((draft, refusal), body))| draft.as_mut().map(|hydro| (index, body.name.as_str(), hydro, refusal.as_deref())))
+                .collect(),
+        });
+        for action in water::ui(ui, drafts) {
+            match action {
+                WaterAction::Water => self.tune_water(),
+                WaterAction::Hydro(index) => self.tune_hydro(index),
+            }
+        }
+    }
+
+    /// Has the water draft checked by the scene builder; sends the simulation what it accepts.
+    pub fn tune_water(&mut self) {
+        let Some(open) = &mut self.scene else { return };
+        if let Some(spec) = open.tune_water() {
+            self.simulation.send(Command::SetWater(spec));
+        }
+    }
+
+    /// Has body `index`'s coefficients draft checked; sends the simulation what it accepts.
+    pub fn tune_hydro(&mut self, index: usize) {
+        let Some(open) = &mut self.scene else { return };
+        if let Some(spec) = open.tune_hydro(index) {
+            self.simulation.send(Command::SetHydro { body: index, spec });
+        }
+    }
+
     /// Has draft `index` checked by the scene builder (same checks and messages as loading);
     /// an accepted value goes to the simulation, a refused one stays in its knob with the
     /// reason and the simulation is untouched.
@@ -366,11 +463,19 @@ impl ControlPanel {
         }
     }
 
-    /// Every coupling back to what the file says, in the running simulation too.
+    /// Every coupling and the water back to what the file says, in the running simulation too.
     pub fn revert_to_file(&mut self) {
         let Some(open) = &mut self.scene else { return };
-        for index in open.revert_to_file() {
+        let couplings = open.revert_to_file();
+        let (water, bodies) = open.revert_water_to_file();
+        for index in couplings {
             self.tune(index);
+        }
+        if water {
+            self.tune_water();
+        }
+        for index in bodies {
+            self.tune_hydro(index);
         }
     }
 

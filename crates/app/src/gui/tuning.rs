@@ -27,7 +27,7 @@ pub fn ui(ui: &mut egui::Ui, drafts: &mut [CouplingDef], refusals: &[Option<Stri
     let mut actions = Vec::new();
     ui.horizontal(|ui| {
         ui.strong("Couplings");
-        if ui.button("Revert to file").on_hover_text("Every coupling back to what the scene file says").clicked() {
+        if ui.button("Revert to file").on_hover_text("Every coupling and the water back to what the scene file says").clicked() {
             actions.push(TuningAction::Revert);
         }
         if ui.button("Save as…").on_hover_text("Write the scene with the tuned values (RON)").clicked() {
@@ -104,7 +104,7 @@ fn law_knobs(ui: &mut egui::Ui, law: &mut LawDef) -> bool {
 /// One number with its label and unit, in a grid row; true when it was edited. The drag speed
 /// is 1 % of the value, so a knob tunes coarse and fine values alike; typing any number works,
 /// and the scene builder refuses the bad ones.
-fn knob(ui: &mut egui::Ui, label: &str, value: &mut f64, unit: &str) -> bool {
+pub(super) fn knob(ui: &mut egui::Ui, label: &str, value: &mut f64, unit: &str) -> bool {
     let name = ui.label(label);
     let speed = value.abs().max(1e-3) * 0.01;
     let response = ui.add(egui::DragValue::new(value).speed(speed).max_decimals(6)).labelled_by(name.id);

@@ -1,18 +1,11 @@
-//! The work-precision chart: error against cost on log-log axes, one curve per integrator.
-//!
-//! Text is drawn with the DejaVu Sans font shipped in `assets/fonts/` (Bitstream Vera license,
-//! beside it) through plotters' `ab_glyph` backend, so no system font library is needed.
+//! The work-precision chart: error against cost on log-log axes, one curve per integrator
+//! (font and colours: [`crate::chart_style`]).
 
 use super::{Outcome, Study, StudyError};
 use tether_physics::integrator::Integrator;
+use crate::chart_style::{COLOURS, register_font_family};
 use plotters::prelude::*;
-use plotters::style::{FontStyle, register_font};
 use std::path::Path;
-
-static FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
-
-/// One colour per integrator, in [`Integrator::ALL`] order.
-const COLOURS: [RGBColor; 5] = [RGBColor(31, 119, 180), RGBColor(255, 127, 14), RGBColor(44, 160, 44), RGBColor(214, 39, 40), RGBColor(148, 103, 189)];
 
 /// Errors below this are drawn at it (an exact result has no logarithm).
 const FLOOR: f64 = 1e-16;
@@ -30,7 +23,7 @@ fn charted_error(study: &Study, m: &super::Measures) -> f64 {
 /// [`StudyError::Output`] when the font cannot be loaded or the image cannot be written.
 pub fn write(study: &Study, path: &Path) -> Result<(), StudyError> {
     let failed = |message: String| StudyError::Output { path: path.display().to_string(), message };
-    register_font("sans-serif", FontStyle::Normal, FONT).map_err(|_| failed("the bundled font is not a valid TrueType font".into()))?;
+    register_font_family().map_err(failed)?;
     let curves: Vec<(Integrator, Vec<(f64, f64)>)> = Integrator::ALL
         .iter()
         .map(|&integrator| {
@@ -81,6 +74,7 @@ pub fn write(study: &Study, path: &Path) -> Result<(), StudyError> {
         .draw()
         .map_err(|e| draw(&e))?;
     for (integrator, points) in &curves {
+        // One colour per integrator, in [`Integrator::ALL`] order.
         let colour = COLOURS[Integrator::ALL.iter().position(|i| i == integrator).unwrap_or(0)];
         let style = ShapeStyle::from(&colour).stroke_width(3);
         chart

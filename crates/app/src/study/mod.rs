@@ -9,16 +9,23 @@
 //! over the samples, relative to the energy budget: the largest kinetic + elastic energy of the
 //! reference run. The cost is the thread's CPU time per simulated second, and the integrator
 //! steps taken (rejected ones included for `dopri45`). A run that diverges is reported as such.
+//! The runs are cases of the engine `tether sweep` runs on ([`crate::runner`]): independent,
+//! on every core, each timed by its own thread's CPU clock.
+//!
+//! The reference is a run of a fine integrator or, where the scene is a damped linear
+//! oscillator, its [`closed_form`].
 //!
 //! [`report`] writes the CSV and Markdown tables, [`chart`] the work-precision chart.
 
 pub mod chart;
+pub mod closed_form;
 pub mod report;
 
 use tether_physics::math::Vec3;
 use tether_physics::integrator::{Integrator, Substeps};
 use tether_physics::world::{StepError, World};
 use tether_scene::file::AdaptiveDef;
+use crate::runner::{Runner, thread_cpu_seconds};
 use tether_scene::{Scene, SceneError};
 
 /// What a study runs.
@@ -43,14 +50,17 @@ pub enum Reference {
     Adaptive { rtol: f64 },
     /// A fixed-step scheme at time step `dt` [s] (dividing the sample interval).
     Fixed { integrator: Integrator, dt: f64 },
+    /// The exact solution of a scene that is a damped linear oscillator ([`closed_form`]).
+    ClosedForm,
 }
 
 impl Reference {
-    /// `dopri45 rtol 1e-12` or `rk4 dt 1e-5 s`.
+    /// `dopri45 at rtol 1e-12`, `rk4 at dt 1e-5 s` or `the closed form`.
     pub fn describe(&self) -> String {
         match self {
             Self::Adaptive { rtol } => format!("dopri45 at rtol {rtol:e}"),
             Self::Fixed { integrator, dt } => format!("{} at dt {dt:e} s", integrator.name()),
+            Self::ClosedForm => "the closed form of the damped oscillator".into(),
         }
     }
 }
@@ -190,44 +200,88 @@ struct Samples {
     cpu_seconds: f64,
 }
 
-/// Runs the study; `progress` hears one line per run as it finishes.
+/// Runs the study on every core; `progress` hears one line per run as it finishes.
 ///
 /// # Errors
 /// A plan that does not fit ([`Plan::check`]), a scene that cannot be built with a run's
 /// settings, or a reference run that fails.
-pub fn run(scene: &Scene, plan: &Plan, mut progress: impl FnMut(&str)) -> Result<Study, StudyError> {
+pub fn run(scene: &Scene, plan: &Plan, progress: impl FnMut(&str)) -> Result<Study, StudyError> {
+    run_on(&Runner::on_all_cores(), scene, plan, progress)
+}
+
+/// Runs the study on `runner`, the engine of many cases `tether sweep` runs on: the reference
+/// first, then every integrator at every setting as a case of its own; `progress` hears one
+/// line per run as it finishes (in the order they finish), the runs are kept in plan order.
+///
+/// # Errors
+/// As [`run`].
+pub fn run_on(runner: &Runner, scene: &Scene, plan: &Plan, mut progress: impl FnMut(&str)) -> Result<Study, StudyError> {
     plan.check()?;
     let samples = (plan.duration / plan.sample_interval).round() as usize;
-    let mut reference_world = match plan.reference {
-        Reference::Adaptive { rtol } => world(scene, Integrator::Dopri45, plan.sample_interval, Some(rtol))?,
-        Reference::Fixed { integrator, dt } => world(scene, integrator, dt, None)?,
-    };
-    let reference = sample(&mut reference_world, plan.sample_interval, samples)
-        .map_err(|source| StudyError::Reference { reference: plan.reference.describe(), source })?;
+    let reference = reference_samples(scene, plan, samples)?;
     progress(&format!("reference ({}) done in {:.2} s of CPU", plan.reference.describe(), reference.cpu_seconds));
     let energy_budget = if reference.peak_energy > 0.0 { reference.peak_energy } else { 1.0 };
     let start = &reference.poses[0];
     let translates = reference.poses.iter().any(|poses| poses.iter().zip(start).any(|(a, b)| (a.0 - b.0).norm() > 1e-12));
-    let mut runs = Vec::new();
-    for &integrator in &plan.integrators {
-        let settings: Vec<Setting> =
-            if integrator.is_adaptive() { plan.tolerances.iter().map(|&r| Setting::Tolerance(r)).collect() } else { plan.dts.iter().map(|&dt| Setting::Step(dt)).collect() };
-        for setting in settings {
-            let mut world = match setting {
-                Setting::Step(dt) => world(scene, integrator, dt, None)?,
-                Setting::Tolerance(rtol) => world(scene, integrator, plan.sample_interval, Some(rtol))?,
-            };
-            let outcome = match sample(&mut world, plan.sample_interval, samples) {
-                Err(error) => Outcome::Failed { time: error_time(&error), message: error.to_string() },
-                Ok(run) => Outcome::Finished(measure(&run, &reference, energy_budget, plan.duration, &world)),
-            };
-            let run = Run { integrator, setting, outcome };
-            progress(&report::describe(&run));
-            runs.push(run);
-        }
-    }
+    let settings: Vec<(Integrator, Setting)> = plan
+        .integrators
+        .iter()
+        .flat_map(|&integrator| {
+            let settings: Vec<Setting> =
+                if integrator.is_adaptive() { plan.tolerances.iter().map(|&r| Setting::Tolerance(r)).collect() } else { plan.dts.iter().map(|&dt| Setting::Step(dt)).collect() };
+            settings.into_iter().map(move |setting| (integrator, setting))
+        })
+        .collect();
+    let mut runs: Vec<Option<Run>> = vec![None; settings.len()];
+    let measured = |&(integrator, setting): &(Integrator, Setting), _: &crate::runner::Watch<'_>| -> Result<Run, StudyError> {
+        let mut world = match setting {
+            Setting::Step(dt) => world(scene, integrator, dt, None)?,
+            Setting::Tolerance(rtol) => world(scene, integrator, plan.sample_interval, Some(rtol))?,
+        };
+        let outcome = match sample(&mut world, plan.sample_interval, samples) {
+            Err(error) => Outcome::Failed { time: error_time(&error), message: error.to_string() },
+            Ok(run) => Outcome::Finished(measure(&run, &reference, energy_budget, plan.duration, &world)),
+        };
+        Ok(Run { integrator, setting, outcome })
+    };
+    let numbered = settings.iter().copied().enumerate();
+    runner.run(numbered, |(_, setting), watch| measured(setting, watch), |(index, _), result| {
+        let run = result?;
+        progress(&report::describe(&run));
+        runs[index] = Some(run);
+        Ok::<(), StudyError>(())
+    })?;
     let scene_name = scene.path.file_name().map_or_else(|| scene.path.display().to_string(), |n| n.to_string_lossy().into_owned());
-    Ok(Study { scene: scene_name, duration: plan.duration, sample_interval: plan.sample_interval, reference: plan.reference, energy_budget, translates, runs })
+    Ok(Study { scene: scene_name, duration: plan.duration, sample_interval: plan.sample_interval, reference: plan.reference, energy_budget, translates, runs: runs.into_iter().flatten().collect() })
+}
+
+/// The reference's samples: a run of the reference integrator, or the closed form at the
+/// sample times.
+///
+/// # Errors
+/// A scene that the closed form does not describe, or a reference run that fails.
+fn reference_samples(scene: &Scene, plan: &Plan, samples: usize) -> Result<Samples, StudyError> {
+    let mut reference_world = match plan.reference {
+        Reference::Adaptive { rtol } => world(scene, Integrator::Dopri45, plan.sample_interval, Some(rtol))?,
+        Reference::Fixed { integrator, dt } => world(scene, integrator, dt, None)?,
+        Reference::ClosedForm => {
+            let oscillator = closed_form::Oscillator::of_scene(scene).map_err(|why| StudyError::Plan(format!("the scene has no closed form: {why}")))?;
+            return Ok(exact_samples(&oscillator, plan.sample_interval, samples));
+        }
+    };
+    sample(&mut reference_world, plan.sample_interval, samples).map_err(|source| StudyError::Reference { reference: plan.reference.describe(), source })
+}
+
+/// The closed form at `samples` sample intervals `interval` [s] (t = 0 included): the motion
+/// keeps its energy balance exactly.
+fn exact_samples(oscillator: &closed_form::Oscillator, interval: f64, samples: usize) -> Samples {
+    let states: Vec<closed_form::Exact> = (0..=samples).map(|k| oscillator.at(k as f64 * interval)).collect();
+    Samples {
+        poses: states.iter().map(|s| vec![(s.position, s.orientation)]).collect(),
+        balances: vec![0.0; samples + 1],
+        peak_energy: states.iter().map(|s| s.kinetic + s.elastic).fold(0.0, f64::max),
+        cpu_seconds: 0.0,
+    }
 }
 
 /// The scene's world with `integrator` at world step `dt` [s], one sub-step, and (dopri45)
@@ -264,7 +318,7 @@ fn sample(world: &mut World, interval: f64, samples: usize) -> Result<Samples, S
     let mut out = Samples { poses: Vec::with_capacity(samples + 1), balances: Vec::with_capacity(samples + 1), peak_energy: 0.0, cpu_seconds: 0.0 };
     record(world, &mut out);
     let dt = world.dt();
-    let start = crate::cpu_time::thread_seconds();
+    let start = thread_cpu_seconds();
     for k in 1..=samples {
         let target = k as f64 * interval;
         while world.time() < target - 0.5 * dt {
@@ -272,7 +326,7 @@ fn sample(world: &mut World, interval: f64, samples: usize) -> Result<Samples, S
         }
         record(world, &mut out);
     }
-    out.cpu_seconds = crate::cpu_time::thread_seconds() - start;
+    out.cpu_seconds = thread_cpu_seconds() - start;
     Ok(out)
 }
 
@@ -302,4 +356,3 @@ fn measure(run: &Samples, reference: &Samples, budget: f64, duration: f64, finis
         rejected: finished.rejected_steps(),
     }
 }
-

@@ -97,20 +97,21 @@ impl Coupling {
     /// (never given by the world, which makes each from its coupling) is started afresh.
     #[inline(always)]
     pub fn apply(&self, cache: &mut CouplingCache, frames: &[BodyFrame], gravity: &Vec3, loads: &mut [Load], out: &mut CouplingForces) -> Result<(), CouplingError> {
-        let fits = matches!(
-            (&self.kind, &*cache),
-            (CouplingKind::SpringDamper(_), CouplingCache::SpringDamper(_)) | (CouplingKind::Catenary(_), CouplingCache::Catenary(_)) | (CouplingKind::Contact(_), CouplingCache::Contact(_))
-        );
-        if !fits {
-            *cache = self.new_cache();
-        }
         match (&self.kind, cache) {
             (CouplingKind::SpringDamper(spring), CouplingCache::SpringDamper(memory)) => spring.apply(memory, frames, loads, out),
             (CouplingKind::Catenary(line), CouplingCache::Catenary(memory)) => line.apply(memory, frames, gravity, loads, out)?,
             (CouplingKind::Contact(contact), CouplingCache::Contact(memory)) => contact.apply(memory, frames, loads, out),
-            // The cache was made to fit the kind just above.
-            _ => unreachable!("a coupling's cache fits its kind"),
+            (_, cache) => return self.apply_with_fresh_cache(cache, frames, gravity, loads, out),
         }
         Ok(())
+    }
+
+    /// [`Coupling::apply`] with `cache` made afresh for this coupling first (out of line: the
+    /// world never gets here).
+    #[cold]
+    #[inline(never)]
+    fn apply_with_fresh_cache(&self, cache: &mut CouplingCache, frames: &[BodyFrame], gravity: &Vec3, loads: &mut [Load], out: &mut CouplingForces) -> Result<(), CouplingError> {
+        *cache = self.new_cache();
+        self.apply(cache, frames, gravity, loads, out)
     }
 }

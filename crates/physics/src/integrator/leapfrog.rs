@@ -13,7 +13,10 @@
 //!   for conservative translational forces, so energy oscillates with no trend.
 //! - Stability: `ω_max dt < 2` for an undamped spring, `2(√(1+ζ²) − ζ)` with damping.
 //! - Cost: one force evaluation per step.
-//! - Work: the trapezoid rule on the powers at consecutive evaluations.
+//! - Work: the trapezoid rule on the powers at consecutive evaluations; for the water's forces
+//!   (PHYSICS.md §6), which have no potential, the trapezoid of the forces at both ends against
+//!   the half-step velocity between them, `½ h (F_n + F_{n+1})·v_{n+½}`: second order for a
+//!   position-dependent force such as the buoyancy.
 
 use super::report::StepReport;
 use crate::body::kinematics::{drift, kick, turn};
@@ -50,7 +53,7 @@ impl Leapfrog {
     /// Evaluates `time` and turns the synchronised velocities into `v(t − ½h) = v(t) − ½h γ(t)`.
     pub fn start(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, h: f64) -> Result<BodyEnergy, EvaluationError> {
         system.prescribe(states, time);
-        self.powers = system.evaluate(states, evaluation)?;
+        self.powers = system.evaluate(states, evaluation, time)?;
         // The velocities are synchronised: ω(t) is exact for either variant.
         self.accelerate(system, states, evaluation, Gyroscopic::Lagged, 0.0);
         let half = 0.5 * h;
@@ -83,7 +86,7 @@ impl Leapfrog {
     /// One step. Stages *advance*, *prescribe*, *predict*, *clear* and *gravity* run in two
     /// passes over the bodies, translation first and rotation second (a short loop, in which
     /// the processor overlaps one body's chain of rotation arithmetic with the next's); then
-    /// *couplings*, *accelerations* and *powers*. Built for AVX2 as well, with the per-body
+    /// *couplings*, *water*, *accelerations* and *powers*. Built for AVX2 as well, with the per-body
     /// stages inlined (same results, bit for bit).
     #[inline(always)]
     fn step_built(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, h: f64) -> Result<StepReport, EvaluationError> {
@@ -113,9 +116,15 @@ impl Leapfrog {
             }
         }
         let dissipated = system.apply_couplings(evaluation)?;
+        // The water's work: the trapezoid of the forces at both ends against the half-step
+        // velocities they straddle (second order; against each end's own lagged velocity it
+        // would drift at first order, ½h ∫ F·a dt).
+        let water_before = system.water_power(evaluation);
+        let water = system.apply_water(evaluation, time);
         let energy = self.accelerate(system, states, evaluation, self.gyroscopic, 0.5 * h);
-        let powers = Powers { dissipated, external: system.external_power(evaluation) };
-        let work = Work::trapezoid(h, &self.powers, &powers);
+        let powers = Powers { dissipated, external: system.external_power(evaluation), water };
+        let mut work = Work::trapezoid(h, &self.powers, &powers);
+        work.external += 0.5 * h * (water_before + water);
         self.powers = powers;
         Ok(StepReport::accepted(h, work, energy))
     }

@@ -118,7 +118,7 @@ impl Stages {
     /// Accepts the attempted step of `h` [s] whose new rates are in slot `last`: the new rates
     /// become slot 0. Returns the work over the step, `h Σ b_j P_j`, and the bodies' energies.
     pub fn accept(&mut self, system: &System, states: &[BodyState], h: f64, last: usize) -> (Work, BodyEnergy) {
-        let (dissipated, external) = self.tableau.b.iter().zip(&self.powers).fold((0.0, 0.0), |(d, e), (b, p)| (d + b * p.dissipated, e + b * p.external));
+        let (dissipated, external) = self.tableau.b.iter().zip(&self.powers).fold((0.0, 0.0), |(d, e), (b, p)| (d + b * p.dissipated, e + b * (p.external + p.water)));
         self.rates.swap(0, last);
         self.powers.swap(0, last);
         (Work { dissipated: h * dissipated, external: h * external }, BodyEnergy::sum(system.bodies(), states.iter(), system.gravity()))
@@ -195,7 +195,7 @@ impl Stages {
     /// the force evaluation, then each body's derivative.
     fn evaluate(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, slot: usize) -> Result<(), EvaluationError> {
         system.prescribe(states, time);
-        self.powers[slot] = system.evaluate(states, evaluation)?;
+        self.powers[slot] = system.evaluate(states, evaluation, time)?;
         let per_body = system.bodies().iter().zip(states.iter()).zip(&evaluation.frames).zip(&evaluation.loads);
         for ((((body, state), frame), load), rate) in per_body.zip(self.rates[slot].iter_mut()) {
             *rate = derivative(body, state, frame, load);

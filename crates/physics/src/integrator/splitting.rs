@@ -19,7 +19,8 @@
 //! - Stability: as the leapfrog (`ω_max h < 2`, `2(√(1+ζ²) − ζ)/ω` damped; `|ω| h < 1`).
 //! - Cost: one force evaluation per step; five axis rotations (sine and cosine) per spinning
 //!   body.
-//! - Work: the trapezoid rule on the powers at consecutive evaluations.
+//! - Work: the trapezoid rule on the powers at consecutive evaluations; the water's as the
+//!   leapfrog's (`½ h (F_n + F_{n+1})·v_{n+½}`).
 
 use super::report::StepReport;
 use crate::body::kinematics::{drift, kick, renormalize};
@@ -48,7 +49,7 @@ impl Splitting {
     /// synchronised).
     pub fn start(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64) -> Result<BodyEnergy, EvaluationError> {
         system.prescribe(states, time);
-        self.powers = system.evaluate(states, evaluation)?;
+        self.powers = system.evaluate(states, evaluation, time)?;
         Ok(self.kick_and_energies(system, states, evaluation, 0.0))
     }
 
@@ -74,9 +75,15 @@ impl Splitting {
             *load = system.gravity_load(body);
         }
         let dissipated = system.apply_couplings(evaluation)?;
+        // The water's work: the trapezoid of the forces at both ends against the half-step
+        // velocities they straddle (second order; against each end's own lagged velocity it
+        // would drift at first order, ½h ∫ F·a dt).
+        let water_before = system.water_power(evaluation);
+        let water = system.apply_water(evaluation, time);
         let energy = self.kick_and_energies(system, states, evaluation, 0.5 * h);
-        let powers = Powers { dissipated, external: system.external_power(evaluation) };
-        let work = Work::trapezoid(h, &self.powers, &powers);
+        let powers = Powers { dissipated, external: system.external_power(evaluation), water };
+        let mut work = Work::trapezoid(h, &self.powers, &powers);
+        work.external += 0.5 * h * (water_before + water);
         self.powers = powers;
         Ok(StepReport::accepted(h, work, energy))
     }

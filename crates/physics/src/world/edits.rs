@@ -1,14 +1,17 @@
-//! Live edits of a running world: a coupling replaced, the time step changed, a reset. The first
-//! two start the integrator again from the synchronised state at the current time (positions and
+//! Live edits of a running world: a coupling replaced, the water or a body's coefficients in it
+//! changed, the time step changed, a reset. All but the reset start the integrator again from the synchronised state at the current time (positions and
 //! velocities do not move), keeping the energy ledger, so the motion goes on under what changed;
 //! a refused edit leaves the world as it was.
 
-use super::error::{StepError, TimingError};
+use super::error::{StepError, TimingError, WaterEditError};
 use super::World;
 use crate::coupling::{Coupling, CouplingError};
 use crate::energy::Work;
 use crate::integrator::{Substeps, Timing};
 use crate::stability;
+use crate::system::SystemError;
+use crate::water::WaterSpec;
+use crate::water::morison::HydroSpec;
 
 impl World {
     /// Restarts from t = 0 with the current parameters; on error the world is unchanged.
@@ -46,6 +49,45 @@ impl World {
         }
         let jump = self.energy().total() - before.energy().total();
         self.ledger.add(&Work { dissipated: 0.0, external: jump });
+        self.health.limit = stability::binding(&self.limits());
+        Ok(())
+    }
+
+    /// Replaces the water's spec while running (waves, current, density, level, depth, ramp):
+    /// the integrator starts again at the current time from the synchronised state under the new
+    /// water. The water stores no energy, so the ledger needs no correction; its forces' work
+    /// goes on being booked as external work.
+    ///
+    /// # Errors
+    /// Water that cannot be, a world without water, or forces that cannot be evaluated; the
+    /// world is then unchanged.
+    pub fn replace_water(&mut self, spec: WaterSpec) -> Result<(), WaterEditError> {
+        self.edit_water(|system| system.replace_water(spec))
+    }
+
+    /// Replaces the coefficients of floating body `body` (drag, damping, added mass, drag
+    /// centre) while running, as [`World::replace_water`] does the water.
+    ///
+    /// # Errors
+    /// Bad coefficients, a body that does not float, or forces that cannot be evaluated; the
+    /// world is then unchanged.
+    pub fn replace_hydro(&mut self, body: usize, spec: HydroSpec) -> Result<(), WaterEditError> {
+        self.edit_water(|system| system.replace_hydro(body, spec))
+    }
+
+    /// Applies `edit` to the system and restarts the integrator from the synchronised state;
+    /// on any error, the world as it was.
+    fn edit_water(&mut self, edit: impl FnOnce(&mut crate::system::System) -> Result<(), SystemError>) -> Result<(), WaterEditError> {
+        let before = self.clone();
+        self.states = self.synchronized_states();
+        if let Err(error) = edit(&mut self.system) {
+            *self = before;
+            return Err(WaterEditError::Refused(error));
+        }
+        if let Err(error) = self.start_integrator() {
+            *self = before;
+            return Err(WaterEditError::Forces(error));
+        }
         self.health.limit = stability::binding(&self.limits());
         Ok(())
     }

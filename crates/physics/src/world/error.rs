@@ -1,6 +1,7 @@
 //! What stops a world: a step that could not be completed, a time step setting refused.
 
 use crate::coupling::CouplingError;
+use crate::system::SystemError;
 
 /// A step that could not be completed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -21,6 +22,17 @@ pub enum TimingError {
     Step(f64),
     #[error("substeps must be at least 1")]
     NoSubsteps,
+    #[error(transparent)]
+    Forces(StepError),
+}
+
+/// A live edit of the water refused by [`super::World::replace_water`] or
+/// [`super::World::replace_hydro`]; the world is then unchanged.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum WaterEditError {
+    /// The new water or coefficients cannot be.
+    #[error(transparent)]
+    Refused(SystemError),
     #[error(transparent)]
     Forces(StepError),
 }

@@ -93,10 +93,16 @@ fn most_energetic_body(system: &System, states: &[BodyState]) -> usize {
 }
 
 /// `Σ m |g| ℓ` [J], ℓ the diagonal of the box around the bodies' centres of mass and the
-/// coupling ends `ends` [m].
+/// coupling ends `ends` [m]; and for each floating body `ρ g V · 2r`, the work of its buoyancy
+/// across its own size (`V` its hull's volume, `r` the radius of the ball about G that holds
+/// it): a body floating at rest alone has no other scale.
 pub fn fall_energy(system: &System, states: &[BodyState], ends: impl Iterator<Item = crate::math::Vec3>) -> f64 {
     let (low, high) = bounding_box(states.iter().map(|s| s.position).chain(ends));
     let size = if low.x.is_finite() { (high - low).norm() } else { 0.0 };
     let mass: f64 = system.bodies().iter().filter(|b| !b.is_kinematic()).map(|b| b.mass()).sum();
-    mass * system.gravity().norm() * size
+    let floating = system.water().map_or(0.0, |stage| {
+        let rho_g = stage.water.specific_weight();
+        stage.floating.iter().map(|f| rho_g * f.hull.volume() * 2.0 * f.hull.bounding_radius()).sum()
+    });
+    mass * system.gravity().norm() * size + floating
 }

@@ -22,7 +22,7 @@ use crate::integrator::{Integrator, MAX_AUTO_SUBSTEPS, Scheme, StepFailure, Step
 use crate::math::Vec3;
 use crate::stability::{self, Limit, Situation};
 use crate::system::{EvaluationError, System};
-pub use error::{StepError, TimingError};
+pub use error::{StepError, TimingError, WaterEditError};
 use health::Health;
 
 /// `substeps: Auto` keeps each integrator step under this fraction of the stable time step.
@@ -272,8 +272,8 @@ impl World {
         self.evaluation.frames()
     }
 
-    /// Load (force and moment about G, world) on body `index` at the current time: couplings,
-    /// plus gravity for bodies that respond to forces.
+    /// Load (force and moment about G, world) on body `index` at the current time: couplings and
+    /// water, plus gravity for bodies that respond to forces.
     pub fn load(&self, index: usize) -> &Load {
         &self.evaluation.loads()[index]
     }
@@ -281,6 +281,12 @@ impl World {
     /// What each coupling did at the current time, in the order of [`World::couplings`].
     pub fn coupling_forces(&self) -> &[CouplingForces] {
         self.evaluation.forces()
+    }
+
+    /// What the water did to each floating body at the current time, in the order of the
+    /// system's floating bodies (empty without water).
+    pub fn water_forces(&self) -> &[crate::water::WaterForces] {
+        self.evaluation.water()
     }
 
     /// The buffers of the last force evaluation.

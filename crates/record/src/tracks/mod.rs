@@ -10,7 +10,9 @@
 //! - [`contacts`]: the contacts' normal force and friction plot;
 //! - [`face_arrows`]: a contact's face forces as arrows, where and when asked for;
 //! - [`tension`]: every coupling's tension plot;
-//! - [`energy`]: the energy balance plot.
+//! - [`energy`]: the energy balance plot;
+//! - [`water`]: the sea surface, the seabed, the water's force on each floating body and its
+//!   motion plots.
 
 mod bodies;
 mod catenaries;
@@ -19,6 +21,7 @@ pub mod face_arrows;
 mod energy;
 mod springs;
 mod tension;
+mod water;
 
 use crate::RecordError;
 use crate::frames::Frames;
@@ -73,6 +76,9 @@ pub(crate) fn for_world(world: &World) -> Vec<(Box<dyn Track>, KindStats)> {
         add("tension plot", 1, Box::new(tension));
     }
     add("energy plot", 1, Box::new(energy::EnergyPlot::default()));
+    if let Some(water) = water::WaterTrack::new(world) {
+        add("water", water.entities(), Box::new(water));
+    }
     tracks
 }
 
@@ -107,6 +113,6 @@ pub(crate) fn quaternion(rotation: &Rotation) -> rerun::Quaternion {
 
 /// Rows `entity`, `entity + stride`, … of a frame-major buffer of `stride` entities per frame:
 /// one entity's values, frame after frame.
-pub(crate) fn of_entity<T: Copy>(buffer: &[T], entity: usize, stride: usize) -> impl Iterator<Item = T> + '_ {
+pub(crate) fn of_entity<T: Copy>(buffer: &[T], entity: usize, stride: usize) -> impl Iterator<Item = T> + Clone + '_ {
     buffer.iter().skip(entity).step_by(stride.max(1)).copied()
 }

@@ -6,6 +6,8 @@ use std::sync::mpsc::Sender;
 use std::time::Instant;
 use tether_physics::coupling::Coupling;
 use tether_physics::integrator::Timing;
+use tether_physics::water::WaterSpec;
+use tether_physics::water::morison::HydroSpec;
 use tether_physics::world::World;
 
 /// How fast simulated time runs.
@@ -39,6 +41,10 @@ pub enum Command {
     SetCoupling { index: usize, coupling: Coupling, sent: Instant },
     /// Draw every contact's face forces as arrows in the recording (or not), from now on.
     SetFaceArrows(bool),
+    /// The water replaced by `spec` (checked by the scene builder), without a restart.
+    SetWater(WaterSpec),
+    /// Body `body`'s coefficients in the water replaced by `spec` (checked), without a restart.
+    SetHydro { body: usize, spec: HydroSpec },
     /// A new scene, paused at t = 0.
     Load(Box<Run>),
     /// A copy of the running world, for inspection (tests, tools).

@@ -17,6 +17,7 @@ use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender, TryRecvError};
 use std::time::{Duration, Instant};
 use tether_physics::coupling::Coupling;
 use tether_physics::integrator::Timing;
+use tether_physics::world::World;
 
 /// Wall time of one tick of the thread, about one display frame [s].
 pub const TICK: Duration = Duration::from_millis(16);
@@ -113,6 +114,8 @@ impl Runner {
             Command::SetTiming(timing) => self.set_timing(timing),
             Command::SetCoupling { index, coupling, sent } => self.set_coupling(index, coupling, sent),
             Command::SetFaceArrows(on) => self.set_face_arrows(on),
+            Command::SetWater(spec) => self.edit_water("the water", |world| world.replace_water(spec)),
+            Command::SetHydro { body, spec } => self.edit_water("the body's coefficients in the water", |world| world.replace_hydro(body, spec)),
             Command::Load(run) => self.load(*run),
             Command::Snapshot(reply) => {
                 reply.send(self.run.as_ref().map(|run| run.world.clone())).ok();
@@ -269,9 +272,23 @@ impl Runner {
         }
     }
 
+    /// Draws every contact's face forces in the recording (or not) from the next frame on.
     fn set_face_arrows(&mut self, on: bool) {
         let set = self.recording.set_face_arrows(on, self.run.as_ref().map(|run| &run.world));
         self.report_failure(set);
+    }
+
+    /// A live edit of the water (`what` names it in the report).
+    fn edit_water(&mut self, what: &str, edit: impl FnOnce(&mut World) -> Result<(), tether_physics::world::WaterEditError>) {
+        let Some(run) = &mut self.run else { return };
+        match edit(&mut run.world) {
+            Ok(()) => {
+                let time = run.world.time();
+                self.log_frame();
+                self.report(Report::Message(format!("{what} applied at t = {time:.4} s")));
+            }
+            Err(error) => self.report(Report::Error(error.to_string())),
+        }
     }
 
     fn send_status(&self) {

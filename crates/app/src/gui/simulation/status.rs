@@ -32,6 +32,8 @@ pub struct Status {
     pub coupling_limits: Vec<(String, Option<f64>)>,
     /// Stable time step set by the fastest spinning body, if any spins [s].
     pub rotation_limit: Option<(String, f64)>,
+    /// Stable time step of each floating body under the water's stiffness and drag [s].
+    pub water_limits: Vec<(String, f64)>,
     /// Time step that resolves each contact's impact, `τ/10` [s] (not a stability limit).
     pub impact_limits: Vec<(String, f64)>,
     /// What the contact estimator needs of each contact.
@@ -88,9 +90,16 @@ pub fn status(world: &World, run: &RunState) -> Status {
         .iter()
         .filter_map(|l| match l.limiter {
             Limiter::Rotation(body) => Some((world.bodies()[body].name.clone(), l.dt)),
-            Limiter::Coupling(_) | Limiter::Impact(_) => None,
+            Limiter::Coupling(_) | Limiter::Impact(_) | Limiter::Water(_) => None,
         })
         .min_by(|a, b| a.1.total_cmp(&b.1));
+    let water_limits = limits
+        .iter()
+        .filter_map(|l| match l.limiter {
+            Limiter::Water(body) => Some((world.bodies()[body].name.clone(), l.dt)),
+            _ => None,
+        })
+        .collect();
     let wall = run.wall.max(1e-6);
     Status {
         label: run.label.clone(),
@@ -105,6 +114,7 @@ pub fn status(world: &World, run: &RunState) -> Status {
         substeps: world.substeps(),
         coupling_limits: world.couplings().iter().enumerate().map(|(i, c)| (c.name.clone(), coupling_limit(i))).collect(),
         rotation_limit,
+        water_limits,
         impact_limits: world.impact_limits().iter().map(|l| (l.describe(world.system()), l.dt)).collect(),
         contacts: contacts(world),
         bodies: (0..world.bodies().len()).map(|i| body_status(world, i)).collect(),

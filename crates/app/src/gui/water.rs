@@ -1,0 +1,85 @@
+//! The water panel: the scene's waves, current and density, and each floating body's drag and
+//! added-mass coefficients, all live (PHYSICS.md §6). The knobs edit the panel's drafts
+//! (scene-file data, [`WaterDef`] and [`HydroDef`]); the panel checks an edited draft with the
+//! scene builder (the same checks and messages as loading) and sends the simulation what it
+//! accepts; a refused value stays in its knob with the reason.
+
+use super::tuning::knob;
+use rerun::external::egui;
+use tether_scene::water::{CurrentDef, HydroDef, WaterDef, WavesDef};
+
+/// What the water panel asks for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WaterAction {
+    /// The water draft was edited.
+    Water,
+    /// Body `index`'s coefficients were edited.
+    Hydro(usize),
+}
+
+/// The water's drafts and refusals, as the panel shows them.
+pub struct WaterDrafts<'a> {
+    pub water: &'a mut WaterDef,
+    pub water_refusal: Option<&'a str>,
+    /// `(body index, name, coefficients, refusal)` of each floating body.
+    pub bodies: Vec<(usize, &'a str, &'a mut HydroDef, Option<&'a str>)>,
+}
+
+/// Draws the water section; nothing for a scene without water.
+pub fn ui(ui: &mut egui::Ui, drafts: Option<WaterDrafts>) -> Vec<WaterAction> {
+    let mut actions = Vec::new();
+    let Some(WaterDrafts { water, water_refusal, bodies }) = drafts else { return actions };
+    egui::CollapsingHeader::new("Water").id_salt("water").default_open(true).show(ui, |ui| {
+        let edited = egui::Grid::new("water knobs").num_columns(3).show(ui, |ui| water_knobs(ui, water)).inner;
+        if edited {
+            actions.push(WaterAction::Water);
+        }
+        if let Some(refusal) = water_refusal {
+            ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refusal}"));
+        }
+        for (index, name, hydro, refusal) in bodies {
+            ui.label(format!("body \"{name}\" in the water"));
+            let edited = egui::Grid::new(("hydro knobs", index)).num_columns(3).show(ui, |ui| hydro_knobs(ui, hydro)).inner;
+            if edited {
+                actions.push(WaterAction::Hydro(index));
+            }
+            if let Some(refusal) = refusal {
+                ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refusal}"));
+            }
+        }
+    });
+    actions
+}
+
+/// Waves (height, period, heading), current (speed, heading) and density; true when one was
+/// edited. A current is added when its speed is first set.
+fn water_knobs(ui: &mut egui::Ui, water: &mut WaterDef) -> bool {
+    let mut edited = match &mut water.waves {
+        WavesDef::Calm => {
+            ui.label("waves");
+            ui.label("calm");
+            ui.end_row();
+            false
+        }
+        WavesDef::Regular { height, period, heading_deg, .. } => knob(ui, "wave height H", height, "m") | knob(ui, "wave period T", period, "s") | knob(ui, "wave heading", heading_deg, "°"),
+        WavesDef::Jonswap { hs, tp, heading_deg, .. } => knob(ui, "significant height Hs", hs, "m") | knob(ui, "peak period Tp", tp, "s") | knob(ui, "wave heading", heading_deg, "°"),
+    };
+    let mut current = water.current.clone().unwrap_or(CurrentDef { speed: 0.0, heading_deg: 0.0, profile: Default::default() });
+    if knob(ui, "current speed", &mut current.speed, "m/s") | knob(ui, "current heading", &mut current.heading_deg, "°") {
+        water.current = Some(current);
+        edited = true;
+    }
+    edited | knob(ui, "density ρ", &mut water.density, "kg/m³")
+}
+
+/// Drag and added-mass coefficients per body axis; true when one was edited.
+fn hydro_knobs(ui: &mut egui::Ui, hydro: &mut HydroDef) -> bool {
+    let mut edited = false;
+    for (axis, name) in ["x", "y", "z"].iter().enumerate() {
+        edited |= knob(ui, &format!("drag C_d {name}"), &mut hydro.drag[axis], "–");
+    }
+    for (axis, name) in ["x", "y", "z"].iter().enumerate() {
+        edited |= knob(ui, &format!("added mass C_a {name}"), &mut hydro.added_mass[axis], "–");
+    }
+    edited
+}

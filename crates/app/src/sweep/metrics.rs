@@ -1,0 +1,446 @@
+//! What each case measures: the metrics the spec declares and a standard set, observed after
+//! every world step (t = 0 included) and reduced as the run goes, so a case holds a few numbers
+//! per metric whatever its length (the settle time keeps at most [`SETTLE_SAMPLES`] positions
+//! per body).
+//!
+//! Standard metrics (units in the column names):
+//! - `<coupling>.tension_max_N`, `<coupling>.tension_min_N`: the coupling's scalar force [N]
+//!   (a spring's `f_e + k_d ẋ`, a catenary's larger end tension, a contact's normal force);
+//! - `<body>.excursion_max_m`: the largest `|x_G(t) − x_G(0)|` [m]; `<body>.rotation_max_rad`:
+//!   the largest angle of `q(0)⁻¹ q(t)` [rad] (bodies that move: not kinematic, not held in
+//!   every direction);
+//! - `settle_time_s`: the time after which every moving body's G stays within a band of where
+//!   it ends — `settle_band` (spec, default 2 %) of the largest distance any body's G is from its
+//!   end position during the run; 0 when nothing moves, near the duration when the motion has
+//!   not died out;
+//! - `energy_error`: the largest energy-balance drift `|B(t) − B(0)|` (`B = total + dissipated −
+//!   external work`, PHYSICS.md §5) over the largest kinetic + |elastic| energy of the run, as in
+//!   `tether study`.
+//!
+//! A declared metric is a quantity reduced over the run (from its `after` time on):
+//! `Metric(name: "heave", of: Position("buoy", Z), take: MaxAbs, after: 5.0)`.
+
+use super::spec::{SpecError, SpecText};
+use serde::Deserialize;
+use tether_physics::body::{BodyState, Support};
+use tether_physics::math::{Rotation, Vec3};
+use tether_physics::world::World;
+
+/// At most this many positions per body are kept for the settle time (evenly spaced in steps).
+pub const SETTLE_SAMPLES: u64 = 2048;
+
+/// A metric as the spec declares it.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(rename = "Metric", deny_unknown_fields)]
+pub struct MetricDef {
+    /// Its column name.
+    pub name: String,
+    pub of: Quantity,
+    pub take: Reduction,
+    /// Start of the window it is taken over [s] (default 0: the whole run).
+    #[serde(default)]
+    pub after: f64,
+}
+
+/// A quantity of a run at one instant.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+pub enum Quantity {
+    /// A coupling's scalar force [N].
+    Tension(String),
+    /// The distance between a coupling's ends [m].
+    Length(String),
+    /// A coordinate of a body's G, world [m].
+    Position(String, Axis),
+    /// A component of a body's velocity of G, world [m/s].
+    Velocity(String, Axis),
+    /// `|v_G|` [m/s].
+    Speed(String),
+    /// `|ω|` [rad/s].
+    AngularSpeed(String),
+    /// `|x_G(t) − x_G(0)|` [m].
+    Excursion(String),
+    /// The angle of `q(0)⁻¹ q(t)` [rad].
+    Rotation(String),
+    /// A part of the energy account, PHYSICS.md §5 [J].
+    Energy(EnergyPart),
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum Axis {
+    X,
+    Y,
+    Z,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum EnergyPart {
+    Kinetic,
+    Gravity,
+    Elastic,
+    Dissipated,
+    ExternalWork,
+    /// kinetic + gravity + elastic.
+    Total,
+    /// total + dissipated − external work.
+    Balance,
+}
+
+/// How a quantity's history becomes one number.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum Reduction {
+    Max,
+    Min,
+    /// The largest absolute value.
+    MaxAbs,
+    /// The mean over the world steps (equal in time).
+    Mean,
+    /// The root mean square over the world steps.
+    Rms,
+    /// The value at the end.
+    Final,
+    /// max − min.
+    Range,
+}
+
+/// A metric, its bodies and couplings found in the scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Metric {
+    pub name: String,
+    pub unit: &'static str,
+    measure: Measure,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Measure {
+    Reduced { probe: Probe, reduction: Reduction, after: f64 },
+    SettleTime,
+    EnergyError,
+}
+
+/// A quantity with its body or coupling by index.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Probe {
+    Tension(usize),
+    Length(usize),
+    Position(usize, Axis),
+    Velocity(usize, Axis),
+    Speed(usize),
+    AngularSpeed(usize),
+    Excursion(usize),
+    Rotation(usize),
+    Energy(EnergyPart),
+}
+
+impl Probe {
+    /// The body whose state it reads.
+    fn body(self) -> Option<usize> {
+        match self {
+            Self::Position(b, _) | Self::Velocity(b, _) | Self::Speed(b) | Self::AngularSpeed(b) | Self::Excursion(b) | Self::Rotation(b) => Some(b),
+            Self::Tension(_) | Self::Length(_) | Self::Energy(_) => None,
+        }
+    }
+
+    fn unit(self) -> &'static str {
+        match self {
+            Self::Tension(_) => "N",
+            Self::Length(_) | Self::Position(..) | Self::Excursion(_) => "m",
+            Self::Velocity(..) | Self::Speed(_) => "m/s",
+            Self::AngularSpeed(_) => "rad/s",
+            Self::Rotation(_) => "rad",
+            Self::Energy(_) => "J",
+        }
+    }
+}
+
+impl Metric {
+    /// The metrics of a sweep of `world`'s scene: the standard set (if `standard`) and those
+    /// the spec declares, their names checked against the scene.
+    ///
+    /// # Errors
+    /// A declared metric naming a body or coupling the scene does not have, or an invalid
+    /// window, placed at the metric's name.
+    pub fn all(world: &World, standard: bool, declared: &[MetricDef], spec: &SpecText<'_>) -> Result<Vec<Self>, SpecError> {
+        let mut metrics = Vec::new();
+        if standard {
+            for (index, coupling) in world.couplings().iter().enumerate() {
+                metrics.push(reduced(format!("{}.tension_max_N", coupling.name), Probe::Tension(index), Reduction::Max, 0.0));
+                metrics.push(reduced(format!("{}.tension_min_N", coupling.name), Probe::Tension(index), Reduction::Min, 0.0));
+            }
+            for (index, body) in world.bodies().iter().enumerate().filter(|(_, b)| moves(&b.support)) {
+                metrics.push(reduced(format!("{}.excursion_max_m", body.name), Probe::Excursion(index), Reduction::Max, 0.0));
+                metrics.push(reduced(format!("{}.rotation_max_rad", body.name), Probe::Rotation(index), Reduction::Max, 0.0));
+            }
+        }
+        metrics.push(Self { name: "settle_time_s".into(), unit: "s", measure: Measure::SettleTime });
+        metrics.push(Self { name: "energy_error".into(), unit: "–", measure: Measure::EnergyError });
+        for def in declared {
+            let fail = |message: String| spec.error_at(&def.name, "metrics", format!("metric \"{}\": {message}", def.name));
+            let probe = probe(world, &def.of).map_err(fail)?;
+            if !(def.after.is_finite() && def.after >= 0.0) {
+                return Err(fail(format!("`after` must be a time ≥ 0 s, got {}", def.after)));
+            }
+            metrics.push(reduced(def.name.clone(), probe, def.take, def.after));
+        }
+        Ok(metrics)
+    }
+
+    /// The window's start [s] (0 for the whole run).
+    pub fn after(&self) -> f64 {
+        match self.measure {
+            Measure::Reduced { after, .. } => after,
+            Measure::SettleTime | Measure::EnergyError => 0.0,
+        }
+    }
+}
+
+fn reduced(name: String, probe: Probe, reduction: Reduction, after: f64) -> Metric {
+    Metric { name, unit: probe.unit(), measure: Measure::Reduced { probe, reduction, after } }
+}
+
+/// Whether a body with this support can move under forces.
+fn moves(support: &Support) -> bool {
+    !matches!(support, Support::Kinematic(_) | Support::Fixed { translation: [true, true, true], rotation: true })
+}
+
+/// The probe of `quantity` in `world`, its names resolved.
+fn probe(world: &World, quantity: &Quantity) -> Result<Probe, String> {
+    let body = |name: &str| {
+        world.bodies().iter().position(|b| b.name == name).ok_or_else(|| {
+            let names: Vec<&str> = world.bodies().iter().map(|b| b.name.as_str()).collect();
+            format!("the scene has no body \"{name}\" (bodies: {})", names.join(", "))
+        })
+    };
+    let coupling = |name: &str| {
+        world.couplings().iter().position(|c| c.name == name).ok_or_else(|| {
+            let names: Vec<&str> = world.couplings().iter().map(|c| c.name.as_str()).collect();
+            format!("the scene has no coupling \"{name}\" (couplings: {})", if names.is_empty() { "none".into() } else { names.join(", ") })
+        })
+    };
+    Ok(match quantity {
+        Quantity::Tension(name) => Probe::Tension(coupling(name)?),
+        Quantity::Length(name) => Probe::Length(coupling(name)?),
+        Quantity::Position(name, axis) => Probe::Position(body(name)?, *axis),
+        Quantity::Velocity(name, axis) => Probe::Velocity(body(name)?, *axis),
+        Quantity::Speed(name) => Probe::Speed(body(name)?),
+        Quantity::AngularSpeed(name) => Probe::AngularSpeed(body(name)?),
+        Quantity::Excursion(name) => Probe::Excursion(body(name)?),
+        Quantity::Rotation(name) => Probe::Rotation(body(name)?),
+        Quantity::Energy(part) => Probe::Energy(*part),
+    })
+}
+
+/// Running statistics of one quantity.
+#[derive(Debug, Clone, Copy)]
+struct Tally {
+    max: f64,
+    min: f64,
+    max_abs: f64,
+    sum: f64,
+    sum_of_squares: f64,
+    count: u64,
+    last: f64,
+}
+
+impl Default for Tally {
+    fn default() -> Self {
+        Self { max: f64::NEG_INFINITY, min: f64::INFINITY, max_abs: 0.0, sum: 0.0, sum_of_squares: 0.0, count: 0, last: 0.0 }
+    }
+}
+
+impl Tally {
+    fn add(&mut self, x: f64) {
+        self.max = self.max.max(x);
+        self.min = self.min.min(x);
+        self.max_abs = self.max_abs.max(x.abs());
+        self.sum += x;
+        self.sum_of_squares += x * x;
+        self.count += 1;
+        self.last = x;
+    }
+
+    fn reduce(&self, reduction: Reduction) -> f64 {
+        let n = self.count.max(1) as f64;
+        match reduction {
+            Reduction::Max => self.max,
+            Reduction::Min => self.min,
+            Reduction::MaxAbs => self.max_abs,
+            Reduction::Mean => self.sum / n,
+            Reduction::Rms => (self.sum_of_squares / n).sqrt(),
+            Reduction::Final => self.last,
+            Reduction::Range => self.max - self.min,
+        }
+    }
+}
+
+/// One case's metrics as its run goes.
+pub struct Observer<'m> {
+    metrics: &'m [Metric],
+    tallies: Vec<Tally>,
+    /// Half a world step [s]: a sample at `after − half_step` is in the window.
+    half_step: f64,
+    /// Each body's G and orientation at t = 0.
+    start: Vec<(Vec3, Rotation)>,
+    /// The synchronised state of each body a probe reads, this step.
+    states: Vec<Option<BodyState>>,
+    read: Vec<usize>,
+    /// Energy balance at t = 0, its largest drift, and the largest kinetic + |elastic| [J].
+    balance0: f64,
+    drift: f64,
+    peak_energy: f64,
+    settle: SettleTrack,
+}
+
+/// Positions of the moving bodies every `stride` world steps.
+struct SettleTrack {
+    bodies: Vec<usize>,
+    stride: u64,
+    times: Vec<f64>,
+    /// `bodies.len()` positions per sample.
+    positions: Vec<Vec3>,
+}
+
+impl<'m> Observer<'m> {
+    /// An observer of `world` (at t = 0, about to run `steps` world steps) for `metrics`; takes
+    /// the t = 0 sample.
+    pub fn new(metrics: &'m [Metric], world: &World, steps: u64) -> Self {
+        let bodies = world.bodies().len();
+        let mut read: Vec<usize> = metrics
+            .iter()
+            .filter_map(|m| match m.measure {
+                Measure::Reduced { probe, .. } => probe.body(),
+                _ => None,
+            })
+            .collect();
+        read.sort_unstable();
+        read.dedup();
+        let start = (0..bodies).map(|i| world.state(i)).map(|s| (s.position, s.orientation)).collect();
+        let moving: Vec<usize> = (0..bodies).filter(|&i| moves(&world.bodies()[i].support)).collect();
+        let stride = steps.div_ceil(SETTLE_SAMPLES).max(1);
+        let capacity = (steps / stride + 2) as usize;
+        let settle = SettleTrack { stride, times: Vec::with_capacity(capacity), positions: Vec::with_capacity(capacity * moving.len()), bodies: moving };
+        let energy = world.energy();
+        let mut observer = Self {
+            metrics,
+            tallies: vec![Tally::default(); metrics.len()],
+            half_step: 0.5 * world.dt(),
+            start,
+            states: vec![None; bodies],
+            read,
+            balance0: energy.balance(),
+            drift: 0.0,
+            peak_energy: 0.0,
+            settle,
+        };
+        observer.observe(world);
+        observer
+    }
+
+    /// Takes the sample of `world` after a world step.
+    pub fn observe(&mut self, world: &World) {
+        for &body in &self.read {
+            self.states[body] = Some(world.state(body));
+        }
+        let time = world.time();
+        for (metric, tally) in self.metrics.iter().zip(&mut self.tallies) {
+            if let Measure::Reduced { probe, after, .. } = metric.measure
+                && time + self.half_step >= after
+            {
+                tally.add(value(probe, world, &self.states, &self.start));
+            }
+        }
+        let energy = world.energy();
+        self.drift = self.drift.max((energy.balance() - self.balance0).abs());
+        self.peak_energy = self.peak_energy.max(energy.kinetic + energy.elastic.abs());
+        if world.steps().is_multiple_of(self.settle.stride) {
+            self.settle.take(world);
+        }
+    }
+
+    /// The metrics' values at the end of the run, in the order of the metrics.
+    ///
+    /// # Errors
+    /// The name of a metric whose value is not finite (a run the health check let through
+    /// with an infinite force, say): such a value never reaches the results.
+    pub fn finish(mut self, world: &World, settle_band: f64) -> Result<Vec<f64>, String> {
+        if !world.steps().is_multiple_of(self.settle.stride) {
+            self.settle.take(world);
+        }
+        let budget = if self.peak_energy > 0.0 { self.peak_energy } else { 1.0 };
+        let settle_time = self.settle.time(settle_band);
+        let values: Vec<f64> = self
+            .metrics
+            .iter()
+            .zip(&self.tallies)
+            .map(|(metric, tally)| match metric.measure {
+                Measure::Reduced { reduction, .. } => tally.reduce(reduction),
+                Measure::SettleTime => settle_time,
+                Measure::EnergyError => self.drift / budget,
+            })
+            .collect();
+        match self.metrics.iter().zip(&values).find(|(_, v)| !v.is_finite()) {
+            Some((metric, v)) => Err(format!("metric {} came out {v}", metric.name)),
+            None => Ok(values),
+        }
+    }
+}
+
+impl SettleTrack {
+    fn take(&mut self, world: &World) {
+        self.times.push(world.time());
+        self.positions.extend(self.bodies.iter().map(|&i| world.state(i).position));
+    }
+
+    /// The first sample time after which every body stays within `band` × the largest
+    /// distance from its end position.
+    fn time(&self, band: f64) -> f64 {
+        let n = self.bodies.len();
+        let Some(end) = self.positions.len().checked_sub(n).map(|start| &self.positions[start..]) else { return 0.0 };
+        if n == 0 {
+            return 0.0;
+        }
+        let distance = |k: usize| (0..n).map(|b| (self.positions[k * n + b] - end[b]).norm()).fold(0.0, f64::max);
+        let largest = (0..self.times.len()).map(distance).fold(0.0, f64::max);
+        let limit = band * largest;
+        match (0..self.times.len()).rev().find(|&k| distance(k) > limit) {
+            Some(last_outside) => self.times.get(last_outside + 1).copied().unwrap_or(self.times[last_outside]),
+            None => 0.0,
+        }
+    }
+}
+
+/// The probe's value now.
+fn value(probe: Probe, world: &World, states: &[Option<BodyState>], start: &[(Vec3, Rotation)]) -> f64 {
+    let state = |b: usize| states[b].as_ref();
+    let axis = |v: &Vec3, a: Axis| match a {
+        Axis::X => v.x,
+        Axis::Y => v.y,
+        Axis::Z => v.z,
+    };
+    // Bodies a probe reads were read this step (`Observer::read`).
+    let body = |b: usize, f: &dyn Fn(&BodyState) -> f64| state(b).map_or(0.0, f);
+    match probe {
+        Probe::Tension(c) => world.coupling_forces()[c].tension,
+        Probe::Length(c) => {
+            let forces = &world.coupling_forces()[c];
+            (forces.point2 - forces.point1).norm()
+        }
+        Probe::Position(b, a) => body(b, &|s| axis(&s.position, a)),
+        Probe::Velocity(b, a) => body(b, &|s| axis(&s.velocity, a)),
+        Probe::Speed(b) => body(b, &|s| s.velocity.norm()),
+        Probe::AngularSpeed(b) => body(b, &|s| s.angular_velocity.norm()),
+        Probe::Excursion(b) => body(b, &|s| (s.position - start[b].0).norm()),
+        Probe::Rotation(b) => body(b, &|s| (start[b].1.inverse() * s.orientation).angle()),
+        Probe::Energy(part) => {
+            let e = world.energy();
+            match part {
+                EnergyPart::Kinetic => e.kinetic,
+                EnergyPart::Gravity => e.gravity,
+                EnergyPart::Elastic => e.elastic,
+                EnergyPart::Dissipated => e.dissipated,
+                EnergyPart::ExternalWork => e.external_work,
+                EnergyPart::Total => e.total(),
+                EnergyPart::Balance => e.balance(),
+            }
+        }
+    }
+}

@@ -1,0 +1,73 @@
+//! Sweeps: one scene run thousands of times over a design of factor values, on every core or
+//! as shards of a cluster's job array, each case measured and its row written to disk as it
+//! finishes.
+//!
+//! The way through:
+//! - [`spec`]: the spec file (RON): the base scene, the factors, the design, the metrics;
+//! - [`value_path`]: a factor's path to a value of the scene file, read against the scene's
+//!   serde data, so any section of a scene can be swept;
+//! - [`factor`], [`design`]: the values each factor takes and the cases they make (full grid,
+//!   one at a time, seeded Latin hypercube);
+//! - [`plan`]: all of it checked against the base scene, every case's scene built by the scene
+//!   loader before anything runs;
+//! - [`metrics`], [`case`]: what each case measures and how one case runs;
+//! - [`execute`]: a run into the output directory ([`store`]: manifest, run files, resume),
+//!   on the engine of many cases shared with `tether study` ([`crate::runner`]), in
+//!   [`shard`]s on a cluster, and the merge of the shards;
+//! - [`results`]: the rows in case order written as [`table`] (CSV), [`parquet`],
+//!   [`summary`] (Markdown) and [`plots`] (PNG).
+//!
+//! Re-running a spec gives the same rows bit for bit, serial or parallel, sharded or not: a
+//! case's numbers depend on its values alone (the one exception is `cpu_s`, a measurement). On
+//! a cluster of mixed processors, the physics' vector code is chosen per machine (AVX-512,
+//! AVX2 or SSE2, with the same IEEE operations in each), so the rows agree there too.
+
+pub mod case;
+pub mod design;
+pub mod execute;
+pub mod factor;
+pub mod metrics;
+pub mod parquet;
+pub mod plan;
+pub mod plots;
+pub mod results;
+pub mod shard;
+pub mod spec;
+pub mod store;
+pub mod summary;
+pub mod table;
+pub mod value_path;
+
+pub use execute::{Options, Progress, Report, merge, run};
+pub use plan::Plan;
+use spec::SpecError;
+use tether_scene::SceneError;
+
+/// Why a sweep cannot run or its results cannot be written: one line for the user.
+#[derive(Debug, thiserror::Error)]
+pub enum SweepError {
+    /// The spec is wrong: `spec.ron:line:col: message`, naming the factor or metric.
+    #[error(transparent)]
+    Spec(#[from] SpecError),
+    /// The base scene is wrong: `scene.ron:line:col: message`.
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    /// The scene loader refuses a case's combination of values.
+    #[error("case {case} ({values}): {message}")]
+    Case { case: usize, values: String, message: String },
+    /// The output directory cannot take the sweep, or holds something that is not a sweep's.
+    #[error("{0}")]
+    Directory(String),
+    /// A file that cannot be read or written.
+    #[error("{path}: {message}")]
+    Io { path: String, message: String },
+    /// A merge of a sweep whose cases do not all have a row.
+    #[error("{0}")]
+    Incomplete(String),
+    /// The run was stopped (Ctrl-C) before any case ran.
+    #[error("interrupted while the cases were being checked; nothing was run")]
+    Interrupted,
+    /// A table or chart that cannot be written.
+    #[error("{path}: {message}")]
+    Output { path: String, message: String },
+}

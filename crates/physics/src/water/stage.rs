@@ -1,0 +1,183 @@
+//! The water stage of a force evaluation (PHYSICS.md §6; the stages are listed in
+//! [`crate::water`]): for each floating body, pressure, Morison loads and added mass, recorded
+//! in its [`WaterForces`] and added to its load; returns their power.
+
+use super::added_mass::AddedMass;
+use super::environment::{Water, WaterError, WaterSpec};
+use super::forces::WaterForces;
+use super::hull::{Hull, HullError};
+use super::morison::{Hydro, HydroError, HydroSpec};
+use super::pressure::integrate;
+use super::waves::SeaInstant;
+use crate::body::{BodyFrame, Load, RigidBody};
+use crate::math::Vec3;
+use crate::simd::Level;
+use std::sync::Arc;
+
+/// A body in the water: its index, hull and coefficients.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FloatingBody {
+    pub body: usize,
+    pub hull: Arc<Hull>,
+    pub hydro: Hydro,
+}
+
+/// A body that cannot float, and why.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum FloatingError {
+    #[error(transparent)]
+    Hull(#[from] HullError),
+    #[error(transparent)]
+    Hydro(#[from] HydroError),
+}
+
+impl FloatingBody {
+    /// Body `index` of `bodies` with coefficients `spec`: its hull from its shape.
+    ///
+    /// # Errors
+    /// A shape that is not a closed outward hull, or bad coefficients.
+    pub fn new(bodies: &[RigidBody], index: usize, spec: HydroSpec) -> Result<Self, FloatingError> {
+        let body = &bodies[index];
+        let hull = Hull::of_body(body)?;
+        let hydro = Hydro::new(spec, body, &hull)?;
+        Ok(Self { body: index, hull: Arc::new(hull), hydro })
+    }
+}
+
+/// The water and the bodies in it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WaterStage {
+    pub water: Water,
+    pub floating: Vec<FloatingBody>,
+}
+
+/// The stage's buffers, kept with the evaluation (sized on first use, then reused).
+#[derive(Debug, Clone, Default)]
+pub struct WaterScratch {
+    /// The sea at the evaluation's time.
+    sea: SeaInstant,
+    /// Pressure [Pa] and head below the still level `z_w − z` [m] of each hull vertex.
+    pressures: Vec<f64>,
+    heads: Vec<f64>,
+}
+
+impl WaterStage {
+    /// The stage with `water` replaced by `spec` (a live edit), under gravity `gravity`.
+    ///
+    /// # Errors
+    /// See [`Water::new`].
+    pub fn with_spec(&self, spec: WaterSpec, gravity: &Vec3) -> Result<Self, WaterError> {
+        Ok(Self { water: Water::new(spec, gravity)?, floating: self.floating.clone() })
+    }
+
+    /// The floating entry of body `body`, if it floats.
+    pub fn floating_body(&self, body: usize) -> Option<&FloatingBody> {
+        self.floating.iter().find(|f| f.body == body)
+    }
+
+    /// Stage *water* at `time` [s] and the kinematics `frames`: each floating body's water
+    /// forces into `out` (one per floating body) and added to `loads` (which must hold every
+    /// other force of the evaluation: the added mass reacts to the total); returns their power
+    /// `Σ F·v + M·ω` [W].
+    ///
+    /// Built for AVX2 as well as the portable build, chosen by `level` (the same IEEE
+    /// arithmetic: the same results, bit for bit): the four chains of complex powers of the
+    /// waves' sums run in one vector instruction each.
+    #[allow(clippy::too_many_arguments)]
+    pub fn apply(&self, level: Level, bodies: &[RigidBody], frames: &[BodyFrame], loads: &mut [Load], out: &mut [WaterForces], scratch: &mut WaterScratch, time: f64) -> f64 {
+        match level {
+            // SAFETY: `System::level` only holds a level the processor has; AVX-512 implies AVX2.
+            #[cfg(target_arch = "x86_64")]
+            Level::Avx512 | Level::Avx2 => unsafe { self.apply_avx2(bodies, frames, loads, out, scratch, time) },
+            _ => self.apply_built(bodies, frames, loads, out, scratch, time),
+        }
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn apply_avx2(&self, bodies: &[RigidBody], frames: &[BodyFrame], loads: &mut [Load], out: &mut [WaterForces], scratch: &mut WaterScratch, time: f64) -> f64 {
+        self.apply_built(bodies, frames, loads, out, scratch, time)
+    }
+
+    #[inline(always)]
+    fn apply_built(&self, bodies: &[RigidBody], frames: &[BodyFrame], loads: &mut [Load], out: &mut [WaterForces], scratch: &mut WaterScratch, time: f64) -> f64 {
+        let water = &self.water;
+        let ramp = water.ramp(time);
+        let waves = ramp > 0.0 && !water.sea().is_calm();
+        if waves {
+            water.sea().instant(time, &mut scratch.sea);
+        }
+        let mut power = 0.0;
+        for (floating, record) in self.floating.iter().zip(out.iter_mut()) {
+            let (body, frame) = (&bodies[floating.body], &frames[floating.body]);
+            // A prescribed motion is not moved by forces: the water does nothing to it.
+            if body.is_kinematic() {
+                *record = WaterForces { body: floating.body, ..WaterForces::default() };
+                continue;
+            }
+            *record = self.body_forces(floating, body, frame, &loads[floating.body], scratch, time, ramp, waves);
+            let total = record.total();
+            loads[floating.body].force += total.force;
+            loads[floating.body].moment += total.moment;
+            power += record.power;
+        }
+        power
+    }
+
+    /// The water's forces on one body, whose load from every other force is `load`.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn body_forces(&self, floating: &FloatingBody, body: &RigidBody, frame: &BodyFrame, load: &Load, scratch: &mut WaterScratch, time: f64, ramp: f64, waves: bool) -> WaterForces {
+        let water = &self.water;
+        let hull = &floating.hull;
+        let mut record = WaterForces { body: floating.body, ..WaterForces::default() };
+        // No vertex can be wet: above the highest crest the sea can raise.
+        let crest = if waves { ramp * water.sea().highest_crest() } else { 0.0 };
+        if frame.position.z - hull.bounding_radius() > water.level() + crest {
+            return record;
+        }
+        self.vertex_pressures(hull, frame, scratch, ramp, waves);
+        let integral = integrate(hull, &scratch.pressures, &scratch.heads);
+        let up = frame.rotation.row(2).transpose();
+        record.submerged_volume = (-up.dot(&integral.head_flux)).max(0.0);
+        record.waterplane_area = (-up.dot(&integral.wet_normal)).max(0.0);
+        record.wetted_fraction = (record.submerged_volume / hull.volume()).min(1.0);
+        record.pressure = Load { force: frame.rotation * integral.force, moment: frame.rotation * integral.moment };
+        let hydro = &floating.hydro;
+        let (flow, acceleration) = water.flow(&(frame.position + hydro.drag_arm(&frame.rotation)), time);
+        if record.wetted_fraction > 0.0 {
+            record.drag = hydro.load(frame, &flow, water.density(), record.wetted_fraction);
+            if hydro.has_added_mass() {
+                let added = AddedMass::new(&hydro.axes, &hydro.spec.added_mass, &hydro.spec.added_inertia, hull.volume(), water.density(), record.wetted_fraction);
+                let before = Load { force: load.force + record.pressure.force + record.drag.force, moment: load.moment + record.pressure.moment + record.drag.moment };
+                record.added_mass = added.reaction(body, frame, &before, &acceleration);
+            }
+        }
+        record.power = power(&record.total(), frame);
+        record
+    }
+
+    /// Stage *pressure* of one body: `p = ρ g (z_w − z + r Σ a K_p cos θ)` at each hull vertex,
+    /// once per vertex, and its head `z_w − z`, into the scratch buffers.
+    #[inline(always)]
+    fn vertex_pressures(&self, hull: &Hull, frame: &BodyFrame, scratch: &mut WaterScratch, ramp: f64, waves: bool) {
+        let water = &self.water;
+        let (level, rho_g) = (water.level(), water.specific_weight());
+        let count = hull.vertices().len();
+        scratch.pressures.resize(count, 0.0);
+        scratch.heads.resize(count, 0.0);
+        let each = hull.vertices().iter().zip(scratch.pressures.iter_mut()).zip(scratch.heads.iter_mut());
+        for ((vertex, pressure), head) in each {
+            let x = frame.position + frame.rotation * vertex;
+            *head = level - x.z;
+            let dynamic = if waves { ramp * water.sea().pressure_head(&scratch.sea, x.x, x.y, x.z) } else { 0.0 };
+            *pressure = rho_g * (*head + dynamic);
+        }
+    }
+}
+
+/// `F·v + M·ω` [W] of `load` on a body moving as `frame`.
+#[inline(always)]
+pub fn power(load: &Load, frame: &BodyFrame) -> f64 {
+    load.force.dot(&frame.velocity) + load.moment.dot(&(frame.rotation * frame.angular_velocity))
+}

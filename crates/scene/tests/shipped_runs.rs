@@ -1,0 +1,198 @@
+//! Every shipped scene runs its whole `duration` within the physical bounds declared for it
+//! below: no body's centre of mass leaves its box, the energy balance (PHYSICS.md §5) drifts by
+//! no more than its budget, and the run never diverges (every step healthy, every state finite).
+//!
+//! The boxes are the extents each scene's comment states, with a margin of a few millimetres to
+//! centimetres (about 1 % of the motion): they fail when a scene or the physics changes what the
+//! scene shows. The budgets are the drift a run of the scene's integrator measures, with about
+//! half as much again: the drift is the integrator's error (first order where dampers, contact
+//! dampers or friction work, which the leapfrog books at `v(t − ½dt)`), so a budget this tight
+//! fails when the scheme or a law changes, not when an addition is reordered.
+//!
+//! All shipped scenes together run in about 1 s (release build); none is shortened.
+
+mod common;
+
+use nalgebra::Vector3;
+use tether_physics::world::World;
+
+/// A box `[low, high]` [m] that the G of each body named `bodies` stays in: a body's name, or a
+/// prefix followed by `*`.
+struct Region {
+    bodies: &'static str,
+    low: [f64; 3],
+    high: [f64; 3],
+}
+
+/// What a shipped scene declares: the boxes of its bodies and the budget of its energy balance.
+struct Bounds {
+    /// Path under `scenes/`.
+    scene: &'static str,
+    regions: &'static [Region],
+    /// Largest `|B(t) − B(0)|` [J] allowed, `B = kinetic + gravity + elastic + dissipated −
+    /// external work`.
+    balance_budget: f64,
+}
+
+const fn region(bodies: &'static str, low: [f64; 3], high: [f64; 3]) -> Region {
+    Region { bodies, low, high }
+}
+
+const BOUNDS: &[Bounds] = &[
+    // Heaves, rolls and pitches in the 50-component sea: G between 0.64 m below and 2.48 m above
+    // its start, surging ±1.3 m; the slowly varying wave loads of this seed set it drifting
+    // 12.9 m to −y in 120 s (nothing moors it). Measured drift 2.08 kJ (first-order dampers).
+    Bounds { scene: "barge_in_waves.ron", regions: &[region("barge", [-0.92, -12.9, -0.66], [1.36, 0.42, 2.50])], balance_budget: 3.1e3 },
+    // Dropped 0.5 m, undershoots to −0.428 m, settles at G = 0 (draft 2 m); the heave damper,
+    // along the heeled body's z axis, walks it 0.26 m sideways. Measured drift 30.8 J (first-order dampers).
+    Bounds { scene: "floating_box.ron", regions: &[region("box", [-1e-6, -0.27, -0.44], [1e-6, 1e-6, 0.5 + 1e-6])], balance_budget: 46.0 },
+    // Falls 2 m, sinks at 5.15 m/s, lands on the seabed at z = −30 m (G 2.4 cm into the contact's
+    // range at the first impact), bounces and rests at G = −29.494 m. Measured drift 1.51 kJ,
+    // the contact damper's first-order work at the 17.8 kJ impact.
+    Bounds { scene: "sinking_sphere.ron", regions: &[region("ball", [-0.01, -0.01, -29.53], [0.01, 0.01, 2.5 + 1e-6])], balance_budget: 2.3e3 },
+    // Settles onto the ramp, creeps, then is dragged 20 m down it behind the tug. Measured drift
+    // 2.46 kJ, all of it at the settling impact of the 30 t barge (the contact damper at 5 ms
+    // steps), 0.8 % of its 316 kJ of gravity energy.
+    Bounds {
+        scene: "barge_slipway.ron",
+        regions: &[region("barge", [-20.6, -0.05, -0.35], [0.01, 0.05, 1.08]), region("tug", [-59.51, -0.01, -1.01], [-34.99, 0.01, -0.99])],
+        balance_budget: 3.6e3,
+    },
+    // Released straight, bounded by the slack it can take up; measured drift 0.0107 J (the
+    // springs' first-order dampers) of the 28 J it dissipates.
+    Bounds { scene: "chain.ron", regions: &[region("ball*", [0.12, -1e-9, 2.03], [2.08, 1e-9, 3.04])], balance_budget: 0.016 },
+    // The trolley's 7 m move and the load's ±4.5 m swing under it. Conservative: measured drift
+    // 2.3 mJ of 98 kJ.
+    Bounds {
+        scene: "crane.ron",
+        regions: &[region("tip", [-1e-9, -1e-9, 20.0 - 1e-9], [7.0 + 1e-9, 1e-9, 20.0 + 1e-9]), region("load", [-0.02, -1e-9, 4.28], [11.55, 1e-9, 4.99])],
+        balance_budget: 3.5e-3,
+    },
+    // Dropped from 1 m, hops and comes to rest 3.1 m away on a long face. Measured drift 17.4 J
+    // of the 241 J (the first corner impact at 4.4 m/s: contact damper and friction, first order).
+    Bounds { scene: "box_drop.ron", regions: &[region("crate", [-0.01, -2.22, 0.195], [2.2, 0.01, 1.2 + 1e-9])], balance_budget: 26.0 },
+    // Hangs against the quay, squeezed by 8 cm and released. Measured drift 0.20 J against the
+    // 2.38 kJ the hull puts in.
+    Bounds {
+        scene: "fender.ron",
+        regions: &[region("fender", [0.355, -0.01, -0.025], [0.425, 0.01, 0.005]), region("hull", [2.725 - 1e-9, -1e-9, 0.5 - 1e-9], [3.7 + 1e-9, 1e-9, 0.5 + 1e-9])],
+        balance_budget: 0.3,
+    },
+    // Swings back from its 5 m push, ±3 m in surge under the 8 s wave, heaving 0.73 m below and
+    // 1.18 m above its floating position; no roll or sway in a head sea. Measured drift 14.5 mJ:
+    // the water's work is booked against the half-step velocity (second order).
+    Bounds { scene: "moored_buoy.ron", regions: &[region("buoy", [-2.92, -0.01, -1.70], [5.0 + 1e-9, 0.01, 0.25])], balance_budget: 0.022 },
+    // b swings between x = 18.6 and 22.9 m on the chain and its rope, a moves 0.25 m; z held.
+    // Conservative: measured drift 1.9 mJ of the 2.6 kJ of motion.
+    Bounds {
+        scene: "sagging_chain.ron",
+        regions: &[region("a", [-0.2, -0.85, -1e-9], [0.26, 1.0, 1e-9]), region("b", [18.55, -1.78, -1e-9], [22.96, 1.85, 1e-9])],
+        balance_budget: 3e-3,
+    },
+    // The closed form's envelope: |x − 1| ≤ 0.01 m. Measured drift 2.3e-6 J of the 5 mJ the
+    // first-order damper takes.
+    Bounds { scene: "spring_mass.ron", regions: &[region("mass", [0.99, -1e-9, -1e-9], [1.01 + 1e-9, 1e-9, 1e-9])], balance_budget: 3.5e-6 },
+    // The body dips 53 mm and rebounds 51 mm. Measured drift 0.122 J of the 127 J the dampers
+    // take (first order).
+    Bounds {
+        scene: "suspension.ron",
+        regions: &[region("wheel", [-1e-9, -1e-9, 0.272], [1e-9, 1e-9, 0.32]), region("car", [-1e-9, -1e-9, 0.842], [1e-9, 1e-9, 0.956])],
+        balance_budget: 0.18,
+    },
+    // Torque-free: G stays at the origin. Measured drift 8.4e-8 J of 1.00125 J (leapfrog2).
+    Bounds { scene: "t_handle.ron", regions: &[region("handle", [-1e-9; 3], [1e-9; 3])], balance_budget: 1.3e-7 },
+    // The ball knocks the box 0.167 m on and rolls back. Measured drift 0.097 J of the 12.6 J.
+    Bounds {
+        scene: "two_bodies.ron",
+        regions: &[region("ball", [-1.0 - 1e-9, -0.29, 0.094], [-0.23, 0.01, 0.145]), region("box", [-0.001, 0.035, 0.15], [0.172, 0.06, 0.16])],
+        balance_budget: 0.15,
+    },
+    // 20.2 m of chain across 15 m: it bulges 1.3 m past its anchors; 74 balls land on the soft
+    // ground, sink up to 30 mm and roll up to 0.16 m sideways. Measured drift 821 J of the
+    // 4.28 kJ: contact dampers and friction with c dt/m ≈ 0.2, first order (see its comment).
+    Bounds { scene: "bench/chain100.ron", regions: &[region("ball*", [-1.35, -0.2, 0.015], [16.35, 0.2, 3.1])], balance_budget: 1.2e3 },
+    // Falls 13.5 m at the middle and swings, bulging 1.3 m past its anchors. Measured drift 70 J
+    // (the springs' first-order dampers) of the 3.4 kJ they take.
+    Bounds { scene: "bench/chain100_air.ron", regions: &[region("ball*", [-1.35, -1e-9, 16.45], [16.35, 1e-9, 30.93])], balance_budget: 105.0 },
+];
+
+/// The bounds of the shipped scene at `path`, if declared.
+fn bounds_of(path: &std::path::Path) -> Option<&'static Bounds> {
+    BOUNDS.iter().find(|b| common::repo(&format!("scenes/{}", b.scene)) == path)
+}
+
+#[test]
+fn every_shipped_scene_declares_its_bounds() {
+    let files = common::scene_files();
+    let undeclared: Vec<_> = files.iter().filter(|f| bounds_of(f).is_none()).collect();
+    assert!(undeclared.is_empty(), "declare the bounds of {undeclared:?} in {}", file!());
+    for bounds in BOUNDS {
+        assert!(files.contains(&common::repo(&format!("scenes/{}", bounds.scene))), "no shipped scene {}", bounds.scene);
+    }
+}
+
+/// What a run reached: each body's G extents and the largest energy balance drift.
+struct Reached {
+    low: Vec<Vector3<f64>>,
+    high: Vec<Vector3<f64>>,
+    drift: f64,
+}
+
+/// Runs `world` for `duration` [s], checking every step.
+fn run(world: &mut World, duration: f64) -> Result<Reached, String> {
+    let bodies = world.bodies().len();
+    let start = world.energy().balance();
+    let mut reached = Reached { low: vec![Vector3::repeat(f64::INFINITY); bodies], high: vec![Vector3::repeat(f64::NEG_INFINITY); bodies], drift: 0.0 };
+    let steps = (duration / world.dt()).round() as u64;
+    for _ in 0..steps {
+        world.step().map_err(|e| e.to_string())?;
+        for i in 0..bodies {
+            let state = world.state(i);
+            if !state.is_finite() {
+                return Err(format!("body {i} has a non-finite state at t = {}", world.time()));
+            }
+            reached.low[i] = reached.low[i].inf(&state.position);
+            reached.high[i] = reached.high[i].sup(&state.position);
+        }
+        reached.drift = reached.drift.max((world.energy().balance() - start).abs());
+    }
+    Ok(reached)
+}
+
+/// Where `reached` breaks `bounds` in `world`, one line each.
+fn breaches(bounds: &Bounds, world: &World, reached: &Reached) -> Vec<String> {
+    let mut out = Vec::new();
+    for (i, body) in world.bodies().iter().enumerate() {
+        let matches = |r: &&Region| r.bodies.strip_suffix('*').map_or(r.bodies == body.name, |prefix| body.name.starts_with(prefix));
+        let Some(region) = bounds.regions.iter().find(matches) else {
+            out.push(format!("body \"{}\" has no declared box", body.name));
+            continue;
+        };
+        let (low, high) = (Vector3::from(region.low), Vector3::from(region.high));
+        if (0..3).any(|k| reached.low[i][k] < low[k] || reached.high[i][k] > high[k]) {
+            out.push(format!("body \"{}\" reached {:?} .. {:?}, outside {:?} .. {:?}", body.name, reached.low[i].as_slice(), reached.high[i].as_slice(), region.low, region.high));
+        }
+    }
+    if reached.drift > bounds.balance_budget {
+        out.push(format!("the energy balance drifted by {:.4e} J, over its budget of {:.4e} J", reached.drift, bounds.balance_budget));
+    }
+    out
+}
+
+#[test]
+fn every_shipped_scene_runs_its_duration_within_its_bounds() {
+    let mut failures = Vec::new();
+    for file in common::scene_files() {
+        let Some(bounds) = bounds_of(&file) else { continue };
+        let scene = tether_scene::load(&file).unwrap_or_else(|e| panic!("{e}"));
+        let mut world = scene.world;
+        match run(&mut world, scene.file.duration) {
+            Err(error) => failures.push(format!("{}: {error}", bounds.scene)),
+            Ok(reached) => {
+                assert!(world.time() >= scene.file.duration - 0.5 * world.dt(), "{} ran its whole duration", bounds.scene);
+                failures.extend(breaches(bounds, &world, &reached).into_iter().map(|b| format!("{}: {b}", bounds.scene)));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "\n{}", failures.join("\n"));
+}

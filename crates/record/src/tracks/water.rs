@@ -2,8 +2,12 @@
 //!
 //! - `world/water/surface`: the sea surface, a square grid of [`GRID`]² vertices at the
 //!   elevation the waves give there, around the floating bodies; its triangles and colour are
-//!   static, its vertices a row at each frame while there are waves (a calm sea: a row only when
-//!   its level changes, the first frame included);
+//!   static, its vertices a row at most every [`SURFACE_PERIOD`] of simulated time while there
+//!   are waves (a calm sea: a row only when its level changes, the first frame included). The
+//!   surface is the costliest entity of a water scene — 12 bytes and one wave evaluation per
+//!   vertex and row —: this grid and rate keep it below the physics' cost on the shipped scenes
+//!   (`tether record --timing`) while a wave of the shortest period shipped (8 s) is still drawn
+//!   with a dozen vertices per length and over 150 rows per period;
 //! - `world/water/seabed`: the seabed plane at `z_w − h` under the same square, static, when the
 //!   water has a depth;
 //! - `world/water/forces/<body>`: the water's force on each floating body as an arrow from G,
@@ -24,7 +28,11 @@ use tether_physics::water::waves::SeaInstant;
 use tether_physics::world::World;
 
 /// Vertices along each side of the surface grid.
-pub const GRID: usize = 40;
+pub const GRID: usize = 24;
+
+/// Simulated time between two rows of a moving surface [s], at least: at most 40 per second
+/// (at the default 60 frames per second, every other frame).
+pub const SURFACE_PERIOD: f64 = 1.0 / 40.0;
 
 /// Colour of the surface (red, green, blue, alpha), the seabed, the force arrows.
 const SURFACE_RGBA: [u8; 4] = [40, 110, 190, 150];
@@ -55,6 +63,8 @@ pub(super) struct WaterTrack {
     surface_frames: Vec<usize>,
     /// The level of the calm surface last buffered or sent [m] (`None`: none yet, or waves).
     calm_level: Option<f64>,
+    /// Simulated time of the last surface row [s].
+    surface_time: f64,
     arrows: Vec<([f32; 3], [f32; 3])>,
     motion: Vec<[f64; 2]>,
     angles: Vec<[f64; 2]>,
@@ -89,6 +99,7 @@ impl WaterTrack {
             surface: Vec::new(),
             surface_frames: Vec::new(),
             calm_level: None,
+            surface_time: f64::NEG_INFINITY,
             arrows: Vec::new(),
             motion: Vec::new(),
             angles: Vec::new(),
@@ -107,13 +118,16 @@ impl WaterTrack {
         (self.center[0] - self.half + i as f64 * step, self.center[1] - self.half + j as f64 * step)
     }
 
-    /// Buffers the surface at `frame` if it moved since the last one buffered (`elevation`: the
-    /// waves' at `(x, y)` [m]); returns the bytes.
-    fn capture_surface(&mut self, level: f64, calm: bool, frame: usize, elevation: impl Fn(f64, f64) -> f64) -> usize {
-        if calm && self.calm_level == Some(level) {
+    /// Buffers the surface at `frame` (simulated time `time`) if it moved and
+    /// [`SURFACE_PERIOD`] has passed since the last row (`elevation`: the waves' at `(x, y)`
+    /// [m]); returns the bytes.
+    fn capture_surface(&mut self, level: f64, calm: bool, (time, frame): (f64, usize), elevation: impl Fn(f64, f64) -> f64) -> usize {
+        let unchanged = if calm { self.calm_level == Some(level) } else { time - self.surface_time < SURFACE_PERIOD };
+        if unchanged {
             return 0;
         }
         self.calm_level = calm.then_some(level);
+        self.surface_time = time;
         for n in 0..GRID * GRID {
             let (x, y) = self.grid_point(n);
             self.surface.push([x as f32, y as f32, (level + elevation(x, y)) as f32]);
@@ -161,7 +175,7 @@ impl Track for WaterTrack {
         }
         let ramp = water.ramp(time);
         let elevation = |x: f64, y: f64| if calm { 0.0 } else { ramp * water.sea().pressure_head(&sea, x, y, water.level()) };
-        let mut bytes = self.capture_surface(water.level(), calm, frame, elevation);
+        let mut bytes = self.capture_surface(water.level(), calm, (time, frame), elevation);
         for (floating, stage_body) in self.floating.iter().zip(&stage.floating) {
             let body = &world.bodies()[floating.body];
             let state = world.state(floating.body);

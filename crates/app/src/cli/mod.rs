@@ -7,6 +7,7 @@ mod gui;
 mod record;
 mod study;
 mod sweep;
+mod timing;
 
 use anyhow::Context as _;
 use clap::{Parser, Subcommand};

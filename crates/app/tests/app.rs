@@ -173,7 +173,7 @@ fn the_body_selected_in_the_viewer_is_shown_with_its_state() {
     harness.get_by_label(&velocity);
     harness.get_by_label("(0.0000, 0.0000, 0.0000) rad/s");
 
-    select(&mut harness, "world/couplings/spring");
+    select(&mut harness, "world/springs");
     let start = Instant::now();
     while harness.query_by_label("Selected body: bob").is_some() {
         assert!(start.elapsed() < PATIENCE, "a coupling selected still shows the body");

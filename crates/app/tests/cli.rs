@@ -59,6 +59,25 @@ fn record_refuses_bad_flags_and_unwritable_paths_before_running() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("cannot write /no/such/dir/x.rrd"), "{}", String::from_utf8_lossy(&out.stderr));
 }
 
+/// Face arrows asked for a contact the scene does not have, or over a time span that ends
+/// before it starts, are refused before anything is written, in one line naming what is wrong.
+#[test]
+fn record_refuses_face_arrows_of_unknown_contacts() {
+    let dir = tempfile::tempdir().unwrap();
+    let out_path = dir.path().join("x.rrd");
+    let out_path = out_path.to_str().unwrap();
+    let scene = common::repo("scenes/fender.ron");
+    let scene = scene.to_str().unwrap();
+    let out = tether(&["record", scene, "-o", out_path, "--face-arrows", "quay,pier"]);
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.trim(), "error: no contact named \"pier\" to draw face arrows for (contacts: quay, hull)");
+    let out = tether(&["record", scene, "-o", out_path, "--face-arrows", "all", "--face-arrows-from", "3", "--face-arrows-until", "1"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--face-arrows-until (1 s) is before --face-arrows-from (3 s)"), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(!std::path::Path::new(out_path).exists(), "nothing written");
+}
+
 /// One spring per elastic law, each from the world origin to a fixed body 1.2 m away on x:
 /// the JSON forces are the closed forms.
 #[test]

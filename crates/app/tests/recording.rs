@@ -42,7 +42,8 @@ fn record_writes_every_entity_once_per_frame() {
     let rows = rows_per_entity(&out);
     // dt = 0.5 ms, 50 Hz → a frame every 40 steps, 2000 steps: frames at steps 0, 40, …, 2000.
     let frames = 51;
-    for entity in ["/world/bodies/car", "/world/bodies/wheel", "/world/couplings/tyre", "/world/couplings/suspension", "/plots/tension", "/plots/energy"] {
+    // Both spring-dampers (tyre, suspension) are strips of the one `world/springs` entity.
+    for entity in ["/world/bodies/car", "/world/bodies/wheel", "/world/springs", "/plots/tension", "/plots/energy"] {
         assert_eq!(rows.get(entity), Some(&frames), "{entity}: {rows:?}");
     }
     for entity in ["/world", "/world/bodies/car/shape", "/world/bodies/wheel/shape"] {
@@ -68,22 +69,39 @@ fn catenary_shape_and_end_tensions_are_recorded() {
     let (_dir, out) = record("scenes/crane.ron", &["--duration", "0.5", "--log-hz", "20"]);
     let rows = rows_per_entity(&out);
     // dt = 1 ms, 20 Hz: frames at steps 0, 50, …, 500.
-    for entity in ["/world/couplings/rope", "/plots/catenary/rope", "/plots/tension", "/world/bodies/load"] {
+    for entity in ["/world/couplings/rope", "/plots/catenary", "/plots/tension", "/world/bodies/load"] {
         assert_eq!(rows.get(entity), Some(&11), "{entity}: {rows:?}");
     }
 }
 
+/// The contact force plots are always there; the face arrows only for the contacts and times
+/// asked for.
 #[test]
-fn a_contact_recording_has_its_face_arrows_and_force_plots() {
+fn a_contact_recording_has_its_force_plots_and_the_face_arrows_asked_for() {
+    // dt = 2 ms, 10 Hz → frames at steps 0, 50, …, 2000: 41.
     let (_dir, out) = record("scenes/fender.ron", &["--duration", "4", "--log-hz", "10"]);
     let rows = rows_per_entity(&out);
-    // dt = 2 ms, 10 Hz → frames at steps 0, 50, …, 2000: 41.
-    for entity in ["/world/contacts/quay", "/world/contacts/hull", "/plots/contact/quay", "/plots/contact/hull", "/world/bodies/fender"] {
+    for entity in ["/plots/contact", "/plots/tension", "/world/bodies/fender"] {
         assert_eq!(rows.get(entity), Some(&41), "{entity}: {rows:?}");
     }
+    // Only the arrows' static colour is there.
+    assert!(rows.iter().filter(|(path, _)| path.starts_with("/world/contacts")).all(|(_, &n)| n == 0), "no face arrows by default: {rows:?}");
     assert!(!rows.contains_key("/world/couplings/quay"), "a contact is not drawn as a line: {rows:?}");
     // The fender mesh is logged once, statically.
     assert_eq!(rows.get("/world/bodies/fender/shape"), Some(&0));
+
+    let (_dir, out) = record("scenes/fender.ron", &["--duration", "4", "--log-hz", "10", "--face-arrows", "all"]);
+    let rows = rows_per_entity(&out);
+    for entity in ["/world/contacts/quay", "/world/contacts/hull"] {
+        assert_eq!(rows.get(entity), Some(&41), "{entity}: {rows:?}");
+    }
+
+    // The quay's from t = 1.95 s (between two frames, so that no rounding of t decides): frames
+    // at 2.0, 2.1, …, 4.0 s, 21 of them; none of the hull's.
+    let (_dir, out) = record("scenes/fender.ron", &["--duration", "4", "--log-hz", "10", "--face-arrows", "quay", "--face-arrows-from", "1.95"]);
+    let rows = rows_per_entity(&out);
+    assert_eq!(rows.get("/world/contacts/quay"), Some(&21), "{rows:?}");
+    assert_eq!(rows.get("/world/contacts/hull"), Some(&0), "{rows:?}");
 }
 
 
@@ -151,8 +169,68 @@ fn recorded_values_are_the_worlds() {
     assert!(xs[0] < xs[1] && xs[1] < xs[2], "{xs:?}");
 }
 
+/// The contact force plot holds the forces the step summed, the same as the faces evaluated
+/// again one by one (what the recorder logged before it took the step's): the fender against
+/// the quay and the hull, read back at steps 500, 1000 and 2000 (t = 1, 2, 4 s).
+#[test]
+fn recorded_contact_forces_are_the_faces_sums() {
+    let (_dir, out) = record("scenes/fender.ron", &["--duration", "4", "--log-hz", "10"]);
+    let forces = scalars_by_step(&out, "/plots/contact");
+    let mut world = tether_scene::load(&common::repo("scenes/fender.ron")).unwrap().world;
+    let contacts: Vec<usize> = world.couplings().iter().enumerate().filter(|(_, c)| matches!(c.kind, tether_physics::coupling::CouplingKind::Contact(_))).map(|(i, _)| i).collect();
+    let mut pressed = 0;
+    for step in [500, 1000, 2000] {
+        while world.steps() < step {
+            world.step().unwrap();
+        }
+        let logged = &forces[&(step as i64)];
+        assert_eq!(logged.len(), 2 * contacts.len(), "normal and friction of each contact");
+        for (k, &index) in contacts.iter().enumerate() {
+            let tether_physics::coupling::CouplingKind::Contact(contact) = &world.couplings()[index].kind else { unreachable!("filtered on contacts") };
+            let again = contact.totals(world.frames());
+            // The same faces summed in another order: round-off far below 1e-9 of the normal
+            // force (the physics test holds it to 1e-12).
+            let tolerance = 1e-9 * again.normal.max(1.0);
+            assert!((logged[2 * k] - again.normal).abs() <= tolerance, "step {step}, contact {k}: normal {} logged, {} again", logged[2 * k], again.normal);
+            assert!((logged[2 * k + 1] - again.friction).abs() <= tolerance, "step {step}, contact {k}: friction {} logged, {} again", logged[2 * k + 1], again.friction);
+            pressed += usize::from(again.normal > 0.0);
+        }
+    }
+    assert!(pressed >= 3, "the comparison is of contacts that press ({pressed} of 6)");
+}
+
+/// The water: the moving sea surface each frame (its triangles once), the seabed once, the
+/// buoy's water force and motion plots each frame, the heave read back equal to the world's;
+/// a calm sea's surface once.
+#[test]
+fn the_water_is_recorded() {
+    // dt = 2 ms, 10 Hz: a frame every 50 steps, 0 to 1000: 21.
+    let (_dir, out) = record("scenes/moored_buoy.ron", &["--duration", "2", "--log-hz", "10"]);
+    let rows = rows_per_entity(&out);
+    for entity in ["/world/water/surface", "/world/water/forces/buoy", "/plots/water/buoy/motion", "/plots/water/buoy/angles"] {
+        assert_eq!(rows.get(entity), Some(&21), "{entity}: {rows:?}");
+    }
+    assert_eq!(rows.get("/world/water/seabed"), Some(&0), "static: {rows:?}");
+    let motion = scalars_by_step(&out, "/plots/water/buoy/motion");
+    let mut world = tether_scene::load(&common::repo("scenes/moored_buoy.ron")).unwrap().world;
+    let start = world.state(0).position.z;
+    assert_eq!(motion[&0][1], 0.0, "no heave at t = 0");
+    while world.steps() < 1000 {
+        world.step().unwrap();
+    }
+    let heave = world.state(0).position.z - start;
+    assert!((motion[&1000][1] - heave).abs() <= 1e-12 * start.abs().max(1.0), "heave {} logged, {heave} m in the world", motion[&1000][1]);
+    assert!(heave.abs() > 1e-3, "the buoy moved in the waves: {heave} m");
+
+    // dt = 10 ms, 10 Hz: 21 frames; the calm surface once.
+    let (_dir, out) = record("scenes/floating_box.ron", &["--duration", "2", "--log-hz", "10"]);
+    let rows = rows_per_entity(&out);
+    assert_eq!(rows.get("/world/water/surface"), Some(&1), "{rows:?}");
+    assert_eq!(rows.get("/plots/water/box/motion"), Some(&21), "{rows:?}");
+}
+
 /// The moored buoy's chains on the seabed: each line's grounded part and touchdown are drawn and
-/// its grounded length plotted every frame, and the plotted `L_B` is the world's at steps 1000,
+/// the grounded lengths plotted every frame (one series per line), and mooring1's plotted `L_B` is the world's at steps 1000,
 /// 2000 and 3000 (t = 2, 4, 6 s, the buoy swinging back from its push).
 #[test]
 fn grounded_lines_are_drawn_marked_and_their_grounded_length_plotted() {
@@ -160,11 +238,12 @@ fn grounded_lines_are_drawn_marked_and_their_grounded_length_plotted() {
     let rows = rows_per_entity(&out);
     // dt = 2 ms, 10 Hz: a frame every 50 steps, 0 to 3000.
     for line in ["mooring1", "mooring2", "mooring3"] {
-        for entity in [format!("/world/seabed/grounded/{line}"), format!("/world/seabed/touchdowns/{line}"), format!("/plots/seabed/{line}")] {
+        for entity in [format!("/world/seabed/grounded/{line}"), format!("/world/seabed/touchdowns/{line}")] {
             assert_eq!(rows.get(&entity), Some(&61), "{entity}: {rows:?}");
         }
     }
-    let grounded = scalars_by_step(&out, "/plots/seabed/mooring1");
+    assert_eq!(rows.get("/plots/seabed"), Some(&61), "{rows:?}");
+    let grounded = scalars_by_step(&out, "/plots/seabed");
     let mut world = tether_scene::load(&common::repo("scenes/moored_buoy.ron")).unwrap().world;
     let mut lengths = Vec::new();
     for step in [1000, 2000, 3000] {
@@ -172,6 +251,7 @@ fn grounded_lines_are_drawn_marked_and_their_grounded_length_plotted() {
             world.step().unwrap();
         }
         let expected = world.line_state(0).expect("a solved line").grounded_length();
+        assert_eq!(grounded[&(step as i64)].len(), 3, "a series per line");
         let logged = grounded[&(step as i64)][0];
         // Scalars are logged as f64: the same number.
         assert_eq!(logged, expected, "step {step}");

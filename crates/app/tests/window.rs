@@ -97,7 +97,7 @@ fn with_connect_the_window_streams_its_runs_to_an_external_viewer() {
     let recordings: Vec<_> = stores.keys().filter(|id| id.is_recording()).collect();
     assert!(!recordings.is_empty() && recordings.iter().all(|id| id.application_id().to_string() == "tether"), "{recordings:?}");
     assert!(x11::has_entity(&received, "/world/bodies/mass"), "the body's poses reached the receiver");
-    assert!(x11::has_entity(&received, "/world/couplings/spring"), "the spring's line reached the receiver");
+    assert!(x11::has_entity(&received, "/world/springs"), "the spring's line reached the receiver");
     let simulated = x11::sim_time_in(&stores);
     assert!(simulated > 1.0, "Space played the scene for about 3 s; the receiver got up to {simulated} s (last seen {last} s)");
 }

@@ -4,6 +4,7 @@
 
 use crate::body::{BodyFrame, Load};
 use crate::coupling::catenary::LineState;
+use crate::coupling::contact::ContactForces;
 use crate::coupling::{Coupling, CouplingCache, CouplingForces};
 use crate::water::{WaterForces, WaterScratch};
 
@@ -78,11 +79,12 @@ impl Evaluation {
         }
     }
 
-    /// `Σ |f_n|` [N] of contact coupling `index` at the last evaluation (0 for another kind).
-    pub fn normal_force(&self, index: usize) -> f64 {
+    /// The normal force and friction of contact coupling `index` at the last evaluation, as the
+    /// step summed them (`None` for another kind).
+    pub fn contact_forces(&self, index: usize) -> Option<ContactForces> {
         match self.caches.get(index) {
-            Some(CouplingCache::Contact(cache)) => cache.normal_force,
-            _ => 0.0,
+            Some(CouplingCache::Contact(cache)) => Some(cache.forces),
+            _ => None,
         }
     }
 }

@@ -37,7 +37,7 @@
 
 use crate::body::{BodyFrame, BodyState};
 use crate::coupling::contact::estimator::STEPS_PER_STOPPING_TIME;
-use crate::coupling::{CouplingKind, Endpoint};
+use crate::coupling::{Contact, CouplingKind, Endpoint};
 use crate::evaluation::Evaluation;
 use crate::integrator::Integrator;
 use crate::math::Vec3;
@@ -172,18 +172,10 @@ pub fn limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
                 let inverse: f64 = [Some(contact.body), contact.other_body()].into_iter().flatten().map(|i| translational_inverse_mass(system, i)).sum();
                 let area = contact.limit_area(frames);
                 let normal = oscillator_limit(integrator, contact.law.stiffness * area, contact.law.damping * area, inverse);
-                let friction = contact.law.friction * contact.law.friction_sharpness * evaluation.normal_force(index);
-                // Friction acts across the surface at the faces in contact: it turns the bodies
-                // as much as it pushes them.
-                let faces = contact.active_faces(frames);
-                let frame = &frames[contact.body];
-                let on_body = faces.iter().map(|face| face.centroid);
-                let mut sliding_inverse = translational_inverse_mass(system, contact.body) + turning_inverse_mass(system, contact.body, on_body);
-                if let Some(other) = contact.other_body() {
-                    let to_other = |c: Vec3| frames[other].rotation.tr_mul(&(frame.position + frame.rotation * c - frames[other].position));
-                    sliding_inverse += translational_inverse_mass(system, other) + turning_inverse_mass(system, other, faces.iter().map(|face| to_other(face.centroid)));
-                }
-                normal.min(oscillator_limit(integrator, 0.0, friction, sliding_inverse))
+                let friction = contact.law.friction * contact.law.friction_sharpness * evaluation.contact_forces(index).map_or(0.0, |forces| forces.normal);
+                // Without a normal force friction damps nothing (an infinite limit): the faces
+                // need not be evaluated again.
+                if friction > 0.0 { normal.min(oscillator_limit(integrator, 0.0, friction, sliding_inverse_mass(system, frames, contact))) } else { normal }
             }
         };
         if dt.is_finite() {
@@ -262,6 +254,21 @@ pub fn impact_limits(situation: &Situation) -> Vec<Limit> {
 /// The smallest limit, if any.
 pub fn binding(limits: &[Limit]) -> Option<Limit> {
     limits.iter().copied().min_by(|a, b| a.dt.total_cmp(&b.dt))
+}
+
+/// The inverse effective mass [1/kg] that friction sees at the faces of `contact` in contact at
+/// the kinematics `frames`: friction acts across the surface there, so it turns the bodies as
+/// much as it pushes them.
+fn sliding_inverse_mass(system: &System, frames: &[BodyFrame], contact: &Contact) -> f64 {
+    let faces = contact.active_faces(frames);
+    let frame = &frames[contact.body];
+    let on_body = faces.iter().map(|face| face.centroid);
+    let mut sliding_inverse = translational_inverse_mass(system, contact.body) + turning_inverse_mass(system, contact.body, on_body);
+    if let Some(other) = contact.other_body() {
+        let to_other = |c: Vec3| frames[other].rotation.tr_mul(&(frame.position + frame.rotation * c - frames[other].position));
+        sliding_inverse += translational_inverse_mass(system, other) + turning_inverse_mass(system, other, faces.iter().map(|face| to_other(face.centroid)));
+    }
+    sliding_inverse
 }
 
 /// `1/m` [1/kg] of a body that responds to forces, 0 for a kinematic one.

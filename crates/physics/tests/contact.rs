@@ -5,6 +5,7 @@ mod common;
 
 use approx::assert_relative_eq;
 use common::scene;
+use tether_physics::coupling::CouplingKind;
 use tether_physics::world::World;
 use tether_physics::math::{Mat3, Vec3};
 
@@ -187,6 +188,43 @@ fn with_friction_the_energy_balance_holds_and_energy_falls() {
     let e = world.energy();
     assert!(e.total() < e0 * (1.0 - 1e-3), "friction must take energy out: {} → {}", e0, e.total());
     assert_relative_eq!(e.balance(), e0, max_relative = 1e-4);
+}
+
+/// The normal force and friction a contact keeps from its step are those of its faces
+/// evaluated again one by one: against two walls at once (where the friction comes from the
+/// sums, `Σ f_f − Σ_p n_p N_p`, not from a sum over the faces) and against another body.
+#[test]
+fn a_contact_keeps_the_forces_its_step_summed() {
+    // A spinning ball thrown into the corner of the walls x = 0.5 and y = 0.5 m, meeting both at
+    // once (the same distance to go at the same speed along x and y).
+    let corner = scene(
+        "Scene(gravity: (0.0, 0.0, 0.0), dt: 1e-5, bodies: [Body(name: \"ball\",
+            master: Node(position: (0.38, 0.38, 0.0), mass: 1.0, inertia: Inertia(xx: 0.004, yy: 0.004, zz: 0.004)),
+            velocity: (1.0, 1.0, 0.3), angular_velocity: (3.0, -2.0, 20.0), shape: Sphere(radius: 0.1))],
+        couplings: [Contact(name: \"walls\", body: \"ball\", against: DomainBox(min: (-0.5, -0.5, -0.5), max: (0.5, 0.5, 0.5)),
+            stiffness: 1e7, damping: 1e3, range: 0.005, friction: 0.4, friction_sharpness: 50.0)])",
+    )
+    .world;
+    for mut world in [corner, two_balls(0.5, 2000.0)] {
+        let mut sliding = 0;
+        // The balls meet after about 6,700 steps; every 10th step is compared.
+        for step in 0..20_000 {
+            world.step().expect("contact always gives a force");
+            if step % 10 != 0 {
+                continue;
+            }
+            let CouplingKind::Contact(contact) = &world.couplings()[0].kind else { panic!("coupling 0 is a contact") };
+            let again = contact.totals(world.frames());
+            let kept = world.evaluation().contact_forces(0).expect("a contact keeps its forces");
+            // The same faces summed in another order (lanes, then across them): a few ulp of the
+            // largest sum, far below 1e-12 of it. The friction is a difference of sums as large
+            // as the normal force, so its round-off is relative to that force.
+            assert_relative_eq!(kept.normal, again.normal, max_relative = 1e-12);
+            assert_relative_eq!(kept.friction, again.friction, epsilon = 1e-12 * again.normal);
+            sliding += usize::from(again.friction > 1e-3 * again.normal);
+        }
+        assert!(sliding > 20, "{sliding} compared steps with friction");
+    }
 }
 
 #[test]

@@ -6,18 +6,19 @@
 //! | `world` | view coordinates (right-handed, z up) |
 //! | `world/bodies/<name>` | a body's pose: G and its principal axes |
 //! | `world/bodies/<name>/shape`, `…/nodes` | its static shape and slave nodes |
-//! | `world/couplings/<name>` | a spring's or a line's drawing |
+//! | `world/springs` | every spring-damper's line, one strip each |
+//! | `world/couplings/<name>` | a catenary's shape |
 //! | `world/contacts/<name>` | a contact's face forces |
 //! | `plots/energy` | the energy balance |
 //! | `plots/tension` | every coupling's tension |
-//! | `plots/catenary/<name>` | a catenary's end tensions |
-//! | `plots/contact/<name>` | a contact's normal force and friction |
+//! | `plots/catenary` | every catenary's end tensions |
+//! | `plots/contact` | every contact's normal force and friction |
 //! | `world/water/surface`, `world/water/seabed` | the sea surface, the seabed plane |
 //! | `world/water/forces/<body>` | the water's force on a floating body |
 //! | `plots/water/<body>/motion`, `…/angles` | wave elevation and heave; roll and pitch |
 //! | `world/seabed/plane` | the seabed of a scene without water |
 //! | `world/seabed/grounded/<line>`, `world/seabed/touchdowns/<line>` | a line's part on the bottom, its touchdowns |
-//! | `plots/seabed/<line>` | a line's grounded length |
+//! | `plots/seabed` | every line's grounded length, a series named after it |
 
 use tether_physics::coupling::{Coupling, CouplingKind};
 
@@ -25,14 +26,16 @@ use tether_physics::coupling::{Coupling, CouplingKind};
 pub const WORLD: &str = "world";
 /// Where the bodies are.
 pub const BODIES: &str = "world/bodies";
+/// Every spring-damper's line, one strip each in scene order.
+pub const SPRINGS: &str = "world/springs";
 /// The energy plot.
 pub const ENERGY: &str = "plots/energy";
 /// Every coupling's tension, one series each.
 pub const TENSION: &str = "plots/tension";
-/// The catenaries' end tension plots.
-pub const CATENARY_PLOTS: &str = "plots/catenary";
-/// The contacts' force plots.
-pub const CONTACT_PLOTS: &str = "plots/contact";
+/// Every catenary's end tensions, two series each.
+pub const CATENARY_PLOT: &str = "plots/catenary";
+/// Every contact's normal force and friction, two series each.
+pub const CONTACT_PLOT: &str = "plots/contact";
 
 /// The sea surface.
 pub const WATER_SURFACE: &str = "world/water/surface";
@@ -43,8 +46,8 @@ pub const WATER_PLOTS: &str = "plots/water";
 
 /// The seabed plane of a scene without water.
 pub const SEABED_PLANE: &str = "world/seabed/plane";
-/// The lines' grounded length plots.
-pub const SEABED_PLOTS: &str = "plots/seabed";
+/// Every line's grounded length, a series each.
+pub const SEABED_PLOT: &str = "plots/seabed";
 
 /// `world/seabed/grounded/<line>`: the part of a line on the bottom.
 pub fn grounded_line(line: &str) -> String {
@@ -54,11 +57,6 @@ pub fn grounded_line(line: &str) -> String {
 /// `world/seabed/touchdowns/<line>`.
 pub fn touchdowns(line: &str) -> String {
     format!("world/seabed/touchdowns/{line}")
-}
-
-/// `plots/seabed/<line>`.
-pub fn seabed_plot(line: &str) -> String {
-    format!("{SEABED_PLOTS}/{line}")
 }
 
 /// `world/water/forces/<body>`.
@@ -86,23 +84,15 @@ pub fn body_nodes(name: &str) -> String {
     format!("{BODIES}/{name}/nodes")
 }
 
-/// Where a coupling is drawn: `world/contacts/<name>` for a contact (its face forces),
-/// `world/couplings/<name>` for the others (a line).
+/// Where a coupling is drawn: [`SPRINGS`] for a spring-damper (one strip among all of
+/// them), `world/couplings/<name>` for a catenary (its shape), `world/contacts/<name>` for a
+/// contact (its face forces).
 pub fn coupling(coupling: &Coupling) -> String {
     match coupling.kind {
+        CouplingKind::SpringDamper(_) => SPRINGS.to_string(),
+        CouplingKind::Catenary(_) => format!("world/couplings/{}", coupling.name),
         CouplingKind::Contact(_) => format!("world/contacts/{}", coupling.name),
-        CouplingKind::SpringDamper(_) | CouplingKind::Catenary(_) => format!("world/couplings/{}", coupling.name),
     }
-}
-
-/// `plots/catenary/<name>`.
-pub fn catenary_plot(name: &str) -> String {
-    format!("{CATENARY_PLOTS}/{name}")
-}
-
-/// `plots/contact/<name>`.
-pub fn contact_plot(name: &str) -> String {
-    format!("{CONTACT_PLOTS}/{name}")
 }
 
 /// The body an entity path (`world/bodies/<name>` or below, with or without a leading `/`)

@@ -57,19 +57,8 @@ const GOOD: &str = r#"Scene(
 )
 "#;
 
-fn error_of(text: &str) -> String {
-    match scene::parse(text, Path::new("bad.ron")) {
-        Ok(_) => panic!("accepted:\n{text}"),
-        Err(e) => e.to_string(),
-    }
-}
-
 fn assert_error(edit: (&str, &str), expected: &str) {
-    assert!(GOOD.contains(edit.0), "edit target {:?} missing", edit.0);
-    let text = GOOD.replacen(edit.0, edit.1, 1);
-    let error = error_of(&text);
-    assert!(error.starts_with(expected), "expected {expected:?}…, got {error:?}");
-    assert_eq!(error.lines().count(), 1, "{error}");
+    common::assert_edit_error(GOOD, edit, expected);
 }
 
 #[test]

@@ -3,7 +3,6 @@
 
 mod common;
 
-use std::path::Path;
 use tether_physics::water::WaveSpec;
 use tether_scene as scene;
 
@@ -28,18 +27,8 @@ const GOOD: &str = r#"Scene(
 )
 "#;
 
-fn error_of(text: &str) -> String {
-    match scene::parse(text, Path::new("bad.ron")) {
-        Ok(_) => panic!("accepted:\n{text}"),
-        Err(e) => e.to_string(),
-    }
-}
-
 fn assert_error(edit: (&str, &str), expected: &str) {
-    assert!(GOOD.contains(edit.0), "edit target {:?} missing", edit.0);
-    let error = error_of(&GOOD.replacen(edit.0, edit.1, 1));
-    assert!(error.starts_with(expected), "expected {expected:?}…, got {error:?}");
-    assert_eq!(error.lines().count(), 1, "{error}");
+    common::assert_edit_error(GOOD, edit, expected);
 }
 
 #[test]
@@ -88,7 +77,7 @@ fn bad_water_is_refused_at_its_field() {
     assert_error(("speed: 0.5", "speed: NaN"), "bad.ron:6:36: number must be finite, got NaN");
     assert_error(("ramp: 10.0", "ramp: -1.0"), "bad.ron:8:9: water: ramp must be ≥ 0 s, got -1");
     let deep_power_law = GOOD.replace("        depth: 30.0,\n", "").replace("heading_deg: 90.0)", "heading_deg: 90.0, profile: PowerLaw)");
-    assert_eq!(error_of(&deep_power_law), "bad.ron:5:57: water: a power-law current needs a depth (it is zero at the seabed)");
+    assert_eq!(common::error_of(&deep_power_law), "bad.ron:5:57: water: a power-law current needs a depth (it is zero at the seabed)");
 }
 
 #[test]
@@ -98,7 +87,7 @@ fn bad_coefficients_and_hulls_are_refused_naming_the_body() {
     let fixture = |name: &str| common::here(&format!("fixtures/{name}")).display().to_string();
     for (file, expected) in [("open_box.obj", "the hull is open"), ("flat.obj", "the hull encloses no volume"), ("cube_inward.stl", "the hull is inside out")] {
         let text = GOOD.replace("Box(size: (2.0, 2.0, 1.0))", &format!("Mesh(file: {:?})", fixture(file)));
-        let error = error_of(&text);
+        let error = common::error_of(&text);
         assert!(error.contains("body \"box\"") && error.contains(expected) && error.starts_with("bad.ron:14:"), "{error}");
     }
 }

@@ -9,6 +9,7 @@ mod offsets;
 mod record;
 mod study;
 mod sweep;
+mod timing;
 
 use anyhow::Context as _;
 use clap::{Parser, Subcommand};

@@ -3,6 +3,10 @@
 //! The run stops cleanly — the recording complete up to there, footer written — when it ends,
 //! when the simulation diverges (exit 1, with the body, the time and the stable time step), and
 //! on Ctrl-C or SIGTERM (exit 130).
+//!
+//! `--face-arrows` draws contacts' face forces (none by default: they are the costliest kind of
+//! entity, and the contact force plots are always there); `--timing` reports where the time
+//! went and what each kind of entity costs per frame.
 
 use anyhow::{Context as _, bail};
 use clap::Args;
@@ -12,7 +16,7 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use tether_physics::integrator::Integrator;
 use tether_physics::world::StepError;
-use tether_record::Recorder;
+use tether_record::{ArrowedContacts, FaceArrows, Recorder};
 
 #[derive(Debug, Args)]
 pub struct RecordArgs {
@@ -33,6 +37,20 @@ pub struct RecordArgs {
     /// Integrator, as named in scene files (default: the scene's).
     #[arg(long, value_parser = parse_integrator)]
     integrator: Option<Integrator>,
+    /// Draw the face forces of these contacts as arrows: `all`, or names separated by commas
+    /// (default: none; the contact force plots are always recorded).
+    #[arg(long, value_name = "all|NAME,...", value_parser = parse_contacts)]
+    face_arrows: Option<ArrowedContacts>,
+    /// Draw the face arrows from this simulated time on [s].
+    #[arg(long, value_name = "S", requires = "face_arrows")]
+    face_arrows_from: Option<f64>,
+    /// Draw the face arrows up to this simulated time [s].
+    #[arg(long, value_name = "S", requires = "face_arrows")]
+    face_arrows_until: Option<f64>,
+    /// Report the time spent in the physics and in the recording, and the bytes per frame of
+    /// each kind of entity.
+    #[arg(long)]
+    timing: bool,
 }
 
 /// How a recording run ended.
@@ -47,6 +65,33 @@ pub(super) fn parse_integrator(name: &str) -> Result<Integrator, String> {
         let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.name()).collect();
         format!("unknown integrator `{name}`, expected one of {}", names.join(", "))
     })
+}
+
+/// `all`, or contact names separated by commas.
+fn parse_contacts(text: &str) -> Result<ArrowedContacts, String> {
+    if text == "all" {
+        return Ok(ArrowedContacts::All);
+    }
+    let names: Vec<String> = text.split(',').map(|name| name.trim().to_string()).collect();
+    if names.iter().any(String::is_empty) {
+        return Err(format!("expected `all` or contact names separated by commas, got `{text}`"));
+    }
+    Ok(ArrowedContacts::Named(names))
+}
+
+/// The face arrows the flags ask for.
+fn face_arrows(args: &RecordArgs) -> anyhow::Result<FaceArrows> {
+    for (name, time) in [("--face-arrows-from", args.face_arrows_from), ("--face-arrows-until", args.face_arrows_until)] {
+        if let Some(time) = time.filter(|t| !t.is_finite()) {
+            bail!("{name} must be a time in seconds, got {time}");
+        }
+    }
+    if let (Some(from), Some(until)) = (args.face_arrows_from, args.face_arrows_until)
+        && until < from
+    {
+        bail!("--face-arrows-until ({until} s) is before --face-arrows-from ({from} s)");
+    }
+    Ok(FaceArrows { contacts: args.face_arrows.clone().unwrap_or_default(), from: args.face_arrows_from, until: args.face_arrows_until })
 }
 
 fn positive(name: &str, value: f64, unit: &str) -> anyhow::Result<f64> {
@@ -77,12 +122,15 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     let dt = world.dt();
     let total_steps = (duration / dt).round().max(1.0) as u64;
     let steps_per_frame = ((1.0 / (log_hz * dt)).round() as u64).max(1);
-    let recorder = Recorder::to_file(&args.output, world).with_context(|| format!("cannot write {}", args.output.display()))?;
+    let face_arrows = face_arrows(args)?;
+    face_arrows.check(world)?;
+    let mut recorder = Recorder::to_file(&args.output, world, &face_arrows).with_context(|| format!("cannot write {}", args.output.display()))?;
     let interrupted = Arc::new(AtomicBool::new(false));
     let flag = Arc::clone(&interrupted);
     ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst)).context("installing the Ctrl-C / SIGTERM handler")?;
 
-    recorder.log_frame(world)?;
+    let mut stopwatch = super::timing::Stopwatch::start();
+    stopwatch.recorder(|| recorder.log_frame(world))?;
     let progress = ProgressBar::new(total_steps).with_style(
         ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} steps  {msg}").expect("the template is a valid literal"),
     );
@@ -96,13 +144,18 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
             break;
         }
         if step % steps_per_frame == 0 || step == total_steps {
-            recorder.log_frame(world)?;
+            stopwatch.recorder(|| recorder.log_frame(world))?;
             progress.set_position(step);
             progress.set_message(format!("t = {:.3} s", world.time()));
         }
     }
     progress.finish_and_clear();
-    recorder.finish()?;
+    let stats = stopwatch.recorder(|| recorder.finish())?;
+    if args.timing {
+        let file_bytes = std::fs::metadata(&args.output).map_or(0, |m| m.len());
+        let measured = super::timing::Measured { stats: &stats, simulated: world.time(), steps: world.steps(), file_bytes };
+        eprint!("{}", stopwatch.report(&measured));
+    }
     let output = args.output.display();
     if let Some(error) = failure {
         bail!("{error}\nthe recording {output} holds everything up to the last healthy frame");

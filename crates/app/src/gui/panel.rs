@@ -37,11 +37,14 @@ const SETTLE: Duration = Duration::from_millis(150);
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Settings {
     pub speed: Speed,
+    /// Whether the contacts' face forces are drawn as arrows.
+    #[serde(default)]
+    pub face_arrows: bool,
 }
 
 impl Default for Settings {
     fn default() -> Self {
-        Self { speed: Speed::Factor(1.0) }
+        Self { speed: Speed::Factor(1.0), face_arrows: false }
     }
 }
 
@@ -221,6 +224,7 @@ impl ControlPanel {
         self.scene = Some(loaded.scene);
         self.simulation.send(Command::Load(Box::new(loaded.run)));
         self.simulation.send(Command::SetSpeed(self.settings.speed));
+        self.simulation.send(Command::SetFaceArrows(self.settings.face_arrows));
     }
 
     /// Stops the simulation thread and flushes its recording.
@@ -241,7 +245,7 @@ impl ControlPanel {
                 self.scene_action(action);
             }
             ui.separator();
-            let actions = run_controls::ui(ui, self.status.as_ref(), &mut self.timing, &mut self.settings.speed);
+            let actions = run_controls::ui(ui, self.status.as_ref(), &mut self.timing, &mut self.settings.speed, &mut self.settings.face_arrows);
             for action in actions {
                 self.run_action(action);
             }
@@ -375,6 +379,7 @@ impl ControlPanel {
                 Command::Reset
             }
             RunAction::Speed(speed) => Command::SetSpeed(speed),
+            RunAction::FaceArrows(on) => Command::SetFaceArrows(on),
             RunAction::ApplyTiming => match self.checked_timing() {
                 Ok(timing) => Command::SetTiming(timing),
                 Err(message) => return self.timing.refusal = Some(message),

@@ -14,6 +14,8 @@ pub enum RunAction {
     Step,
     Reset,
     Speed(Speed),
+    /// Draw the contacts' face forces as arrows in the viewer (or not).
+    FaceArrows(bool),
     /// Apply the [`TimingDraft`].
     ApplyTiming,
 }
@@ -57,7 +59,7 @@ impl TimingDraft {
 const FACTORS: [f64; 7] = [0.1, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0];
 
 /// Draws the controls; `status` is the simulation's latest.
-pub fn ui(ui: &mut egui::Ui, status: Option<&Status>, timing: &mut TimingDraft, speed: &mut Speed) -> Vec<RunAction> {
+pub fn ui(ui: &mut egui::Ui, status: Option<&Status>, timing: &mut TimingDraft, speed: &mut Speed, face_arrows: &mut bool) -> Vec<RunAction> {
     let mut actions = Vec::new();
     let running = status.is_some_and(|s| s.running);
     ui.horizontal(|ui| {
@@ -84,6 +86,11 @@ pub fn ui(ui: &mut egui::Ui, status: Option<&Status>, timing: &mut TimingDraft, 
     if let Some(new) = speed_ui(ui, *speed) {
         *speed = new;
         actions.push(RunAction::Speed(new));
+    }
+    if status.is_some_and(|s| !s.contacts.is_empty())
+        && ui.checkbox(face_arrows, "Face forces as arrows").on_hover_text("Each contact's face forces drawn in the viewer, from now on (the contact force plots are always there)").changed()
+    {
+        actions.push(RunAction::FaceArrows(*face_arrows));
     }
     if timing_ui(ui, timing) {
         actions.push(RunAction::ApplyTiming);

@@ -37,7 +37,7 @@ pub fn table(system: &System, curve: &OffsetCurve) -> Table {
                         row.extend([t1, t2, line.map_or(f64::NAN, |l| l.grounded_length())]);
                     }
                     CouplingKind::SpringDamper(_) => row.push(forces.tension),
-                    CouplingKind::Contact(_) => row.push(point.evaluation.normal_force(index)),
+                    CouplingKind::Contact(_) => row.push(point.evaluation.contact_forces(index).map_or(f64::NAN, |f| f.normal)),
                 }
             }
             row

@@ -66,7 +66,7 @@ pub fn equilibrium(system: &System, equilibrium: &Equilibrium, start: &[BodyStat
                 let _ = writeln!(out, "tension {:.6e} N at length {:.6} m", forces.tension, (forces.point2 - forces.point1).norm());
             }
             CouplingKind::Contact(_) => {
-                let _ = writeln!(out, "normal force {:.6e} N", equilibrium.evaluation.normal_force(index));
+                let _ = writeln!(out, "normal force {:.6e} N", equilibrium.evaluation.contact_forces(index).map_or(f64::NAN, |f| f.normal));
             }
         }
     }

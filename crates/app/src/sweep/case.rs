@@ -95,9 +95,9 @@ pub enum CaseError {
 pub fn run(mut world: World, duration: f64, metrics: &[Metric], settle_band: f64, watch: &Watch<'_>, recording: Option<&Recording<'_>>) -> Result<Outcome, CaseError> {
     let dt = world.dt();
     let total_steps = (duration / dt).round().max(1.0) as u64;
-    let recorder = recording.map(|r| Recorder::to_file_as(&r.path, &world, r.application, &r.id).map_err(|e| CaseError::Recording(unwritable(r, &e)))).transpose()?;
+    let mut recorder = recording.map(|r| Recorder::to_file_as(&r.path, &world, r.application, &r.id).map_err(|e| CaseError::Recording(unwritable(r, &e)))).transpose()?;
     let frame_every = recording.map_or(u64::MAX, |r| ((1.0 / (r.log_hz * dt)).round() as u64).max(1));
-    let log = |world: &World| recorder.as_ref().map_or(Ok(()), |rec| rec.log_frame(world)).map_err(|e| recording.map_or_else(String::new, |r| unwritable(r, &e)));
+    let mut log = |world: &World| recorder.as_mut().map_or(Ok(()), |rec| rec.log_frame(world)).map_err(|e| recording.map_or_else(String::new, |r| unwritable(r, &e)));
     log(&world).map_err(CaseError::Recording)?;
     let cpu_start = thread_cpu_seconds();
     let mut observer = Observer::new(metrics, &world, total_steps);
@@ -112,7 +112,7 @@ pub fn run(mut world: World, duration: f64, metrics: &[Metric], settle_band: f64
             break;
         }
         observer.observe(&world);
-        if step % frame_every == 0 || (step == total_steps && recorder.is_some()) {
+        if step % frame_every == 0 || (step == total_steps && recording.is_some()) {
             log(&world).map_err(CaseError::Recording)?;
         }
         if step % WATCH_EVERY == 0 {

@@ -196,15 +196,22 @@ impl BoundaryMesh {
     /// # Errors
     /// A shape mesh that is not a valid boundary (see [`BoundaryMesh::new`]).
     pub fn of_body(body: &RigidBody) -> Result<Self, MeshError> {
-        let (vertices, triangles) = match &body.shape {
-            Shape::Box { size, center, subdivisions } => primitives::cuboid(size, center, *subdivisions),
-            Shape::Sphere { radius, center, subdivisions } => primitives::icosphere(*radius, center, *subdivisions),
-            Shape::Cylinder { radius, length, axis, center } => primitives::cylinder(*radius, *length, axis, center),
-            Shape::Mesh { vertices, triangles } => (vertices.clone(), triangles.clone()),
-        };
-        let to_principal = &body.reference_in_principal;
-        Self::new(vertices.iter().map(|v| to_principal.transform_point(&(*v).into()).coords).collect(), triangles)
+        let (vertices, triangles) = shape_in_principal_frame(body);
+        Self::new(vertices, triangles)
     }
+}
+
+/// The triangles of `body`'s shape (a primitive meshed, or its mesh) with their vertices in the
+/// body's principal frame [m]: what its contact boundary and its hull are built from.
+pub fn shape_in_principal_frame(body: &RigidBody) -> (Vec<Vec3>, Vec<[u32; 3]>) {
+    let (vertices, triangles) = match &body.shape {
+        Shape::Box { size, center, subdivisions } => primitives::cuboid(size, center, *subdivisions),
+        Shape::Sphere { radius, center, subdivisions } => primitives::icosphere(*radius, center, *subdivisions),
+        Shape::Cylinder { radius, length, axis, center } => primitives::cylinder(*radius, *length, axis, center),
+        Shape::Mesh { vertices, triangles } => (vertices.clone(), triangles.clone()),
+    };
+    let to_principal = &body.reference_in_principal;
+    (vertices.iter().map(|v| to_principal.transform_point(&(*v).into()).coords).collect(), triangles)
 }
 
 /// `Σ a·(b × c)/6` over the triangles (a, b, c) [m³]: the enclosed volume of a closed mesh,

@@ -6,9 +6,9 @@
 //! round-off, or the body is refused (unlike a contact boundary, which is turned over when
 //! wound inwards: a hull wound inwards is a modelling mistake worth saying).
 
-use crate::body::{RigidBody, Shape};
+use crate::body::RigidBody;
 use crate::math::Vec3;
-use crate::mesh::primitives;
+use crate::mesh::shape_in_principal_frame;
 
 /// `|Σ A n|` above this fraction of the total area `Σ A` [m²] marks an open mesh: a closed
 /// one sums to zero exactly but for round-off (about 1e-16 of the area per triangle).
@@ -89,14 +89,8 @@ impl Hull {
     /// # Errors
     /// See [`Hull::new`].
     pub fn of_body(body: &RigidBody) -> Result<Self, HullError> {
-        let (vertices, triangles) = match &body.shape {
-            Shape::Box { size, center, subdivisions } => primitives::cuboid(size, center, *subdivisions),
-            Shape::Sphere { radius, center, subdivisions } => primitives::icosphere(*radius, center, *subdivisions),
-            Shape::Cylinder { radius, length, axis, center } => primitives::cylinder(*radius, *length, axis, center),
-            Shape::Mesh { vertices, triangles } => (vertices.clone(), triangles.clone()),
-        };
-        let to_principal = &body.reference_in_principal;
-        Self::new(vertices.iter().map(|v| to_principal.transform_point(&(*v).into()).coords).collect(), triangles)
+        let (vertices, triangles) = shape_in_principal_frame(body);
+        Self::new(vertices, triangles)
     }
 
     /// Vertices, principal frame [m].
@@ -138,6 +132,7 @@ impl Hull {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::mesh::primitives;
     use approx::assert_relative_eq;
 
     #[test]

@@ -22,3 +22,19 @@ pub fn scene_files() -> Vec<PathBuf> {
 pub fn scene(text: &str) -> tether_scene::Scene {
     tether_scene::parse(text, Path::new("test.ron")).unwrap_or_else(|e| panic!("{e}"))
 }
+
+/// The one-line error of scene text labelled `bad.ron`, panicking if the text is accepted.
+pub fn error_of(text: &str) -> String {
+    match tether_scene::parse(text, Path::new("bad.ron")) {
+        Ok(_) => panic!("accepted:\n{text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+/// `good` with `edit.0` replaced once by `edit.1` is refused with one line starting `expected`.
+pub fn assert_edit_error(good: &str, edit: (&str, &str), expected: &str) {
+    assert!(good.contains(edit.0), "edit target {:?} missing", edit.0);
+    let error = error_of(&good.replacen(edit.0, edit.1, 1));
+    assert!(error.starts_with(expected), "expected {expected:?}…, got {error:?}");
+    assert_eq!(error.lines().count(), 1, "{error}");
+}

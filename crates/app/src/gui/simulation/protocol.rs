@@ -40,6 +40,8 @@ pub enum Command {
     /// Coupling `index` replaced by `coupling` (already checked by the scene builder) without a
     /// restart; `sent` dates the request, to measure how long it took to apply.
     SetCoupling { index: usize, coupling: Coupling, sent: Instant },
+    /// Draw every contact's face forces as arrows in the recording (or not), from now on.
+    SetFaceArrows(bool),
     /// The water replaced by `spec` (checked by the scene builder), without a restart.
     SetWater(WaterSpec),
     /// Body `body`'s coefficients in the water replaced by `spec` (checked), without a restart.

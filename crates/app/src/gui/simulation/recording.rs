@@ -1,16 +1,24 @@
 //! The recording of each run: opened when a run starts (a scene loaded, a reset) with the
-//! viewer's layout, fed a frame every so often of simulated time, finished when the run ends.
-//! The sinks outlive the runs ([`Sinks`]).
+//! viewer's layout, fed a frame every so often of simulated time, sent to the viewer once a tick
+//! ([`Recording::flush`]: the frames of a tick go as one chunk per entity; as fast as possible,
+//! every [`FAST_FLUSH`] instead), finished when the run ends. The sinks outlive the runs
+//! ([`Sinks`]).
 
 use crate::gui::stream::Sinks;
+use std::time::{Duration, Instant};
 use tether_physics::world::World;
-use tether_record::Recorder;
+use tether_record::{FaceArrows, Recorder};
 
 /// Frames logged per second of simulated time, as `tether record`'s default.
 const LOG_HZ: f64 = 60.0;
 
 /// At most this many frames per tick reach the viewer (faster runs log more sparsely).
 const FRAMES_PER_TICK: f64 = 8.0;
+
+/// Wall time between two sends to the viewer when the run goes as fast as possible: the viewer
+/// still moves on ten times a second, and the simulation thread and the viewer's ingestion pay
+/// for one chunk per entity every six ticks instead of every tick.
+const FAST_FLUSH: Duration = Duration::from_millis(100);
 
 /// The current run's recording.
 pub(super) struct Recording {
@@ -21,11 +29,15 @@ pub(super) struct Recording {
     last_logged: f64,
     /// Simulated time between frames [s].
     period: f64,
+    /// Whether the contacts' face forces are drawn (every contact, from now on).
+    face_arrows: bool,
+    /// When the buffered frames were last sent.
+    last_flush: Instant,
 }
 
 impl Recording {
     pub(super) fn new(sinks: Sinks) -> Self {
-        Self { sinks, recorder: None, last_logged: f64::NEG_INFINITY, period: 1.0 / LOG_HZ }
+        Self { sinks, recorder: None, last_logged: f64::NEG_INFINITY, period: 1.0 / LOG_HZ, face_arrows: false, last_flush: Instant::now() }
     }
 
     /// Ends the current recording and starts one for the run `label` of `world`, with the
@@ -34,20 +46,48 @@ impl Recording {
         self.finish()?;
         let stream = self.sinks.stream(label).map_err(|e| format!("recording: {e}"))?;
         tether_record::layout::send_layout(&stream, world).map_err(|e| format!("recording: {e}"))?;
-        self.recorder = Some(Recorder::new(stream, world).map_err(|e| format!("recording: {e}"))?);
+        self.recorder = Some(Recorder::new(stream, world, &self.arrows()).map_err(|e| format!("recording: {e}"))?);
         self.log(world)
     }
 
-    /// Logs a frame of `world` now.
+    /// Draws the contacts' face forces (`on`) or not, from the next frame on, in the run of
+    /// `world` and the next ones.
+    pub(super) fn set_face_arrows(&mut self, on: bool, world: Option<&World>) -> Result<(), String> {
+        self.face_arrows = on;
+        let arrows = self.arrows();
+        match (&mut self.recorder, world) {
+            (Some(recorder), Some(world)) => recorder.set_face_arrows(world, &arrows).map_err(|e| format!("recording: {e}")),
+            _ => Ok(()),
+        }
+    }
+
+    fn arrows(&self) -> FaceArrows {
+        if self.face_arrows { FaceArrows::all() } else { FaceArrows::default() }
+    }
+
+    /// Buffers a frame of `world` now (sent at the next [`Recording::flush`]).
     pub(super) fn log(&mut self, world: &World) -> Result<(), String> {
-        let Some(recorder) = &self.recorder else { return Ok(()) };
+        let Some(recorder) = &mut self.recorder else { return Ok(()) };
         self.last_logged = world.time();
         recorder.log_frame(world).map_err(|e| format!("recording: {e}"))
     }
 
-    /// Logs a frame of `world` if a frame period has passed since the last.
+    /// Buffers a frame of `world` if a frame period has passed since the last.
     pub(super) fn log_if_due(&mut self, world: &World) -> Result<(), String> {
         if world.time() - self.last_logged >= self.period { self.log(world) } else { Ok(()) }
+    }
+
+    /// Sends the buffered frames to the sinks (the viewer shows them) — when `fast` (the run
+    /// goes as fast as possible) only if [`FAST_FLUSH`] has passed since the last send.
+    pub(super) fn flush(&mut self, fast: bool) -> Result<(), String> {
+        if fast && self.last_flush.elapsed() < FAST_FLUSH {
+            return Ok(());
+        }
+        self.last_flush = Instant::now();
+        match &mut self.recorder {
+            Some(recorder) => recorder.flush().map_err(|e| format!("recording: {e}")),
+            None => Ok(()),
+        }
     }
 
     /// Spreads the frames of a tick that advanced `advanced` [s] of simulated time: at most
@@ -59,7 +99,7 @@ impl Recording {
     /// Flushes the current recording (the sinks stay open for the next run).
     pub(super) fn finish(&mut self) -> Result<(), String> {
         match self.recorder.take() {
-            Some(recorder) => recorder.finish().map_err(|e| format!("recording: {e}")),
+            Some(recorder) => recorder.finish().map(|_| ()).map_err(|e| format!("recording: {e}")),
             None => Ok(()),
         }
     }

@@ -92,6 +92,10 @@ impl Runner {
             if self.running {
                 self.advance();
             }
+            // The tick's frames to the viewer, one chunk per entity (as fast as possible, a few
+            // ticks' at once).
+            let flushed = self.recording.flush(self.running && self.speed == Speed::Max);
+            self.report_failure(flushed);
             self.send_status();
         }
         self.finish_recording();
@@ -112,6 +116,7 @@ impl Runner {
             }
             Command::SetTiming(timing) => self.set_timing(timing),
             Command::SetCoupling { index, coupling, sent } => self.set_coupling(index, coupling, sent),
+            Command::SetFaceArrows(on) => self.set_face_arrows(on),
             Command::SetWater(spec) => self.edit_water("the water", |world| world.replace_water(spec)),
             Command::SetHydro { body, spec } => self.edit_water("the body's coefficients in the water", |world| world.replace_hydro(body, spec)),
             Command::SetSeabedFriction(friction) => self.set_seabed_friction(friction),
@@ -271,6 +276,12 @@ impl Runner {
             }
             Err(error) => self.report(Report::Error(error.to_string())),
         }
+    }
+
+    /// Draws every contact's face forces in the recording (or not) from the next frame on.
+    fn set_face_arrows(&mut self, on: bool) {
+        let set = self.recording.set_face_arrows(on, self.run.as_ref().map(|run| &run.world));
+        self.report_failure(set);
     }
 
     /// A live edit of the water (`what` names it in the report).

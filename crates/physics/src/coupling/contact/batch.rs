@@ -37,10 +37,15 @@ pub struct FaceBatch {
 /// What a step needs of the faces in contact, summed in the frame they were evaluated in.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Accumulated {
+    /// `Σ f_f` [N].
     pub force: Vec3,
-    /// `Σ r_f × f_f`.
+    /// `Σ r_f × f_f` [N·m].
     pub moment: Vec3,
+    /// `Σ |f_n|` [N].
     pub normal: f64,
+    /// `Σ f_t` [N]: against planes, found from the other sums rather than summed face by face
+    /// (see [`Accumulated::friction_against_planes`]).
+    pub friction: Vec3,
     pub potential: f64,
     pub dissipated_power: f64,
 }
@@ -52,8 +57,20 @@ impl Accumulated {
         self.force += contact.force;
         self.moment += centroid.cross(&contact.force);
         self.normal += contact.normal_force;
+        self.friction += contact.friction;
         self.potential += contact.potential;
         self.dissipated_power += contact.dissipated_power;
+    }
+
+    /// Sets `Σ f_t` of faces against planes from `Σ f_f` and `normal_along = Σ_p n_p N_p`, the
+    /// planes' normals `n_p` weighted by the normal force `N_p` each plane took: every face's
+    /// force is `n_p |f_n| + f_t`, so `Σ f_t = Σ f_f − Σ_p n_p N_p` (PHYSICS.md §4), with no
+    /// sum over the faces added to the step's face loop (its round-off is that of `Σ f_f`,
+    /// about 1e-16 of the normal force).
+    #[inline(always)]
+    pub fn friction_against_planes(mut self, normal_along: &Vec3) -> Self {
+        self.friction = self.force - normal_along;
+        self
     }
 }
 
@@ -154,18 +171,31 @@ impl LaneSums {
         self.dissipated_power[lane] += contact.dissipated_power;
     }
 
-    /// The sums across the lanes.
+    /// `Σ |f_n|` [N] across the lanes so far.
+    #[inline(always)]
+    pub fn normal(&self) -> f64 {
+        lane_sum(&self.normal)
+    }
+
+    /// The sums across the lanes (`friction` left at zero: see
+    /// [`Accumulated::friction_against_planes`]).
     #[inline(always)]
     pub fn total(&self) -> Accumulated {
-        let sum = |lanes: &[f64; LANES]| lanes.iter().fold(0.0, |total, value| total + value);
         Accumulated {
-            force: Vec3::from_fn(|axis, _| sum(&self.force[axis])),
-            moment: Vec3::from_fn(|axis, _| sum(&self.moment[axis])),
-            normal: sum(&self.normal),
-            potential: sum(&self.potential),
-            dissipated_power: sum(&self.dissipated_power),
+            force: Vec3::from_fn(|axis, _| lane_sum(&self.force[axis])),
+            moment: Vec3::from_fn(|axis, _| lane_sum(&self.moment[axis])),
+            normal: lane_sum(&self.normal),
+            friction: Vec3::zeros(),
+            potential: lane_sum(&self.potential),
+            dissipated_power: lane_sum(&self.dissipated_power),
         }
     }
+}
+
+/// The sum of one component's lanes.
+#[inline(always)]
+fn lane_sum(lanes: &[f64; LANES]) -> f64 {
+    lanes.iter().fold(0.0, |total, value| total + value)
 }
 
 #[cfg(test)]
@@ -216,8 +246,12 @@ mod tests {
         assert!(in_range > 5, "{in_range} faces in range");
         let mut lanes = LaneSums::default();
         accumulate(&batches, &law, &plane, &mut lanes);
-        let sums = lanes.total();
+        let sums = lanes.total().friction_against_planes(&(plane.normal * lanes.normal()));
         assert_relative_eq!(sums.force, expected.force, max_relative = 1e-14);
+        // Σ f_t from Σ f_f − n Σ|f_n|: a difference of sums as large as the normal force, so its
+        // round-off is relative to that force (1e-14: a few ulp of each of the ~20 faces' terms).
+        assert!(expected.friction.norm() > 1e-3 * expected.normal, "the sphere slides: friction {}", expected.friction.norm());
+        assert_relative_eq!(sums.friction, expected.friction, epsilon = 1e-14 * expected.normal);
         assert_relative_eq!(sums.moment, expected.moment, max_relative = 1e-14);
         assert_relative_eq!(sums.normal, expected.normal, max_relative = 1e-14);
         assert_relative_eq!(sums.potential, expected.potential, max_relative = 1e-14);

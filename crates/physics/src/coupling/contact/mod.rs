@@ -86,14 +86,25 @@ pub struct Contact {
     pub expected_area: f64,
 }
 
+/// A contact's resultant normal force and friction at an evaluation, as the step summed them
+/// (PHYSICS.md §4).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ContactForces {
+    /// `Σ |f_n|` [N].
+    pub normal: f64,
+    /// `|Σ f_t|` [N].
+    pub friction: f64,
+}
+
 /// What a contact remembers between evaluations of one run: for each plane of
-/// [`Opposing::Planes`], the faces that may be in its range, and the normal force at the last
-/// evaluation.
+/// [`Opposing::Planes`], the faces that may be in its range, and the forces at the last
+/// evaluation (for plots, recordings and the time step limit, which so need not evaluate the
+/// faces again).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ContactCache {
     shortlists: Vec<Shortlist>,
-    /// `Σ |f_n|` [N] at the last [`Contact::apply`].
-    pub normal_force: f64,
+    /// At the last [`Contact::apply`].
+    pub forces: ContactForces,
 }
 
 impl Contact {
@@ -107,7 +118,7 @@ impl Contact {
             Opposing::Planes(planes) => planes.len(),
             Opposing::Body { .. } => 0,
         };
-        ContactCache { shortlists: vec![Shortlist::new(); planes], normal_force: 0.0 }
+        ContactCache { shortlists: vec![Shortlist::new(); planes], forces: ContactForces::default() }
     }
 
     /// The faces in contact at the kinematics `frames`, with their forces: the evaluation of
@@ -169,12 +180,16 @@ impl Contact {
         match &self.against {
             Opposing::Planes(planes) => {
                 let (mut in_range, mut lanes) = (false, LaneSums::default());
+                // Σ_p n_p N_p, for the friction.
+                let mut normal_along = Vec3::zeros();
                 for (plane, shortlist) in planes.iter().zip(shortlists) {
                     let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else { continue };
+                    let before = lanes.normal();
                     batch::accumulate(batches, &self.law, &view, &mut lanes);
+                    normal_along += view.normal * (lanes.normal() - before);
                     in_range = true;
                 }
-                (in_range, lanes.total())
+                (in_range, lanes.total().friction_against_planes(&normal_along))
             }
             Opposing::Body { body, surface } => {
                 let mut sums = Accumulated::default();
@@ -215,7 +230,7 @@ impl Contact {
         if !in_range {
             // No force, and nothing to add to the loads.
             *out = CouplingForces { point1: frame.position, point2, ..CouplingForces::default() };
-            cache.normal_force = 0.0;
+            cache.forces = ContactForces::default();
             return;
         }
         // The sums in world axes.
@@ -237,7 +252,7 @@ impl Contact {
             dissipated_power: sums.dissipated_power,
             potential: sums.potential,
         };
-        cache.normal_force = sums.normal;
+        cache.forces = ContactForces { normal: sums.normal, friction: sums.friction.norm() };
     }
 }
 

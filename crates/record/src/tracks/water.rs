@@ -1,0 +1,236 @@
+//! The water of a run (PHYSICS.md §6):
+//!
+//! - `world/water/surface`: the sea surface, a square grid of [`GRID`]² vertices at the
+//!   elevation the waves give there, around the floating bodies; its triangles and colour are
+//!   static, its vertices a row at most every [`SURFACE_PERIOD`] of simulated time while there
+//!   are waves (a calm sea: a row only when its level changes, the first frame included). The
+//!   surface is the costliest entity of a water scene — 12 bytes and one wave evaluation per
+//!   vertex and row —: this grid and rate keep it below the physics' cost on the shipped scenes
+//!   (`tether record --timing`) while a wave of the shortest period shipped (8 s) is still drawn
+//!   with a dozen vertices per length and over 150 rows per period;
+//! - `world/water/seabed`: the seabed plane at `z_w − h` under the same square, static, when the
+//!   water has a depth;
+//! - `world/water/forces/<body>`: the water's force on each floating body as an arrow from G,
+//!   one body radius long when it equals the body's weight (`m·max(|g|, 1 m/s²)`);
+//! - `plots/water/<body>/motion`: the wave elevation at the body and its heave (the height of G
+//!   above its start) [m];
+//! - `plots/water/<body>/angles`: its roll and pitch (the turn since t = 0 about the world x and
+//!   y axes) [deg].
+
+use super::{Settings, Track, f32x3, of_entity, send_chunk};
+use crate::frames::Frames;
+use crate::stats::KindStats;
+use crate::{RecordError, paths};
+use rerun::RecordingStream;
+use tether_physics::math::{Rotation, Vec3};
+use tether_physics::water::WaterStage;
+use tether_physics::water::waves::SeaInstant;
+use tether_physics::world::World;
+
+/// Vertices along each side of the surface grid.
+pub const GRID: usize = 24;
+
+/// Simulated time between two rows of a moving surface [s], at least: at most 40 per second
+/// (at the default 60 frames per second, every other frame).
+pub const SURFACE_PERIOD: f64 = 1.0 / 40.0;
+
+/// Colour of the surface (red, green, blue, alpha), the seabed, the force arrows.
+const SURFACE_RGBA: [u8; 4] = [40, 110, 190, 150];
+const SEABED_RGB: [u8; 3] = [150, 130, 100];
+const ARROW_RGB: [u8; 3] = [40, 160, 230];
+
+/// A floating body: where its plots and arrow go, and its pose at t = 0.
+struct Floating {
+    body: usize,
+    force_path: String,
+    motion_path: String,
+    angles_path: String,
+    /// Height of G [m] and orientation at t = 0.
+    start_height: f64,
+    start_turn: Rotation,
+}
+
+/// The water's buffered frames: the surface's vertices at the frames in `surface_frames`; per
+/// floating body, frame-major, its force arrow (origin, vector), elevation and heave, roll and
+/// pitch.
+pub(super) struct WaterTrack {
+    /// Centre `(x, y)` [m] and half side [m] of the square the surface covers.
+    center: [f64; 2],
+    half: f64,
+    floating: Vec<Floating>,
+    sea: SeaInstant,
+    surface: Vec<[f32; 3]>,
+    surface_frames: Vec<usize>,
+    /// The level of the calm surface last buffered or sent [m] (`None`: none yet, or waves).
+    calm_level: Option<f64>,
+    /// Simulated time of the last surface row [s].
+    surface_time: f64,
+    arrows: Vec<([f32; 3], [f32; 3])>,
+    motion: Vec<[f64; 2]>,
+    angles: Vec<[f64; 2]>,
+}
+
+impl WaterTrack {
+    /// The water of `world` (`None` when it has none).
+    pub(super) fn new(world: &World) -> Option<Self> {
+        let stage = world.system().water()?;
+        let (center, half) = square(world, stage);
+        let floating = stage
+            .floating
+            .iter()
+            .map(|f| {
+                let name = &world.bodies()[f.body].name;
+                let state = world.state(f.body);
+                Floating {
+                    body: f.body,
+                    force_path: paths::water_force(name),
+                    motion_path: paths::water_plot(name, "motion"),
+                    angles_path: paths::water_plot(name, "angles"),
+                    start_height: state.position.z,
+                    start_turn: state.orientation,
+                }
+            })
+            .collect();
+        Some(Self {
+            center,
+            half,
+            floating,
+            sea: SeaInstant::default(),
+            surface: Vec::new(),
+            surface_frames: Vec::new(),
+            calm_level: None,
+            surface_time: f64::NEG_INFINITY,
+            arrows: Vec::new(),
+            motion: Vec::new(),
+            angles: Vec::new(),
+        })
+    }
+
+    /// Floating bodies (each has an arrow and two plots), and the surface.
+    pub(super) fn entities(&self) -> usize {
+        1 + 3 * self.floating.len()
+    }
+
+    /// `(x, y)` [m] of grid vertex `n` (row-major).
+    fn grid_point(&self, n: usize) -> (f64, f64) {
+        let step = 2.0 * self.half / (GRID - 1) as f64;
+        let (i, j) = (n % GRID, n / GRID);
+        (self.center[0] - self.half + i as f64 * step, self.center[1] - self.half + j as f64 * step)
+    }
+
+    /// Buffers the surface at `frame` (simulated time `time`) if it moved and
+    /// [`SURFACE_PERIOD`] has passed since the last row (`elevation`: the waves' at `(x, y)`
+    /// [m]); returns the bytes.
+    fn capture_surface(&mut self, level: f64, calm: bool, (time, frame): (f64, usize), elevation: impl Fn(f64, f64) -> f64) -> usize {
+        let unchanged = if calm { self.calm_level == Some(level) } else { time - self.surface_time < SURFACE_PERIOD };
+        if unchanged {
+            return 0;
+        }
+        self.calm_level = calm.then_some(level);
+        self.surface_time = time;
+        for n in 0..GRID * GRID {
+            let (x, y) = self.grid_point(n);
+            self.surface.push([x as f32, y as f32, (level + elevation(x, y)) as f32]);
+        }
+        self.surface_frames.push(frame);
+        GRID * GRID * 3 * 4
+    }
+}
+
+impl Track for WaterTrack {
+    fn log_static(&self, stream: &RecordingStream, world: &World) -> Result<(), RecordError> {
+        let [r, g, b, a] = SURFACE_RGBA;
+        stream.log_static(
+            paths::WATER_SURFACE,
+            &rerun::Mesh3D::update_fields()
+                .with_triangle_indices(grid_triangles().map(|[a, b, c]| rerun::datatypes::UVec3D::new(a, b, c)))
+                .with_albedo_factor(rerun::datatypes::Rgba32::from_unmultiplied_rgba(r, g, b, a)),
+        )?;
+        if let Some(seabed) = world.system().water().and_then(|stage| stage.water.seabed()) {
+            let [r, g, b] = SEABED_RGB;
+            let corners = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]].map(|[a, b]| [(self.center[0] + a * self.half) as f32, (self.center[1] + b * self.half) as f32, seabed as f32]);
+            stream.log_static(
+                paths::SEABED,
+                &rerun::Mesh3D::new(corners).with_triangle_indices([rerun::datatypes::UVec3D::new(0, 1, 2), rerun::datatypes::UVec3D::new(0, 2, 3)]).with_albedo_factor(rerun::datatypes::Rgba32::from_rgb(r, g, b)),
+            )?;
+        }
+        let [r, g, b] = ARROW_RGB;
+        for floating in &self.floating {
+            stream.log_static(floating.force_path.as_str(), &rerun::Arrows3D::update_fields().with_colors([rerun::Color::from_rgb(r, g, b)]))?;
+            stream.log_static(floating.motion_path.as_str(), &rerun::SeriesLines::new().with_names(["elevation", "heave"]))?;
+            stream.log_static(floating.angles_path.as_str(), &rerun::SeriesLines::new().with_names(["roll", "pitch"]))?;
+        }
+        Ok(())
+    }
+
+    fn capture(&mut self, world: &World, frame: usize, _settings: &Settings) -> usize {
+        // The scene's water may be edited live, never removed: a world without it has nothing to
+        // add.
+        let Some(stage) = world.system().water() else { return 0 };
+        let (water, time) = (&stage.water, world.time());
+        let calm = water.sea().is_calm();
+        let mut sea = std::mem::take(&mut self.sea);
+        if !calm {
+            water.sea().instant(time, &mut sea);
+        }
+        let ramp = water.ramp(time);
+        let elevation = |x: f64, y: f64| if calm { 0.0 } else { ramp * water.sea().pressure_head(&sea, x, y, water.level()) };
+        let mut bytes = self.capture_surface(water.level(), calm, (time, frame), elevation);
+        for (floating, stage_body) in self.floating.iter().zip(&stage.floating) {
+            let body = &world.bodies()[floating.body];
+            let state = world.state(floating.body);
+            let weight = body.mass() * world.gravity().norm().max(1.0);
+            // A body the stage has no record of (none evaluated yet) bears no water force.
+            let force = world.water_forces().iter().find(|r| r.body == floating.body).map_or_else(Vec3::zeros, |r| r.total().force);
+            self.arrows.push((f32x3(&state.position), f32x3(&(force * (stage_body.hull.bounding_radius() / weight)))));
+            self.motion.push([elevation(state.position.x, state.position.y), state.position.z - floating.start_height]);
+            let (roll, pitch, _) = (state.orientation * floating.start_turn.inverse()).euler_angles();
+            self.angles.push([roll.to_degrees(), pitch.to_degrees()]);
+            bytes += 2 * 3 * 4 + 4 * 8;
+        }
+        self.sea = sea;
+        bytes
+    }
+
+    fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
+        if !self.surface_frames.is_empty() {
+            let surface = rerun::Mesh3D::update_fields().with_vertex_positions(self.surface.drain(..));
+            let times = frames.columns_of(self.surface_frames.iter().copied());
+            send_chunk(stream, paths::WATER_SURFACE, times, self.surface_frames.len(), surface.columns(std::iter::repeat_n(GRID * GRID, self.surface_frames.len()))?, sent)?;
+            self.surface_frames.clear();
+        }
+        let bodies = self.floating.len();
+        let rows = self.arrows.len() / bodies.max(1);
+        for (index, floating) in self.floating.iter().enumerate() {
+            let arrows = of_entity(&self.arrows, index, bodies);
+            let arrows = rerun::Arrows3D::update_fields().with_origins(arrows.clone().map(|(origin, _)| origin)).with_vectors(arrows.map(|(_, vector)| vector));
+            send_chunk(stream, &floating.force_path, frames.columns(), rows, arrows.columns_of_unit_batches()?, sent)?;
+            for (path, values) in [(&floating.motion_path, &self.motion), (&floating.angles_path, &self.angles)] {
+                let series = rerun::Scalars::new(of_entity(values, index, bodies).flatten());
+                send_chunk(stream, path, frames.columns(), rows, series.columns(std::iter::repeat_n(2, rows))?, sent)?;
+            }
+        }
+        self.arrows.clear();
+        self.motion.clear();
+        self.angles.clear();
+        Ok(())
+    }
+}
+
+/// The square the surface covers: centred on the floating bodies at t = 0, wide enough for them
+/// and their couplings' ends and for two of the longest waves (at least 20 m across).
+fn square(world: &World, stage: &WaterStage) -> ([f64; 2], f64) {
+    let points: Vec<Vec3> = stage.floating.iter().map(|f| world.state(f.body).position).chain(world.coupling_forces().iter().flat_map(|f| [f.point1, f.point2])).collect();
+    let (low, high) = tether_physics::math::bounding_box(points.iter().copied());
+    let center = if low.x.is_finite() { [(low.x + high.x) / 2.0, (low.y + high.y) / 2.0] } else { [0.0, 0.0] };
+    let extent = if low.x.is_finite() { 0.5 * (high.x - low.x).max(high.y - low.y) } else { 0.0 };
+    let reach = stage.floating.iter().map(|f| f.hull.bounding_radius()).fold(0.0, f64::max);
+    let longest = stage.water.sea().components().iter().map(|c| std::f64::consts::TAU / c.wave_number).fold(0.0, f64::max);
+    (center, (extent + 3.0 * reach).max(longest).max(10.0))
+}
+
+/// Two triangles per grid square, counter-clockwise seen from above.
+fn grid_triangles() -> impl Iterator<Item = [u32; 3]> {
+    let index = |i: usize, j: usize| (j * GRID + i) as u32;
+    (0..GRID - 1).flat_map(move |j| (0..GRID - 1).flat_map(move |i| [[index(i, j), index(i + 1, j), index(i + 1, j + 1)], [index(i, j), index(i + 1, j + 1), index(i, j + 1)]]))
+}

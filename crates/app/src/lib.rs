@@ -4,11 +4,12 @@
 //! `tether-record` (the Rerun adapter that logs a world). [`gui`] sends a running world
 //! commands; [`sweep`] runs a scene over a design of factor values and [`study`] measures the
 //! integrators against a reference run, both on the engine of many cases in [`runner`], and
-//! write tables and charts ([`chart_style`]). The `tether` binary's command line lives beside
-//! `main.rs`.
+//! write tables and charts ([`chart_style`]); [`statics`] reports static equilibria and offset
+//! curves. The `tether` binary's command line lives beside `main.rs`.
 
 pub mod chart_style;
 pub mod gui;
 pub mod runner;
+pub mod statics;
 pub mod study;
 pub mod sweep;

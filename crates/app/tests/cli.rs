@@ -160,7 +160,7 @@ fn forces_json_reports_the_catenary_solution() {
     assert_eq!(chain["kind"], "catenary");
     // Ends (2, 0, 0) and (18, 0, 0): level, span 16 m, L = 30 m, λ0 = 20 kg/m, D = 1e6 N/m.
     let line = Catenary::new(Endpoint::World(Vec3::zeros()), Endpoint::World(Vec3::zeros()), 20.0, 30.0, 1e6);
-    let s = line.solve(&Vec3::new(2.0, 0.0, 0.0), &Vec3::new(18.0, 0.0, 0.0), &Vec3::new(0.0, 0.0, -G), None).unwrap();
+    let s = line.solve(&Vec3::new(2.0, 0.0, 0.0), &Vec3::new(18.0, 0.0, 0.0), &tether_physics::surroundings::Surroundings::dry(Vec3::new(0.0, 0.0, -G)), None).unwrap();
     let h = chain["horizontal_tension"].as_f64().unwrap();
     assert_relative_eq!(h, s.horizontal_tension, max_relative = 1e-12);
     let (u1, u2) = (chain["u1"].as_f64().unwrap(), chain["u2"].as_f64().unwrap());

@@ -16,6 +16,7 @@ use std::time::{Duration, Instant};
 use tether::gui::panel::ControlPanel;
 use tether::gui::stream::Sinks;
 use tether_physics::coupling::{CouplingKind, ElasticLaw};
+use tether_physics::statics::{Settings, equilibrium};
 use tether_physics::world::World;
 
 /// Longest wait for the simulation thread.
@@ -312,4 +313,57 @@ fn water_knobs_tune_the_running_water_and_bad_values_are_refused() {
     set_knob(&mut harness, "drag C_d z", -1.0);
     harness.get_by_label_contains("Refused: body \"float\": hydro: drag must be finite and ≥ 0");
     assert_eq!(drag_z(&world(&harness)), 0.7);
+}
+
+/// The statics panel on a buoy moored by three lines lying on a seabed: the seabed's C_B and a
+/// line's A_d reach the running world (a negative C_B is refused, the world untouched); the
+/// equilibrium button puts the buoy where `tether equilibrium` finds it, at rest; the offset
+/// curve is computed and drawn.
+#[test]
+fn statics_panel_tunes_the_seabed_jumps_to_equilibrium_and_draws_the_offset_curve() {
+    let text = r#"Scene(dt: 0.002, bodies: [Body(name: "buoy", master: Node(position: (5.0, 0.0, 0.0), mass: 3000.0, inertia: Inertia(xx: 1750.0, yy: 1750.0, zz: 1500.0)),
+            shape: Cylinder(radius: 1.0, length: 2.0))],
+        couplings: [
+            Catenary(name: "m1", end1: World((200.0, 0.0, -50.0)), end2: Body(body: "buoy", point: (1.0, 0.0, -1.0)), mass_per_length: 50.0, length: 220.0, stiffness: 2272727.0),
+            Catenary(name: "m2", end1: World((-100.0, 173.205, -50.0)), end2: Body(body: "buoy", point: (-0.5, 0.8660254, -1.0)), mass_per_length: 50.0, length: 220.0, stiffness: 2272727.0),
+            Catenary(name: "m3", end1: World((-100.0, -173.205, -50.0)), end2: Body(body: "buoy", point: (-0.5, -0.8660254, -1.0)), mass_per_length: 50.0, length: 220.0, stiffness: 2272727.0),
+            SpringDamper(name: "buoyancy", end1: Body(body: "buoy"), end2: World((0.0, 0.0, 100.0)), law: Linear(stiffness: 31600.0, rest_length: 98.0), damping: 1950.0),
+        ],
+        seabed: Seabed(elevation: -50.0, line_friction: 0.5))"#;
+    let dir = scenes_folder(&[("moored.ron", text)]);
+    // Tall enough for the statics panel below four couplings' knobs.
+    let mut harness = Harness::builder().with_size([440.0, 2600.0]).build_ui_state(|ui, panel: &mut ControlPanel| panel.ui(ui, None), panel(dir.path()));
+    open_from_list(&mut harness, "moored.ron");
+    let friction = |world: &World| world.system().seabed().expect("a seabed").line_friction;
+
+    set_knob(&mut harness, "seabed line friction C_B", 0.9);
+    until(&mut harness, "C_B applied", |p| p.log().any(|l| l.text.starts_with("seabed line friction C_B = 0.9 applied")));
+    assert_eq!(friction(&world(&harness)), 0.9);
+    set_knob(&mut harness, "seabed line friction C_B", -0.1);
+    harness.get_by_label_contains("Refused: seabed line friction C_B must be ≥ 0, got -0.1");
+    assert_eq!(friction(&world(&harness)), 0.9);
+
+    // The first line's A_d (three lines show the knob).
+    let knob = harness.get_all_by_label("displaced area A_d").next().expect("an A_d knob");
+    let (target_node, target_tree) = knob.accesskit_node().locate();
+    let request = accesskit::ActionRequest { action: accesskit::Action::SetValue, target_tree, target_node, data: Some(accesskit::ActionData::NumericValue(0.004)) };
+    harness.event(egui::Event::AccessKitActionRequest(request));
+    harness.run_steps(2);
+    until(&mut harness, "A_d applied", |p| p.log().any(|l| l.text.starts_with("coupling \"m1\" applied")));
+    match &world(&harness).couplings()[0].kind {
+        CouplingKind::Catenary(line) => assert_eq!(line.displaced_area, 0.004),
+        kind => panic!("not a catenary: {kind:?}"),
+    }
+
+    harness.get_by_label("Equilibrium").click();
+    until(&mut harness, "the equilibrium", |p| p.log().any(|l| l.text.starts_with("static equilibrium in")));
+    let placed = world(&harness);
+    let solved = equilibrium::solve(placed.system(), &placed.synchronized_states(), &[], &Settings::default()).unwrap();
+    assert_eq!(solved.iterations, 0, "the world is at its static equilibrium");
+    assert_eq!(placed.state(0).velocity.norm(), 0.0, "at rest");
+
+    harness.get_by_label("Offset curve").click();
+    until(&mut harness, "the offset curve", |p| p.log().any(|l| l.text.starts_with("offset curve of body \"buoy\" in x: 21 offsets")));
+    harness.run_steps(2);
+    harness.get_by_label("body \"buoy\": restoring force against offset in x");
 }

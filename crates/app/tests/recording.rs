@@ -228,3 +228,34 @@ fn the_water_is_recorded() {
     assert_eq!(rows.get("/world/water/surface"), Some(&1), "{rows:?}");
     assert_eq!(rows.get("/plots/water/box/motion"), Some(&21), "{rows:?}");
 }
+
+/// The moored buoy's chains on the seabed: each line's grounded part and touchdown are drawn and
+/// the grounded lengths plotted every frame (one series per line), and mooring1's plotted `L_B` is the world's at steps 1000,
+/// 2000 and 3000 (t = 2, 4, 6 s, the buoy swinging back from its push).
+#[test]
+fn grounded_lines_are_drawn_marked_and_their_grounded_length_plotted() {
+    let (_dir, out) = record("scenes/moored_buoy.ron", &["--duration", "6", "--log-hz", "10"]);
+    let rows = rows_per_entity(&out);
+    // dt = 2 ms, 10 Hz: a frame every 50 steps, 0 to 3000.
+    for line in ["mooring1", "mooring2", "mooring3"] {
+        for entity in [format!("/world/seabed/grounded/{line}"), format!("/world/seabed/touchdowns/{line}")] {
+            assert_eq!(rows.get(&entity), Some(&61), "{entity}: {rows:?}");
+        }
+    }
+    assert_eq!(rows.get("/plots/seabed"), Some(&61), "{rows:?}");
+    let grounded = scalars_by_step(&out, "/plots/seabed");
+    let mut world = tether_scene::load(&common::repo("scenes/moored_buoy.ron")).unwrap().world;
+    let mut lengths = Vec::new();
+    for step in [1000, 2000, 3000] {
+        while world.steps() < step {
+            world.step().unwrap();
+        }
+        let expected = world.line_state(0).expect("a solved line").grounded_length();
+        assert_eq!(grounded[&(step as i64)].len(), 3, "a series per line");
+        let logged = grounded[&(step as i64)][0];
+        // Scalars are logged as f64: the same number.
+        assert_eq!(logged, expected, "step {step}");
+        lengths.push(logged);
+    }
+    assert!(lengths.windows(2).all(|w| w[0] != w[1]), "the grounded length changes as the buoy swings: {lengths:?}");
+}

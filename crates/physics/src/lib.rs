@@ -9,7 +9,9 @@
 //! - [`dynamics`]: accelerations from loads, Euler's equations (§1);
 //! - [`table`]: piecewise-linear tables with exact integrals, for curve-defined laws;
 //! - [`mesh`]: boundary meshes of bodies for contact, and their distance queries (§4);
-//! - [`coupling`]: the forces between bodies and the world (§2–4);
+//! - [`coupling`]: the forces between bodies and the world (§2–4, lines on the seabed §7);
+//! - [`seabed`]: the flat bottom lines lie on and bodies touch (§7);
+//! - [`surroundings`]: gravity, fluid and seabed as the couplings see them;
 //! - [`evaluation`]: what a force evaluation leaves behind (kinematics, loads, coupling records
 //!   and caches);
 //! - [`water`]: hydrostatics, waves, current, Morison loads and added mass (§6), an
@@ -19,6 +21,7 @@
 //! - [`integrator`]: how states advance in time (§1, time integration), on a narrow interface;
 //! - [`energy`]: the energy balance that checks it all (§5);
 //! - [`stability`]: the stable time step of each coupling and spinning body;
+//! - [`statics`]: the system at rest — tangent stiffness, static equilibrium, offset curves;
 //! - [`simd`]: which vector instructions the hot stages are built for;
 //! - [`world`]: a system running in time: clock, ledger, health check, live edits.
 //!
@@ -44,8 +47,11 @@ pub mod integrator;
 pub mod mass_properties;
 pub mod math;
 pub mod mesh;
+pub mod seabed;
 pub mod simd;
 pub mod stability;
+pub mod statics;
+pub mod surroundings;
 pub mod system;
 pub mod table;
 pub mod water;

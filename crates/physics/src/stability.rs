@@ -4,8 +4,8 @@
 //! stiffness `k` [N/m] and the effective mass of both ends along the coupling, rotation about
 //! the attachment points included: `1/m_eff = Σ_ends (1/m + (r × d)ᵀ I⁻¹ (r × d))` [1/kg]
 //! (world ends and kinematic bodies add nothing), and `β = k_d/(2 m_eff)` [1/s], `ζ = β/ω`.
-//! For a catenary `k` is the largest eigenvalue of the line's tangent stiffness and `d` its
-//! eigenvector; it has no damper. For a contact, the oscillator of stiffness `k1 A` and damping
+//! For a catenary `k` is the largest eigenvalue of its ends' tangent stiffnesses `−∂f_i/∂p_i`
+//! and `d` its eigenvector; it has no damper. For a contact, the oscillator of stiffness `k1 A` and damping
 //! `k2 A` over the effective mass of the two bodies' translation, `A` the larger of the
 //! expected contact area and the area in contact now; and friction, which near rest is a damper
 //! of `c = μ k_t Σ|f_n|` [N·s/m] (an oscillator with `k = 0`: `dt ≤ 2 m_e/c` for the leapfrog).
@@ -158,8 +158,12 @@ pub fn limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
             }
             CouplingKind::Catenary(_) => {
                 let Some(state) = evaluation.line_state(index) else { continue };
-                let k = state.tangent_stiffness();
-                let eigen = nalgebra::SymmetricEigen::new(0.5 * (k + k.transpose()));
+                // The stiffer of the ends' own stiffnesses −∂f_i/∂p_i (both K for a free line;
+                // on the seabed the bottom holds what the anchor does not feel).
+                let blocks = state.end_stiffness();
+                let eigen = |k: nalgebra::Matrix3<f64>| nalgebra::SymmetricEigen::new(-0.5 * (k + k.transpose()));
+                let (first, second) = (eigen(blocks[0][0]), eigen(blocks[1][1]));
+                let eigen = if first.eigenvalues.max() > second.eigenvalues.max() { first } else { second };
                 let (largest, _) = eigen.eigenvalues.argmax();
                 let d = eigen.eigenvectors.column(largest).into_owned();
                 oscillator_limit(integrator, eigen.eigenvalues[largest], 0.0, along(&d))

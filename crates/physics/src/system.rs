@@ -1,6 +1,7 @@
 //! The system: what a scene declares and a run does not change — gravity, the bodies, the
-//! couplings and the bodies' states at t = 0 (the start of prescribed motions) — and the force
-//! evaluation for given states (MuJoCo's constant model beside its mutable data).
+//! couplings, what surrounds them (the fluid the lines weigh in, the seabed) and the bodies'
+//! states at t = 0 (the start of prescribed motions) — and the force evaluation for given
+//! states (MuJoCo's constant model beside its mutable data).
 //!
 //! An evaluation runs these stages, each its own function, in this order:
 //! 1. *prescribe*: kinematic bodies are put where their motion says at the time
@@ -18,11 +19,14 @@
 //! [`System::evaluate`] runs 2–6; the leapfrog fuses 1–3 into its pass over the bodies.
 
 use crate::body::{BodyState, Load, RigidBody, Support};
-use crate::coupling::{Coupling, CouplingError, CouplingKind};
+use crate::coupling::catenary::ON_SEABED;
+use crate::coupling::{Coupling, CouplingError, CouplingKind, Endpoint};
 use crate::energy::Powers;
 use crate::evaluation::Evaluation;
 use crate::math::Vec3;
+use crate::seabed::Seabed;
 use crate::simd::Level;
+use crate::surroundings::Surroundings;
 use crate::water::{WaterSpec, WaterStage};
 use crate::water::environment::WaterError;
 use crate::water::morison::HydroSpec;
@@ -31,8 +35,8 @@ use crate::water::stage::{FloatingBody, FloatingError};
 /// Bodies, couplings and gravity: what a run does not change (live edits aside).
 #[derive(Debug, Clone)]
 pub struct System {
-    /// Gravity [m/s²].
-    gravity: Vec3,
+    /// Gravity [m/s²], the fluid the lines weigh in (the water's density), the seabed.
+    surroundings: Surroundings,
     bodies: Vec<RigidBody>,
     couplings: Vec<Coupling>,
     /// States at t = 0: the start of prescribed motions, and of a reset.
@@ -60,6 +64,8 @@ pub enum SystemError {
     Hydro { body: String, source: FloatingError },
     #[error("the system has no water")]
     NoWater,
+    #[error("coupling \"{coupling}\": end {end} is {depth} m below the seabed (z_b = {elevation} m): an anchor lies on the seabed or above it")]
+    BelowSeabed { coupling: String, end: usize, depth: f64, elevation: f64 },
 }
 
 /// A coupling that could not give its forces: its index, and why.
@@ -83,7 +89,17 @@ impl System {
             check_bodies(coupling, bodies.len())?;
         }
         let kinematic_bodies = (0..bodies.len()).filter(|&i| bodies[i].is_kinematic()).collect();
-        Ok(Self { gravity, bodies, couplings, initial_states, kinematic_bodies, level: Level::best(), water: None })
+        Ok(Self { surroundings: Surroundings::dry(gravity), bodies, couplings, initial_states, kinematic_bodies, level: Level::best(), water: None })
+    }
+
+    /// The system with its lines lying on `seabed` where they reach it (PHYSICS.md §7).
+    ///
+    /// # Errors
+    /// A catenary with an end fixed in the world below the seabed, named with the depth.
+    pub fn with_seabed(mut self, seabed: Seabed) -> Result<Self, SystemError> {
+        check_anchors(&self.couplings, &seabed, &self.surroundings.gravity)?;
+        self.surroundings.seabed = Some(seabed);
+        Ok(self)
     }
 
     /// The system in `water`, with the bodies `floating` in it: each a body index and its
@@ -94,7 +110,7 @@ impl System {
     /// repeated body, a body whose shape is not a closed outward hull or whose coefficients are
     /// bad.
     pub fn with_water(mut self, water: WaterSpec, floating: Vec<(usize, HydroSpec)>) -> Result<Self, SystemError> {
-        let water = crate::water::Water::new(water, &self.gravity)?;
+        let water = crate::water::Water::new(water, &self.surroundings.gravity)?;
         let count = self.bodies.len();
         let mut bodies = Vec::with_capacity(floating.len());
         for (index, (body, spec)) in floating.iter().enumerate() {
@@ -103,6 +119,8 @@ impl System {
             }
             bodies.push(FloatingBody::new(&self.bodies, *body, *spec).map_err(|source| SystemError::Hydro { body: self.bodies[*body].name.clone(), source })?);
         }
+        // The lines weigh in the same water: `(λ0 − ρ A_d) g` (PHYSICS.md §7).
+        self.surroundings.fluid_density = water.density();
         self.water = Some(WaterStage { water, floating: bodies });
         Ok(self)
     }
@@ -112,9 +130,41 @@ impl System {
         self.water.as_ref()
     }
 
+    /// The system as a static solve sees it ([`crate::statics`]): nothing moves, so the water has
+    /// no waves and no added mass, and its current flows at full strength from t = 0 (no ramp);
+    /// hydrostatics, the current's drag and everything else as they are. Borrowed unchanged
+    /// without water.
+    pub fn at_rest(&self) -> std::borrow::Cow<'_, System> {
+        let Some(stage) = &self.water else { return std::borrow::Cow::Borrowed(self) };
+        let spec = WaterSpec { waves: crate::water::WaveSpec::Calm, ramp: Some(0.0), ..*stage.water.spec() };
+        // Still water with a ramp of 0 s passes every check the accepted water passed.
+        let water = crate::water::Water::new(spec, &self.surroundings.gravity).expect("still water from accepted water");
+        let floating = stage
+            .floating
+            .iter()
+            .map(|entry| {
+                let spec = HydroSpec { added_mass: Vec3::zeros(), added_inertia: Vec3::zeros(), ..entry.hydro.spec };
+                // Accepted coefficients with the added mass zeroed stay in range.
+                let hydro = crate::water::Hydro::new(spec, &self.bodies[entry.body], &entry.hull).expect("accepted coefficients without added mass");
+                FloatingBody { hydro, ..entry.clone() }
+            })
+            .collect();
+        std::borrow::Cow::Owned(Self { water: Some(WaterStage { water, floating }), ..self.clone() })
+    }
+
     /// Replaces the water's spec (a live edit: the world restarts its integrator after it).
     pub(crate) fn replace_water(&mut self, spec: WaterSpec) -> Result<(), SystemError> {
-        let stage = self.water.as_ref().ok_or(SystemError::NoWater)?.with_spec(spec, &self.gravity)?;
+        let stage = self.water.as_ref().ok_or(SystemError::NoWater)?.with_spec(spec, &self.surroundings.gravity)?;
+        // The seabed stays at the water's depth (PHYSICS.md §7).
+        let seabed = match (&self.surroundings.seabed, stage.water.seabed()) {
+            (Some(seabed), Some(elevation)) => Some(Seabed { elevation, ..*seabed }),
+            (seabed, _) => *seabed,
+        };
+        if let Some(seabed) = &seabed {
+            check_anchors(&self.couplings, seabed, &self.surroundings.gravity)?;
+        }
+        self.surroundings.seabed = seabed;
+        self.surroundings.fluid_density = stage.water.density();
         self.water = Some(stage);
         Ok(())
     }
@@ -132,7 +182,24 @@ impl System {
 
     /// Gravity [m/s²].
     pub fn gravity(&self) -> &Vec3 {
-        &self.gravity
+        &self.surroundings.gravity
+    }
+
+    /// Gravity, the fluid the lines weigh in, the seabed.
+    pub fn surroundings(&self) -> &Surroundings {
+        &self.surroundings
+    }
+
+    /// The seabed, if the system has one.
+    pub fn seabed(&self) -> Option<&Seabed> {
+        self.surroundings.seabed.as_ref()
+    }
+
+    /// Replaces the seabed (a live edit: the world restarts its integrator after it).
+    pub(crate) fn replace_seabed(&mut self, seabed: Seabed) -> Result<(), SystemError> {
+        check_anchors(&self.couplings, &seabed, &self.surroundings.gravity)?;
+        self.surroundings.seabed = Some(seabed);
+        Ok(())
     }
 
     pub fn bodies(&self) -> &[RigidBody] {
@@ -151,6 +218,9 @@ impl System {
     /// Replaces coupling `index` (a live edit: the world restarts its integrator after it).
     pub(crate) fn replace_coupling(&mut self, index: usize, coupling: Coupling) -> Result<Coupling, SystemError> {
         check_bodies(&coupling, self.bodies.len())?;
+        if let Some(seabed) = &self.surroundings.seabed {
+            check_anchors(std::slice::from_ref(&coupling), seabed, &self.surroundings.gravity)?;
+        }
         Ok(std::mem::replace(&mut self.couplings[index], coupling))
     }
 
@@ -199,7 +269,7 @@ impl System {
     /// body, which forces do not move).
     #[inline(always)]
     pub fn gravity_load(&self, body: &RigidBody) -> Load {
-        if body.is_kinematic() { Load::default() } else { Load { force: self.gravity * body.mass(), moment: Vec3::zeros() } }
+        if body.is_kinematic() { Load::default() } else { Load { force: self.surroundings.gravity * body.mass(), moment: Vec3::zeros() } }
     }
 
     /// Stage *couplings* at the kinematics `evaluation.frames`: each coupling's forces, kept per
@@ -209,7 +279,7 @@ impl System {
     /// The first coupling that cannot give its forces.
     pub fn apply_couplings(&self, evaluation: &mut Evaluation) -> Result<f64, EvaluationError> {
         let Evaluation { frames, loads, forces, caches, .. } = evaluation;
-        let stage = CouplingsStage { couplings: &self.couplings, gravity: &self.gravity, frames, caches, forces, loads };
+        let stage = CouplingsStage { couplings: &self.couplings, surroundings: &self.surroundings, frames, caches, forces, loads };
         stage.run(self.level).map_err(|(coupling, source)| EvaluationError { coupling, source })
     }
 
@@ -261,10 +331,27 @@ fn check_bodies(coupling: &Coupling, count: usize) -> Result<(), SystemError> {
     }
 }
 
+/// Every catenary end fixed in the world must lie on `seabed` or above it (within
+/// [`ON_SEABED`] of the line's length), heights along `−ĝ`.
+fn check_anchors(couplings: &[Coupling], seabed: &Seabed, gravity: &Vec3) -> Result<(), SystemError> {
+    let up = -gravity.try_normalize(0.0).unwrap_or_else(|| -Vec3::z());
+    for coupling in couplings {
+        let CouplingKind::Catenary(line) = &coupling.kind else { continue };
+        for (end, endpoint) in [(1, &line.end1), (2, &line.end2)] {
+            let Endpoint::World(point) = endpoint else { continue };
+            let height = seabed.height(point, &up);
+            if height < -ON_SEABED * line.length {
+                return Err(SystemError::BelowSeabed { coupling: coupling.name.clone(), end, depth: -height, elevation: seabed.elevation });
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The couplings stage's arguments, borrowed apart so that each build takes them as one.
 struct CouplingsStage<'a> {
     couplings: &'a [Coupling],
-    gravity: &'a Vec3,
+    surroundings: &'a Surroundings,
     frames: &'a [crate::body::BodyFrame],
     caches: &'a mut [crate::coupling::CouplingCache],
     forces: &'a mut [crate::coupling::CouplingForces],
@@ -311,7 +398,7 @@ impl CouplingsStage<'_> {
         let mut dissipated = 0.0;
         let each = self.couplings.iter().zip(self.caches.iter_mut()).zip(self.forces.iter_mut());
         for (index, ((coupling, cache), out)) in each.enumerate() {
-            coupling.apply(cache, self.frames, self.gravity, self.loads, out).map_err(|source| (index, source))?;
+            coupling.apply(cache, self.frames, self.surroundings, self.loads, out).map_err(|source| (index, source))?;
             dissipated += out.dissipated_power;
         }
         Ok(dissipated)

@@ -7,12 +7,13 @@ use proptest::prelude::*;
 use tether_physics::coupling::catenary::equations::{Closure, rise};
 use tether_physics::coupling::catenary::{Catenary, LineState};
 use tether_physics::coupling::Endpoint;
+use tether_physics::surroundings::Surroundings;
 
 type V = Vector3<f64>;
 const G: f64 = 9.80665;
 
-fn gravity() -> V {
-    V::new(0.0, 0.0, -G)
+fn dry() -> Surroundings {
+    Surroundings::dry(V::new(0.0, 0.0, -G))
 }
 
 fn line(mass_per_length: f64, length: f64, stiffness: f64) -> Catenary {
@@ -20,7 +21,7 @@ fn line(mass_per_length: f64, length: f64, stiffness: f64) -> Catenary {
 }
 
 fn solve(line: &Catenary, p1: V, p2: V) -> LineState {
-    line.solve(&p1, &p2, &gravity(), None).unwrap()
+    line.solve(&p1, &p2, &dry(), None).unwrap()
 }
 
 /// Span 10 m, length 12 m, ends level, inextensible: `a sinh(5/a) = 6` gives
@@ -222,8 +223,8 @@ proptest! {
 #[test]
 fn non_finite_ends_are_an_error() {
     let l = line(1.0, 10.0, 1e4);
-    assert!(l.solve(&V::zeros(), &V::new(f64::NAN, 0.0, 1.0), &gravity(), None).is_err());
-    assert!(l.solve(&V::zeros(), &V::new(f64::INFINITY, 0.0, 1.0), &gravity(), None).is_err());
+    assert!(l.solve(&V::zeros(), &V::new(f64::NAN, 0.0, 1.0), &dry(), None).is_err());
+    assert!(l.solve(&V::zeros(), &V::new(f64::INFINITY, 0.0, 1.0), &dry(), None).is_err());
 }
 
 /// A ball swinging on a heavy elastic line from a world point, no damper: the line is

@@ -1,8 +1,8 @@
 //! How the viewer lays out a run: the 3D scene large on the left, the plots stacked on the
-//! right (energy; tension when there are couplings; the catenaries' end tensions and the
-//! contacts' forces when there are any; each floating body's motion in the water); the
-//! `sim_time` timeline; the viewer's own side panels folded, room being short beside the
-//! control panel.
+//! right (energy; tension when there are couplings; the catenaries' end tensions, their
+//! grounded lengths on a seabed, and the contacts' forces when there are any; each floating
+//! body's motion in the water); the `sim_time` timeline; the viewer's own side panels folded,
+//! room being short beside the control panel.
 
 use crate::paths;
 use rerun::RecordingStream;
@@ -20,6 +20,9 @@ pub fn layout(world: &World) -> Blueprint {
     }
     if couplings.iter().any(|c| matches!(c.kind, CouplingKind::Catenary(_))) {
         plots.push(TimeSeriesView::new("catenary end tensions [N]").with_origin(paths::CATENARY_PLOT).into());
+    }
+    if world.system().seabed().is_some() && couplings.iter().any(|c| matches!(c.kind, CouplingKind::Catenary(_))) {
+        plots.push(TimeSeriesView::new("grounded length L_B [m]").with_origin(paths::SEABED_PLOT).into());
     }
     if couplings.iter().any(|c| matches!(c.kind, CouplingKind::Contact(_))) {
         plots.push(TimeSeriesView::new("contact forces [N]").with_origin(paths::CONTACT_PLOT).into());

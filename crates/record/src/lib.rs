@@ -19,7 +19,9 @@
 //! - `world/contacts/<name>`: a contact's face forces as arrows from the face centroids, for the
 //!   contacts and times asked for ([`FaceArrows`]; none by default);
 //! - the water, when the scene has some: `world/water/…` and `plots/water/<body>/…` (the
-//!   `tracks::water` module).
+//!   `tracks::water` module);
+//! - the seabed, when the scene has one: `world/seabed/…` (each line's grounded part and
+//!   touchdowns) and `plots/seabed` (every line's grounded length) (the `tracks::seabed` module).
 //!
 //! How it keeps up with the physics: a [`Recorder`] buffers each frame's values in plain
 //! vectors and sends them as columns (`send_columns`), one chunk per entity for many frames,

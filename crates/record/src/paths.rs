@@ -16,6 +16,9 @@
 //! | `world/water/surface`, `world/water/seabed` | the sea surface, the seabed plane |
 //! | `world/water/forces/<body>` | the water's force on a floating body |
 //! | `plots/water/<body>/motion`, `…/angles` | wave elevation and heave; roll and pitch |
+//! | `world/seabed/plane` | the seabed of a scene without water |
+//! | `world/seabed/grounded/<line>`, `world/seabed/touchdowns/<line>` | a line's part on the bottom, its touchdowns |
+//! | `plots/seabed` | every line's grounded length, a series named after it |
 
 use tether_physics::coupling::{Coupling, CouplingKind};
 
@@ -40,6 +43,21 @@ pub const WATER_SURFACE: &str = "world/water/surface";
 pub const SEABED: &str = "world/water/seabed";
 /// The floating bodies' plots.
 pub const WATER_PLOTS: &str = "plots/water";
+
+/// The seabed plane of a scene without water.
+pub const SEABED_PLANE: &str = "world/seabed/plane";
+/// Every line's grounded length, a series each.
+pub const SEABED_PLOT: &str = "plots/seabed";
+
+/// `world/seabed/grounded/<line>`: the part of a line on the bottom.
+pub fn grounded_line(line: &str) -> String {
+    format!("world/seabed/grounded/{line}")
+}
+
+/// `world/seabed/touchdowns/<line>`.
+pub fn touchdowns(line: &str) -> String {
+    format!("world/seabed/touchdowns/{line}")
+}
 
 /// `world/water/forces/<body>`.
 pub fn water_force(body: &str) -> String {

@@ -2,17 +2,18 @@
 //! simulation state. Every check that needs more than one value (names, references, mass
 //! properties, tables) is made here and reported with the item it concerns.
 
-use super::file::{AgainstDef, BodyDef, CouplingDef, EndDef, InertiaDef, LawDef, NodeDef, SceneFile, ShapeDef, SupportDef, Triple, VelocityDef};
+use super::file::{AgainstDef, BodyDef, CouplingDef, EndDef, InertiaDef, LawDef, NodeDef, SceneFile, SeabedContactDef, SeabedDef, ShapeDef, SupportDef, Triple, VelocityDef};
 use super::mesh_file;
 use super::source::ItemKind;
-use tether_physics::body::{PrescribedMotion, RigidBody, Shape, Support, VelocityProfile};
+use tether_physics::body::{BodyState, PrescribedMotion, RigidBody, Shape, Support, VelocityProfile};
 use tether_physics::coupling::contact::{ContactLaw, Opposing, Plane};
 use tether_physics::coupling::{Catenary, Contact, Coupling, CouplingKind, ElasticLaw, Endpoint, SpringDamper};
 use tether_physics::integrator::{Substeps, Timing, Tolerances};
 use tether_physics::mass_properties::{MassError, MassProperties, Node};
-use tether_physics::math::{Mat3, Vec3};
+use tether_physics::math::{Mat3, Rotation, Vec3};
 use tether_physics::mesh::{BoundaryMesh, MeshError, Surface};
-use tether_physics::system::System;
+use tether_physics::seabed::Seabed;
+use tether_physics::system::{System, SystemError};
 use tether_physics::water::Hull;
 use tether_physics::world::{StepError, World};
 use std::path::Path;
@@ -26,11 +27,12 @@ pub use water::{hydro_spec, water_spec};
 pub enum Place {
     /// A top-level field.
     Top(&'static str),
-    /// A field of a top-level section (`water: Water(... depth: ...)`), or the section itself.
-    Section { section: &'static str, field: &'static str },
     /// An item of a list: its `occurrence`-th `name: "…"`, then optionally a field after it and
     /// a string literal after that.
     Item { kind: ItemKind, name: String, occurrence: usize, field: Option<&'static str>, literal: Option<String> },
+    /// A top-level section (`seabed: Seabed(…)`, `water: Water(…)`), then optionally a field in it and a string
+    /// literal after that.
+    Section { section: &'static str, field: Option<&'static str>, literal: Option<String> },
 }
 
 /// A problem found while building, before it is given a line and column.
@@ -95,7 +97,7 @@ pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
                 body.principal_moments().as_slice()
             ));
         }
-        states.push(body.initial_state(vec3(def.velocity), vec3(def.angular_velocity)));
+        states.push(initial_state(def, body));
     }
     let mut couplings = Vec::with_capacity(file.couplings.len());
     for (index, def) in file.couplings.iter().enumerate() {
@@ -103,14 +105,129 @@ pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
         check_name(&at, file.couplings[..index].iter().map(CouplingDef::name))?;
         couplings.push(build_coupling(def, &mut bodies, &at)?);
     }
+    let seabed = match &file.seabed {
+        Some(def) => Some(build_seabed(def, file, &mut bodies, &mut couplings)?),
+        None => None,
+    };
+    warn_about_lines(file, &mut warnings);
     let system = System::new(vec3(file.gravity), bodies.bodies.clone(), couplings, states).map_err(|e| Problem { place: Place::Top("couplings"), message: e.to_string() })?;
-    let system = water::add_water(system, file, &bodies.bodies, &mut warnings)?;
+    let mut system = water::add_water(system, file, &bodies.bodies, &mut warnings)?;
+    if let Some(seabed) = seabed {
+        system = system.with_seabed(seabed).map_err(|e| system_problem(file, e))?;
+    }
     // Names are unique by now: the coupling at fault is the first of its name.
     let world = World::new(system, timing).map_err(|e| match e {
         StepError::Coupling { coupling, source, .. } => ItemAt::new(ItemKind::Coupling, &coupling, 0).at_name(format!("at t = 0: {source}")),
         other => Problem { place: Place::Top("bodies"), message: other.to_string() },
     })?;
     Ok(Built { world, bodies, warnings })
+}
+
+/// The state of a body at t = 0: its initial velocities, and turned by `def.rotation` about its
+/// master node.
+fn initial_state(def: &BodyDef, body: &RigidBody) -> BodyState {
+    let state = body.initial_state(vec3(def.velocity), vec3(def.angular_velocity));
+    let turn = Rotation::from_scaled_axis(vec3(def.rotation));
+    let master = vec3(def.master.position);
+    let spin = state.orientation * state.angular_velocity;
+    let orientation = turn * state.orientation;
+    BodyState { position: master + turn * (state.position - master), orientation, angular_velocity: orientation.inverse_transform_vector(&spin), ..state }
+}
+
+/// The seabed section: its elevation and line friction, and a contact coupling
+/// `seabed.<body>` against its plane for each body listed (added to `couplings`).
+fn build_seabed(def: &SeabedDef, file: &SceneFile, built: &mut Bodies, couplings: &mut Vec<Coupling>) -> Result<Seabed, Problem> {
+    let at = ItemAt::section("seabed");
+    let elevation = seabed_elevation(def, file, &at)?;
+    let seabed = Seabed::new(elevation, at.require("line_friction", def.line_friction, Bound::NonNegative, "")?).map_err(|e| at.at_field("line_friction", e.to_string()))?;
+    if let Some(contact) = &def.contact {
+        couplings.extend(seabed_contacts(contact, &seabed, file, built, &at)?);
+    }
+    Ok(seabed)
+}
+
+/// The seabed's height `z_b` [m]: the water's bottom `z_w − h` when the scene has water with a
+/// depth (a declared elevation must then agree with it), the declared one in a scene without
+/// water. Deep water (no depth) has no bottom for a seabed to be.
+fn seabed_elevation(def: &SeabedDef, file: &SceneFile, at: &ItemAt) -> Result<f64, Problem> {
+    match (&file.water, def.elevation) {
+        (None, Some(elevation)) => Ok(elevation),
+        (None, None) => Err(at.at_name("the seabed needs an elevation (z_b, m): the scene has no water depth to take it from".into())),
+        (Some(water), declared) => {
+            let Some(depth) = water.depth else {
+                return Err(at.at_name("the water is deep (no depth): give the water a depth, and the seabed lies there".into()));
+            };
+            let bottom = water.level - depth;
+            match declared {
+                // Agreement to round-off of the sum `z_w − h`.
+                Some(elevation) if (elevation - bottom).abs() > 1e-9 * (1.0 + bottom.abs()) => Err(at.at_field(
+                    "elevation",
+                    format!("the seabed elevation {elevation} m disagrees with the water's bottom (level {} m − depth {depth} m = {bottom} m): leave it out and it lies there", water.level),
+                )),
+                _ => Ok(bottom),
+            }
+        }
+    }
+}
+
+/// A contact coupling against the seabed's plane for each body of `def`.
+fn seabed_contacts(def: &SeabedContactDef, seabed: &Seabed, file: &SceneFile, built: &mut Bodies, at: &ItemAt) -> Result<Vec<Coupling>, Problem> {
+    let law = build_contact_law(def.stiffness, def.damping, def.range, def.friction, def.friction_sharpness, at)?;
+    let up = -vec3(file.gravity).try_normalize(0.0).unwrap_or_else(|| -Vec3::z());
+    let plane = Plane { point: up * seabed.elevation, normal: up };
+    let Bodies { bodies, boundaries } = built;
+    let mut couplings = Vec::with_capacity(def.bodies.len());
+    for (index, name) in def.bodies.iter().enumerate() {
+        let body = body_index(name, bodies, "bodies", at)?;
+        if def.bodies[..index].contains(name) {
+            return Err(at.problem(Some("bodies"), Some(name), format!("body {name:?} is listed twice")));
+        }
+        let coupling = format!("seabed.{name}");
+        if file.couplings.iter().any(|c| c.name() == coupling) {
+            return Err(at.problem(Some("bodies"), Some(name), format!("the seabed contact of body {name:?} would be named {coupling:?}, which a coupling already is")));
+        }
+        let boundary = boundaries.mesh(bodies, body).map_err(|e| at.problem(Some("bodies"), Some(name), format!("boundary of body {name:?}: {e}")))?;
+        let expected_area = boundary.area() / 6.0;
+        let contact = Contact::new(body, boundary, Opposing::Planes(vec![plane]), law, expected_area);
+        couplings.push(Coupling { name: coupling, kind: CouplingKind::Contact(contact) });
+    }
+    Ok(couplings)
+}
+
+/// A system the scene cannot make, placed at the coupling at fault when there is one.
+fn system_problem(file: &SceneFile, error: SystemError) -> Problem {
+    match &error {
+        SystemError::BelowSeabed { coupling, end, .. } => {
+            let field = if *end == 1 { "end1" } else { "end2" };
+            match file.couplings.iter().position(|c| c.name() == coupling) {
+                Some(index) => coupling_at(file, index).problem(Some(field), None, strip_coupling(&error.to_string())),
+                None => Problem { place: Place::Top("seabed"), message: error.to_string() },
+            }
+        }
+        _ => Problem { place: Place::Top("couplings"), message: error.to_string() },
+    }
+}
+
+/// The message of a system error without its leading `coupling "name": `, which the placed
+/// problem adds again.
+fn strip_coupling(message: &str) -> String {
+    message.split_once("\": ").map_or(message, |(_, rest)| rest).to_string()
+}
+
+/// Warnings about lines: a displaced volume where there is no water to displace; a line that
+/// floats (`ρ A_d > λ0`: it arches upward, and nothing stops it at the surface).
+fn warn_about_lines(file: &SceneFile, warnings: &mut Vec<String>) {
+    for def in &file.couplings {
+        let CouplingDef::Catenary { name, displaced_area, mass_per_length, .. } = def else { continue };
+        match &file.water {
+            None if *displaced_area > 0.0 => warnings.push(format!("coupling {name:?}: displaced_area is ignored in a scene without water (the line weighs λ0 g per metre)")),
+            Some(water) if water.density * displaced_area > *mass_per_length => warnings.push(format!(
+                "coupling {name:?}: the line floats (ρ A_d = {} kg/m > λ0 = {mass_per_length} kg/m): it arches upward from its ends, and nothing stops it at the water surface",
+                water.density * displaced_area
+            )),
+            _ => {}
+        }
+    }
 }
 
 /// Where coupling `index` of `file` is: its name and how many before it share the name.
@@ -164,19 +281,29 @@ fn build_tolerances(file: &SceneFile, warnings: &mut Vec<String>) -> Result<Tole
     Ok(Tolerances { rtol: def.rtol, atol: def.atol, max_step: def.max_step })
 }
 
-/// Locates problems in one item.
+/// Locates problems in one item, or in a top-level section.
 struct ItemAt<'a> {
     kind: ItemKind,
     name: &'a str,
     occurrence: usize,
+    /// The section the problems are in, instead of an item.
+    section: Option<&'static str>,
 }
 
 impl<'a> ItemAt<'a> {
     fn new(kind: ItemKind, name: &'a str, occurrence: usize) -> Self {
-        Self { kind, name, occurrence }
+        Self { kind, name, occurrence, section: None }
+    }
+
+    /// Problems in the top-level section `section`.
+    fn section(section: &'static str) -> Self {
+        Self { kind: ItemKind::Coupling, name: section, occurrence: 0, section: Some(section) }
     }
 
     fn problem(&self, field: Option<&'static str>, literal: Option<&str>, message: String) -> Problem {
+        if let Some(section) = self.section {
+            return Problem { place: Place::Section { section, field, literal: literal.map(str::to_string) }, message: format!("{section}: {message}") };
+        }
         Problem {
             place: Place::Item { kind: self.kind, name: self.name.to_string(), occurrence: self.occurrence, field, literal: literal.map(str::to_string) },
             // Debug formatting quotes the name and escapes what would break the one-line error.
@@ -375,12 +502,13 @@ fn build_coupling(def: &CouplingDef, built: &mut Bodies, at: &ItemAt) -> Result<
             let damping = at.require("damping", *damping, Bound::NonNegative, "N·s/m")?;
             CouplingKind::SpringDamper(SpringDamper::new(end1, end2, build_law(law, at)?, damping))
         }
-        CouplingDef::Catenary { end1, end2, mass_per_length, length, stiffness, .. } => {
+        CouplingDef::Catenary { end1, end2, mass_per_length, length, stiffness, displaced_area, .. } => {
             let (end1, end2) = build_ends(end1, end2, bodies, at)?;
             let mass_per_length = at.require("mass_per_length", *mass_per_length, Bound::NonNegative, "kg/m")?;
             let length = at.require("length", *length, Bound::Positive, "m")?;
             let stiffness = at.require("stiffness", *stiffness, Bound::Positive, "N/m")?;
-            CouplingKind::Catenary(Catenary::new(end1, end2, mass_per_length, length, stiffness))
+            let displaced_area = at.require("displaced_area", *displaced_area, Bound::NonNegative, "m²")?;
+            CouplingKind::Catenary(Catenary::new(end1, end2, mass_per_length, length, stiffness).with_displaced_area(displaced_area))
         }
         CouplingDef::Contact { body, against, stiffness, damping, range, friction, friction_sharpness, expected_area, .. } => {
             let law = build_contact_law(*stiffness, *damping, *range, *friction, *friction_sharpness, at)?;

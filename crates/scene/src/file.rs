@@ -40,6 +40,46 @@ pub struct SceneFile {
     /// Water (PHYSICS.md §6, see [`crate::water`]); absent: none, and no body feels any.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub water: Option<WaterDef>,
+    /// The bottom lines lie on and bodies touch (PHYSICS.md §7), at the water's depth when
+    /// the scene has water; none when absent.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seabed: Option<SeabedDef>,
+}
+
+/// A flat seabed (PHYSICS.md §7).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename = "Seabed", deny_unknown_fields)]
+pub struct SeabedDef {
+    /// `z_b` [m]: the bottom's height along the upward vertical (`z` with the default gravity).
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "finite_option")]
+    pub elevation: Option<f64>,
+    /// `C_B` [–] ≥ 0: friction of a line lying on the bottom, per unit of its submerged weight
+    /// (default 0).
+    #[serde(default, deserialize_with = "finite")]
+    pub line_friction: f64,
+    /// Bodies that touch the bottom, and how (a contact coupling each, named `seabed.<body>`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contact: Option<SeabedContactDef>,
+}
+
+/// Penalty contact of bodies with the seabed (PHYSICS.md §4), with the parameters of a
+/// [`CouplingDef::Contact`]: `stiffness` k1 [N/m³] > 0, `damping` k2 [N·s/m³] ≥ 0, `range` d0
+/// [m] ≥ 0, `friction` μ ≥ 0, `friction_sharpness` k_t [s/m] > 0 (default 100).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename = "SeabedContact", deny_unknown_fields)]
+pub struct SeabedContactDef {
+    /// The bodies, by name.
+    pub bodies: Vec<String>,
+    #[serde(deserialize_with = "finite")]
+    pub stiffness: f64,
+    #[serde(default, deserialize_with = "finite")]
+    pub damping: f64,
+    #[serde(default, deserialize_with = "finite")]
+    pub range: f64,
+    #[serde(default, deserialize_with = "finite")]
+    pub friction: f64,
+    #[serde(default = "default_friction_sharpness", deserialize_with = "finite")]
+    pub friction_sharpness: f64,
 }
 
 /// Tolerances of the adaptive `dopri45` (PHYSICS.md §1; see [`tether_physics::integrator::Tolerances`]).
@@ -87,6 +127,10 @@ pub struct BodyDef {
     /// Initial angular velocity [rad/s], world.
     #[serde(default, deserialize_with = "finite3")]
     pub angular_velocity: Triple,
+    /// Rotation vector [rad] (axis × angle, world) turning the body about its master node at
+    /// t = 0: its nodes, shape and coupling points are given unturned (default none).
+    #[serde(default, skip_serializing_if = "is_zero3", deserialize_with = "finite3")]
+    pub rotation: Triple,
     #[serde(default)]
     pub support: SupportDef,
     pub shape: ShapeDef,
@@ -212,6 +256,14 @@ fn one() -> f64 {
     1.0
 }
 
+fn is_zero(value: &f64) -> bool {
+    *value == 0.0
+}
+
+fn is_zero3(value: &Triple) -> bool {
+    value.iter().all(|v| *v == 0.0)
+}
+
 fn z_axis() -> Triple {
     [0.0, 0.0, 1.0]
 }
@@ -243,8 +295,10 @@ pub enum CouplingDef {
         #[serde(default, deserialize_with = "finite")]
         damping: f64,
     },
-    /// Elastic catenary line (PHYSICS.md §3): `mass_per_length` λ0 [kg/m] ≥ 0, unstretched
-    /// `length` L_eq [m] > 0, `stiffness` D [N/m] > 0 of the whole line (EA = D L_eq).
+    /// Elastic catenary line (PHYSICS.md §3, on the seabed §7): `mass_per_length` λ0 [kg/m]
+    /// ≥ 0, unstretched `length` L_eq [m] > 0, `stiffness` D [N/m] > 0 of the whole line
+    /// (EA = D L_eq), `displaced_area` A_d [m²] ≥ 0, its displaced volume per length: in water
+    /// it weighs `(λ0 − ρ A_d) g` per metre (default 0).
     Catenary {
         name: String,
         end1: EndDef,
@@ -255,6 +309,8 @@ pub enum CouplingDef {
         length: f64,
         #[serde(deserialize_with = "finite")]
         stiffness: f64,
+        #[serde(default, skip_serializing_if = "is_zero", deserialize_with = "finite")]
+        displaced_area: f64,
     },
     /// Penalty contact with tanh friction (PHYSICS.md §4) between the faces of body `body`'s
     /// shape and `against`. Per unit face area: `stiffness` k1 [N/m³] > 0, `damping` k2

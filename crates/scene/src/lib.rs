@@ -7,6 +7,7 @@ pub mod build;
 pub mod file;
 mod finite;
 pub mod mesh_file;
+pub mod pose;
 pub mod source;
 pub mod water;
 
@@ -146,9 +147,12 @@ fn syntax_error(source: &Source, label: &str, error: &ron::error::SpannedError) 
 fn placed(source: &Source, label: &str, problem: Problem) -> SceneError {
     let offset = match &problem.place {
         Place::Top(field) => source.field(0, field),
-        Place::Section { section, field } => source.field(0, section).map(|at| source.field(at, field).unwrap_or(at)),
         Place::Item { kind, name, occurrence, field, literal } => source.item(*kind, name, *occurrence).map(|item| {
             let at_field = field.and_then(|f| source.field(item, f)).unwrap_or(item);
+            literal.as_deref().and_then(|l| source.literal(at_field, l)).unwrap_or(at_field)
+        }),
+        Place::Section { section, field, literal } => source.field(0, section).map(|start| {
+            let at_field = field.and_then(|f| source.field(start, f)).unwrap_or(start);
             literal.as_deref().and_then(|l| source.literal(at_field, l)).unwrap_or(at_field)
         }),
     };

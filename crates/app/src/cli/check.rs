@@ -30,6 +30,9 @@ fn report(world: &World, label: &str) -> String {
         world.step_size()
     );
     let _ = writeln!(out, "gravity {} m/s²", v(&world.gravity()));
+    if let Some(seabed) = world.system().seabed() {
+        let _ = writeln!(out, "seabed at z_b = {} m, line friction C_B = {}", seabed.elevation, seabed.line_friction);
+    }
     for body in world.bodies() {
         let p = &body.mass_properties;
         let _ = writeln!(out, "\nbody \"{}\" ({})", body.name, support(&body.support));
@@ -60,6 +63,10 @@ fn report(world: &World, label: &str) -> String {
             CouplingKind::Catenary(line) => {
                 let _ = writeln!(out, "{ends}");
                 let _ = writeln!(out, "  λ0 = {} kg/m, L_eq = {} m, D = {} N/m (EA = {} N)", line.mass_per_length, line.length, line.stiffness, line.stiffness * line.length);
+                let fluid = world.system().surroundings().fluid_density;
+                if line.displaced_area > 0.0 {
+                    let _ = writeln!(out, "  A_d = {} m²: submerged weight {:.6} N/m", line.displaced_area, line.submerged_mass_per_length(fluid) * world.gravity().norm());
+                }
                 if let Some(state) = world.line_state(index) {
                     let (t1, t2) = state.end_tensions();
                     let _ = writeln!(
@@ -67,6 +74,13 @@ fn report(world: &World, label: &str) -> String {
                         "  chord {chord:.6} m, H = {:.6} N, V1 = {:.6} N, V2 = {:.6} N, end tensions {t1:.6} / {t2:.6} N ({} Newton iterations)",
                         state.horizontal_tension, state.vertical1, state.vertical2(), state.iterations
                     );
+                    if state.ground.is_some() {
+                        let touchdowns: Vec<String> = state.touchdowns().iter().map(v).collect();
+                        let _ = writeln!(out, "  on the seabed: L_B = {:.6} m, touchdown {}", state.grounded_length(), if touchdowns.is_empty() { "none".to_string() } else { touchdowns.join(", ") });
+                    }
+                    if line.submerged_mass_per_length(fluid) < 0.0 {
+                        let _ = writeln!(out, "  warning: the line is buoyant (ρ A_d > λ0): it arches upward; nothing stops it at the water surface");
+                    }
                 }
             }
             CouplingKind::Contact(contact) => contact_report(&mut out, world, contact),

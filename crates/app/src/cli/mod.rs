@@ -1,9 +1,11 @@
 //! Subcommands of `tether`, one module each.
 
 mod check;
+mod equilibrium;
 mod estimate_contact;
 mod forces;
 mod gui;
+mod offsets;
 mod record;
 mod study;
 mod sweep;
@@ -57,6 +59,12 @@ enum Command {
     },
     /// Contact parameters k1, k2, the stopping time τ and a time step from an expected impact.
     EstimateContact(estimate_contact::EstimateArgs),
+    /// The static equilibrium of every free body: poses, line tensions, grounded lengths and
+    /// touchdowns, each body's 6 × 6 stiffness; --write saves the scene starting there.
+    Equilibrium(equilibrium::EquilibriumArgs),
+    /// A body's restoring force held at offsets from equilibrium (the offset curve): a table, a
+    /// CSV file and a PNG chart.
+    Offsets(offsets::OffsetsArgs),
 }
 
 /// Exit code of a run stopped by Ctrl-C or SIGTERM (128 + SIGINT, the shell's convention).
@@ -76,6 +84,8 @@ pub fn run(cli: Cli) -> anyhow::Result<u8> {
         Command::Forces { scene, json } => forces::run(&load(&scene)?, json).map(|()| 0),
         Command::EstimateContact(args) => estimate_contact::run(&args).map(|()| 0),
         Command::Study(args) => study::run(&args).map(|()| 0),
+        Command::Equilibrium(args) => equilibrium::run(&args).map(|()| 0),
+        Command::Offsets(args) => offsets::run(&args).map(|()| 0),
         Command::Sweep(args) => sweep::run(&args).map(|outcome| match outcome {
             sweep::Outcome::Finished => 0,
             sweep::Outcome::Interrupted => INTERRUPTED,

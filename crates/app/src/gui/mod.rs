@@ -11,6 +11,9 @@
 //!   - [`tuning`]: every parameter of every coupling, with units; revert, save as;
 //!   - [`indicators`]: energy balance, stable time steps, the selected body;
 //!   - [`contact_estimator`]: k1, k2, τ from an impact, where the scene has contact;
+//!   - [`water`]: waves, current, density, each floating body's coefficients, live;
+//!   - [`statics`]: the seabed's line friction, live; the equilibrium button; a body's offset
+//!     curve;
 //!   - [`sweep_table`]: a sweep directory's cases, sortable, a case loaded in one click (drawn
 //!     below the viewer when a sweep is open);
 //! - [`simulation`]: the thread that owns the world;
@@ -26,6 +29,7 @@ pub mod panel;
 pub mod run_controls;
 pub mod scenes;
 pub mod simulation;
+pub mod statics;
 pub mod stream;
 pub mod sweep_table;
 pub mod tuning;

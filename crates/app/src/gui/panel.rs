@@ -15,6 +15,7 @@ use super::simulation::{Command, Report, Simulation, Speed, Status, Wake};
 use super::stream::Sinks;
 use super::sweep_table::{SweepAction, SweepTable};
 use super::tuning::{self, TuningAction};
+use super::statics::{self, StaticsAction, StaticsDraft};
 use super::water::{self, WaterAction};
 use rerun::external::egui;
 use tether_scene::file::CouplingDef;
@@ -74,6 +75,8 @@ pub struct ControlPanel {
     impact: ImpactDraft,
     /// The sweep directory open beside the scene, if any.
     sweep: Option<SweepTable>,
+    /// The statics panel's knobs and last offset curve.
+    statics: StaticsDraft,
 }
 
 impl ControlPanel {
@@ -97,6 +100,7 @@ impl ControlPanel {
             recordings_to_open: Vec::new(),
             impact: ImpactDraft::default(),
             sweep: None,
+            statics: StaticsDraft::new(None),
         })
     }
 
@@ -216,6 +220,7 @@ impl ControlPanel {
         self.load_error = None;
         self.timing = TimingDraft::from_file(&loaded.scene.tuned);
         self.history = EnergyHistory::default();
+        self.statics = StaticsDraft::new(loaded.scene.tuned.seabed.as_ref().map(|s| s.line_friction));
         self.scene = Some(loaded.scene);
         self.simulation.send(Command::Load(Box::new(loaded.run)));
         self.simulation.send(Command::SetSpeed(self.settings.speed));
@@ -253,6 +258,7 @@ impl ControlPanel {
             }
             self.tuning_ui(ui);
             self.water_ui(ui);
+            self.statics_ui(ui, selected);
             ui.separator();
             self.log_ui(ui);
         });
@@ -271,6 +277,10 @@ impl ControlPanel {
                 }
                 Report::Message(text) => self.note(text),
                 Report::Error(text) => self.note_error(text),
+                Report::OffsetCurve(curve) => {
+                    self.note(format!("offset curve of body \"{}\" in {}: {} offsets", curve.body, curve.direction, curve.points.len()));
+                    self.statics.curve = Some(curve);
+                }
             }
         }
     }
@@ -425,6 +435,28 @@ impl ControlPanel {
                 WaterAction::Water => self.tune_water(),
                 WaterAction::Hydro(index) => self.tune_hydro(index),
             }
+        }
+    }
+
+    /// The statics panel: the seabed's C_B, the equilibrium button, the offset curve of the body
+    /// selected in the viewer (or chosen in the panel).
+    fn statics_ui(&mut self, ui: &mut egui::Ui, selected: Option<&str>) {
+        let Some(open) = &mut self.scene else { return };
+        let bodies: Vec<String> = open.tuned.bodies.iter().map(|b| b.name.clone()).collect();
+        let selected = selected.and_then(tether_record::paths::body_of);
+        for action in statics::ui(ui, &mut self.statics, &bodies, selected) {
+            let command = match action {
+                StaticsAction::SeabedFriction(friction) => {
+                    // What runs, for "save as".
+                    if let Some(seabed) = &mut open.tuned.seabed {
+                        seabed.line_friction = friction;
+                    }
+                    Command::SetSeabedFriction(friction)
+                }
+                StaticsAction::Equilibrium => Command::Equilibrium,
+                StaticsAction::OffsetCurve { body, direction, to, steps } => Command::OffsetCurve { body, direction, to, steps },
+            };
+            self.simulation.send(command);
         }
     }
 

@@ -66,8 +66,11 @@ fn coupling_knobs(ui: &mut egui::Ui, index: usize, def: &mut CouplingDef) -> boo
         .num_columns(3)
         .show(ui, |ui| match def {
             CouplingDef::SpringDamper { law, damping, .. } => law_knobs(ui, law) | knob(ui, "damping k_d", damping, "N·s/m"),
-            CouplingDef::Catenary { mass_per_length, length, stiffness, .. } => {
-                knob(ui, "mass per length λ0", mass_per_length, "kg/m") | knob(ui, "length L_eq", length, "m") | knob(ui, "stiffness D", stiffness, "N/m")
+            CouplingDef::Catenary { mass_per_length, length, stiffness, displaced_area, .. } => {
+                knob(ui, "mass per length λ0", mass_per_length, "kg/m")
+                    | knob(ui, "length L_eq", length, "m")
+                    | knob(ui, "stiffness D", stiffness, "N/m")
+                    | knob(ui, "displaced area A_d", displaced_area, "m²")
             }
             CouplingDef::Contact { stiffness, damping, range, friction, friction_sharpness, expected_area, .. } => {
                 let law = knob(ui, "stiffness k1", stiffness, "N/m³")

@@ -19,6 +19,7 @@ pub mod spring_damper;
 
 use crate::body::{BodyFrame, Load};
 use crate::math::Vec3;
+use crate::surroundings::Surroundings;
 pub use catenary::{Catenary, CatenaryCache, CatenaryError};
 pub use contact::{Contact, ContactCache};
 pub use elastic_law::ElasticLaw;
@@ -92,16 +93,16 @@ impl Coupling {
         }
     }
 
-    /// Evaluates the forces at the kinematics `frames` under `gravity` [m/s²], adds them to the
-    /// end bodies' `loads` and writes what the coupling did to `out`. A `cache` of another kind
+    /// Evaluates the forces at the kinematics `frames` in `surroundings` (gravity, fluid,
+    /// seabed), adds them to the end bodies' `loads` and writes what the coupling did to `out`. A `cache` of another kind
     /// (never given by the world, which makes each from its coupling) is started afresh.
     #[inline(always)]
-    pub fn apply(&self, cache: &mut CouplingCache, frames: &[BodyFrame], gravity: &Vec3, loads: &mut [Load], out: &mut CouplingForces) -> Result<(), CouplingError> {
+    pub fn apply(&self, cache: &mut CouplingCache, frames: &[BodyFrame], surroundings: &Surroundings, loads: &mut [Load], out: &mut CouplingForces) -> Result<(), CouplingError> {
         match (&self.kind, cache) {
             (CouplingKind::SpringDamper(spring), CouplingCache::SpringDamper(memory)) => spring.apply(memory, frames, loads, out),
-            (CouplingKind::Catenary(line), CouplingCache::Catenary(memory)) => line.apply(memory, frames, gravity, loads, out)?,
+            (CouplingKind::Catenary(line), CouplingCache::Catenary(memory)) => line.apply(memory, frames, surroundings, loads, out)?,
             (CouplingKind::Contact(contact), CouplingCache::Contact(memory)) => contact.apply(memory, frames, loads, out),
-            (_, cache) => return self.apply_with_fresh_cache(cache, frames, gravity, loads, out),
+            (_, cache) => return self.apply_with_fresh_cache(cache, frames, surroundings, loads, out),
         }
         Ok(())
     }
@@ -110,8 +111,8 @@ impl Coupling {
     /// world never gets here).
     #[cold]
     #[inline(never)]
-    fn apply_with_fresh_cache(&self, cache: &mut CouplingCache, frames: &[BodyFrame], gravity: &Vec3, loads: &mut [Load], out: &mut CouplingForces) -> Result<(), CouplingError> {
+    fn apply_with_fresh_cache(&self, cache: &mut CouplingCache, frames: &[BodyFrame], surroundings: &Surroundings, loads: &mut [Load], out: &mut CouplingForces) -> Result<(), CouplingError> {
         *cache = self.new_cache();
-        self.apply(cache, frames, gravity, loads, out)
+        self.apply(cache, frames, surroundings, loads, out)
     }
 }

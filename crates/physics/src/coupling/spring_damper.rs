@@ -9,7 +9,7 @@ use super::elastic_law::ElasticLaw;
 use super::ends::Endpoint;
 use super::forces::CouplingForces;
 use crate::body::{BodyFrame, Load};
-use crate::math::Vec3;
+use crate::math::{Mat3, Vec3};
 
 /// Below this distance [m] the ends count as coincident: the direction is undefined.
 const COINCIDENT: f64 = 1e-12;
@@ -72,6 +72,21 @@ impl SpringDamper {
             dissipated_power: damping_force * rate,
             potential,
         };
+    }
+
+    /// Tangent stiffness of the spring at rest (no damper force) at the kinematics `frames`:
+    /// `K = ∂(f_e d)/∂p2 = k(x) d dᵀ + (f_e/x)(E − d dᵀ)` [N/m] (the spring turns with its ends),
+    /// as the blocks `∂f_i/∂p_j = [[−K, K], [K, −K]]`; zero while the ends coincide.
+    pub fn end_stiffness(&self, frames: &[BodyFrame]) -> [[Mat3; 2]; 2] {
+        let separation = self.end2.motion(frames).position - self.end1.motion(frames).position;
+        let length = separation.norm();
+        if length <= COINCIDENT {
+            return [[Mat3::zeros(); 2]; 2];
+        }
+        let d = separation / length;
+        let along = d * d.transpose();
+        let k = along * self.law.tangent_stiffness(length) + (Mat3::identity() - along) * (self.law.force(length) / length);
+        [[-k, k], [k, -k]]
     }
 }
 

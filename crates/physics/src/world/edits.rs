@@ -1,13 +1,16 @@
 //! Live edits of a running world: a coupling replaced, the water or a body's coefficients in it
-//! changed, the time step changed, a reset. All but the reset start the integrator again from the synchronised state at the current time (positions and
+//! changed, the seabed changed, the bodies placed (at a static equilibrium), the time step
+//! changed, a reset. All but the reset start the integrator again from the synchronised state at the current time (positions and
 //! velocities do not move), keeping the energy ledger, so the motion goes on under what changed;
 //! a refused edit leaves the world as it was.
 
-use super::error::{StepError, TimingError, WaterEditError};
+use super::error::{EditError, StepError, TimingError, WaterEditError};
 use super::World;
+use crate::body::BodyState;
 use crate::coupling::{Coupling, CouplingError};
 use crate::energy::Work;
 use crate::integrator::{Substeps, Timing};
+use crate::seabed::Seabed;
 use crate::stability;
 use crate::system::SystemError;
 use crate::water::WaterSpec;
@@ -53,10 +56,59 @@ impl World {
         Ok(())
     }
 
+    /// Replaces the seabed while running (live tuning of its line friction `C_B`): as
+    /// [`World::replace_coupling`], the integrator starts again at the current time from the
+    /// synchronised state, and the jump of the lines' energy is booked as external work.
+    ///
+    /// # Errors
+    /// A catenary anchor would lie below the new seabed, or the lines cannot give their forces
+    /// on it; the world is then unchanged.
+    pub fn set_seabed(&mut self, seabed: Seabed) -> Result<(), EditError> {
+        let before = self.clone();
+        self.states = self.synchronized_states();
+        if let Err(error) = self.system.replace_seabed(seabed) {
+            *self = before;
+            return Err(error.into());
+        }
+        if let Err(error) = self.start_integrator() {
+            *self = before;
+            return Err(error.into());
+        }
+        let jump = self.energy().total() - before.energy().total();
+        self.ledger.add(&Work { dissipated: 0.0, external: jump });
+        self.health.limit = stability::binding(&self.limits());
+        Ok(())
+    }
+
+    /// Puts the bodies at `states` at the current time, velocities included (the GUI's
+    /// equilibrium button: the scene jumps to its static pose, at rest). The integrator starts
+    /// again from them; the jump in energy is booked as external work, as for a tuned coupling.
+    ///
+    /// # Errors
+    /// A state per body is needed, and the couplings must give their forces there; the world is
+    /// then unchanged.
+    pub fn place(&mut self, states: &[BodyState]) -> Result<(), EditError> {
+        if states.len() != self.states.len() {
+            let error = crate::system::SystemError::StateCount { bodies: self.states.len(), states: states.len() };
+            return Err(error.into());
+        }
+        let before = self.clone();
+        self.states = states.to_vec();
+        if let Err(error) = self.start_integrator() {
+            *self = before;
+            return Err(error.into());
+        }
+        let jump = self.energy().total() - before.energy().total();
+        self.ledger.add(&Work { dissipated: 0.0, external: jump });
+        self.health.limit = stability::binding(&self.limits());
+        Ok(())
+    }
+
     /// Replaces the water's spec while running (waves, current, density, level, depth, ramp):
     /// the integrator starts again at the current time from the synchronised state under the new
-    /// water. The water stores no energy, so the ledger needs no correction; its forces' work
-    /// goes on being booked as external work.
+    /// water. The water stores no energy, but the lines weigh in it (`(λ0 − ρ A_d) g`) and lie
+    /// on its bottom: the jump of their energy is booked as external work, as for a tuned
+    /// coupling; the water's forces' work goes on being booked as external work.
     ///
     /// # Errors
     /// Water that cannot be, a world without water, or forces that cannot be evaluated; the
@@ -88,6 +140,8 @@ impl World {
             *self = before;
             return Err(WaterEditError::Forces(error));
         }
+        let jump = self.energy().total() - before.energy().total();
+        self.ledger.add(&Work { dissipated: 0.0, external: jump });
         self.health.limit = stability::binding(&self.limits());
         Ok(())
     }

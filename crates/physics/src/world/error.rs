@@ -1,4 +1,5 @@
-//! What stops a world: a step that could not be completed, a time step setting refused.
+//! What stops a world: a step that could not be completed, a time step setting or a live edit
+//! refused.
 
 use crate::coupling::CouplingError;
 use crate::system::SystemError;
@@ -13,6 +14,17 @@ pub enum StepError {
     /// `advice` names the binding stable time step of the starting configuration.
     #[error("the simulation diverged at t = {time} s: body \"{body}\" {cause}; {advice}")]
     Diverged { time: f64, body: String, cause: String, advice: String },
+}
+
+/// A live edit refused by [`super::World::set_seabed`] or [`super::World::place`].
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum EditError {
+    /// The edit would make the system inconsistent (an anchor below a raised seabed).
+    #[error(transparent)]
+    System(#[from] SystemError),
+    /// The forces cannot be evaluated after it.
+    #[error(transparent)]
+    Forces(#[from] StepError),
 }
 
 /// A time step setting refused by [`super::World::set_timing`].

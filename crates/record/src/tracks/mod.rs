@@ -12,13 +12,15 @@
 //! - [`tension`]: every coupling's tension plot;
 //! - [`energy`]: the energy balance plot;
 //! - [`water`]: the sea surface, the seabed, the water's force on each floating body and its
-//!   motion plots.
+//!   motion plots;
+//! - [`seabed`]: the lines' grounded parts, touchdowns and grounded lengths.
 
 mod bodies;
 mod catenaries;
 mod contacts;
 pub mod face_arrows;
 mod energy;
+mod seabed;
 mod springs;
 mod tension;
 mod water;
@@ -78,6 +80,9 @@ pub(crate) fn for_world(world: &World) -> Vec<(Box<dyn Track>, KindStats)> {
     add("energy plot", 1, Box::new(energy::EnergyPlot::default()));
     if let Some(water) = water::WaterTrack::new(world) {
         add("water", water.entities(), Box::new(water));
+    }
+    if let Some(seabed) = seabed::SeabedTrack::new(world) {
+        add("seabed", seabed.entities(), Box::new(seabed));
     }
     tracks
 }

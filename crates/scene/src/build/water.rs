@@ -37,7 +37,7 @@ fn placed(error: SystemError) -> Problem {
     match error {
         SystemError::Water(water) => {
             let field = WaterDef::field_of(&water);
-            let place = if field == "water" { Place::Top("water") } else { Place::Section { section: "water", field } };
+            let place = if field == "water" { Place::Top("water") } else { Place::Section { section: "water", field: Some(field), literal: None } };
             Problem { place, message: format!("water: {water}") }
         }
         SystemError::Hydro { body, source } => {

@@ -13,7 +13,7 @@ mod recording;
 mod runner;
 pub mod status;
 
-pub use protocol::{Command, Report, Run, Speed};
+pub use protocol::{Command, OffsetCurve, Report, Run, Speed};
 pub use runner::TICK;
 pub use status::{BodyStatus, ContactStatus, Status};
 use super::stream::Sinks;

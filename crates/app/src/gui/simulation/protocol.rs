@@ -6,6 +6,7 @@ use std::sync::mpsc::Sender;
 use std::time::Instant;
 use tether_physics::coupling::Coupling;
 use tether_physics::integrator::Timing;
+use tether_physics::statics::Direction;
 use tether_physics::water::WaterSpec;
 use tether_physics::water::morison::HydroSpec;
 use tether_physics::world::World;
@@ -45,6 +46,14 @@ pub enum Command {
     SetWater(WaterSpec),
     /// Body `body`'s coefficients in the water replaced by `spec` (checked), without a restart.
     SetHydro { body: usize, spec: HydroSpec },
+    /// The seabed's line friction `C_B` set to this (checked), without a restart.
+    SetSeabedFriction(f64),
+    /// Every free body placed at the static equilibrium found from where the bodies are, at
+    /// rest (PHYSICS.md §7, `tether equilibrium`).
+    Equilibrium,
+    /// The offset curve of body `body` in `direction`, `steps` offsets up to `to` [m or rad]
+    /// from its static equilibrium (`tether offsets`); the world is not changed.
+    OffsetCurve { body: usize, direction: Direction, to: f64, steps: u32 },
     /// A new scene, paused at t = 0.
     Load(Box<Run>),
     /// A copy of the running world, for inspection (tests, tools).
@@ -59,5 +68,16 @@ pub enum Report {
     Message(String),
     /// A command was refused, or a step failed (the run is paused).
     Error(String),
+    /// An offset curve asked for with [`Command::OffsetCurve`].
+    OffsetCurve(OffsetCurve),
+}
+
+/// A body's offset curve, as the panel draws it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OffsetCurve {
+    pub body: String,
+    pub direction: Direction,
+    /// `(offset [m or rad], restoring force [N or N·m])`, from the equilibrium outward.
+    pub points: Vec<(f64, f64)>,
 }
 

@@ -17,6 +17,8 @@ use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender, TryRecvError};
 use std::time::{Duration, Instant};
 use tether_physics::coupling::Coupling;
 use tether_physics::integrator::Timing;
+use tether_physics::seabed::Seabed;
+use tether_physics::statics::{Dof, Settings, equilibrium, offsets};
 use tether_physics::world::World;
 
 /// Wall time of one tick of the thread, about one display frame [s].
@@ -117,6 +119,9 @@ impl Runner {
             Command::SetFaceArrows(on) => self.set_face_arrows(on),
             Command::SetWater(spec) => self.edit_water("the water", |world| world.replace_water(spec)),
             Command::SetHydro { body, spec } => self.edit_water("the body's coefficients in the water", |world| world.replace_hydro(body, spec)),
+            Command::SetSeabedFriction(friction) => self.set_seabed_friction(friction),
+            Command::Equilibrium => self.equilibrium(),
+            Command::OffsetCurve { body, direction, to, steps } => self.offset_curve(Dof { body, direction }, to, steps),
             Command::Load(run) => self.load(*run),
             Command::Snapshot(reply) => {
                 reply.send(self.run.as_ref().map(|run| run.world.clone())).ok();
@@ -289,6 +294,57 @@ impl Runner {
                 self.report(Report::Message(format!("{what} applied at t = {time:.4} s")));
             }
             Err(error) => self.report(Report::Error(error.to_string())),
+        }
+    }
+
+    /// The seabed's `C_B` replaced (its elevation kept); the lines' energy jump booked.
+    fn set_seabed_friction(&mut self, friction: f64) {
+        let Some(run) = &mut self.run else { return };
+        let Some(seabed) = run.world.system().seabed() else {
+            self.report(Report::Error("the scene has no seabed".into()));
+            return;
+        };
+        let applied = Seabed::new(seabed.elevation, friction).map_err(|e| e.to_string()).and_then(|seabed| run.world.set_seabed(seabed).map_err(|e| e.to_string()));
+        match applied {
+            Ok(()) => {
+                let time = run.world.time();
+                self.log_frame();
+                self.report(Report::Message(format!("seabed line friction C_B = {friction} applied at t = {time:.4} s")));
+            }
+            Err(error) => self.report(Report::Error(error)),
+        }
+    }
+
+    /// The bodies jump to the static equilibrium found from where they are, at rest (paused).
+    fn equilibrium(&mut self) {
+        let Some(run) = &mut self.run else { return };
+        let clock = Instant::now();
+        let solved = equilibrium::solve(run.world.system(), &run.world.synchronized_states(), &[], &Settings::default());
+        let placed = solved.map_err(|e| e.to_string()).and_then(|eq| run.world.place(&eq.states).map(|()| eq.iterations).map_err(|e| e.to_string()));
+        match placed {
+            Ok(iterations) => {
+                self.running = false;
+                let elapsed = clock.elapsed().as_secs_f64() * 1e3;
+                self.log_frame();
+                self.report(Report::Message(format!("static equilibrium in {iterations} Newton iterations ({elapsed:.2} ms): the bodies placed there at rest")));
+            }
+            Err(error) => self.report(Report::Error(error)),
+        }
+    }
+
+    /// The offset curve of `dof` from the static equilibrium found from where the bodies are.
+    fn offset_curve(&mut self, dof: Dof, to: f64, steps: u32) {
+        let Some(run) = &self.run else { return };
+        let system = run.world.system();
+        let settings = Settings::default();
+        let curve = equilibrium::solve(system, &run.world.synchronized_states(), &[], &settings).and_then(|eq| offsets::curve(system, &eq, dof, to, steps, &settings));
+        let name = system.bodies().get(dof.body).map_or_else(String::new, |b| b.name.clone());
+        match curve {
+            Ok(curve) => {
+                let points = curve.points.iter().map(|p| (p.offset, -p.load)).collect();
+                self.report(Report::OffsetCurve(super::protocol::OffsetCurve { body: name, direction: dof.direction, points }));
+            }
+            Err(error) => self.report(Report::Error(format!("offset curve of body \"{name}\" in {}: {error}", dof.direction))),
         }
     }
 

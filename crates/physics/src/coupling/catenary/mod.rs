@@ -1,25 +1,45 @@
-//! Elastic quasi-static catenary coupling (PHYSICS.md §3, seed 000 [4952]–[4955]).
+//! Elastic quasi-static catenary coupling (PHYSICS.md §3, seed 000 [4952]–[4955]), lying on
+//! the seabed where it reaches it (PHYSICS.md §7).
 //!
-//! A line of mass per length `λ0` [kg/m], unstretched length `L_eq` [m] and stiffness `D` [N/m]
-//! (`EA = D L_eq` [N]) hangs between two ends in the vertical plane of gravity:
-//! `e_y = −ĝ`, `e_x` the horizontal unit vector from end 1 toward end 2. With the horizontal
-//! tension `H` and the vertical force at end 1 `V1` solved from the end positions
-//! ([`solver`]), the forces exerted by the line are
-//! `f1 = H e_x + V1 e_y`, `f2 = −H e_x − V2 e_y`, `V2 = V1 + W`, `W = λ0 g L_eq` [N]
+//! A line of mass per length `λ0` [kg/m], displaced volume per length `A_d` [m²], unstretched
+//! length `L_eq` [m] and stiffness `D` [N/m] (`EA = D L_eq` [N]) hangs between two ends in the
+//! vertical plane of gravity. In a fluid of density `ρ` [kg/m³] it weighs
+//! `w = (λ0 − ρ A_d) g` [N/m] (`W = w L_eq`); `e_y = −ĝ` (a buoyant line, `w < 0`, arches
+//! upward: `e_y = ĝ`), `e_x` the horizontal unit vector from end 1 toward end 2. With the
+//! horizontal tension `H` and the vertical force at end 1 `V1` solved from the end positions
+//! ([`solver`]), the forces exerted by the free line are
+//! `f1 = H e_x + V1 e_y`, `f2 = −H e_x − V2 e_y`, `V2 = V1 + W`
 //! (PHYSICS.md writes `H = c`, `V1 = c sinh u1`, `V2 = c sinh u2`).
 //!
-//! A massless line (or one in zero gravity) is a straight elastic rope: tension
-//! `T = D max(0, x − L_eq)` [N], pulling only when stretched.
+//! With a seabed, a sinking line whose free shape would pass below the bottom lies on it
+//! instead ([`grounded`]): a grounded length `L_B` with tangent touchdown, friction `C_B` toward
+//! an end that lies on the bottom, the anchor tension `H_A = max(H − C_B W L_B, 0)`. The line
+//! lifted off the bottom is the free one unchanged, continuously across the lift-off.
+//!
+//! A massless line (or one in zero gravity, or neutrally buoyant) is a straight elastic rope:
+//! tension `T = D max(0, x − L_eq)` [N], pulling only when stretched.
+//!
+//! - [`equations`], [`solver`]: the free line's closure and its solve;
+//! - [`grounded`]: the line on the seabed, its closure and its solve;
+//! - [`line_state`]: the solved line — end forces, energy, stiffness, shape.
 
 pub mod equations;
+pub mod grounded;
+pub mod line_state;
 pub mod solver;
 
 use super::ends::Endpoint;
 use super::forces::CouplingForces;
 use crate::body::{BodyFrame, Load};
-use crate::math::{Mat3, Vec3};
-use equations::{Closure, rise, span};
-use solver::Unknowns;
+use crate::math::Vec3;
+use crate::seabed::Seabed;
+use crate::surroundings::Surroundings;
+use equations::Closure;
+use grounded::{Grounding, Outcome};
+pub use line_state::{EndStiffness, Ground, LineEnd, LineState};
+
+/// Height above the seabed, a fraction of `L_eq`, within which an end lies on it.
+pub const ON_SEABED: f64 = 1e-9;
 
 /// A catenary line between two ends.
 #[derive(Debug, Clone, PartialEq)]
@@ -32,6 +52,8 @@ pub struct Catenary {
     pub length: f64,
     /// `D` [N/m] > 0: the stiffness of the whole line, `EA = D L_eq`.
     pub stiffness: f64,
+    /// `A_d` [m²] ≥ 0: the line's displaced volume per length, for its submerged weight.
+    pub displaced_area: f64,
 }
 
 /// What a line remembers: its last solution, the warm start of the next solve (and what the
@@ -49,185 +71,118 @@ pub struct CatenaryError {
     pub rise: f64,
 }
 
-/// The solved line at one instant, world frame.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LineState {
-    /// End 1 [m].
-    pub origin: Vec3,
-    /// Horizontal unit vector from end 1 toward end 2 (for a weightless line: along the chord),
-    /// and the upward unit vector.
-    pub e_x: Vec3,
-    pub e_y: Vec3,
-    /// Horizontal span `Δx` [m] ≥ 0 and rise `Δy` [m] of end 2 over end 1.
-    pub span: f64,
-    pub rise: f64,
-    /// `H` [N] ≥ 0 and `V1` [N] (vertical force of the line on end 1, up positive).
-    pub horizontal_tension: f64,
-    pub vertical1: f64,
-    /// `W = λ0 g L_eq` [N], `L_eq` [m] and `EA` [N].
-    pub weight: f64,
-    pub length: f64,
-    pub axial_stiffness: f64,
-    /// Newton iterations of the solve (0 for a closed form or an exact warm start).
-    pub iterations: u32,
-    /// Closure residual of the solve, a fraction of `L_eq`.
-    pub residual: f64,
-}
-
-impl LineState {
-    /// `V2 = V1 + W` [N].
-    pub fn vertical2(&self) -> f64 {
-        self.vertical1 + self.weight
-    }
-
-    /// Forces exerted by the line on end 1 and end 2 [N].
-    pub fn end_forces(&self) -> (Vec3, Vec3) {
-        let f1 = self.e_x * self.horizontal_tension + self.e_y * self.vertical1;
-        let f2 = -self.e_x * self.horizontal_tension - self.e_y * self.vertical2();
-        (f1, f2)
-    }
-
-    /// Tensions at end 1 and end 2, `√(H² + V²)` [N].
-    pub fn end_tensions(&self) -> (f64, f64) {
-        (self.horizontal_tension.hypot(self.vertical1), self.horizontal_tension.hypot(self.vertical2()))
-    }
-
-    /// `u1 = asinh(V1/H)`, `u2 = asinh(V2/H)` of PHYSICS.md's parametric form (±∞ for a
-    /// vertical line, where `H = 0`).
-    pub fn parameters(&self) -> (f64, f64) {
-        let h = self.horizontal_tension;
-        let u = |v: f64| if h > 0.0 { (v / h).asinh() } else { f64::INFINITY.copysign(v) };
-        (u(self.vertical1), u(self.vertical2()))
-    }
-
-    /// Dimensionless unknowns of this state (`h = H/W`, `v = V1/W`), the warm start.
-    fn unknowns(&self) -> Option<Unknowns> {
-        (self.weight > 0.0).then(|| Unknowns { h: self.horizontal_tension / self.weight, v: self.vertical1 / self.weight })
-    }
-
-    /// `count + 1` points evenly spaced along the unstretched line from end 1 to end 2, with
-    /// the tension there [m, N]. With `s` the unstretched arc length and `τ = V1 + w s` the
-    /// vertical force (`w = W/L_eq`): `x(s) = (H/w)(asinh(τ/H) − asinh(V1/H)) + H s/EA`,
-    /// `y(s) = (√(H²+τ²) − √(H²+V1²))/w + (τ² − V1²)/(2 w EA)`, `T = √(H² + τ²)`.
-    pub fn sample(&self, count: usize) -> Vec<(Vec3, f64)> {
-        let count = count.max(1);
-        if self.weight <= 0.0 {
-            let tension = self.horizontal_tension;
-            return (0..=count).map(|i| (self.origin + self.e_x * (self.span * i as f64 / count as f64), tension)).collect();
-        }
-        let (h, v) = (self.horizontal_tension / self.weight, self.vertical1 / self.weight);
-        let eps = self.weight / self.axial_stiffness;
-        (0..=count)
-            .map(|i| {
-                let sigma = i as f64 / count as f64;
-                let t = v + sigma;
-                let x = span(h, v, t) + eps * h * sigma;
-                let y = rise(h, v, t) + 0.5 * eps * (t * t - v * v);
-                (self.origin + (self.e_x * x + self.e_y * y) * self.length, self.weight * h.hypot(t))
-            })
-            .collect()
-    }
-
-    /// Potential energy of the line [J]: weight (heights along `e_y`, zero at the world origin)
-    /// plus elastic strain. Integrating `∫ w y ds` and `∫ T²/(2EA) ds` over the solved shape
-    /// and using the closure equations, in units of `W L_eq`:
-    /// `U = y1/L + v2 Y − (v2 r2 − v1 r1)/2 + h X/2 − ε (v2³ − v1³)/6`, `r_i = √(h² + v_i²)`.
-    /// For a weightless rope, `½ D (x − L_eq)²` when stretched. Its gradient with respect to the
-    /// end positions is minus the end forces.
-    pub fn potential_energy(&self) -> f64 {
-        if self.weight <= 0.0 {
-            let stretch = (self.span - self.length).max(0.0);
-            return 0.5 * self.axial_stiffness / self.length * stretch * stretch;
-        }
-        let (w, l) = (self.weight, self.length);
-        let (h, v1) = (self.horizontal_tension / w, self.vertical1 / w);
-        let v2 = v1 + 1.0;
-        let (x, y, eps) = (self.span / l, self.rise / l, w / self.axial_stiffness);
-        let (r1, r2) = (h.hypot(v1), h.hypot(v2));
-        let cubes = (v2 - v1) * (v2 * v2 + v2 * v1 + v1 * v1);
-        w * l * (self.origin.dot(&self.e_y) / l + v2 * y - 0.5 * (v2 * r2 - v1 * r1) + 0.5 * h * x - eps * cubes / 6.0)
-    }
-
-    /// Tangent stiffness `K = ∂f1/∂p2` [N/m] (so `∂f1/∂p1 = −K`, `∂f2/∂p2 = −K`): in the plane,
-    /// `∂(H, V1)/∂(Δx, Δy) = (W/L) J⁻¹` with `J` the closure Jacobian; out of the plane the line
-    /// turns about the vertical, `H/Δx`.
-    pub fn tangent_stiffness(&self) -> Mat3 {
-        if self.weight <= 0.0 {
-            let x = self.span;
-            let stretch = x - self.length;
-            if stretch <= 0.0 || x <= 0.0 {
-                return Mat3::zeros();
-            }
-            let d = self.e_x;
-            let along = self.axial_stiffness / self.length;
-            let tension = along * stretch;
-            return d * d.transpose() * along + (Mat3::identity() - d * d.transpose()) * (tension / x);
-        }
-        let (w, l) = (self.weight, self.length);
-        let closure = Closure { x: self.span / l, y: self.rise / l, epsilon: w / self.axial_stiffness };
-        let j = closure.evaluate((self.horizontal_tension / w).max(f64::MIN_POSITIVE), self.vertical1 / w).jacobian;
-        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
-        let scale = w / l / det;
-        let (h_x, h_y, v_x, v_y) = (j[1][1] * scale, -j[0][1] * scale, -j[1][0] * scale, j[0][0] * scale);
-        let e_z = self.e_x.cross(&self.e_y);
-        let turning = if self.span > 0.0 { self.horizontal_tension / self.span } else { h_x };
-        self.e_x * (self.e_x * h_x + self.e_y * h_y).transpose()
-            + self.e_y * (self.e_x * v_x + self.e_y * v_y).transpose()
-            + e_z * e_z.transpose() * turning
-    }
-}
-
 impl Catenary {
+    /// A line of `mass_per_length` λ0 [kg/m], unstretched `length` [m] and `stiffness` D [N/m]
+    /// that displaces no fluid.
     pub fn new(end1: Endpoint, end2: Endpoint, mass_per_length: f64, length: f64, stiffness: f64) -> Self {
-        Self { end1, end2, mass_per_length, length, stiffness }
+        Self { end1, end2, mass_per_length, length, stiffness, displaced_area: 0.0 }
     }
 
-    /// Solves the line for end positions `p1`, `p2` [m] under `gravity` [m/s²], warm-started
-    /// from the solution `last` (the previous one of the same line), if any.
-    pub fn solve(&self, p1: &Vec3, p2: &Vec3, gravity: &Vec3, last: Option<&LineState>) -> Result<LineState, CatenaryError> {
+    /// The line with displaced volume per length `displaced_area` A_d [m²].
+    pub fn with_displaced_area(self, displaced_area: f64) -> Self {
+        Self { displaced_area, ..self }
+    }
+
+    /// `λ0 − ρ A_d` [kg/m] in a fluid of density `fluid_density` ρ [kg/m³]: what weighs.
+    pub fn submerged_mass_per_length(&self, fluid_density: f64) -> f64 {
+        self.mass_per_length - fluid_density * self.displaced_area
+    }
+
+    /// Solves the line for end positions `p1`, `p2` [m] in `surroundings`, warm-started from
+    /// the solution `last` (the previous one of the same line), if any.
+    ///
+    /// With a seabed and a sinking line: a line grounded at the last solve is solved grounded
+    /// first; otherwise (or if it has lifted off) the free line is solved, and laid on the
+    /// seabed if its lowest point is below it.
+    pub fn solve(&self, p1: &Vec3, p2: &Vec3, surroundings: &Surroundings, last: Option<&LineState>) -> Result<LineState, CatenaryError> {
+        let gravity = &surroundings.gravity;
         let chord = p2 - p1;
         let g = gravity.norm();
-        let weight = self.mass_per_length * g * self.length;
+        let sinking = self.submerged_mass_per_length(surroundings.fluid_density);
+        let weight = sinking.abs() * g * self.length;
         let axial_stiffness = self.stiffness * self.length;
         let straight = |e_x: Vec3, e_y: Vec3, x: f64| {
             let tension = self.stiffness * (x - self.length).max(0.0);
-            LineState { origin: *p1, e_x, e_y, span: x, rise: 0.0, horizontal_tension: tension, vertical1: 0.0, weight: 0.0, length: self.length, axial_stiffness, iterations: 0, residual: 0.0 }
+            LineState { origin: *p1, e_x, e_y, span: x, rise: 0.0, horizontal_tension: tension, vertical1: 0.0, weight: 0.0, length: self.length, axial_stiffness, iterations: 0, residual: 0.0, ground: None }
         };
         if !(weight > 0.0) {
             let x = chord.norm();
             let e_x = chord.try_normalize(0.0).unwrap_or_else(|| last.map_or(Vec3::x(), |s| s.e_x));
             return Ok(straight(e_x, any_perpendicular(&e_x), x));
         }
-        let e_y = -gravity / g;
+        let e_y = if sinking > 0.0 { -gravity / g } else { gravity / g };
         let rise = chord.dot(&e_y);
         let horizontal = chord - e_y * rise;
         let span = horizontal.norm();
         let vertical = span <= 1e-14 * self.length;
         let e_x = if vertical { last.map_or_else(|| any_perpendicular(&e_y), |s| s.e_x) } else { horizontal / span };
+        let free = LineState { origin: *p1, e_x, e_y, span, rise, horizontal_tension: 0.0, vertical1: 0.0, weight, length: self.length, axial_stiffness, iterations: 0, residual: 0.0, ground: None };
+        match surroundings.seabed {
+            Some(seabed) if sinking > 0.0 => self.solve_on_seabed(free, &seabed, vertical, last),
+            _ => self.solve_free(free, vertical, last),
+        }
+    }
+
+    /// The free line (PHYSICS.md §3) in the frame of `frame` (its tensions are filled in).
+    fn solve_free(&self, frame: LineState, vertical: bool, last: Option<&LineState>) -> Result<LineState, CatenaryError> {
+        let LineState { span, rise, weight, axial_stiffness, .. } = frame;
         let closure = Closure { x: if vertical { 0.0 } else { span / self.length }, y: rise / self.length, epsilon: weight / axial_stiffness };
         let solved = solver::solve(&closure, last.and_then(LineState::unknowns)).ok_or(CatenaryError { span, rise })?;
         Ok(LineState {
-            origin: *p1,
-            e_x,
-            e_y,
-            span,
-            rise,
             horizontal_tension: solved.unknowns.h * weight,
             vertical1: solved.unknowns.v * weight,
-            weight,
-            length: self.length,
-            axial_stiffness,
             iterations: solved.iterations,
             residual: solved.residual,
+            ..frame
         })
     }
 
-    /// Forces at the kinematics `frames` (the line is quasi-static: end velocities do not
-    /// enter), added to the end bodies' `loads` and written to `out`; the solution is kept in
-    /// `cache` as the next warm start.
-    pub fn apply(&self, cache: &mut CatenaryCache, frames: &[BodyFrame], gravity: &Vec3, loads: &mut [Load], out: &mut CouplingForces) -> Result<(), CatenaryError> {
+    /// The line above `seabed`: grounded where it reaches the bottom (PHYSICS.md §7), free
+    /// elsewhere.
+    fn solve_on_seabed(&self, frame: LineState, seabed: &Seabed, vertical: bool, last: Option<&LineState>) -> Result<LineState, CatenaryError> {
+        if let Some(ground) = last.and_then(|s| s.ground.as_ref()) {
+            if let Some(state) = self.solve_grounded(&frame, seabed, Warm::Grounded(ground)) {
+                return Ok(state);
+            }
+        }
+        let free = self.solve_free(frame, vertical, last)?;
+        if free.lowest_height() >= seabed.elevation {
+            return Ok(free);
+        }
+        Ok(self.solve_grounded(&frame, seabed, Warm::Tension(free.horizontal_tension / free.weight)).unwrap_or(free))
+    }
+
+    /// The grounded line in the frame of `frame`, from the warm start `warm`; `None` when it
+    /// does not reach the bottom. The anchor is the end that lies on the seabed (within
+    /// [`ON_SEABED`]; an end below it counts as on it), else end 1.
+    fn solve_grounded(&self, frame: &LineState, seabed: &Seabed, warm: Warm) -> Option<LineState> {
+        let height = |y: f64| {
+            let z = (y - seabed.elevation) / self.length;
+            if z <= ON_SEABED { 0.0 } else { z }
+        };
+        let y1 = frame.origin.dot(&frame.e_y);
+        let (z1, z2) = (height(y1), height(y1 + frame.rise));
+        let (anchor, z_anchor, z_other) = if z1 == 0.0 || z2 > 0.0 { (LineEnd::First, z1, z2) } else { (LineEnd::Second, z2, z1) };
+        let grounding = Grounding { x: frame.span / self.length, z1: z_anchor, z2: z_other, epsilon: frame.weight / frame.axial_stiffness, friction: seabed.line_friction };
+        let start = match warm {
+            Warm::Tension(h) => h,
+            Warm::Grounded(last) if last.anchor == anchor => last.profile.predict(&last.grounding, &grounding),
+            Warm::Grounded(last) => last.profile.h,
+        };
+        let Outcome::Grounded(solved) = grounded::solver::solve(&grounding, Some(start))? else { return None };
+        let profile = solved.profile;
+        let ground = Ground { anchor, grounding, profile, seabed: seabed.elevation };
+        let mut state = LineState { horizontal_tension: profile.h * frame.weight, iterations: solved.iterations, residual: solved.residual, ground: Some(ground), ..*frame };
+        state.vertical1 = state.end_forces().0.dot(&frame.e_y);
+        Some(state)
+    }
+
+    /// Forces at the kinematics `frames` in `surroundings` (the line is quasi-static: end
+    /// velocities do not enter), added to the end bodies' `loads` and written to `out`; the
+    /// solution is kept in `cache` as the next warm start.
+    pub fn apply(&self, cache: &mut CatenaryCache, frames: &[BodyFrame], surroundings: &Surroundings, loads: &mut [Load], out: &mut CouplingForces) -> Result<(), CatenaryError> {
         let (end1, end2) = (self.end1.motion(frames), self.end2.motion(frames));
-        let state = self.solve(&end1.position, &end2.position, gravity, cache.last.as_ref())?;
+        let state = self.solve(&end1.position, &end2.position, surroundings, cache.last.as_ref())?;
         let (f1, f2) = state.end_forces();
         end1.apply(&f1, loads);
         end2.apply(&f2, loads);
@@ -244,6 +199,15 @@ impl Catenary {
         cache.last = Some(state);
         Ok(())
     }
+}
+
+/// Where a grounded solve starts.
+#[derive(Debug, Clone, Copy)]
+enum Warm<'a> {
+    /// From `h = H/W` (of the free line that turned out to reach the bottom).
+    Tension(f64),
+    /// From the last grounded solution, moved along its tangent to the new ends.
+    Grounded(&'a Ground),
 }
 
 /// A unit vector perpendicular to `axis` (unit).

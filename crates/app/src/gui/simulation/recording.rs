@@ -1,7 +1,7 @@
 //! The recording of each run: opened when a run starts (a scene loaded, a reset) with the
-//! viewer's layout, fed a frame every so often of simulated time, sent to the viewer once a tick
-//! ([`Recording::flush`]: the frames of a tick go as one chunk per entity; as fast as possible,
-//! every [`FAST_FLUSH`] instead), finished when the run ends. The sinks outlive the runs
+//! viewer's layout, fed a frame every so often of simulated time, sent to the viewer every
+//! [`FLUSH_EVERY`] while it runs ([`Recording::flush`]: the frames since the last send go as one
+//! chunk per entity; paused, at once), finished when the run ends. The sinks outlive the runs
 //! ([`Sinks`]).
 
 use crate::gui::stream::Sinks;
@@ -15,10 +15,14 @@ const LOG_HZ: f64 = 60.0;
 /// At most this many frames per tick reach the viewer (faster runs log more sparsely).
 const FRAMES_PER_TICK: f64 = 8.0;
 
-/// Wall time between two sends to the viewer when the run goes as fast as possible: the viewer
-/// still moves on ten times a second, and the simulation thread and the viewer's ingestion pay
-/// for one chunk per entity every six ticks instead of every tick.
-const FAST_FLUSH: Duration = Duration::from_millis(100);
+/// Wall time between two sends to the viewer while the run goes: the viewer's data moves on ten
+/// times a second (the SDK's own batcher sent every 200 ms). Every chunk the viewer ingests
+/// invalidates its caches of that entity, so the number of chunks, not their size, is what it
+/// pays for: a chunk per entity every 16 ms tick left the viewer falling behind the moored buoy
+/// under the CPU renderer (its latency growing past 20 s), every 50 ms still by 6 s after 50 s;
+/// every 100 ms it keeps in step, at ×1 as at full speed, and the simulation thread sends a sixth
+/// as often.
+const FLUSH_EVERY: Duration = Duration::from_millis(100);
 
 /// The current run's recording.
 pub(super) struct Recording {
@@ -77,10 +81,11 @@ impl Recording {
         if world.time() - self.last_logged >= self.period { self.log(world) } else { Ok(()) }
     }
 
-    /// Sends the buffered frames to the sinks (the viewer shows them) — when `fast` (the run
-    /// goes as fast as possible) only if [`FAST_FLUSH`] has passed since the last send.
-    pub(super) fn flush(&mut self, fast: bool) -> Result<(), String> {
-        if fast && self.last_flush.elapsed() < FAST_FLUSH {
+    /// Sends the buffered frames to the sinks (the viewer shows them): at once when the run is
+    /// not `running` (a step, a pause), else once [`FLUSH_EVERY`] has passed since the last send.
+    pub(super) fn flush(&mut self, running: bool) -> Result<(), String> {
+        let every = if running { FLUSH_EVERY } else { Duration::ZERO };
+        if self.last_flush.elapsed() < every {
             return Ok(());
         }
         self.last_flush = Instant::now();

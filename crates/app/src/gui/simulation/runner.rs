@@ -92,9 +92,8 @@ impl Runner {
             if self.running {
                 self.advance();
             }
-            // The tick's frames to the viewer, one chunk per entity (as fast as possible, a few
-            // ticks' at once).
-            let flushed = self.recording.flush(self.running && self.speed == Speed::Max);
+            // The frames of the last few ticks to the viewer, one chunk per entity.
+            let flushed = self.recording.flush(self.running);
             self.report_failure(flushed);
             self.send_status();
         }

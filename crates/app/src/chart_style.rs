@@ -1,8 +1,11 @@
 //! What the charts share: the font they are drawn with — DejaVu Sans, shipped in
 //! `assets/fonts/` (Bitstream Vera license, beside it) and drawn through plotters' `ab_glyph`
-//! backend, so no system font library is needed — and their colours.
+//! backend, so no system font library is needed —, their colours and their axes.
 
-use plotters::style::{FontStyle, RGBColor, register_font};
+use plotters::chart::MeshStyle;
+use plotters::coord::ranged1d::Ranged;
+use plotters::prelude::{BLACK, DrawingBackend, WHITE};
+use plotters::style::{Color, FontStyle, RGBColor, register_font};
 
 static FONT: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
 
@@ -26,4 +29,10 @@ pub const COLOURS: [RGBColor; 10] = [
 /// The bundled font is not a TrueType font (a broken build).
 pub fn register_font_family() -> Result<(), String> {
     register_font("sans-serif", FontStyle::Normal, FONT).map_err(|_| "the bundled font is not a valid TrueType font".to_string())
+}
+
+/// The charts' axes: tick labels at 18 px, axis titles at 20 px, a faint major grid and no minor
+/// one. Chain the chart's own descriptions and formatters on what it returns.
+pub fn axes<'m, 'a, 'b, X: Ranged, Y: Ranged, DB: DrawingBackend>(mesh: &'m mut MeshStyle<'a, 'b, X, Y, DB>) -> &'m mut MeshStyle<'a, 'b, X, Y, DB> {
+    mesh.label_style(("sans-serif", 18)).axis_desc_style(("sans-serif", 20)).light_line_style(WHITE.mix(0.0)).bold_line_style(BLACK.mix(0.12))
 }

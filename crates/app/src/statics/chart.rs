@@ -2,7 +2,7 @@
 //! each line's tension at its ends below, one colour per line.
 
 use super::offsets::Table;
-use crate::chart_style::{COLOURS, register_font_family};
+use crate::chart_style::{self, COLOURS, register_font_family};
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -50,15 +50,10 @@ pub fn write(table: &Table, title: &str, path: &Path) -> Result<(), ChartError> 
         .y_label_area_size(110)
         .build_cartesian_2d(x_range.clone(), padded(span(&mut restoring.iter().map(|p| p.1))))
         .map_err(|e| draw(&e))?;
-    chart
-        .configure_mesh()
+    chart_style::axes(&mut chart.configure_mesh())
         .x_desc(table.columns[0].as_str())
         .y_desc(table.columns[2].as_str())
         .y_label_formatter(&|y| format!("{y:.3e}"))
-        .label_style(("sans-serif", 18))
-        .axis_desc_style(("sans-serif", 20))
-        .light_line_style(WHITE.mix(0.0))
-        .bold_line_style(BLACK.mix(0.12))
         .draw()
         .map_err(|e| draw(&e))?;
     let style = ShapeStyle::from(&BLACK).stroke_width(3);
@@ -74,15 +69,10 @@ pub fn write(table: &Table, title: &str, path: &Path) -> Result<(), ChartError> 
         .y_label_area_size(110)
         .build_cartesian_2d(x_range, padded(span(&mut tensions.iter().flat_map(|(_, p)| p.iter().map(|q| q.1)))))
         .map_err(|e| draw(&e))?;
-    chart
-        .configure_mesh()
+    chart_style::axes(&mut chart.configure_mesh())
         .x_desc(table.columns[0].as_str())
         .y_desc("line tension [N]")
         .y_label_formatter(&|y| format!("{y:.3e}"))
-        .label_style(("sans-serif", 18))
-        .axis_desc_style(("sans-serif", 20))
-        .light_line_style(WHITE.mix(0.0))
-        .bold_line_style(BLACK.mix(0.12))
         .draw()
         .map_err(|e| draw(&e))?;
     for (index, (name, points)) in tensions.iter().enumerate() {

@@ -3,7 +3,7 @@
 
 use super::{Outcome, Study, StudyError};
 use tether_physics::integrator::Integrator;
-use crate::chart_style::{COLOURS, register_font_family};
+use crate::chart_style::{self, COLOURS, register_font_family};
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -61,16 +61,11 @@ pub fn write(study: &Study, path: &Path) -> Result<(), StudyError> {
         .y_label_area_size(100)
         .build_cartesian_2d(x_range.log_scale(), y_range.log_scale())
         .map_err(|e| draw(&e))?;
-    chart
-        .configure_mesh()
+    chart_style::axes(&mut chart.configure_mesh())
         .x_desc("CPU seconds per simulated second")
         .y_desc(quantity)
         .x_label_formatter(&|x| format!("{x:.0e}"))
         .y_label_formatter(&|y| format!("{y:.0e}"))
-        .label_style(("sans-serif", 18))
-        .axis_desc_style(("sans-serif", 20))
-        .light_line_style(WHITE.mix(0.0))
-        .bold_line_style(BLACK.mix(0.12))
         .draw()
         .map_err(|e| draw(&e))?;
     for (integrator, points) in &curves {

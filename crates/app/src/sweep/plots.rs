@@ -18,7 +18,7 @@ use super::plan::Plan;
 use super::results::Rows;
 use super::spec::{Design, Level, LevelKind};
 use super::table::{Columns, compact};
-use crate::chart_style::{COLOURS, register_font_family};
+use crate::chart_style::{self, COLOURS, register_font_family};
 use crate::runner::Runner;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
@@ -251,17 +251,12 @@ impl<'a> Chart<'a> {
         let categories = self.categories;
         let x_format = move |x: &f64| if categories.is_empty() { compact(*x) } else { category(*x, categories) };
         let y_format = |y: &f64| compact(*y);
-        chart
-            .configure_mesh()
+        chart_style::axes(&mut chart.configure_mesh())
             .x_desc(&self.x_label)
             .y_desc(&self.y_label)
             .x_labels(if categories.is_empty() { 10 } else { categories.len() * 2 + 1 })
             .x_label_formatter(&x_format)
             .y_label_formatter(&y_format)
-            .label_style(("sans-serif", 18))
-            .axis_desc_style(("sans-serif", 20))
-            .light_line_style(WHITE.mix(0.0))
-            .bold_line_style(BLACK.mix(0.12))
             .draw()
             .map_err(|e| error(&e))?;
         let mut labelled = false;

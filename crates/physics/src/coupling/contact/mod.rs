@@ -97,14 +97,15 @@ pub struct ContactForces {
 }
 
 /// What a contact remembers between evaluations of one run: for each plane of
-/// [`Opposing::Planes`], the faces that may be in its range, and the forces at the last
+/// [`Opposing::Planes`], the faces that may be in its range, and the friction at the last
 /// evaluation (for plots, recordings and the time step limit, which so need not evaluate the
 /// faces again).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ContactCache {
     shortlists: Vec<Shortlist>,
-    /// At the last [`Contact::apply`].
-    pub forces: ContactForces,
+    /// `Σ f_t` [N] in the body's principal axes at the last [`Contact::apply`] (its norm is the
+    /// friction of [`ContactForces`]; `Σ |f_n|` is the coupling record's `tension`).
+    pub friction: Vec3,
 }
 
 impl Contact {
@@ -118,7 +119,7 @@ impl Contact {
             Opposing::Planes(planes) => planes.len(),
             Opposing::Body { .. } => 0,
         };
-        ContactCache { shortlists: vec![Shortlist::new(); planes], forces: ContactForces::default() }
+        ContactCache { shortlists: vec![Shortlist::new(); planes], friction: Vec3::zeros() }
     }
 
     /// The faces in contact at the kinematics `frames`, with their forces: the evaluation of
@@ -180,13 +181,15 @@ impl Contact {
         match &self.against {
             Opposing::Planes(planes) => {
                 let (mut in_range, mut lanes) = (false, LaneSums::default());
-                // Σ_p n_p N_p, for the friction.
-                let mut normal_along = Vec3::zeros();
+                // Σ_p n_p N_p, for the friction, from Σ|f_n| after each plane (one reduction of
+                // the lanes per plane).
+                let (mut normal_along, mut normal_so_far) = (Vec3::zeros(), 0.0);
                 for (plane, shortlist) in planes.iter().zip(shortlists) {
                     let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else { continue };
-                    let before = lanes.normal();
                     batch::accumulate(batches, &self.law, &view, &mut lanes);
-                    normal_along += view.normal * (lanes.normal() - before);
+                    let normal = lanes.normal();
+                    normal_along += view.normal * (normal - normal_so_far);
+                    normal_so_far = normal;
                     in_range = true;
                 }
                 (in_range, lanes.total().friction_against_planes(&normal_along))
@@ -230,7 +233,7 @@ impl Contact {
         if !in_range {
             // No force, and nothing to add to the loads.
             *out = CouplingForces { point1: frame.position, point2, ..CouplingForces::default() };
-            cache.forces = ContactForces::default();
+            cache.friction = Vec3::zeros();
             return;
         }
         // The sums in world axes.
@@ -252,7 +255,7 @@ impl Contact {
             dissipated_power: sums.dissipated_power,
             potential: sums.potential,
         };
-        cache.forces = ContactForces { normal: sums.normal, friction: sums.friction.norm() };
+        cache.friction = sums.friction;
     }
 }
 

@@ -46,14 +46,7 @@ impl World {
             return Err(StepError::Coupling { coupling: name, time: self.clock.time, source: CouplingError::NoSuchCoupling(index) });
         }
         self.evaluation.forget(index, &self.system.couplings()[index]);
-        if let Err(error) = self.start_integrator() {
-            *self = before;
-            return Err(error);
-        }
-        let jump = self.energy().total() - before.energy().total();
-        self.ledger.add(&Work { dissipated: 0.0, external: jump });
-        self.health.limit = stability::binding(&self.limits());
-        Ok(())
+        self.restart_after_edit(before)
     }
 
     /// Replaces the seabed while running (live tuning of its line friction `C_B`): as
@@ -70,14 +63,7 @@ impl World {
             *self = before;
             return Err(error.into());
         }
-        if let Err(error) = self.start_integrator() {
-            *self = before;
-            return Err(error.into());
-        }
-        let jump = self.energy().total() - before.energy().total();
-        self.ledger.add(&Work { dissipated: 0.0, external: jump });
-        self.health.limit = stability::binding(&self.limits());
-        Ok(())
+        self.restart_after_edit(before).map_err(Into::into)
     }
 
     /// Puts the bodies at `states` at the current time, velocities included (the GUI's
@@ -94,14 +80,7 @@ impl World {
         }
         let before = self.clone();
         self.states = states.to_vec();
-        if let Err(error) = self.start_integrator() {
-            *self = before;
-            return Err(error.into());
-        }
-        let jump = self.energy().total() - before.energy().total();
-        self.ledger.add(&Work { dissipated: 0.0, external: jump });
-        self.health.limit = stability::binding(&self.limits());
-        Ok(())
+        self.restart_after_edit(before).map_err(Into::into)
     }
 
     /// Replaces the water's spec while running (waves, current, density, level, depth, ramp):
@@ -136,14 +115,7 @@ impl World {
             *self = before;
             return Err(WaterEditError::Refused(error));
         }
-        if let Err(error) = self.start_integrator() {
-            *self = before;
-            return Err(WaterEditError::Forces(error));
-        }
-        let jump = self.energy().total() - before.energy().total();
-        self.ledger.add(&Work { dissipated: 0.0, external: jump });
-        self.health.limit = stability::binding(&self.limits());
-        Ok(())
+        self.restart_after_edit(before).map_err(WaterEditError::Forces)
     }
 
     /// Changes the time step, the integrator, the substeps and the adaptive tolerances at the
@@ -188,6 +160,21 @@ impl World {
                 self.start_integrator()?;
             }
         }
+        Ok(())
+    }
+
+    /// Starts the integrator again after a live edit of the world that was `before`, books the
+    /// jump in energy the edit made as external work (PHYSICS.md §5: the balance then still
+    /// checks the integrator) and refreshes the stable-step limit; if the couplings cannot give
+    /// their forces, the world goes back to `before`.
+    fn restart_after_edit(&mut self, before: World) -> Result<(), StepError> {
+        if let Err(error) = self.start_integrator() {
+            *self = before;
+            return Err(error);
+        }
+        let jump = self.energy().total() - before.energy().total();
+        self.ledger.add(&Work { dissipated: 0.0, external: jump });
+        self.health.limit = stability::binding(&self.limits());
         Ok(())
     }
 }

@@ -321,16 +321,7 @@ fn water_knobs_tune_the_running_water_and_bad_values_are_refused() {
 /// curve is computed and drawn.
 #[test]
 fn statics_panel_tunes_the_seabed_jumps_to_equilibrium_and_draws_the_offset_curve() {
-    let text = r#"Scene(dt: 0.002, bodies: [Body(name: "buoy", master: Node(position: (5.0, 0.0, 0.0), mass: 3000.0, inertia: Inertia(xx: 1750.0, yy: 1750.0, zz: 1500.0)),
-            shape: Cylinder(radius: 1.0, length: 2.0))],
-        couplings: [
-            Catenary(name: "m1", end1: World((200.0, 0.0, -50.0)), end2: Body(body: "buoy", point: (1.0, 0.0, -1.0)), mass_per_length: 50.0, length: 220.0, stiffness: 2272727.0),
-            Catenary(name: "m2", end1: World((-100.0, 173.205, -50.0)), end2: Body(body: "buoy", point: (-0.5, 0.8660254, -1.0)), mass_per_length: 50.0, length: 220.0, stiffness: 2272727.0),
-            Catenary(name: "m3", end1: World((-100.0, -173.205, -50.0)), end2: Body(body: "buoy", point: (-0.5, -0.8660254, -1.0)), mass_per_length: 50.0, length: 220.0, stiffness: 2272727.0),
-            SpringDamper(name: "buoyancy", end1: Body(body: "buoy"), end2: World((0.0, 0.0, 100.0)), law: Linear(stiffness: 31600.0, rest_length: 98.0), damping: 1950.0),
-        ],
-        seabed: Seabed(elevation: -50.0, line_friction: 0.5))"#;
-    let dir = scenes_folder(&[("moored.ron", text)]);
+    let dir = scenes_folder(&[("moored.ron", common::MOORED_ON_SEABED)]);
     // Tall enough for the statics panel below four couplings' knobs.
     let mut harness = Harness::builder().with_size([440.0, 2600.0]).build_ui_state(|ui, panel: &mut ControlPanel| panel.ui(ui, None), panel(dir.path()));
     open_from_list(&mut harness, "moored.ron");

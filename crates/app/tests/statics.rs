@@ -10,21 +10,6 @@ fn tether(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_tether")).args(args).output().unwrap()
 }
 
-/// A 3 t buoy on three chains of 220 m lying on a seabed 50 m down with friction, a vertical
-/// spring for its buoyancy, released 5 m off its rest position.
-const MOORED: &str = r#"Scene(
-    dt: 0.002,
-    bodies: [Body(name: "buoy", master: Node(position: (5.0, 0.0, 0.0), mass: 3000.0, inertia: Inertia(xx: 1750.0, yy: 1750.0, zz: 1500.0)),
-        shape: Cylinder(radius: 1.0, length: 2.0))],
-    couplings: [
-        Catenary(name: "m1", end1: World((200.0, 0.0, -50.0)), end2: Body(body: "buoy", point: (1.0, 0.0, -1.0)), mass_per_length: 50.0, length: 220.0, stiffness: 2272727.0),
-        Catenary(name: "m2", end1: World((-100.0, 173.205, -50.0)), end2: Body(body: "buoy", point: (-0.5, 0.8660254, -1.0)), mass_per_length: 50.0, length: 220.0, stiffness: 2272727.0),
-        Catenary(name: "m3", end1: World((-100.0, -173.205, -50.0)), end2: Body(body: "buoy", point: (-0.5, -0.8660254, -1.0)), mass_per_length: 50.0, length: 220.0, stiffness: 2272727.0),
-        SpringDamper(name: "buoyancy", end1: Body(body: "buoy"), end2: World((0.0, 0.0, 100.0)), law: Linear(stiffness: 31600.0, rest_length: 98.0), damping: 1950.0),
-    ],
-    seabed: Seabed(elevation: -50.0, line_friction: 0.5),
-)
-"#;
 
 fn write(dir: &Path, name: &str, text: &str) -> String {
     let path = dir.join(name);
@@ -40,7 +25,7 @@ fn stdout(out: &Output) -> String {
 #[test]
 fn equilibrium_prints_poses_tensions_and_stiffness_and_writes_the_scene_at_rest() {
     let dir = tempfile::tempdir().unwrap();
-    let scene = write(dir.path(), "moored.ron", MOORED);
+    let scene = write(dir.path(), "moored.ron", common::MOORED_ON_SEABED);
     let at_rest = dir.path().join("at_rest.ron");
     let text = stdout(&tether(&["equilibrium", &scene, "--write", at_rest.to_str().unwrap()]));
     assert!(text.contains("static equilibrium in "), "{text}");
@@ -72,7 +57,7 @@ fn an_unreachable_equilibrium_is_one_line_naming_the_body_and_direction() {
 #[test]
 fn offsets_print_and_write_the_restoring_force_curve() {
     let dir = tempfile::tempdir().unwrap();
-    let scene = write(dir.path(), "moored.ron", MOORED);
+    let scene = write(dir.path(), "moored.ron", common::MOORED_ON_SEABED);
     let output = dir.path().join("curve");
     let text = stdout(&tether(&["offsets", &scene, "--body", "buoy", "--direction", "x", "--to", "20", "--steps", "8", "-o", output.to_str().unwrap()]));
     assert!(text.contains("restoring [N]"), "{text}");
@@ -89,7 +74,7 @@ fn offsets_print_and_write_the_restoring_force_curve() {
 #[test]
 fn offsets_refuse_bad_flags_with_one_line() {
     let dir = tempfile::tempdir().unwrap();
-    let scene = write(dir.path(), "moored.ron", MOORED);
+    let scene = write(dir.path(), "moored.ron", common::MOORED_ON_SEABED);
     for (flags, expected) in [
         (vec!["--body", "bouy", "--direction", "x", "--to", "5"], "no body \"bouy\" (bodies: buoy)"),
         (vec!["--body", "buoy", "--direction", "x", "--to", "0"], "--to must be a non-zero number of m, got 0"),
@@ -105,7 +90,7 @@ fn offsets_refuse_bad_flags_with_one_line() {
 #[test]
 fn check_reports_the_grounded_length_and_touchdown() {
     let dir = tempfile::tempdir().unwrap();
-    let scene = write(dir.path(), "moored.ron", MOORED);
+    let scene = write(dir.path(), "moored.ron", common::MOORED_ON_SEABED);
     let text = stdout(&tether(&["check", &scene]));
     assert!(text.contains("seabed at z_b = -50 m, line friction C_B = 0.5"), "{text}");
     assert!(text.contains("on the seabed: L_B = "), "{text}");

@@ -42,16 +42,9 @@ const MOORED: &str = r#"Scene(
 )
 "#;
 
-fn error_of(text: &str) -> String {
-    match scene::parse(text, Path::new("bad.ron")) {
-        Ok(_) => panic!("accepted:\n{text}"),
-        Err(e) => e.to_string(),
-    }
-}
-
 fn assert_error(edit: (&str, &str), expected: &str) {
     assert!(MOORED.contains(edit.0), "edit target {:?} missing", edit.0);
-    let error = error_of(&MOORED.replacen(edit.0, edit.1, 1));
+    let error = common::error_of(&MOORED.replacen(edit.0, edit.1, 1));
     assert_eq!(error, expected);
 }
 
@@ -152,10 +145,10 @@ fn in_water_the_seabed_lies_at_its_depth_and_the_lines_weigh_what_they_displace_
 fn a_seabed_that_disagrees_with_the_water_or_has_none_to_lie_under() {
     let text = in_water("Water(depth: 40.0)").replacen("    seabed: Seabed(\n", "    seabed: Seabed(\n        elevation: -45.0,\n", 1);
     assert_eq!(
-        error_of(&text),
+        common::error_of(&text),
         "bad.ron:28:9: seabed: the seabed elevation -45 m disagrees with the water's bottom (level 0 m − depth 40 m = -40 m): leave it out and it lies there"
     );
-    assert_eq!(error_of(&in_water("Water()")), "bad.ron:27:5: seabed: the water is deep (no depth): give the water a depth, and the seabed lies there");
+    assert_eq!(common::error_of(&in_water("Water()")), "bad.ron:27:5: seabed: the water is deep (no depth): give the water a depth, and the seabed lies there");
 }
 
 #[test]

@@ -56,3 +56,7 @@ pub fn oscillator(law: &str, damping: f64, x: f64, v: f64, dt: f64) -> Scene {
         couplings: [SpringDamper(name: \"s\", end1: World((0.0, 0.0, 0.0)), end2: Body(body: \"m\"), law: {law}, damping: {damping:e})])"
     ))
 }
+
+/// A 3 t buoy on three chains of 220 m lying on a seabed 50 m down with friction, a vertical
+/// spring for its buoyancy, released 5 m off its rest position.
+pub const MOORED_ON_SEABED: &str = include_str!("../fixtures/moored_on_seabed.ron");

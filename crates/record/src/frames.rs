@@ -2,6 +2,7 @@
 //! the recording's two timelines (`sim_time` [s] and `step`).
 
 use rerun::log::TimeColumn;
+use std::cell::OnceCell;
 use tether_physics::world::World;
 
 /// The recording's timeline of simulated time [s].
@@ -16,11 +17,15 @@ pub(crate) struct Frames {
     times: Vec<f64>,
     /// World steps since t = 0.
     steps: Vec<i64>,
+    /// Both timelines over every buffered frame, built once for all the entities a flush sends
+    /// (a clone shares the Arrow buffers).
+    columns: OnceCell<[TimeColumn; 2]>,
 }
 
 impl Frames {
     /// Adds the world's current instant; returns the new frame's index.
     pub(crate) fn push(&mut self, world: &World) -> usize {
+        self.columns.take();
         self.times.push(world.time());
         // Beyond i64::MAX steps (2.9e5 years at 1 µs) the count would not fit: saturate.
         self.steps.push(i64::try_from(world.steps()).unwrap_or(i64::MAX));
@@ -38,11 +43,12 @@ impl Frames {
     pub(crate) fn clear(&mut self) {
         self.times.clear();
         self.steps.clear();
+        self.columns.take();
     }
 
     /// Both timelines over every buffered frame.
     pub(crate) fn columns(&self) -> [TimeColumn; 2] {
-        self.columns_of(0..self.len())
+        self.columns.get_or_init(|| self.columns_of(0..self.len())).clone()
     }
 
     /// Both timelines over the buffered frames `frames` (indices, ascending).

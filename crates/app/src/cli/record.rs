@@ -10,7 +10,7 @@
 
 use anyhow::{Context as _, bail};
 use clap::Args;
-use indicatif::{ProgressBar, ProgressStyle};
+use indicatif::{ProgressBar, ProgressState, ProgressStyle};
 use std::path::PathBuf;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -132,7 +132,12 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     let mut stopwatch = super::timing::Stopwatch::start();
     stopwatch.recorder(|| recorder.log_frame(world))?;
     let progress = ProgressBar::new(total_steps).with_style(
-        ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} steps  {msg}").expect("the template is a valid literal"),
+        ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} steps  t = {sim_time} s")
+            .expect("the template is a valid literal")
+            // Formatted when the bar is drawn (a few times a second), not at every frame.
+            .with_key("sim_time", move |state: &ProgressState, text: &mut dyn std::fmt::Write| {
+                let _ = write!(text, "{:.3}", state.pos() as f64 * dt);
+            }),
     );
     let mut failure: Option<StepError> = None;
     for step in 1..=total_steps {
@@ -146,11 +151,10 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
         if step % steps_per_frame == 0 || step == total_steps {
             stopwatch.recorder(|| recorder.log_frame(world))?;
             progress.set_position(step);
-            progress.set_message(format!("t = {:.3} s", world.time()));
         }
     }
     progress.finish_and_clear();
-    let stats = stopwatch.recorder(|| recorder.finish())?;
+    let stats = stopwatch.recorder_waiting(|| recorder.finish())?;
     if args.timing {
         let file_bytes = std::fs::metadata(&args.output).map_or(0, |m| m.len());
         let measured = super::timing::Measured { stats: &stats, simulated: world.time(), steps: world.steps(), file_bytes };

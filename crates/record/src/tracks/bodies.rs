@@ -3,7 +3,8 @@
 //! `…/nodes` the static slave nodes (principal frame). One entity per body, so that a body is
 //! picked and selected in the viewer by its own path.
 
-use super::{Settings, Track, f32x3, of_entity, quaternion, send_chunk};
+use super::{Settings, Track, f32x3, of_entity, send_chunk, xyzw};
+use crate::columns::{column, floats};
 use crate::frames::Frames;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
@@ -22,7 +23,7 @@ const BYTES_PER_POSE: usize = 7 * 4;
 pub(super) struct Bodies {
     paths: Vec<String>,
     translations: Vec<[f32; 3]>,
-    rotations: Vec<rerun::Quaternion>,
+    rotations: Vec<[f32; 4]>,
 }
 
 impl Bodies {
@@ -41,7 +42,7 @@ impl Track for Bodies {
         for index in 0..self.paths.len() {
             let state = world.state(index);
             self.translations.push(f32x3(&state.position));
-            self.rotations.push(quaternion(&state.orientation));
+            self.rotations.push(xyzw(&state.orientation));
         }
         self.paths.len() * BYTES_PER_POSE
     }
@@ -49,10 +50,12 @@ impl Track for Bodies {
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
         let stride = self.paths.len();
         for (index, path) in self.paths.iter().enumerate() {
-            let pose = rerun::Transform3D::update_fields()
-                .with_many_translation(of_entity(&self.translations, index, stride))
-                .with_many_quaternion(of_entity(&self.rotations, index, stride));
-            send_chunk(stream, path, frames.columns(), frames.len(), pose.columns_of_unit_batches()?, sent)?;
+            let one_each = || std::iter::repeat_n(1, frames.len());
+            let pose = vec![
+                column(rerun::Transform3D::descriptor_translation(), floats(of_entity(&self.translations, index, stride)), one_each()),
+                column(rerun::Transform3D::descriptor_quaternion(), floats(of_entity(&self.rotations, index, stride)), one_each()),
+            ];
+            send_chunk(stream, path, frames.columns(), frames.len(), pose, sent)?;
         }
         self.translations.clear();
         self.rotations.clear();
@@ -73,23 +76,23 @@ fn log_static_body(stream: &RecordingStream, body: &RigidBody) -> Result<(), Rec
         }
     };
     let placement = body.reference_in_principal * nalgebra::Isometry3::from_parts(center.into(), axis_rotation);
-    stream.log_static(shape_path.as_str(), &rerun::Transform3D::from_translation_rotation(f32x3(&placement.translation.vector), quaternion(&placement.rotation)))?;
+    let transform = rerun::Transform3D::from_translation_rotation(f32x3(&placement.translation.vector), rerun::Quaternion::from_xyzw(xyzw(&placement.rotation)));
     let solid = rerun::components::FillMode::Solid;
     let [r, g, b] = SHAPE_RGB;
     let color = rerun::Color::from_rgb(r, g, b);
-    match &body.shape {
-        Shape::Box { size, .. } => stream.log_static(shape_path.as_str(), &rerun::Boxes3D::from_half_sizes([f32x3(&(size * 0.5))]).with_colors([color]).with_fill_mode(solid))?,
-        Shape::Sphere { radius, .. } => stream.log_static(shape_path.as_str(), &rerun::Ellipsoids3D::from_radii([*radius as f32]).with_colors([color]).with_fill_mode(solid))?,
-        Shape::Cylinder { radius, length, .. } => {
-            stream.log_static(shape_path.as_str(), &rerun::Cylinders3D::from_lengths_and_radii([*length as f32], [*radius as f32]).with_colors([color]).with_fill_mode(solid))?
-        }
-        Shape::Mesh { vertices, triangles } => stream.log_static(
-            shape_path.as_str(),
-            &rerun::Mesh3D::new(vertices.iter().map(f32x3))
+    let shape: Box<dyn rerun::AsComponents> = match &body.shape {
+        Shape::Box { size, .. } => Box::new(rerun::Boxes3D::from_half_sizes([f32x3(&(size * 0.5))]).with_colors([color]).with_fill_mode(solid)),
+        Shape::Sphere { radius, .. } => Box::new(rerun::Ellipsoids3D::from_radii([*radius as f32]).with_colors([color]).with_fill_mode(solid)),
+        Shape::Cylinder { radius, length, .. } => Box::new(rerun::Cylinders3D::from_lengths_and_radii([*length as f32], [*radius as f32]).with_colors([color]).with_fill_mode(solid)),
+        Shape::Mesh { vertices, triangles } => Box::new(
+            rerun::Mesh3D::new(vertices.iter().map(f32x3))
                 .with_triangle_indices(triangles.iter().map(|&[a, b, c]| rerun::datatypes::UVec3D::new(a, b, c)))
                 .with_albedo_factor(rerun::datatypes::Rgba32::from_rgb(r, g, b)),
-        )?,
-    }
+        ),
+    };
+    // Shape and placement in one call: one static chunk per body, not two (each chunk costs the
+    // file writer an Arrow schema and a footer entry, whatever its size).
+    stream.log_static(shape_path.as_str(), &[&transform as &dyn rerun::AsComponents, shape.as_ref()])?;
     if !body.slave_nodes.is_empty() {
         stream.log_static(paths::body_nodes(&body.name), &rerun::Points3D::new(body.slave_nodes.iter().map(f32x3)))?;
     }

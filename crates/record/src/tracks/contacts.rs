@@ -3,6 +3,7 @@
 //! faces are not evaluated again).
 
 use super::{Settings, Track, send_chunk};
+use crate::columns::plot;
 use crate::frames::Frames;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
@@ -46,7 +47,6 @@ impl Track for ContactPlot {
 
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
         let series = 2 * self.contacts.len();
-        let forces = rerun::Scalars::new(self.forces.drain(..));
-        send_chunk(stream, paths::CONTACT_PLOT, frames.columns(), frames.len(), forces.columns(std::iter::repeat_n(series, frames.len()))?, sent)
+        send_chunk(stream, paths::CONTACT_PLOT, frames.columns(), frames.len(), vec![plot(std::mem::take(&mut self.forces), series)], sent)
     }
 }

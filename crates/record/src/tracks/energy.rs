@@ -2,6 +2,7 @@
 //! `gravity`, `elastic`, `dissipated`, `external_work`, `total` and `balance`, in one plot.
 
 use super::{Settings, Track, send_chunk};
+use crate::columns::plot;
 use crate::frames::Frames;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
@@ -30,7 +31,7 @@ impl Track for EnergyPlot {
     }
 
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
-        let energies = rerun::Scalars::new(self.energies.drain(..));
-        send_chunk(stream, paths::ENERGY, frames.columns(), frames.len(), energies.columns(std::iter::repeat_n(SERIES.len(), frames.len()))?, sent)
+        let energies = plot(std::mem::take(&mut self.energies), SERIES.len());
+        send_chunk(stream, paths::ENERGY, frames.columns(), frames.len(), vec![energies], sent)
     }
 }

@@ -6,6 +6,7 @@
 //! recording: a contact's arrows are drawn only where asked for.
 
 use super::{Settings, Track, f32x3, send_chunk};
+use crate::columns::{column, floats};
 use crate::frames::Frames;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
@@ -103,6 +104,9 @@ struct ContactArrows {
     /// Whether the last row sent or buffered drew arrows (an empty row clears them when the
     /// contact stops being drawn).
     showing: bool,
+    /// Whether the arrows' colour has been logged (statically, with the contact's first rows:
+    /// a contact never drawn costs the recording nothing).
+    coloured: bool,
 }
 
 /// Every contact's arrows.
@@ -118,7 +122,7 @@ impl FaceArrowTrack {
             .iter()
             .enumerate()
             .filter(|(_, coupling)| matches!(coupling.kind, CouplingKind::Contact(_)))
-            .map(|(index, coupling)| ContactArrows { index, path: paths::coupling(coupling), frames: Vec::new(), counts: Vec::new(), origins: Vec::new(), vectors: Vec::new(), showing: false })
+            .map(|(index, coupling)| ContactArrows { index, path: paths::coupling(coupling), frames: Vec::new(), counts: Vec::new(), origins: Vec::new(), vectors: Vec::new(), showing: false, coloured: false })
             .collect();
         (!contacts.is_empty()).then_some(Self { contacts })
     }
@@ -129,14 +133,6 @@ impl FaceArrowTrack {
 }
 
 impl Track for FaceArrowTrack {
-    fn log_static(&self, stream: &RecordingStream, _world: &World) -> Result<(), RecordError> {
-        let [r, g, b] = ARROW_RGB;
-        for contact in &self.contacts {
-            stream.log_static(contact.path.as_str(), &rerun::Arrows3D::update_fields().with_colors([rerun::Color::from_rgb(r, g, b)]))?;
-        }
-        Ok(())
-    }
-
     fn capture(&mut self, world: &World, frame: usize, settings: &Settings) -> usize {
         let mut bytes = 0;
         for arrows in &mut self.contacts {
@@ -158,9 +154,17 @@ impl Track for FaceArrowTrack {
 
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
         for arrows in self.contacts.iter_mut().filter(|arrows| !arrows.frames.is_empty()) {
-            let drawn = rerun::Arrows3D::update_fields().with_vectors(arrows.vectors.drain(..)).with_origins(arrows.origins.drain(..));
+            if !arrows.coloured {
+                let [r, g, b] = ARROW_RGB;
+                stream.log_static(arrows.path.as_str(), &rerun::Arrows3D::update_fields().with_colors([rerun::Color::from_rgb(r, g, b)]))?;
+                arrows.coloured = true;
+            }
+            let drawn = vec![
+                column(rerun::Arrows3D::descriptor_vectors(), floats(arrows.vectors.drain(..)), arrows.counts.iter().copied()),
+                column(rerun::Arrows3D::descriptor_origins(), floats(arrows.origins.drain(..)), arrows.counts.iter().copied()),
+            ];
             let times = frames.columns_of(arrows.frames.iter().copied());
-            send_chunk(stream, &arrows.path, times, arrows.frames.len(), drawn.columns(arrows.counts.iter().copied())?, sent)?;
+            send_chunk(stream, &arrows.path, times, arrows.frames.len(), drawn, sent)?;
             arrows.frames.clear();
             arrows.counts.clear();
         }

@@ -44,8 +44,10 @@ pub(crate) struct Settings {
 /// One kind of entity in a recording.
 pub(crate) trait Track {
     /// Logs what does not change in `world` (shapes, series names, colours), once, when the
-    /// recording starts.
-    fn log_static(&self, stream: &RecordingStream, world: &World) -> Result<(), RecordError>;
+    /// recording starts (nothing, for a kind that logs its static data with its first rows).
+    fn log_static(&self, _stream: &RecordingStream, _world: &World) -> Result<(), RecordError> {
+        Ok(())
+    }
 
     /// Buffers the world's current state as frame `frame` of the recorder's [`Frames`];
     /// returns the bytes it buffered.
@@ -94,15 +96,13 @@ pub(crate) fn send_chunk(
     path: &str,
     times: [TimeColumn; 2],
     rows: usize,
-    columns: impl IntoIterator<Item = SerializedComponentColumn>,
+    columns: Vec<SerializedComponentColumn>,
     sent: &mut KindStats,
 ) -> Result<(), RecordError> {
-    let columns: Vec<SerializedComponentColumn> = columns.into_iter().collect();
     let data: usize = columns.iter().map(|column| column.list_array.to_data().get_slice_memory_size().unwrap_or_else(|_| column.list_array.get_array_memory_size())).sum();
     sent.rows += rows as u64;
     sent.bytes += data as u64 + rows as u64 * ROW_INDEX_BYTES;
-    stream.send_columns(path, times, columns)?;
-    Ok(())
+    crate::columns::send(stream, path, times, rows, columns)
 }
 
 /// A point or vector in single precision, as Rerun draws them.
@@ -111,9 +111,9 @@ pub(crate) fn f32x3(v: &Vec3) -> [f32; 3] {
 }
 
 /// A rotation as Rerun's quaternion `[x, y, z, w]`, single precision.
-pub(crate) fn quaternion(rotation: &Rotation) -> rerun::Quaternion {
+pub(crate) fn xyzw(rotation: &Rotation) -> [f32; 4] {
     let q = rotation.quaternion();
-    rerun::Quaternion::from_xyzw([q.i as f32, q.j as f32, q.k as f32, q.w as f32])
+    [q.i as f32, q.j as f32, q.k as f32, q.w as f32]
 }
 
 /// Rows `entity`, `entity + stride`, … of a frame-major buffer of `stride` entities per frame:

@@ -10,6 +10,7 @@
 //!   anchor and fairlead tensions are in `plots/catenary`).
 
 use super::{Settings, Track, f32x3, send_chunk};
+use crate::columns::{column, floats, plot, strips};
 use crate::frames::Frames;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
@@ -112,18 +113,19 @@ impl Track for SeabedTrack {
 
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
         for line in &mut self.lines {
-            let strips = rerun::LineStrips3D::update_fields().with_strips(line.grounded.drain(..));
-            send_chunk(stream, &line.grounded_path, frames.columns(), frames.len(), strips.columns(line.grounded_per_frame.iter().copied())?, sent)?;
-            let points = rerun::Points3D::update_fields().with_positions(line.touchdowns.drain(..));
-            send_chunk(stream, &line.touchdowns_path, frames.columns(), frames.len(), points.columns(line.touchdowns_per_frame.iter().copied())?, sent)?;
+            let segments = line.grounded.len();
+            let grounded = strips(line.grounded.drain(..).flatten(), std::iter::repeat_n(2, segments));
+            let grounded = column(rerun::LineStrips3D::descriptor_strips(), grounded, line.grounded_per_frame.iter().copied());
+            send_chunk(stream, &line.grounded_path, frames.columns(), frames.len(), vec![grounded], sent)?;
+            let touchdowns = column(rerun::Points3D::descriptor_positions(), floats(line.touchdowns.drain(..)), line.touchdowns_per_frame.iter().copied());
+            send_chunk(stream, &line.touchdowns_path, frames.columns(), frames.len(), vec![touchdowns], sent)?;
             line.grounded_per_frame.clear();
             line.touchdowns_per_frame.clear();
         }
         if !self.lines.is_empty() {
-            let count = self.lines.len();
             // Frame-major, a value per line: the scalars' rows as they are.
-            let lengths = rerun::Scalars::new(self.grounded_lengths.drain(..));
-            send_chunk(stream, paths::SEABED_PLOT, frames.columns(), frames.len(), lengths.columns(std::iter::repeat_n(count, frames.len()))?, sent)?;
+            let lengths = plot(std::mem::take(&mut self.grounded_lengths), self.lines.len());
+            send_chunk(stream, paths::SEABED_PLOT, frames.columns(), frames.len(), vec![lengths], sent)?;
         }
         Ok(())
     }

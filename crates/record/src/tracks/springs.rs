@@ -4,6 +4,7 @@
 //! per frame, not a hundred.
 
 use super::{Settings, Track, f32x3, send_chunk};
+use crate::columns::{column, strips};
 use crate::frames::Frames;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
@@ -43,7 +44,8 @@ impl Track for Springs {
     }
 
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
-        let lines = rerun::LineStrips3D::update_fields().with_strips(self.ends.drain(..));
-        send_chunk(stream, paths::SPRINGS, frames.columns(), frames.len(), lines.columns(std::iter::repeat_n(self.springs.len(), frames.len()))?, sent)
+        let lines = strips(self.ends.drain(..).flatten(), std::iter::repeat_n(2, frames.len() * self.springs.len()));
+        let lines = column(rerun::LineStrips3D::descriptor_strips(), lines, std::iter::repeat_n(self.springs.len(), frames.len()));
+        send_chunk(stream, paths::SPRINGS, frames.columns(), frames.len(), vec![lines], sent)
     }
 }

@@ -2,6 +2,7 @@
 //! (positive in tension; a catenary's is its larger end tension, a contact's its normal force).
 
 use super::{Settings, Track, send_chunk};
+use crate::columns::plot;
 use crate::frames::Frames;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
@@ -34,7 +35,6 @@ impl Track for TensionPlot {
     }
 
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
-        let tensions = rerun::Scalars::new(self.tensions.drain(..));
-        send_chunk(stream, paths::TENSION, frames.columns(), frames.len(), tensions.columns(std::iter::repeat_n(self.couplings, frames.len()))?, sent)
+        send_chunk(stream, paths::TENSION, frames.columns(), frames.len(), vec![plot(std::mem::take(&mut self.tensions), self.couplings)], sent)
     }
 }

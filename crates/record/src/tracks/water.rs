@@ -18,6 +18,7 @@
 //!   y axes) [deg].
 
 use super::{Settings, Track, f32x3, of_entity, send_chunk};
+use crate::columns::{column, floats, plot};
 use crate::frames::Frames;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
@@ -194,20 +195,23 @@ impl Track for WaterTrack {
 
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
         if !self.surface_frames.is_empty() {
-            let surface = rerun::Mesh3D::update_fields().with_vertex_positions(self.surface.drain(..));
+            let surface = column(rerun::Mesh3D::descriptor_vertex_positions(), floats(self.surface.drain(..)), std::iter::repeat_n(GRID * GRID, self.surface_frames.len()));
             let times = frames.columns_of(self.surface_frames.iter().copied());
-            send_chunk(stream, paths::WATER_SURFACE, times, self.surface_frames.len(), surface.columns(std::iter::repeat_n(GRID * GRID, self.surface_frames.len()))?, sent)?;
+            send_chunk(stream, paths::WATER_SURFACE, times, self.surface_frames.len(), vec![surface], sent)?;
             self.surface_frames.clear();
         }
         let bodies = self.floating.len();
         let rows = self.arrows.len() / bodies.max(1);
         for (index, floating) in self.floating.iter().enumerate() {
             let arrows = of_entity(&self.arrows, index, bodies);
-            let arrows = rerun::Arrows3D::update_fields().with_origins(arrows.clone().map(|(origin, _)| origin)).with_vectors(arrows.map(|(_, vector)| vector));
-            send_chunk(stream, &floating.force_path, frames.columns(), rows, arrows.columns_of_unit_batches()?, sent)?;
+            let one_each = || std::iter::repeat_n(1, rows);
+            let force = vec![
+                column(rerun::Arrows3D::descriptor_vectors(), floats(arrows.clone().map(|(_, vector)| vector)), one_each()),
+                column(rerun::Arrows3D::descriptor_origins(), floats(arrows.map(|(origin, _)| origin)), one_each()),
+            ];
+            send_chunk(stream, &floating.force_path, frames.columns(), rows, force, sent)?;
             for (path, values) in [(&floating.motion_path, &self.motion), (&floating.angles_path, &self.angles)] {
-                let series = rerun::Scalars::new(of_entity(values, index, bodies).flatten());
-                send_chunk(stream, path, frames.columns(), rows, series.columns(std::iter::repeat_n(2, rows))?, sent)?;
+                send_chunk(stream, path, frames.columns(), rows, vec![plot(of_entity(values, index, bodies).flatten().collect(), 2)], sent)?;
             }
         }
         self.arrows.clear();

@@ -169,6 +169,62 @@ fn recorded_values_are_the_worlds() {
     assert!(xs[0] < xs[1] && xs[1] < xs[2], "{xs:?}");
 }
 
+/// The strips drawn for `entity` (`LineStrips3D`), by `step`: each strip's points.
+fn strips_by_step(path: &std::path::Path, entity: &str) -> BTreeMap<i64, Vec<Vec<[f32; 3]>>> {
+    use rerun::external::arrow::array::{Array as _, AsArray as _};
+    use rerun::external::arrow::datatypes::Float32Type;
+    let component = rerun::LineStrips3D::descriptor_strips().component;
+    rows_by_step(path, entity, |store, entity| {
+        let step = rerun::TimelineName::from_static_str("step");
+        let mut rows = Vec::new();
+        for chunk in store.iter_physical_chunks().filter(|chunk| chunk.entity_path().to_string() == entity) {
+            let Some(column) = chunk.components().get_array(component) else { continue };
+            let times = chunk.iter_component_indices(step, component).map(|(time, _)| time.as_i64());
+            for (time, row) in times.zip((0..column.len()).map(|row| column.value(row))) {
+                let strips = row.as_list::<i32>();
+                let points = |strip: usize| {
+                    let points = strips.value(strip);
+                    let points = points.as_fixed_size_list();
+                    (0..points.len()).map(|p| {
+                        let xyz = points.value(p);
+                        let xyz = xyz.as_primitive::<Float32Type>();
+                        [xyz.value(0), xyz.value(1), xyz.value(2)]
+                    }).collect::<Vec<_>>()
+                };
+                rows.push((time, (0..strips.len()).map(points).collect()));
+            }
+        }
+        rows
+    })
+}
+
+/// A catenary is drawn along its solved shape: the crane's rope read back at steps 2000, 4000
+/// and 6000 is 8 bands of 4 segments, each band starting where the one before ended, through
+/// the 33 points the world's line state gives at that step, to f32 precision.
+#[test]
+fn a_catenary_is_drawn_along_its_solved_shape_in_bands() {
+    let (_dir, out) = record("scenes/crane.ron", &["--duration", "6", "--log-hz", "10"]);
+    let strips = strips_by_step(&out, "/world/couplings/rope");
+    let mut world = tether_scene::load(&common::repo("scenes/crane.ron")).unwrap().world;
+    for step in [2000, 4000, 6000] {
+        while world.steps() < step {
+            world.step().unwrap();
+        }
+        let bands = &strips[&(step as i64)];
+        assert_eq!(bands.len(), 8, "step {step}");
+        assert!(bands.iter().all(|band| band.len() == 5), "step {step}: {bands:?}");
+        assert!(bands.windows(2).all(|pair| pair[0][4] == pair[1][0]), "step {step}: the bands join");
+        let drawn: Vec<[f32; 3]> = bands.iter().enumerate().flat_map(|(b, band)| band[usize::from(b > 0)..].to_vec()).collect();
+        let shape = world.line_state(0).expect("the rope is solved").sample(32);
+        assert_eq!(drawn.len(), shape.len());
+        for (point, (expected, _)) in drawn.iter().zip(&shape) {
+            for k in 0..3 {
+                assert!((f64::from(point[k]) - expected[k]).abs() <= 4.0 * f64::from(f32::EPSILON) * expected[k].abs().max(1.0), "step {step}: drawn {point:?}, solved {expected:?}");
+            }
+        }
+    }
+}
+
 /// The contact force plot holds the forces the step summed, the same as the faces evaluated
 /// again one by one (what the recorder logged before it took the step's): the fender against
 /// the quay and the hull, read back at steps 500, 1000 and 2000 (t = 1, 2, 4 s).

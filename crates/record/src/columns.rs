@@ -67,6 +67,16 @@ mod tests {
     use super::*;
     use rerun::external::arrow::array::Array as _;
 
+    /// Our columns and Rerun's builders' are the same: as many, each with the same component and
+    /// the same Arrow list array.
+    fn assert_same(ours: &[SerializedComponentColumn], theirs: &[SerializedComponentColumn]) {
+        assert_eq!(ours.len(), theirs.len());
+        for (ours, theirs) in ours.iter().zip(theirs) {
+            assert_eq!(ours.descriptor, theirs.descriptor);
+            assert_eq!(ours.list_array, theirs.list_array);
+        }
+    }
+
     fn translations() -> Vec<[f32; 3]> {
         (0..7).map(|i| [i as f32, -0.5 * i as f32, 1e3 + i as f32]).collect()
     }
@@ -84,11 +94,7 @@ mod tests {
             column(rerun::Transform3D::descriptor_translation(), floats(translations()), [1; 7]),
             column(rerun::Transform3D::descriptor_quaternion(), floats(quaternions), [1; 7]),
         ];
-        assert_eq!(theirs.len(), 2);
-        for (ours, theirs) in ours.iter().zip(&theirs) {
-            assert_eq!(ours.descriptor, theirs.descriptor);
-            assert_eq!(ours.list_array, theirs.list_array);
-        }
+        assert_same(&ours, &theirs);
     }
 
     #[test]
@@ -100,11 +106,7 @@ mod tests {
         let palette = [rerun::Color::from_rgb(1, 2, 3), rerun::Color::from_rgb(200, 100, 0), rerun::Color::from_rgb(9, 9, 9)];
         let theirs: Vec<_> = rerun::LineStrips3D::update_fields().with_strips(rerun_strips).with_colors(palette).columns([2, 0, 1]).expect("serializable").collect();
         let ours = [column(rerun::LineStrips3D::descriptor_strips(), strips(points, strip_lengths), [2, 0, 1]), column(rerun::LineStrips3D::descriptor_colors(), colors(palette), [2, 0, 1])];
-        assert_eq!(theirs.len(), 2);
-        for (ours, theirs) in ours.iter().zip(&theirs) {
-            assert_eq!(ours.descriptor, theirs.descriptor);
-            assert_eq!(ours.list_array, theirs.list_array);
-        }
+        assert_same(&ours, &theirs);
     }
 
     #[test]
@@ -112,9 +114,7 @@ mod tests {
         let values = vec![1.0, -2.5, 3e9, 0.0, f64::MIN_POSITIVE, 7.0];
         let theirs: Vec<_> = rerun::Scalars::new(values.clone()).columns([3, 3]).expect("serializable").collect();
         let ours = plot(values, 3);
-        assert_eq!(theirs.len(), 1);
-        assert_eq!(ours.descriptor, theirs[0].descriptor);
-        assert_eq!(ours.list_array, theirs[0].list_array);
         assert_eq!(ours.list_array.len(), 2);
+        assert_same(&[ours], &theirs);
     }
 }

@@ -59,3 +59,61 @@ impl Frames {
         ]
     }
 }
+
+/// When a run of fixed steps logs a frame: at the steps where the simulated time crosses a
+/// multiple of `1/log_hz`, so that a run logs `log_hz` frames per simulated second on average
+/// whatever its time step (a whole number of steps per frame gave 66.7 frames a second for 60 at
+/// dt = 5 ms: 3 steps, not 3.33); every step when the rate asks for more frames than steps.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrameSchedule {
+    /// Frames per step, `log_hz · dt`.
+    frames_per_step: f64,
+}
+
+impl FrameSchedule {
+    /// `log_hz` frames per simulated second [1/s] over steps of `dt` [s].
+    pub fn new(log_hz: f64, dt: f64) -> Self {
+        Self { frames_per_step: log_hz * dt }
+    }
+
+    /// Whether a frame is due after step `step` (1, 2, …).
+    pub fn is_due(&self, step: u64) -> bool {
+        self.frames_until(step) > self.frames_until(step.saturating_sub(1))
+    }
+
+    /// Frame periods elapsed by step `step`; the tolerance keeps an exact multiple (dt = 1 ms,
+    /// 10 Hz: every 100th step) from falling a rounding below it.
+    fn frames_until(&self, step: u64) -> f64 {
+        (step as f64 * self.frames_per_step + 1e-9).floor()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::FrameSchedule;
+
+    fn frames(log_hz: f64, dt: f64, steps: u64) -> Vec<u64> {
+        let schedule = FrameSchedule::new(log_hz, dt);
+        (1..=steps).filter(|&step| schedule.is_due(step)).collect()
+    }
+
+    #[test]
+    fn a_whole_number_of_steps_per_frame_gives_every_nth_step() {
+        assert_eq!(frames(10.0, 1e-3, 500), vec![100, 200, 300, 400, 500]);
+        assert_eq!(frames(20.0, 1e-3, 200), vec![50, 100, 150, 200]);
+        assert_eq!(frames(10.0, 2e-3, 150), vec![50, 100, 150]);
+    }
+
+    #[test]
+    fn sixty_frames_a_second_at_five_millisecond_steps_is_sixty() {
+        // 3.33 steps per frame: steps of 3, 3 and 4, 1200 frames in 20 s (4000 steps).
+        let due = frames(60.0, 5e-3, 4000);
+        assert_eq!(due.len(), 1200);
+        assert_eq!(&due[..4], &[4, 7, 10, 14]);
+    }
+
+    #[test]
+    fn more_frames_than_steps_is_a_frame_every_step() {
+        assert_eq!(frames(1000.0, 5e-3, 5), vec![1, 2, 3, 4, 5]);
+    }
+}

@@ -44,7 +44,7 @@ mod frames;
 mod stats;
 mod tracks;
 
-pub use frames::{SIM_TIME, STEP};
+pub use frames::{FrameSchedule, SIM_TIME, STEP};
 pub use stats::{KindStats, ROW_INDEX_BYTES, RecordStats};
 pub use tracks::face_arrows::{ArrowedContacts, FaceArrows};
 

@@ -16,7 +16,7 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use tether_physics::integrator::Integrator;
 use tether_physics::world::StepError;
-use tether_record::{ArrowedContacts, FaceArrows, Recorder};
+use tether_record::{ArrowedContacts, FaceArrows, FrameSchedule, Recorder};
 
 #[derive(Debug, Args)]
 pub struct RecordArgs {
@@ -121,7 +121,7 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     let world = &mut scene.world;
     let dt = world.dt();
     let total_steps = (duration / dt).round().max(1.0) as u64;
-    let steps_per_frame = ((1.0 / (log_hz * dt)).round() as u64).max(1);
+    let frames = FrameSchedule::new(log_hz, dt);
     let face_arrows = face_arrows(args)?;
     face_arrows.check(world)?;
     let mut recorder = Recorder::to_file(&args.output, world, &face_arrows).with_context(|| format!("cannot write {}", args.output.display()))?;
@@ -148,7 +148,7 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
             failure = Some(error);
             break;
         }
-        if step % steps_per_frame == 0 || step == total_steps {
+        if frames.is_due(step) || step == total_steps {
             stopwatch.recorder(|| recorder.log_frame(world))?;
             progress.set_position(step);
         }

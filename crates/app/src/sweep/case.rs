@@ -8,7 +8,7 @@ use crate::runner::{Stop, Watch, thread_cpu_seconds};
 use serde::{Deserialize, Serialize};
 use std::path::PathBuf;
 use tether_physics::world::{StepError, World};
-use tether_record::Recorder;
+use tether_record::{FrameSchedule, Recorder};
 
 /// The watch is asked every this many world steps (a clock read costs about as much as a tenth
 /// of the cheapest scene's step).
@@ -96,7 +96,7 @@ pub fn run(mut world: World, duration: f64, metrics: &[Metric], settle_band: f64
     let dt = world.dt();
     let total_steps = (duration / dt).round().max(1.0) as u64;
     let mut recorder = recording.map(|r| Recorder::to_file_as(&r.path, &world, r.application, &r.id).map_err(|e| CaseError::Recording(unwritable(r, &e)))).transpose()?;
-    let frame_every = recording.map_or(u64::MAX, |r| ((1.0 / (r.log_hz * dt)).round() as u64).max(1));
+    let frames = recording.map(|r| FrameSchedule::new(r.log_hz, dt));
     let mut log = |world: &World| recorder.as_mut().map_or(Ok(()), |rec| rec.log_frame(world)).map_err(|e| recording.map_or_else(String::new, |r| unwritable(r, &e)));
     log(&world).map_err(CaseError::Recording)?;
     let cpu_start = thread_cpu_seconds();
@@ -112,7 +112,7 @@ pub fn run(mut world: World, duration: f64, metrics: &[Metric], settle_band: f64
             break;
         }
         observer.observe(&world);
-        if step % frame_every == 0 || (step == total_steps && recording.is_some()) {
+        if frames.is_some_and(|frames| frames.is_due(step) || step == total_steps) {
             log(&world).map_err(CaseError::Recording)?;
         }
         if step % WATCH_EVERY == 0 {

@@ -63,7 +63,8 @@ fn recording_passes_rerun_rrd_verify() {
     assert!(verify.status.success(), "rerun rrd verify failed:\n{}\n{}", String::from_utf8_lossy(&verify.stdout), String::from_utf8_lossy(&verify.stderr));
 }
 
-/// A catenary is drawn along its shape (32 coloured segments) and its end tensions plotted.
+/// A catenary is drawn along its shape (32 segments in 8 coloured bands) and its end tensions
+/// plotted.
 #[test]
 fn catenary_shape_and_end_tensions_are_recorded() {
     let (_dir, out) = record("scenes/crane.ron", &["--duration", "0.5", "--log-hz", "20"]);
@@ -138,37 +139,6 @@ fn scalars_by_step(path: &std::path::Path, entity: &str) -> BTreeMap<i64, Vec<f6
     })
 }
 
-/// The values in a recording are the world's: the crane's load position and rope tension, read
-/// back from the `.rrd` at steps 2000, 4000 and 6000 (t = 2, 4, 6 s: hanging, swinging behind
-/// the moving trolley, overtaking it), equal those of the same scene stepped here, to f32
-/// precision (positions are logged as f32, scalars as f64).
-#[test]
-fn recorded_values_are_the_worlds() {
-    let (_dir, out) = record("scenes/crane.ron", &["--duration", "6", "--log-hz", "10"]);
-    let positions = translations_by_step(&out, "/world/bodies/load");
-    let tensions = scalars_by_step(&out, "/plots/tension");
-    // dt = 1 ms, 10 Hz: a frame every 100 steps, 0 to 6000.
-    assert_eq!(positions.len(), 61, "{:?}", positions.keys().collect::<Vec<_>>());
-    let scene = tether_scene::load(&common::repo("scenes/crane.ron")).unwrap();
-    let mut world = scene.world;
-    for step in [2000, 4000, 6000] {
-        while world.steps() < step {
-            world.step().unwrap();
-        }
-        let expected = world.state(1).position;
-        let recorded = positions[&(step as i64)];
-        for k in 0..3 {
-            assert!((f64::from(recorded[k]) - expected[k]).abs() <= f64::from(f32::EPSILON) * expected[k].abs().max(1.0), "step {step}, axis {k}: recorded {recorded:?}, world {expected:?}");
-        }
-        let tension = world.coupling_forces()[0].tension;
-        let logged = tensions[&(step as i64)][0];
-        assert!((logged - tension).abs() <= f64::from(f32::EPSILON) * tension.abs(), "step {step}: recorded tension {logged} N, world {tension} N");
-    }
-    // The load moved between the three times: the comparison is not of a body at rest.
-    let xs: Vec<f32> = [2000, 4000, 6000].iter().map(|s| positions[s][0]).collect();
-    assert!(xs[0] < xs[1] && xs[1] < xs[2], "{xs:?}");
-}
-
 /// The strips drawn for `entity` (`LineStrips3D`), by `step`: each strip's points.
 fn strips_by_step(path: &std::path::Path, entity: &str) -> BTreeMap<i64, Vec<Vec<[f32; 3]>>> {
     use rerun::external::arrow::array::{Array as _, AsArray as _};
@@ -198,18 +168,34 @@ fn strips_by_step(path: &std::path::Path, entity: &str) -> BTreeMap<i64, Vec<Vec
     })
 }
 
-/// A catenary is drawn along its solved shape: the crane's rope read back at steps 2000, 4000
-/// and 6000 is 8 bands of 4 segments, each band starting where the one before ended, through
-/// the 33 points the world's line state gives at that step, to f32 precision.
+/// The values in a recording are the world's: the crane's load position, rope tension and rope
+/// shape, read back from the `.rrd` at steps 2000, 4000 and 6000 (t = 2, 4, 6 s: hanging,
+/// swinging behind the moving trolley, overtaking it), equal those of the same scene stepped
+/// here, to f32 precision (positions are logged as f32, scalars as f64). The rope is drawn as
+/// 8 bands of 4 segments, each band starting where the one before ended, through the 33 points
+/// of the world's solved line.
 #[test]
-fn a_catenary_is_drawn_along_its_solved_shape_in_bands() {
+fn recorded_values_are_the_worlds() {
     let (_dir, out) = record("scenes/crane.ron", &["--duration", "6", "--log-hz", "10"]);
+    let positions = translations_by_step(&out, "/world/bodies/load");
+    let tensions = scalars_by_step(&out, "/plots/tension");
     let strips = strips_by_step(&out, "/world/couplings/rope");
-    let mut world = tether_scene::load(&common::repo("scenes/crane.ron")).unwrap().world;
+    // dt = 1 ms, 10 Hz: a frame every 100 steps, 0 to 6000.
+    assert_eq!(positions.len(), 61, "{:?}", positions.keys().collect::<Vec<_>>());
+    let scene = tether_scene::load(&common::repo("scenes/crane.ron")).unwrap();
+    let mut world = scene.world;
     for step in [2000, 4000, 6000] {
         while world.steps() < step {
             world.step().unwrap();
         }
+        let expected = world.state(1).position;
+        let recorded = positions[&(step as i64)];
+        for k in 0..3 {
+            assert!((f64::from(recorded[k]) - expected[k]).abs() <= f64::from(f32::EPSILON) * expected[k].abs().max(1.0), "step {step}, axis {k}: recorded {recorded:?}, world {expected:?}");
+        }
+        let tension = world.coupling_forces()[0].tension;
+        let logged = tensions[&(step as i64)][0];
+        assert!((logged - tension).abs() <= f64::from(f32::EPSILON) * tension.abs(), "step {step}: recorded tension {logged} N, world {tension} N");
         let bands = &strips[&(step as i64)];
         assert_eq!(bands.len(), 8, "step {step}");
         assert!(bands.iter().all(|band| band.len() == 5), "step {step}: {bands:?}");
@@ -223,6 +209,9 @@ fn a_catenary_is_drawn_along_its_solved_shape_in_bands() {
             }
         }
     }
+    // The load moved between the three times: the comparison is not of a body at rest.
+    let xs: Vec<f32> = [2000, 4000, 6000].iter().map(|s| positions[s][0]).collect();
+    assert!(xs[0] < xs[1] && xs[1] < xs[2], "{xs:?}");
 }
 
 /// The contact force plot holds the forces the step summed, the same as the faces evaluated

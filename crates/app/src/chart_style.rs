@@ -1,8 +1,9 @@
 //! What the charts share: the font they are drawn with — DejaVu Sans, shipped in
 //! `assets/fonts/` (Bitstream Vera license, beside it) and drawn through plotters' `ab_glyph`
-//! backend, so no system font library is needed —, their colours and their axes.
+//! backend, so no system font library is needed —, their colours, their axes and their legends.
 
-use plotters::chart::MeshStyle;
+use plotters::chart::{MeshStyle, SeriesLabelStyle};
+use plotters::coord::CoordTranslate;
 use plotters::coord::ranged1d::Ranged;
 use plotters::prelude::{BLACK, DrawingBackend, WHITE};
 use plotters::style::{Color, FontStyle, RGBColor, register_font};
@@ -35,4 +36,10 @@ pub fn register_font_family() -> Result<(), String> {
 /// one. Chain the chart's own descriptions and formatters on what it returns.
 pub fn axes<'m, 'a, 'b, X: Ranged, Y: Ranged, DB: DrawingBackend>(mesh: &'m mut MeshStyle<'a, 'b, X, Y, DB>) -> &'m mut MeshStyle<'a, 'b, X, Y, DB> {
     mesh.label_style(("sans-serif", 18)).axis_desc_style(("sans-serif", 20)).light_line_style(WHITE.mix(0.0)).bold_line_style(BLACK.mix(0.12))
+}
+
+/// The charts' legends: labels at `font_size` px in a nearly opaque white box with a faint
+/// border. Chain the chart's own position and margin on what it returns, then draw it.
+pub fn legend<'s, 'a, 'b, DB: DrawingBackend + 'a, CT: CoordTranslate>(labels: &'s mut SeriesLabelStyle<'a, 'b, DB, CT>, font_size: u32) -> &'s mut SeriesLabelStyle<'a, 'b, DB, CT> {
+    labels.label_font(("sans-serif", font_size)).background_style(WHITE.mix(0.9)).border_style(BLACK.mix(0.4))
 }

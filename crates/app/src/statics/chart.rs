@@ -85,15 +85,7 @@ pub fn write(table: &Table, title: &str, path: &Path) -> Result<(), ChartError> 
             .label(name.as_str())
             .legend(move |(x, y)| PathElement::new(vec![(x - 5, y), (x + 18, y)], style));
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .label_font(("sans-serif", 18))
-        .margin(12)
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK.mix(0.4))
-        .draw()
-        .map_err(|e| draw(&e))?;
+    chart_style::legend(&mut chart.configure_series_labels(), 18).position(SeriesLabelPosition::UpperLeft).margin(12).draw().map_err(|e| draw(&e))?;
     root.present().map_err(|e| draw(&e))?;
     Ok(())
 }

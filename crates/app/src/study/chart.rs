@@ -79,15 +79,7 @@ pub fn write(study: &Study, path: &Path) -> Result<(), StudyError> {
             .legend(move |(x, y)| PathElement::new(vec![(x - 5, y), (x + 18, y)], style));
         chart.draw_series(points.iter().map(|&p| Circle::new(p, 6, colour.filled()))).map_err(|e| draw(&e))?;
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .label_font(("sans-serif", 20))
-        .margin(15)
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK.mix(0.4))
-        .draw()
-        .map_err(|e| draw(&e))?;
+    chart_style::legend(&mut chart.configure_series_labels(), 20).position(SeriesLabelPosition::UpperRight).margin(15).draw().map_err(|e| draw(&e))?;
     root.present().map_err(|e| draw(&e))?;
     Ok(())
 }

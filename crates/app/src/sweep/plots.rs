@@ -287,15 +287,7 @@ impl<'a> Chart<'a> {
             labelled = true;
         }
         if labelled {
-            chart
-                .configure_series_labels()
-                .position(self.emptiest_corner(x_range, y_range))
-                .label_font(("sans-serif", 18))
-                .margin(15)
-                .background_style(WHITE.mix(0.9))
-                .border_style(BLACK.mix(0.4))
-                .draw()
-                .map_err(|e| error(&e))?;
+            chart_style::legend(&mut chart.configure_series_labels(), 18).position(self.emptiest_corner(x_range, y_range)).margin(15).draw().map_err(|e| error(&e))?;
         }
         root.present().map_err(|e| error(&e))
     }

@@ -305,28 +305,39 @@ fn parquet_holds_the_rows_of_the_csv() {
     assert_eq!(tension.null_count(), 0);
 }
 
-/// A run killed with SIGKILL mid-sweep keeps every row it wrote whole; `--resume` runs only the
-/// cases without one, and the results are those of a run never killed. Without `--resume`, the
-/// directory is refused and nothing in it changes.
-#[test]
-fn a_killed_sweep_resumes_where_it_stopped() {
+/// Twelve cases of 20 s at dt = 0.1 ms, 200,000 steps each (about 20 ms of CPU or more): a
+/// sweep long enough to be stopped midway.
+fn twelve_long_cases() -> tempfile::TempDir {
     let spec = r#"Sweep(
         scene: "oscillator.ron",
         duration: 20.0,
         design: Grid,
         factors: [Factor(path: "couplings.spring.law.stiffness", values: Linear(from: 100.0, to: 200.0, count: 12))],
     )"#;
-    let dir = folder(&oscillator(0.5, 1.0), spec);
+    folder(&oscillator(0.5, 1.0), spec)
+}
+
+/// Waits until the sweep `child` has written `rows` rows (and its header) to `rows_file`, and
+/// fails if it ends first or writes none for a minute.
+fn wait_for_rows(rows_file: &Path, rows: usize, child: &mut std::process::Child) {
+    let start = std::time::Instant::now();
+    while std::fs::read_to_string(rows_file).map_or(0, |t| t.lines().count()) < rows + 1 {
+        assert!(start.elapsed().as_secs() < 60, "no rows after a minute");
+        assert!(child.try_wait().unwrap().is_none(), "the sweep ended before it could be stopped");
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+}
+
+/// A run killed with SIGKILL mid-sweep keeps every row it wrote whole; `--resume` runs only the
+/// cases without one, and the results are those of a run never killed. Without `--resume`, the
+/// directory is refused and nothing in it changes.
+#[test]
+fn a_killed_sweep_resumes_where_it_stopped() {
+    let dir = twelve_long_cases();
     let here = dir.path();
     let mut child = Command::new(env!("CARGO_BIN_EXE_tether")).args(["sweep", "sweep.ron", "-o", "out", "--jobs", "1"]).current_dir(here).spawn().unwrap();
     let rows_file = here.join("out/runs/all.csv");
-    let start = std::time::Instant::now();
-    // Each case is 200,000 steps (about 20 ms of CPU or more): wait for three rows.
-    while std::fs::read_to_string(&rows_file).map_or(0, |t| t.lines().count()) < 4 {
-        assert!(start.elapsed().as_secs() < 60, "no rows after a minute");
-        assert!(child.try_wait().unwrap().is_none(), "the sweep ended before it could be killed");
-        std::thread::sleep(std::time::Duration::from_millis(5));
-    }
+    wait_for_rows(&rows_file, 3, &mut child);
     child.kill().unwrap();
     child.wait().unwrap();
     let (_, kept) = table(&rows_file);
@@ -346,21 +357,11 @@ fn a_killed_sweep_resumes_where_it_stopped() {
 /// `--resume` finishes the sweep.
 #[test]
 fn ctrl_c_keeps_the_rows_written_and_resume_finishes() {
-    let spec = r#"Sweep(
-        scene: "oscillator.ron",
-        duration: 20.0,
-        design: Grid,
-        factors: [Factor(path: "couplings.spring.law.stiffness", values: Linear(from: 100.0, to: 200.0, count: 12))],
-    )"#;
-    let dir = folder(&oscillator(0.5, 1.0), spec);
+    let dir = twelve_long_cases();
     let here = dir.path();
-    let child = Command::new(env!("CARGO_BIN_EXE_tether")).args(["sweep", "sweep.ron", "-o", "out", "--jobs", "2"]).current_dir(here).stdout(std::process::Stdio::piped()).spawn().unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_tether")).args(["sweep", "sweep.ron", "-o", "out", "--jobs", "2"]).current_dir(here).stdout(std::process::Stdio::piped()).spawn().unwrap();
     let rows_file = here.join("out/runs/all.csv");
-    let start = std::time::Instant::now();
-    while std::fs::read_to_string(&rows_file).map_or(0, |t| t.lines().count()) < 3 {
-        assert!(start.elapsed().as_secs() < 60, "no rows after a minute");
-        std::thread::sleep(std::time::Duration::from_millis(5));
-    }
+    wait_for_rows(&rows_file, 2, &mut child);
     // SAFETY: signalling the child this test started.
     unsafe { libc::kill(child.id() as libc::pid_t, libc::SIGINT) };
     let out = child.wait_with_output().unwrap();

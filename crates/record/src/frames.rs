@@ -63,22 +63,25 @@ impl Frames {
 /// When a run of fixed steps logs a frame: at the steps where the simulated time crosses a
 /// multiple of `1/log_hz`, so that a run logs `log_hz` frames per simulated second on average
 /// whatever its time step (a whole number of steps per frame gave 66.7 frames a second for 60 at
-/// dt = 5 ms: 3 steps, not 3.33); every step when the rate asks for more frames than steps.
+/// dt = 5 ms: 3 steps, not 3.33); every step when the rate asks for more frames than steps; and
+/// at the run's last step, so that the recording ends where the run does.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FrameSchedule {
     /// Frames per step, `log_hz · dt`.
     frames_per_step: f64,
+    /// The run's last step.
+    last_step: u64,
 }
 
 impl FrameSchedule {
-    /// `log_hz` frames per simulated second [1/s] over steps of `dt` [s].
-    pub fn new(log_hz: f64, dt: f64) -> Self {
-        Self { frames_per_step: log_hz * dt }
+    /// `log_hz` frames per simulated second [1/s] over a run of `last_step` steps of `dt` [s].
+    pub fn new(log_hz: f64, dt: f64, last_step: u64) -> Self {
+        Self { frames_per_step: log_hz * dt, last_step }
     }
 
     /// Whether a frame is due after step `step` (1, 2, …).
     pub fn is_due(&self, step: u64) -> bool {
-        self.frames_until(step) > self.frames_until(step.saturating_sub(1))
+        step == self.last_step || self.frames_until(step) > self.frames_until(step.saturating_sub(1))
     }
 
     /// Frame periods elapsed by step `step`; the tolerance keeps an exact multiple (dt = 1 ms,
@@ -93,7 +96,7 @@ mod tests {
     use super::FrameSchedule;
 
     fn frames(log_hz: f64, dt: f64, steps: u64) -> Vec<u64> {
-        let schedule = FrameSchedule::new(log_hz, dt);
+        let schedule = FrameSchedule::new(log_hz, dt, steps);
         (1..=steps).filter(|&step| schedule.is_due(step)).collect()
     }
 
@@ -110,6 +113,12 @@ mod tests {
         let due = frames(60.0, 5e-3, 4000);
         assert_eq!(due.len(), 1200);
         assert_eq!(&due[..4], &[4, 7, 10, 14]);
+    }
+
+    #[test]
+    fn the_last_step_has_a_frame() {
+        // 0.35 s at 1 ms, 10 Hz: frames at 0.1, 0.2, 0.3 s and at the end.
+        assert_eq!(frames(10.0, 1e-3, 350), vec![100, 200, 300, 350]);
     }
 
     #[test]

@@ -64,7 +64,7 @@ pub const APPLICATION_ID: &str = "tether";
 pub const FRAMES_PER_CHUNK: usize = 4096;
 
 /// …or when its frames hold this many bytes, which bounds its memory for large scenes (chain100
-/// buffers 13 kB a frame, the moored buoy 7.5 kB: both send 4096 frames at a time).
+/// buffers 13 kB a frame, the moored buoy 6 kB: both send 4096 frames at a time).
 pub const BYTES_PER_CHUNK: usize = 64 << 20;
 
 /// Why a recording could not be written.

@@ -121,7 +121,7 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     let world = &mut scene.world;
     let dt = world.dt();
     let total_steps = (duration / dt).round().max(1.0) as u64;
-    let frames = FrameSchedule::new(log_hz, dt);
+    let frames = FrameSchedule::new(log_hz, dt, total_steps);
     let face_arrows = face_arrows(args)?;
     face_arrows.check(world)?;
     let mut recorder = Recorder::to_file(&args.output, world, &face_arrows).with_context(|| format!("cannot write {}", args.output.display()))?;
@@ -148,7 +148,7 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
             failure = Some(error);
             break;
         }
-        if frames.is_due(step) || step == total_steps {
+        if frames.is_due(step) {
             stopwatch.recorder(|| recorder.log_frame(world))?;
             progress.set_position(step);
         }

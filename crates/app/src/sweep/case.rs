@@ -96,7 +96,7 @@ pub fn run(mut world: World, duration: f64, metrics: &[Metric], settle_band: f64
     let dt = world.dt();
     let total_steps = (duration / dt).round().max(1.0) as u64;
     let mut recorder = recording.map(|r| Recorder::to_file_as(&r.path, &world, r.application, &r.id).map_err(|e| CaseError::Recording(unwritable(r, &e)))).transpose()?;
-    let frames = recording.map(|r| FrameSchedule::new(r.log_hz, dt));
+    let frames = recording.map(|r| FrameSchedule::new(r.log_hz, dt, total_steps));
     let mut log = |world: &World| recorder.as_mut().map_or(Ok(()), |rec| rec.log_frame(world)).map_err(|e| recording.map_or_else(String::new, |r| unwritable(r, &e)));
     log(&world).map_err(CaseError::Recording)?;
     let cpu_start = thread_cpu_seconds();
@@ -112,7 +112,7 @@ pub fn run(mut world: World, duration: f64, metrics: &[Metric], settle_band: f64
             break;
         }
         observer.observe(&world);
-        if frames.is_some_and(|frames| frames.is_due(step) || step == total_steps) {
+        if frames.is_some_and(|frames| frames.is_due(step)) {
             log(&world).map_err(CaseError::Recording)?;
         }
         if step % WATCH_EVERY == 0 {

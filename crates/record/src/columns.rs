@@ -46,15 +46,15 @@ pub(crate) fn colors(values: impl IntoIterator<Item = rerun::Color>) -> ArrayRef
     Arc::new(UInt32Array::from_iter_values(values.into_iter().map(|color| color.0.0)))
 }
 
-/// Sends `columns` to entity `path` as one chunk of `rows` rows at the instants `times`, its
-/// rows in the order given (the frames' order, which is the time order: unlike
+/// Sends `columns` to entity `path` as one chunk, a row at each instant of `times`, its rows in
+/// the order given (the frames' order, which is the time order: unlike
 /// `RecordingStream::send_columns`, nothing is sorted again).
 ///
 /// # Errors
-/// Columns whose lengths differ from `rows`.
-pub(crate) fn send(stream: &RecordingStream, path: &str, times: [TimeColumn; 2], rows: usize, columns: Vec<SerializedComponentColumn>) -> Result<(), RecordError> {
+/// Columns whose lengths differ from the times'.
+pub(crate) fn send(stream: &RecordingStream, path: &str, times: [TimeColumn; 2], columns: Vec<SerializedComponentColumn>) -> Result<(), RecordError> {
     let first = RowId::new();
-    let row_ids: Vec<RowId> = std::iter::successors(Some(first), |row| Some(row.next())).take(rows).collect();
+    let row_ids: Vec<RowId> = std::iter::successors(Some(first), |row| Some(row.next())).take(times[0].num_rows()).collect();
     let timelines = times.into_iter().map(|time| (*time.timeline().name(), time)).collect();
     let components = columns.into_iter().map(|column| (column.descriptor, column.list_array)).collect();
     let chunk = Chunk::new(ChunkId::new(), path.into(), Some(true), RowId::arrow_from_slice(&row_ids), timelines, components)?;

@@ -55,7 +55,7 @@ impl Track for Bodies {
                 column(rerun::Transform3D::descriptor_translation(), floats(of_entity(&self.translations, index, stride)), one_each()),
                 column(rerun::Transform3D::descriptor_quaternion(), floats(of_entity(&self.rotations, index, stride)), one_each()),
             ];
-            send_chunk(stream, path, frames.columns(), frames.len(), pose, sent)?;
+            send_chunk(stream, path, frames.columns(), pose, sent)?;
         }
         self.translations.clear();
         self.rotations.clear();

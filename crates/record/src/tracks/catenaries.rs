@@ -103,11 +103,11 @@ impl Track for Catenaries {
                 column(rerun::LineStrips3D::descriptor_strips(), strips(line.points.drain(..), line.points_per_strip.drain(..)), line.strips_per_frame.iter().copied()),
                 column(rerun::LineStrips3D::descriptor_colors(), colors(line.colors.drain(..)), line.strips_per_frame.iter().copied()),
             ];
-            send_chunk(stream, &line.path, frames.columns(), frames.len(), shape, sent)?;
+            send_chunk(stream, &line.path, frames.columns(), shape, sent)?;
             line.strips_per_frame.clear();
         }
         let tensions = plot(std::mem::take(&mut self.end_tensions), 2 * self.lines.len());
-        send_chunk(stream, paths::CATENARY_PLOT, frames.columns(), frames.len(), vec![tensions], sent)
+        send_chunk(stream, paths::CATENARY_PLOT, frames.columns(), vec![tensions], sent)
     }
 }
 

@@ -47,6 +47,6 @@ impl Track for ContactPlot {
 
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
         let series = 2 * self.contacts.len();
-        send_chunk(stream, paths::CONTACT_PLOT, frames.columns(), frames.len(), vec![plot(std::mem::take(&mut self.forces), series)], sent)
+        send_chunk(stream, paths::CONTACT_PLOT, frames.columns(), vec![plot(std::mem::take(&mut self.forces), series)], sent)
     }
 }

@@ -32,6 +32,6 @@ impl Track for EnergyPlot {
 
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
         let energies = plot(std::mem::take(&mut self.energies), SERIES.len());
-        send_chunk(stream, paths::ENERGY, frames.columns(), frames.len(), vec![energies], sent)
+        send_chunk(stream, paths::ENERGY, frames.columns(), vec![energies], sent)
     }
 }

@@ -164,7 +164,7 @@ impl Track for FaceArrowTrack {
                 column(rerun::Arrows3D::descriptor_origins(), floats(arrows.origins.drain(..)), arrows.counts.iter().copied()),
             ];
             let times = frames.columns_of(arrows.frames.iter().copied());
-            send_chunk(stream, &arrows.path, times, arrows.frames.len(), drawn, sent)?;
+            send_chunk(stream, &arrows.path, times, drawn, sent)?;
             arrows.frames.clear();
             arrows.counts.clear();
         }

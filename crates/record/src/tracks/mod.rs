@@ -89,20 +89,14 @@ pub(crate) fn for_world(world: &World) -> Vec<(Box<dyn Track>, KindStats)> {
     tracks
 }
 
-/// Sends `columns` to entity `path` at the instants `times` as one chunk, and adds its rows
-/// (`rows`) and Arrow bytes to `sent`.
-pub(crate) fn send_chunk(
-    stream: &RecordingStream,
-    path: &str,
-    times: [TimeColumn; 2],
-    rows: usize,
-    columns: Vec<SerializedComponentColumn>,
-    sent: &mut KindStats,
-) -> Result<(), RecordError> {
+/// Sends `columns` to entity `path` at the instants `times` (a row each) as one chunk, and adds
+/// its rows and Arrow bytes to `sent`.
+pub(crate) fn send_chunk(stream: &RecordingStream, path: &str, times: [TimeColumn; 2], columns: Vec<SerializedComponentColumn>, sent: &mut KindStats) -> Result<(), RecordError> {
+    let rows = times[0].num_rows() as u64;
     let data: usize = columns.iter().map(|column| column.list_array.to_data().get_slice_memory_size().unwrap_or_else(|_| column.list_array.get_array_memory_size())).sum();
-    sent.rows += rows as u64;
-    sent.bytes += data as u64 + rows as u64 * ROW_INDEX_BYTES;
-    crate::columns::send(stream, path, times, rows, columns)
+    sent.rows += rows;
+    sent.bytes += data as u64 + rows * ROW_INDEX_BYTES;
+    crate::columns::send(stream, path, times, columns)
 }
 
 /// A point or vector in single precision, as Rerun draws them.

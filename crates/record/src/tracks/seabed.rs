@@ -116,16 +116,16 @@ impl Track for SeabedTrack {
             let segments = line.grounded.len();
             let grounded = strips(line.grounded.drain(..).flatten(), std::iter::repeat_n(2, segments));
             let grounded = column(rerun::LineStrips3D::descriptor_strips(), grounded, line.grounded_per_frame.iter().copied());
-            send_chunk(stream, &line.grounded_path, frames.columns(), frames.len(), vec![grounded], sent)?;
+            send_chunk(stream, &line.grounded_path, frames.columns(), vec![grounded], sent)?;
             let touchdowns = column(rerun::Points3D::descriptor_positions(), floats(line.touchdowns.drain(..)), line.touchdowns_per_frame.iter().copied());
-            send_chunk(stream, &line.touchdowns_path, frames.columns(), frames.len(), vec![touchdowns], sent)?;
+            send_chunk(stream, &line.touchdowns_path, frames.columns(), vec![touchdowns], sent)?;
             line.grounded_per_frame.clear();
             line.touchdowns_per_frame.clear();
         }
         if !self.lines.is_empty() {
             // Frame-major, a value per line: the scalars' rows as they are.
             let lengths = plot(std::mem::take(&mut self.grounded_lengths), self.lines.len());
-            send_chunk(stream, paths::SEABED_PLOT, frames.columns(), frames.len(), vec![lengths], sent)?;
+            send_chunk(stream, paths::SEABED_PLOT, frames.columns(), vec![lengths], sent)?;
         }
         Ok(())
     }

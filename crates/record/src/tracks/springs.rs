@@ -46,6 +46,6 @@ impl Track for Springs {
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
         let lines = strips(self.ends.drain(..).flatten(), std::iter::repeat_n(2, frames.len() * self.springs.len()));
         let lines = column(rerun::LineStrips3D::descriptor_strips(), lines, std::iter::repeat_n(self.springs.len(), frames.len()));
-        send_chunk(stream, paths::SPRINGS, frames.columns(), frames.len(), vec![lines], sent)
+        send_chunk(stream, paths::SPRINGS, frames.columns(), vec![lines], sent)
     }
 }

@@ -35,6 +35,6 @@ impl Track for TensionPlot {
     }
 
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
-        send_chunk(stream, paths::TENSION, frames.columns(), frames.len(), vec![plot(std::mem::take(&mut self.tensions), self.couplings)], sent)
+        send_chunk(stream, paths::TENSION, frames.columns(), vec![plot(std::mem::take(&mut self.tensions), self.couplings)], sent)
     }
 }

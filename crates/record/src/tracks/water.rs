@@ -197,7 +197,7 @@ impl Track for WaterTrack {
         if !self.surface_frames.is_empty() {
             let surface = column(rerun::Mesh3D::descriptor_vertex_positions(), floats(self.surface.drain(..)), std::iter::repeat_n(GRID * GRID, self.surface_frames.len()));
             let times = frames.columns_of(self.surface_frames.iter().copied());
-            send_chunk(stream, paths::WATER_SURFACE, times, self.surface_frames.len(), vec![surface], sent)?;
+            send_chunk(stream, paths::WATER_SURFACE, times, vec![surface], sent)?;
             self.surface_frames.clear();
         }
         let bodies = self.floating.len();
@@ -209,9 +209,9 @@ impl Track for WaterTrack {
                 column(rerun::Arrows3D::descriptor_vectors(), floats(arrows.clone().map(|(_, vector)| vector)), one_each()),
                 column(rerun::Arrows3D::descriptor_origins(), floats(arrows.map(|(origin, _)| origin)), one_each()),
             ];
-            send_chunk(stream, &floating.force_path, frames.columns(), rows, force, sent)?;
+            send_chunk(stream, &floating.force_path, frames.columns(), force, sent)?;
             for (path, values) in [(&floating.motion_path, &self.motion), (&floating.angles_path, &self.angles)] {
-                send_chunk(stream, path, frames.columns(), rows, vec![plot(of_entity(values, index, bodies).flatten().collect(), 2)], sent)?;
+                send_chunk(stream, path, frames.columns(), vec![plot(of_entity(values, index, bodies).flatten().collect(), 2)], sent)?;
             }
         }
         self.arrows.clear();

@@ -72,7 +72,12 @@ fn spring_stiffness(world: &World) -> f64 {
 
 /// Types `value` into the knob labelled `label`, as a screen reader (AccessKit `SetValue`) would.
 fn set_knob(harness: &mut Harness<'_, ControlPanel>, label: &str, value: f64) {
-    let (target_node, target_tree) = harness.get_by_label(label).accesskit_node().locate();
+    let knob = harness.get_by_label(label).accesskit_node().locate();
+    set_value(harness, knob, value);
+}
+
+/// Types `value` into the knob `knob` (its AccessKit node and tree).
+fn set_value(harness: &mut Harness<'_, ControlPanel>, (target_node, target_tree): (accesskit::NodeId, accesskit::TreeId), value: f64) {
     let request = accesskit::ActionRequest { action: accesskit::Action::SetValue, target_tree, target_node, data: Some(accesskit::ActionData::NumericValue(value)) };
     harness.event(egui::Event::AccessKitActionRequest(request));
     // One frame takes the edit, the next shows what became of it.
@@ -335,11 +340,8 @@ fn statics_panel_tunes_the_seabed_jumps_to_equilibrium_and_draws_the_offset_curv
     assert_eq!(friction(&world(&harness)), 0.9);
 
     // The first line's A_d (three lines show the knob).
-    let knob = harness.get_all_by_label("displaced area A_d").next().expect("an A_d knob");
-    let (target_node, target_tree) = knob.accesskit_node().locate();
-    let request = accesskit::ActionRequest { action: accesskit::Action::SetValue, target_tree, target_node, data: Some(accesskit::ActionData::NumericValue(0.004)) };
-    harness.event(egui::Event::AccessKitActionRequest(request));
-    harness.run_steps(2);
+    let knob = harness.get_all_by_label("displaced area A_d").next().expect("an A_d knob").accesskit_node().locate();
+    set_value(&mut harness, knob, 0.004);
     until(&mut harness, "A_d applied", |p| p.log().any(|l| l.text.starts_with("coupling \"m1\" applied")));
     match &world(&harness).couplings()[0].kind {
         CouplingKind::Catenary(line) => assert_eq!(line.displaced_area, 0.004),

@@ -17,9 +17,9 @@ use std::collections::HashMap;
 use std::path::Path;
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
-use tether::runner::{process_cpu_seconds, thread_cpu_seconds};
 use tether::gui::simulation::{Command, Report, Run, Simulation, Speed};
 use tether::gui::stream::Sinks;
+use tether::runner::{process_cpu_seconds, thread_cpu_seconds};
 use tether_physics::world::World;
 
 /// Wall time of each measurement.
@@ -92,7 +92,8 @@ fn live(world: World, speed: Speed) -> Live {
         messages.send(batch.to_vec()).ok();
     }));
     let viewer = std::thread::spawn(move || ingest(&inbox));
-    let mut simulation = Simulation::spawn(Sinks::new(vec![sink]), std::sync::Arc::new(|| {})).expect("the simulation thread");
+    let mut simulation =
+        Simulation::spawn(Sinks::new(vec![sink]), std::sync::Arc::new(|| {})).expect("the simulation thread");
     simulation.send(Command::Load(Box::new(Run { label: "chain100".into(), world })));
     simulation.send(Command::SetSpeed(speed));
     simulation.send(Command::Play);
@@ -147,7 +148,8 @@ fn ingest(inbox: &mpsc::Receiver<Vec<LogMsg>>) -> Ingested {
     let (mut updates, mut longest_wait) = (0, Duration::ZERO);
     for batch in inbox {
         for message in &batch {
-            let db = stores.entry(message.store_id().clone()).or_insert_with(|| EntityDb::new(message.store_id().clone()));
+            let db =
+                stores.entry(message.store_id().clone()).or_insert_with(|| EntityDb::new(message.store_id().clone()));
             db.add_log_msg(message).expect("a message the viewer takes");
             let newest = db.time_range_for(&"sim_time".into()).map(|range| range.max());
             if newest.is_some() && newest > latest {

@@ -23,7 +23,10 @@ use tether::sweep::{self, Options, Plan, Report};
 
 /// Resident set size of this process now [bytes] (`/proc/self/statm`).
 fn resident_bytes() -> u64 {
-    let pages = std::fs::read_to_string("/proc/self/statm").ok().and_then(|t| t.split_whitespace().nth(1).and_then(|p| p.parse::<u64>().ok())).unwrap_or(0);
+    let pages = std::fs::read_to_string("/proc/self/statm")
+        .ok()
+        .and_then(|t| t.split_whitespace().nth(1).and_then(|p| p.parse::<u64>().ok()))
+        .unwrap_or(0);
     // SAFETY: sysconf has no preconditions.
     pages * unsafe { libc::sysconf(libc::_SC_PAGESIZE) } as u64
 }
@@ -34,7 +37,8 @@ fn run(spec: &Path, out: &Path, jobs: NonZeroUsize) -> (Report, u64) {
     let plan = Plan::load(spec).unwrap_or_else(|e| panic!("{e}"));
     let options = Options { runner: Runner::new(jobs), shard: None, resume: false, record: None };
     let mut largest = 0;
-    let report = sweep::run(&plan, out, &options, |_| largest = largest.max(resident_bytes())).unwrap_or_else(|e| panic!("{e}"));
+    let report =
+        sweep::run(&plan, out, &options, |_| largest = largest.max(resident_bytes())).unwrap_or_else(|e| panic!("{e}"));
     (report, largest)
 }
 
@@ -47,7 +51,16 @@ fn main() {
     let repo = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let cores = all_cores();
     let one = NonZeroUsize::MIN;
-    println!("{} cores; load average {}", cores, std::fs::read_to_string("/proc/loadavg").unwrap_or_default().split_whitespace().take(3).collect::<Vec<_>>().join(" "));
+    println!(
+        "{} cores; load average {}",
+        cores,
+        std::fs::read_to_string("/proc/loadavg")
+            .unwrap_or_default()
+            .split_whitespace()
+            .take(3)
+            .collect::<Vec<_>>()
+            .join(" ")
+    );
 
     // 1. Parallel efficiency.
     let buoy = dir.path().join("buoy.ron");
@@ -86,7 +99,10 @@ fn main() {
         );
         efficiencies.push(efficiency);
         let overhead = (serial.process_cpu_seconds - serial.case_cpu_seconds) / serial.ran as f64;
-        println!("  per-case CPU beyond the simulation (serial run, building the buoy with its catenaries): {:.2} ms", 1e3 * overhead);
+        println!(
+            "  per-case CPU beyond the simulation (serial run, building the buoy with its catenaries): {:.2} ms",
+            1e3 * overhead
+        );
     }
     println!("parallel efficiency: {}", efficiencies.iter().map(|e| format!("{e:.3}")).collect::<Vec<_>>().join(", "));
 
@@ -108,8 +124,13 @@ fn main() {
 
     // 3. Memory.
     for cases in [1_000, 10_000] {
-        let (report, largest) = run(&tiny(cases, &format!("memory-{cases}")), &dir.path().join(format!("memory-{cases}")), cores);
-        println!("memory: {cases} cases on {cores} threads: largest resident set while they ran {:.1} MB ({:.2} s running)", largest as f64 / 1e6, seconds(report.running));
+        let (report, largest) =
+            run(&tiny(cases, &format!("memory-{cases}")), &dir.path().join(format!("memory-{cases}")), cores);
+        println!(
+            "memory: {cases} cases on {cores} threads: largest resident set while they ran {:.1} MB ({:.2} s running)",
+            largest as f64 / 1e6,
+            seconds(report.running)
+        );
     }
 }
 

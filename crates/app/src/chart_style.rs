@@ -29,17 +29,26 @@ pub const COLOURS: [RGBColor; 10] = [
 /// # Errors
 /// The bundled font is not a TrueType font (a broken build).
 pub fn register_font_family() -> Result<(), String> {
-    register_font("sans-serif", FontStyle::Normal, FONT).map_err(|_| "the bundled font is not a valid TrueType font".to_string())
+    register_font("sans-serif", FontStyle::Normal, FONT)
+        .map_err(|_| "the bundled font is not a valid TrueType font".to_string())
 }
 
 /// The charts' axes: tick labels at 18 px, axis titles at 20 px, a faint major grid and no minor
 /// one. Chain the chart's own descriptions and formatters on what it returns.
-pub fn axes<'m, 'a, 'b, X: Ranged, Y: Ranged, DB: DrawingBackend>(mesh: &'m mut MeshStyle<'a, 'b, X, Y, DB>) -> &'m mut MeshStyle<'a, 'b, X, Y, DB> {
-    mesh.label_style(("sans-serif", 18)).axis_desc_style(("sans-serif", 20)).light_line_style(WHITE.mix(0.0)).bold_line_style(BLACK.mix(0.12))
+pub fn axes<'m, 'a, 'b, X: Ranged, Y: Ranged, DB: DrawingBackend>(
+    mesh: &'m mut MeshStyle<'a, 'b, X, Y, DB>,
+) -> &'m mut MeshStyle<'a, 'b, X, Y, DB> {
+    mesh.label_style(("sans-serif", 18))
+        .axis_desc_style(("sans-serif", 20))
+        .light_line_style(WHITE.mix(0.0))
+        .bold_line_style(BLACK.mix(0.12))
 }
 
 /// The charts' legends: labels at `font_size` px in a nearly opaque white box with a faint
 /// border. Chain the chart's own position and margin on what it returns, then draw it.
-pub fn legend<'s, 'a, 'b, DB: DrawingBackend + 'a, CT: CoordTranslate>(labels: &'s mut SeriesLabelStyle<'a, 'b, DB, CT>, font_size: u32) -> &'s mut SeriesLabelStyle<'a, 'b, DB, CT> {
+pub fn legend<'s, 'a, 'b, DB: DrawingBackend + 'a, CT: CoordTranslate>(
+    labels: &'s mut SeriesLabelStyle<'a, 'b, DB, CT>,
+    font_size: u32,
+) -> &'s mut SeriesLabelStyle<'a, 'b, DB, CT> {
     labels.label_font(("sans-serif", font_size)).background_style(WHITE.mix(0.9)).border_style(BLACK.mix(0.4))
 }

@@ -101,7 +101,12 @@ impl Runner {
     /// # Errors
     /// The first error `done` returns: the cases in flight are then stopped (their watch says
     /// [`Stop::Cancelled`]) and their results dropped, and no further case starts.
-    pub fn run<C, R, E>(&self, cases: impl Iterator<Item = C> + Send, work: impl Fn(&C, &Watch<'_>) -> R + Sync, mut done: impl FnMut(C, R) -> Result<(), E>) -> Result<(), E>
+    pub fn run<C, R, E>(
+        &self,
+        cases: impl Iterator<Item = C> + Send,
+        work: impl Fn(&C, &Watch<'_>) -> R + Sync,
+        mut done: impl FnMut(C, R) -> Result<(), E>,
+    ) -> Result<(), E>
     where
         C: Send,
         R: Send,
@@ -186,17 +191,27 @@ mod tests {
         for jobs in [1, 2, 5] {
             let runner = Runner::new(NonZeroUsize::new(jobs).unwrap());
             let mut seen = vec![0; 100];
-            runner.run(0..100usize, |&case, _| case * case, |case, square| {
-                assert_eq!(square, case * case);
-                seen[case] += 1;
-                Ok::<(), ()>(())
-            }).unwrap();
+            runner
+                .run(
+                    0..100usize,
+                    |&case, _| case * case,
+                    |case, square| {
+                        assert_eq!(square, case * case);
+                        seen[case] += 1;
+                        Ok::<(), ()>(())
+                    },
+                )
+                .unwrap();
             assert!(seen.iter().all(|&n| n == 1), "{jobs} jobs: {seen:?}");
             let mut taken = 0;
-            let error = runner.run(0..100usize, |&case, _| case, |_, _| {
-                taken += 1;
-                if taken == 3 { Err("disk full") } else { Ok(()) }
-            });
+            let error = runner.run(
+                0..100usize,
+                |&case, _| case,
+                |_, _| {
+                    taken += 1;
+                    if taken == 3 { Err("disk full") } else { Ok(()) }
+                },
+            );
             assert_eq!(error, Err("disk full"));
             // At most the cases already in flight or queued finish after the failure.
             assert!(taken <= 3 + 2 * jobs, "{taken} results taken with {jobs} jobs");
@@ -207,18 +222,30 @@ mod tests {
     #[test]
     fn watch_reports_timeouts_and_cancellation() {
         let runner = Runner::new(NonZeroUsize::MIN).with_case_timeout(Duration::from_millis(20));
-        runner.run(0..1, |_, watch| {
-            assert_eq!(watch.check(), Ok(()));
-            std::thread::sleep(Duration::from_millis(30));
-            assert_eq!(watch.check(), Err(Stop::TimedOut));
-        }, |_, ()| Ok::<(), ()>(())).unwrap();
+        runner
+            .run(
+                0..1,
+                |_, watch| {
+                    assert_eq!(watch.check(), Ok(()));
+                    std::thread::sleep(Duration::from_millis(30));
+                    assert_eq!(watch.check(), Err(Stop::TimedOut));
+                },
+                |_, ()| Ok::<(), ()>(()),
+            )
+            .unwrap();
         let cancel = Arc::new(AtomicBool::new(true));
         let runner = Runner::new(NonZeroUsize::MIN).with_cancel(cancel);
         let mut ran = 0;
-        runner.run(0..10, |_, _| (), |_, ()| {
-            ran += 1;
-            Ok::<(), ()>(())
-        }).unwrap();
+        runner
+            .run(
+                0..10,
+                |_, _| (),
+                |_, ()| {
+                    ran += 1;
+                    Ok::<(), ()>(())
+                },
+            )
+            .unwrap();
         assert_eq!(ran, 0, "a cancelled run starts no case");
         assert_eq!(Watch::unlimited().check(), Ok(()));
     }

@@ -44,7 +44,14 @@ fn app(runtime: &tokio::runtime::Runtime, options: GuiOptions) -> Harness<'stati
     let handle = runtime.handle().clone();
     Harness::builder().with_size([1400.0, 900.0]).wgpu().build_eframe(move |cc| {
         re_viewer::customize_eframe_and_setup_renderer(cc).expect("the viewer's renderer on wgpu");
-        TetherApp::new(cc, re_viewer::MainThreadToken::i_promise_i_am_only_using_this_for_a_test(), handle, Vec::new(), options).expect("the app")
+        TetherApp::new(
+            cc,
+            re_viewer::MainThreadToken::i_promise_i_am_only_using_this_for_a_test(),
+            handle,
+            Vec::new(),
+            options,
+        )
+        .expect("the app")
     })
 }
 
@@ -80,7 +87,11 @@ fn recording_in_file(path: &Path) -> (String, i64) {
     let mut file = std::fs::File::open(path).unwrap();
     let stores = rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file).unwrap();
     let (id, store) = stores.iter().find(|(id, _)| id.is_recording()).expect("a recording in the file");
-    let last = store.iter_physical_chunks().filter_map(|c| c.timelines().get(&"sim_time".into()).and_then(|t| t.times_raw().iter().copied().max())).max().unwrap();
+    let last = store
+        .iter_physical_chunks()
+        .filter_map(|c| c.timelines().get(&"sim_time".into()).and_then(|t| t.times_raw().iter().copied().max()))
+        .max()
+        .unwrap();
     (id.recording_id().to_string(), last)
 }
 
@@ -91,12 +102,22 @@ fn dropped_scenes_open_dropped_recordings_play_back_and_other_files_are_refused(
     std::fs::write(&scene, SPRING.as_str()).unwrap();
     let recording = dir.path().join("spring_mass.rrd");
     let record = Command::new(env!("CARGO_BIN_EXE_tether"))
-        .args(["record", repo("scenes/spring_mass.ron").to_str().unwrap(), "-o", recording.to_str().unwrap(), "--duration", "0.5"])
+        .args([
+            "record",
+            repo("scenes/spring_mass.ron").to_str().unwrap(),
+            "-o",
+            recording.to_str().unwrap(),
+            "--duration",
+            "0.5",
+        ])
         .output()
         .unwrap();
     assert!(record.status.success(), "{}", String::from_utf8_lossy(&record.stderr));
     let (file_recording, file_last) = recording_in_file(&recording);
-    assert!((450_000_000..=500_000_000).contains(&file_last), "tether record ran 0.5 s, its last frame at {file_last} ns");
+    assert!(
+        (450_000_000..=500_000_000).contains(&file_last),
+        "tether record ran 0.5 s, its last frame at {file_last} ns"
+    );
 
     let runtime = runtime();
     let mut harness = app(&runtime, GuiOptions { scenes_dir: dir.path().to_path_buf(), ..Default::default() });
@@ -112,20 +133,30 @@ fn dropped_scenes_open_dropped_recordings_play_back_and_other_files_are_refused(
     drop_file(&mut harness, &recording);
     let viewer_has_it = |app: &TetherApp| {
         let Some(db) = app.viewer().and_then(|v| v.recording_db()) else { return false };
-        db.recording_id().to_string() == file_recording && db.time_range_for(&"sim_time".into()).is_some_and(|r| r.max().as_i64() == file_last)
+        db.recording_id().to_string() == file_recording
+            && db.time_range_for(&"sim_time".into()).is_some_and(|r| r.max().as_i64() == file_last)
     };
     until(&mut harness, "the viewer to show the dropped recording to its last frame (0.5 s)", viewer_has_it);
     assert!(harness.state().panel().log().any(|l| l.text == format!("playing back {}", recording.display())));
     let db = harness.state().viewer().and_then(|v| v.recording_db()).unwrap();
     assert!(db.is_logged_entity(&"world/bodies/mass".into()), "the recording's body is in the viewer");
-    assert_eq!(harness.state().panel().status().map(|s| s.label.clone()).as_deref(), Some("dropped"), "the scene keeps running beside it");
+    assert_eq!(
+        harness.state().panel().status().map(|s| s.label.clone()).as_deref(),
+        Some("dropped"),
+        "the scene keeps running beside it"
+    );
 
     let notes = dir.path().join("notes.txt");
     std::fs::write(&notes, "Scene(").unwrap();
     drop_file(&mut harness, &notes);
     harness.run_steps(2);
-    let refusal = format!("{}: not a scene (.ron), a recording (.rrd) or a sweep directory; nothing opened", notes.display());
-    assert!(harness.state().panel().log().any(|l| l.error && l.text == refusal), "log: {:?}", harness.state().panel().log().collect::<Vec<_>>());
+    let refusal =
+        format!("{}: not a scene (.ron), a recording (.rrd) or a sweep directory; nothing opened", notes.display());
+    assert!(
+        harness.state().panel().log().any(|l| l.error && l.text == refusal),
+        "log: {:?}",
+        harness.state().panel().log().collect::<Vec<_>>()
+    );
     harness.get_by_label(&refusal);
     assert_eq!(harness.state().panel().load_error(), None, "not read as a scene");
     assert_eq!(harness.state().panel().scene().map(|s| s.path.clone()), Some(scene));
@@ -142,7 +173,8 @@ fn the_body_selected_in_the_viewer_is_shown_with_its_state() {
     let scene = dir.path().join("spring.ron");
     std::fs::write(&scene, SPRING.as_str()).unwrap();
     let runtime = runtime();
-    let mut harness = app(&runtime, GuiOptions { scene: Some(scene), scenes_dir: dir.path().to_path_buf(), ..Default::default() });
+    let mut harness =
+        app(&runtime, GuiOptions { scene: Some(scene), scenes_dir: dir.path().to_path_buf(), ..Default::default() });
     until(&mut harness, "the scene", |app| app.panel().status().is_some_and(|s| s.label == "spring"));
     // Ten steps, paused: the body has moved and stays put. (The keyboard shortcuts are taken
     // in the window's raw-input hook, which the harness does not call: the button then.)
@@ -157,7 +189,9 @@ fn the_body_selected_in_the_viewer_is_shown_with_its_state() {
     let shown = |v: &tether_physics::math::Vec3| format!("({:.4}, {:.4}, {:.4})", v.x, v.y, v.z);
     let position = format!("{} m", shown(&state.position));
     let velocity = format!("{} m/s", shown(&state.velocity));
-    until(&mut harness, "the viewer to hold the body's entity", |app| app.viewer().and_then(|v| v.recording_db()).is_some_and(|db| db.is_logged_entity(&"world/bodies/bob".into())));
+    until(&mut harness, "the viewer to hold the body's entity", |app| {
+        app.viewer().and_then(|v| v.recording_db()).is_some_and(|db| db.is_logged_entity(&"world/bodies/bob".into()))
+    });
 
     let select = |harness: &mut Harness<'_, TetherApp>, path: &str| {
         let viewer = harness.state().viewer().expect("the embedded viewer");

@@ -56,7 +56,11 @@ fn record_refuses_bad_flags_and_unwritable_paths_before_running() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("--log-hz must be a positive"));
     let out = tether(&["record", scene, "-o", "/no/such/dir/x.rrd"]);
     assert_eq!(out.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot write /no/such/dir/x.rrd"), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("cannot write /no/such/dir/x.rrd"),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
 
 /// Face arrows asked for a contact the scene does not have, or over a time span that ends
@@ -72,9 +76,24 @@ fn record_refuses_face_arrows_of_unknown_contacts() {
     assert_eq!(out.status.code(), Some(1));
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(stderr.trim(), "error: no contact named \"pier\" to draw face arrows for (contacts: quay, hull)");
-    let out = tether(&["record", scene, "-o", out_path, "--face-arrows", "all", "--face-arrows-from", "3", "--face-arrows-until", "1"]);
+    let out = tether(&[
+        "record",
+        scene,
+        "-o",
+        out_path,
+        "--face-arrows",
+        "all",
+        "--face-arrows-from",
+        "3",
+        "--face-arrows-until",
+        "1",
+    ]);
     assert_eq!(out.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("--face-arrows-until (1 s) is before --face-arrows-from (3 s)"), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("--face-arrows-until (1 s) is before --face-arrows-from (3 s)"),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert!(!std::path::Path::new(out_path).exists(), "nothing written");
 }
 
@@ -86,12 +105,20 @@ fn forces_json_gives_every_law_its_closed_form() {
     let path = dir.path().join("laws.ron");
     let laws = [
         ("linear", "Linear(stiffness: 250.0, rest_length: 1.0)", 250.0 * 0.2),
-        ("polynomial", "Polynomial(a: 100.0, b: 20.0, c: 4000.0, rest_length: 1.0)", 100.0 * 0.2 + 20.0 * 0.04 + 4000.0 * 0.008),
+        (
+            "polynomial",
+            "Polynomial(a: 100.0, b: 20.0, c: 4000.0, rest_length: 1.0)",
+            100.0 * 0.2 + 20.0 * 0.04 + 4000.0 * 0.008,
+        ),
         ("force_curve", "ForceCurve(points: [(0.5, -80.0), (1.0, 0.0), (1.4, 100.0)])", 50.0),
         // k = 100 + 400(ξ − 1) on [1, 1.5]: ∫_1^1.2 = 0.2·(100 + 180)/2 = 28.
         ("stiffness_curve", "StiffnessCurve(points: [(1.0, 100.0), (1.5, 300.0)], rest_length: 1.0)", 28.0),
         // f_r = 10 N at x_r = 1.1, plus ∫_1.1^1.2 = 0.1·(140 + 180)/2 = 16.
-        ("reference_force", "ReferenceForce(points: [(1.0, 100.0), (1.5, 300.0)], reference_length: 1.1, reference_force: 10.0, rest_length: 3.0)", 26.0),
+        (
+            "reference_force",
+            "ReferenceForce(points: [(1.0, 100.0), (1.5, 300.0)], reference_length: 1.1, reference_force: 10.0, rest_length: 3.0)",
+            26.0,
+        ),
     ];
     let couplings: Vec<String> = laws
         .iter()
@@ -131,13 +158,31 @@ fn forces_json_gives_every_law_its_closed_form() {
 #[test]
 fn estimate_contact_prints_the_formulas_values() {
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_tether"))
-        .args(["estimate-contact", "--mass", "1", "--area", "0.01", "--speed", "1", "--d0", "0.001", "--dmin", "-0.002", "--zeta", "0.1", "--dt", "0.002"])
+        .args([
+            "estimate-contact",
+            "--mass",
+            "1",
+            "--area",
+            "0.01",
+            "--speed",
+            "1",
+            "--d0",
+            "0.001",
+            "--dmin",
+            "-0.002",
+            "--zeta",
+            "0.1",
+            "--dt",
+            "0.002",
+        ])
         .output()
         .expect("tether runs");
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "{text}");
     // k1 = 1·1²/(0.01·0.003²) = 1.111111e7, k2 = 0.2·√(1·k1/0.01) = 6.666667e3, τ = (π/2)(0.003/1).
-    for expected in ["k1  = 1.111111e7", "k2  = 6.666667e3", "τ   = 4.712389e-3", "τ/10 = 4.712389e-4", "substeps: Fixed(5)"] {
+    for expected in
+        ["k1  = 1.111111e7", "k2  = 6.666667e3", "τ   = 4.712389e-3", "τ/10 = 4.712389e-4", "substeps: Fixed(5)"]
+    {
         assert!(text.contains(expected), "missing {expected:?} in\n{text}");
     }
     let refused = std::process::Command::new(env!("CARGO_BIN_EXE_tether"))
@@ -160,7 +205,14 @@ fn forces_json_reports_the_catenary_solution() {
     assert_eq!(chain["kind"], "catenary");
     // Ends (2, 0, 0) and (18, 0, 0): level, span 16 m, L = 30 m, λ0 = 20 kg/m, D = 1e6 N/m.
     let line = Catenary::new(Endpoint::World(Vec3::zeros()), Endpoint::World(Vec3::zeros()), 20.0, 30.0, 1e6);
-    let s = line.solve(&Vec3::new(2.0, 0.0, 0.0), &Vec3::new(18.0, 0.0, 0.0), &tether_physics::surroundings::Surroundings::dry(Vec3::new(0.0, 0.0, -G)), None).unwrap();
+    let s = line
+        .solve(
+            &Vec3::new(2.0, 0.0, 0.0),
+            &Vec3::new(18.0, 0.0, 0.0),
+            &tether_physics::surroundings::Surroundings::dry(Vec3::new(0.0, 0.0, -G)),
+            None,
+        )
+        .unwrap();
     let h = chain["horizontal_tension"].as_f64().unwrap();
     assert_relative_eq!(h, s.horizontal_tension, max_relative = 1e-12);
     let (u1, u2) = (chain["u1"].as_f64().unwrap(), chain["u2"].as_f64().unwrap());

@@ -30,6 +30,11 @@ fn features(with_tests: bool) -> BTreeMap<String, BTreeSet<String>> {
 fn the_tests_build_every_shared_dependency_with_the_applications_features() {
     let (build, test) = (features(false), features(true));
     assert!(build.len() > 500, "the application's dependency graph was read: {} packages", build.len());
-    let parted: Vec<String> = build.iter().filter_map(|(package, f)| test.get(package).filter(|t| *t != f).map(|t| format!("{package}: build {f:?} test {t:?}"))).collect();
+    let parted: Vec<String> = build
+        .iter()
+        .filter_map(|(package, f)| {
+            test.get(package).filter(|t| *t != f).map(|t| format!("{package}: build {f:?} test {t:?}"))
+        })
+        .collect();
     assert!(parted.is_empty(), "features differ between `cargo build` and `cargo test`:\n{}", parted.join("\n"));
 }

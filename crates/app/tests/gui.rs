@@ -39,7 +39,9 @@ fn panel(scenes: &Path) -> ControlPanel {
 }
 
 fn harness(panel: ControlPanel) -> Harness<'static, ControlPanel> {
-    Harness::builder().with_size([440.0, 1100.0]).build_ui_state(|ui, panel: &mut ControlPanel| panel.ui(ui, None), panel)
+    Harness::builder()
+        .with_size([440.0, 1100.0])
+        .build_ui_state(|ui, panel: &mut ControlPanel| panel.ui(ui, None), panel)
 }
 
 /// Runs frames until `done` holds for the panel, or fails after [`PATIENCE`].
@@ -50,7 +52,11 @@ fn until(harness: &mut Harness<'_, ControlPanel>, what: &str, done: impl Fn(&Con
         if done(harness.state()) {
             return;
         }
-        assert!(start.elapsed() < PATIENCE, "timed out waiting for {what}; log: {:?}", harness.state().log().collect::<Vec<_>>());
+        assert!(
+            start.elapsed() < PATIENCE,
+            "timed out waiting for {what}; log: {:?}",
+            harness.state().log().collect::<Vec<_>>()
+        );
         std::thread::yield_now();
     }
 }
@@ -77,8 +83,17 @@ fn set_knob(harness: &mut Harness<'_, ControlPanel>, label: &str, value: f64) {
 }
 
 /// Types `value` into the knob `knob` (its AccessKit node and tree).
-fn set_value(harness: &mut Harness<'_, ControlPanel>, (target_node, target_tree): (accesskit::NodeId, accesskit::TreeId), value: f64) {
-    let request = accesskit::ActionRequest { action: accesskit::Action::SetValue, target_tree, target_node, data: Some(accesskit::ActionData::NumericValue(value)) };
+fn set_value(
+    harness: &mut Harness<'_, ControlPanel>,
+    (target_node, target_tree): (accesskit::NodeId, accesskit::TreeId),
+    value: f64,
+) {
+    let request = accesskit::ActionRequest {
+        action: accesskit::Action::SetValue,
+        target_tree,
+        target_node,
+        data: Some(accesskit::ActionData::NumericValue(value)),
+    };
     harness.event(egui::Event::AccessKitActionRequest(request));
     // One frame takes the edit, the next shows what became of it.
     harness.run_steps(2);
@@ -156,7 +171,9 @@ fn a_bad_scene_shows_its_place_and_the_previous_one_keeps_running() {
     harness.get_by_label(&error);
 
     let before = world(&harness).time();
-    until(&mut harness, "the previous scene to go on", |p| p.status().is_some_and(|s| s.label == "spring" && s.running && s.time > before + 0.02));
+    until(&mut harness, "the previous scene to go on", |p| {
+        p.status().is_some_and(|s| s.label == "spring" && s.running && s.time > before + 0.02)
+    });
 }
 
 #[test]
@@ -208,8 +225,13 @@ fn the_open_scene_reloads_when_its_file_changes_on_disk() {
     let stiffer = SPRING.replace("stiffness: 100.0", "stiffness: 2500.0");
     save_by_rename(&stiffer);
     until(&mut harness, "the reload", |p| p.log().any(|l| l.text.ends_with("spring.ron changed on disk: reloading")));
-    until(&mut harness, "k = 2500 N/m in the running world", |p| p.simulation().snapshot(PATIENCE).is_some_and(|w| spring_stiffness(&w) == 2500.0));
-    assert_eq!(harness.state().scene().map(|s| s.file.clone()), Some(tether_scene::parse(&stiffer, &path).unwrap().file));
+    until(&mut harness, "k = 2500 N/m in the running world", |p| {
+        p.simulation().snapshot(PATIENCE).is_some_and(|w| spring_stiffness(&w) == 2500.0)
+    });
+    assert_eq!(
+        harness.state().scene().map(|s| s.file.clone()),
+        Some(tether_scene::parse(&stiffer, &path).unwrap().file)
+    );
 
     harness.key_press(egui::Key::Space);
     until(&mut harness, "the run", |p| p.status().is_some_and(|s| s.running && s.time > 0.02));
@@ -219,7 +241,9 @@ fn the_open_scene_reloads_when_its_file_changes_on_disk() {
     assert!(error.starts_with(&format!("{}:7:", path.display())), "{error}");
     harness.get_by_label(&error);
     let broken_at = world(&harness).time();
-    until(&mut harness, "the previous scene to go on", |p| p.status().is_some_and(|s| s.running && s.time > broken_at + 0.02));
+    until(&mut harness, "the previous scene to go on", |p| {
+        p.status().is_some_and(|s| s.running && s.time > broken_at + 0.02)
+    });
     assert_eq!(spring_stiffness(&world(&harness)), 2500.0, "the broken file left the simulation alone");
 
     // The broken save undone: the file is what runs again.
@@ -230,7 +254,9 @@ fn the_open_scene_reloads_when_its_file_changes_on_disk() {
     assert!(world(&harness).time() > broken_at, "no restart: the file says what already runs");
 
     std::fs::write(&path, SPRING.replace("stiffness: 100.0", "stiffness: 400.0")).unwrap();
-    until(&mut harness, "k = 400 N/m in the running world", |p| p.simulation().snapshot(PATIENCE).is_some_and(|w| spring_stiffness(&w) == 400.0));
+    until(&mut harness, "k = 400 N/m in the running world", |p| {
+        p.simulation().snapshot(PATIENCE).is_some_and(|w| spring_stiffness(&w) == 400.0)
+    });
     assert_eq!(world(&harness).time(), 0.0, "a reloaded scene starts paused at t = 0");
     assert!(harness.state().load_error().is_none());
 }
@@ -282,7 +308,9 @@ fn contact_knobs_and_the_estimator_tune_the_running_contact() {
         damping_ratio: 0.1,
     };
     let expected = tether_physics::coupling::contact::estimator::estimate(&impact).unwrap().stiffness;
-    until(&mut harness, "the estimate in the running contact", |p| p.simulation().snapshot(PATIENCE).is_some_and(|w| contact_stiffness(&w) == expected));
+    until(&mut harness, "the estimate in the running contact", |p| {
+        p.simulation().snapshot(PATIENCE).is_some_and(|w| contact_stiffness(&w) == expected)
+    });
 }
 
 /// The water panel: wave height, current and a body's drag reach the running world; a density
@@ -305,7 +333,9 @@ fn water_knobs_tune_the_running_water_and_bad_values_are_refused() {
     until(&mut harness, "the water applied", |p| p.log().any(|l| l.text.starts_with("the water applied")));
     assert_eq!(height(&world(&harness)), 1.5);
     set_knob(&mut harness, "current speed", 0.4);
-    until(&mut harness, "the current applied", |p| p.log().filter(|l| l.text.starts_with("the water applied")).count() == 2);
+    until(&mut harness, "the current applied", |p| {
+        p.log().filter(|l| l.text.starts_with("the water applied")).count() == 2
+    });
     assert_eq!(world(&harness).system().water().expect("water").water.spec().current.speed, 0.4);
 
     set_knob(&mut harness, "density ρ", 0.0);
@@ -313,7 +343,9 @@ fn water_knobs_tune_the_running_water_and_bad_values_are_refused() {
     assert_eq!(world(&harness).system().water().expect("water").water.spec().density, 1025.0);
 
     set_knob(&mut harness, "drag C_d z", 0.7);
-    until(&mut harness, "the coefficients applied", |p| p.log().any(|l| l.text.starts_with("the body's coefficients in the water applied")));
+    until(&mut harness, "the coefficients applied", |p| {
+        p.log().any(|l| l.text.starts_with("the body's coefficients in the water applied"))
+    });
     assert_eq!(drag_z(&world(&harness)), 0.7);
     set_knob(&mut harness, "drag C_d z", -1.0);
     harness.get_by_label_contains("Refused: body \"float\": hydro: drag must be finite and ≥ 0");
@@ -328,12 +360,16 @@ fn water_knobs_tune_the_running_water_and_bad_values_are_refused() {
 fn statics_panel_tunes_the_seabed_jumps_to_equilibrium_and_draws_the_offset_curve() {
     let dir = scenes_folder(&[("moored.ron", common::MOORED_ON_SEABED)]);
     // Tall enough for the statics panel below four couplings' knobs.
-    let mut harness = Harness::builder().with_size([440.0, 2600.0]).build_ui_state(|ui, panel: &mut ControlPanel| panel.ui(ui, None), panel(dir.path()));
+    let mut harness = Harness::builder()
+        .with_size([440.0, 2600.0])
+        .build_ui_state(|ui, panel: &mut ControlPanel| panel.ui(ui, None), panel(dir.path()));
     open_from_list(&mut harness, "moored.ron");
     let friction = |world: &World| world.system().seabed().expect("a seabed").line_friction;
 
     set_knob(&mut harness, "seabed line friction C_B", 0.9);
-    until(&mut harness, "C_B applied", |p| p.log().any(|l| l.text.starts_with("seabed line friction C_B = 0.9 applied")));
+    until(&mut harness, "C_B applied", |p| {
+        p.log().any(|l| l.text.starts_with("seabed line friction C_B = 0.9 applied"))
+    });
     assert_eq!(friction(&world(&harness)), 0.9);
     set_knob(&mut harness, "seabed line friction C_B", -0.1);
     harness.get_by_label_contains("Refused: seabed line friction C_B must be ≥ 0, got -0.1");
@@ -356,7 +392,9 @@ fn statics_panel_tunes_the_seabed_jumps_to_equilibrium_and_draws_the_offset_curv
     assert_eq!(placed.state(0).velocity.norm(), 0.0, "at rest");
 
     harness.get_by_label("Offset curve").click();
-    until(&mut harness, "the offset curve", |p| p.log().any(|l| l.text.starts_with("offset curve of body \"buoy\" in x: 21 offsets")));
+    until(&mut harness, "the offset curve", |p| {
+        p.log().any(|l| l.text.starts_with("offset curve of body \"buoy\" in x: 21 offsets"))
+    });
     harness.run_steps(2);
     harness.get_by_label("body \"buoy\": restoring force against offset in x");
 }

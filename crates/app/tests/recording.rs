@@ -31,7 +31,11 @@ fn rows_per_entity(path: &std::path::Path) -> BTreeMap<String, usize> {
 fn record(scene: &str, flags: &[&str]) -> (tempfile::TempDir, std::path::PathBuf) {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("out.rrd");
-    let status = tether().args(["record", common::repo(scene).to_str().unwrap(), "-o", out.to_str().unwrap()]).args(flags).status().unwrap();
+    let status = tether()
+        .args(["record", common::repo(scene).to_str().unwrap(), "-o", out.to_str().unwrap()])
+        .args(flags)
+        .status()
+        .unwrap();
     assert!(status.success());
     (dir, out)
 }
@@ -60,7 +64,12 @@ fn recording_passes_rerun_rrd_verify() {
         .args(["rrd", "verify", out.to_str().unwrap()])
         .output()
         .expect("the `rerun` CLI must be on PATH: pip install rerun-sdk==0.36.3 (see README)");
-    assert!(verify.status.success(), "rerun rrd verify failed:\n{}\n{}", String::from_utf8_lossy(&verify.stdout), String::from_utf8_lossy(&verify.stderr));
+    assert!(
+        verify.status.success(),
+        "rerun rrd verify failed:\n{}\n{}",
+        String::from_utf8_lossy(&verify.stdout),
+        String::from_utf8_lossy(&verify.stderr)
+    );
 }
 
 /// A catenary is drawn along its shape (32 segments in 8 coloured bands) and its end tensions
@@ -99,15 +108,21 @@ fn a_contact_recording_has_its_force_plots_and_the_face_arrows_asked_for() {
 
     // The quay's from t = 1.95 s (between two frames, so that no rounding of t decides): frames
     // at 2.0, 2.1, …, 4.0 s, 21 of them; none of the hull's.
-    let (_dir, out) = record("scenes/fender.ron", &["--duration", "4", "--log-hz", "10", "--face-arrows", "quay", "--face-arrows-from", "1.95"]);
+    let (_dir, out) = record(
+        "scenes/fender.ron",
+        &["--duration", "4", "--log-hz", "10", "--face-arrows", "quay", "--face-arrows-from", "1.95"],
+    );
     let rows = rows_per_entity(&out);
     assert_eq!(rows.get("/world/contacts/quay"), Some(&21), "{rows:?}");
     assert_eq!(rows.get("/world/contacts/hull"), None, "{rows:?}");
 }
 
-
 /// What `rows` finds of `entity` in each store of the `.rrd` file `path`: values by `step`.
-fn rows_by_step<T>(path: &std::path::Path, entity: &str, rows: impl Fn(&rerun::ChunkStore, &str) -> Vec<(i64, T)>) -> BTreeMap<i64, T> {
+fn rows_by_step<T>(
+    path: &std::path::Path,
+    entity: &str,
+    rows: impl Fn(&rerun::ChunkStore, &str) -> Vec<(i64, T)>,
+) -> BTreeMap<i64, T> {
     let mut file = std::fs::File::open(path).unwrap();
     let stores = rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file).unwrap();
     stores.values().flat_map(|store| rows(store, entity)).collect()
@@ -121,7 +136,13 @@ fn translations_by_step(path: &std::path::Path, entity: &str) -> BTreeMap<i64, [
         store
             .iter_physical_chunks()
             .filter(|chunk| chunk.entity_path().to_string() == entity)
-            .flat_map(|chunk| chunk.iter_component_indices(step, component).zip(chunk.iter_slices::<[f32; 3]>(component)).map(|((time, _), values)| (time.as_i64(), values[0])).collect::<Vec<_>>())
+            .flat_map(|chunk| {
+                chunk
+                    .iter_component_indices(step, component)
+                    .zip(chunk.iter_slices::<[f32; 3]>(component))
+                    .map(|((time, _), values)| (time.as_i64(), values[0]))
+                    .collect::<Vec<_>>()
+            })
             .collect()
     })
 }
@@ -134,7 +155,13 @@ fn scalars_by_step(path: &std::path::Path, entity: &str) -> BTreeMap<i64, Vec<f6
         store
             .iter_physical_chunks()
             .filter(|chunk| chunk.entity_path().to_string() == entity)
-            .flat_map(|chunk| chunk.iter_component_indices(step, component).zip(chunk.iter_slices::<f64>(component)).map(|((time, _), values)| (time.as_i64(), values.to_vec())).collect::<Vec<_>>())
+            .flat_map(|chunk| {
+                chunk
+                    .iter_component_indices(step, component)
+                    .zip(chunk.iter_slices::<f64>(component))
+                    .map(|((time, _), values)| (time.as_i64(), values.to_vec()))
+                    .collect::<Vec<_>>()
+            })
             .collect()
     })
 }
@@ -155,11 +182,13 @@ fn strips_by_step(path: &std::path::Path, entity: &str) -> BTreeMap<i64, Vec<Vec
                 let points = |strip: usize| {
                     let points = strips.value(strip);
                     let points = points.as_fixed_size_list();
-                    (0..points.len()).map(|p| {
-                        let xyz = points.value(p);
-                        let xyz = xyz.as_primitive::<Float32Type>();
-                        [xyz.value(0), xyz.value(1), xyz.value(2)]
-                    }).collect::<Vec<_>>()
+                    (0..points.len())
+                        .map(|p| {
+                            let xyz = points.value(p);
+                            let xyz = xyz.as_primitive::<Float32Type>();
+                            [xyz.value(0), xyz.value(1), xyz.value(2)]
+                        })
+                        .collect::<Vec<_>>()
                 };
                 rows.push((time, (0..strips.len()).map(points).collect()));
             }
@@ -191,21 +220,32 @@ fn recorded_values_are_the_worlds() {
         let expected = world.state(1).position;
         let recorded = positions[&(step as i64)];
         for k in 0..3 {
-            assert!((f64::from(recorded[k]) - expected[k]).abs() <= f64::from(f32::EPSILON) * expected[k].abs().max(1.0), "step {step}, axis {k}: recorded {recorded:?}, world {expected:?}");
+            assert!(
+                (f64::from(recorded[k]) - expected[k]).abs() <= f64::from(f32::EPSILON) * expected[k].abs().max(1.0),
+                "step {step}, axis {k}: recorded {recorded:?}, world {expected:?}"
+            );
         }
         let tension = world.coupling_forces()[0].tension;
         let logged = tensions[&(step as i64)][0];
-        assert!((logged - tension).abs() <= f64::from(f32::EPSILON) * tension.abs(), "step {step}: recorded tension {logged} N, world {tension} N");
+        assert!(
+            (logged - tension).abs() <= f64::from(f32::EPSILON) * tension.abs(),
+            "step {step}: recorded tension {logged} N, world {tension} N"
+        );
         let bands = &strips[&(step as i64)];
         assert_eq!(bands.len(), 8, "step {step}");
         assert!(bands.iter().all(|band| band.len() == 5), "step {step}: {bands:?}");
         assert!(bands.windows(2).all(|pair| pair[0][4] == pair[1][0]), "step {step}: the bands join");
-        let drawn: Vec<[f32; 3]> = bands.iter().enumerate().flat_map(|(b, band)| band[usize::from(b > 0)..].to_vec()).collect();
+        let drawn: Vec<[f32; 3]> =
+            bands.iter().enumerate().flat_map(|(b, band)| band[usize::from(b > 0)..].to_vec()).collect();
         let shape = world.line_state(0).expect("the rope is solved").sample(32);
         assert_eq!(drawn.len(), shape.len());
         for (point, (expected, _)) in drawn.iter().zip(&shape) {
             for k in 0..3 {
-                assert!((f64::from(point[k]) - expected[k]).abs() <= 4.0 * f64::from(f32::EPSILON) * expected[k].abs().max(1.0), "step {step}: drawn {point:?}, solved {expected:?}");
+                assert!(
+                    (f64::from(point[k]) - expected[k]).abs()
+                        <= 4.0 * f64::from(f32::EPSILON) * expected[k].abs().max(1.0),
+                    "step {step}: drawn {point:?}, solved {expected:?}"
+                );
             }
         }
     }
@@ -222,7 +262,13 @@ fn recorded_contact_forces_are_the_faces_sums() {
     let (_dir, out) = record("scenes/fender.ron", &["--duration", "4", "--log-hz", "10"]);
     let forces = scalars_by_step(&out, "/plots/contact");
     let mut world = tether_scene::load(&common::repo("scenes/fender.ron")).unwrap().world;
-    let contacts: Vec<usize> = world.couplings().iter().enumerate().filter(|(_, c)| matches!(c.kind, tether_physics::coupling::CouplingKind::Contact(_))).map(|(i, _)| i).collect();
+    let contacts: Vec<usize> = world
+        .couplings()
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| matches!(c.kind, tether_physics::coupling::CouplingKind::Contact(_)))
+        .map(|(i, _)| i)
+        .collect();
     let mut pressed = 0;
     for step in [500, 1000, 2000] {
         while world.steps() < step {
@@ -231,13 +277,25 @@ fn recorded_contact_forces_are_the_faces_sums() {
         let logged = &forces[&(step as i64)];
         assert_eq!(logged.len(), 2 * contacts.len(), "normal and friction of each contact");
         for (k, &index) in contacts.iter().enumerate() {
-            let tether_physics::coupling::CouplingKind::Contact(contact) = &world.couplings()[index].kind else { unreachable!("filtered on contacts") };
+            let tether_physics::coupling::CouplingKind::Contact(contact) = &world.couplings()[index].kind else {
+                unreachable!("filtered on contacts")
+            };
             let again = contact.totals(world.frames());
             // The same faces summed in another order: round-off far below 1e-9 of the normal
             // force (the physics test holds it to 1e-12).
             let tolerance = 1e-9 * again.normal.max(1.0);
-            assert!((logged[2 * k] - again.normal).abs() <= tolerance, "step {step}, contact {k}: normal {} logged, {} again", logged[2 * k], again.normal);
-            assert!((logged[2 * k + 1] - again.friction).abs() <= tolerance, "step {step}, contact {k}: friction {} logged, {} again", logged[2 * k + 1], again.friction);
+            assert!(
+                (logged[2 * k] - again.normal).abs() <= tolerance,
+                "step {step}, contact {k}: normal {} logged, {} again",
+                logged[2 * k],
+                again.normal
+            );
+            assert!(
+                (logged[2 * k + 1] - again.friction).abs() <= tolerance,
+                "step {step}, contact {k}: friction {} logged, {} again",
+                logged[2 * k + 1],
+                again.friction
+            );
             pressed += usize::from(again.normal > 0.0);
         }
     }
@@ -252,7 +310,9 @@ fn the_water_is_recorded() {
     // dt = 2 ms, 10 Hz: a frame every 50 steps, 0 to 1000: 21.
     let (_dir, out) = record("scenes/moored_buoy.ron", &["--duration", "2", "--log-hz", "10"]);
     let rows = rows_per_entity(&out);
-    for entity in ["/world/water/surface", "/world/water/forces/buoy", "/plots/water/buoy/motion", "/plots/water/buoy/angles"] {
+    for entity in
+        ["/world/water/surface", "/world/water/forces/buoy", "/plots/water/buoy/motion", "/plots/water/buoy/angles"]
+    {
         assert_eq!(rows.get(entity), Some(&21), "{entity}: {rows:?}");
     }
     assert_eq!(rows.get("/world/water/seabed"), Some(&0), "static: {rows:?}");
@@ -264,7 +324,11 @@ fn the_water_is_recorded() {
         world.step().unwrap();
     }
     let heave = world.state(0).position.z - start;
-    assert!((motion[&1000][1] - heave).abs() <= 1e-12 * start.abs().max(1.0), "heave {} logged, {heave} m in the world", motion[&1000][1]);
+    assert!(
+        (motion[&1000][1] - heave).abs() <= 1e-12 * start.abs().max(1.0),
+        "heave {} logged, {heave} m in the world",
+        motion[&1000][1]
+    );
     assert!(heave.abs() > 1e-3, "the buoy moved in the waves: {heave} m");
 
     // dt = 10 ms, 10 Hz: 21 frames; the calm surface once.

@@ -32,7 +32,10 @@ fn recorded_numbers(path: &Path) -> (Vec<f64>, Vec<f32>, usize) {
 }
 
 fn verify(path: &Path) {
-    let verify = Command::new("rerun").args(["rrd", "verify", path.to_str().unwrap()]).output().expect("`rerun` CLI (pip install rerun-sdk==0.36.3)");
+    let verify = Command::new("rerun")
+        .args(["rrd", "verify", path.to_str().unwrap()])
+        .output()
+        .expect("`rerun` CLI (pip install rerun-sdk==0.36.3)");
     assert!(verify.status.success(), "rerun rrd verify: {}", String::from_utf8_lossy(&verify.stderr));
 }
 
@@ -40,7 +43,17 @@ fn verify(path: &Path) {
 fn a_diverging_run_stops_names_the_culprit_and_keeps_nan_out_of_the_recording() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("unstable.rrd");
-    let run = tether().args(["record", common::repo("crates/scene/tests/fixtures/unstable_chain.ron").to_str().unwrap(), "-o", out.to_str().unwrap(), "--log-hz", "200"]).output().unwrap();
+    let run = tether()
+        .args([
+            "record",
+            common::repo("crates/scene/tests/fixtures/unstable_chain.ron").to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "--log-hz",
+            "200",
+        ])
+        .output()
+        .unwrap();
     assert_eq!(run.status.code(), Some(1));
     let stderr = String::from_utf8_lossy(&run.stderr);
     assert!(stderr.contains("warning: the integrator step 5.000e-3 s exceeds the stable time step"), "{stderr}");
@@ -63,7 +76,14 @@ fn interrupting_a_recording_leaves_a_complete_file() {
         let dir = tempfile::tempdir().unwrap();
         let out = dir.path().join("long.rrd");
         let child = tether()
-            .args(["record", common::repo("scenes/bench/chain100_air.ron").to_str().unwrap(), "-o", out.to_str().unwrap(), "--duration", "100000"])
+            .args([
+                "record",
+                common::repo("scenes/bench/chain100_air.ron").to_str().unwrap(),
+                "-o",
+                out.to_str().unwrap(),
+                "--duration",
+                "100000",
+            ])
             .stderr(Stdio::piped())
             .spawn()
             .unwrap();
@@ -89,10 +109,17 @@ fn interrupting_a_recording_leaves_a_complete_file() {
 #[test]
 fn unknown_integrator_and_bad_time_step_flags_are_refused() {
     let scene = common::repo("scenes/chain.ron");
-    let out = tether().args(["record", scene.to_str().unwrap(), "-o", "/tmp/never.rrd", "--integrator", "euler"]).output().unwrap();
+    let out = tether()
+        .args(["record", scene.to_str().unwrap(), "-o", "/tmp/never.rrd", "--integrator", "euler"])
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("unknown integrator `euler`, expected one of leapfrog, leapfrog2, splitting, rk4, dopri45"));
-    let out = tether().args(["record", scene.to_str().unwrap(), "-o", "/tmp/never.rrd", "--dt=-0.001"]).output().unwrap();
+    assert!(
+        String::from_utf8_lossy(&out.stderr)
+            .contains("unknown integrator `euler`, expected one of leapfrog, leapfrog2, splitting, rk4, dopri45")
+    );
+    let out =
+        tether().args(["record", scene.to_str().unwrap(), "-o", "/tmp/never.rrd", "--dt=-0.001"]).output().unwrap();
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--dt must be a positive number of seconds, got -0.001"));
 }
@@ -128,7 +155,17 @@ fn empty_wrong_types_huge_and_negative_inputs_are_errors() {
         (format!("Scene(dt: 1e400, bodies: [{BODY}])"), "bad.ron:1:"),
         ("Scene(dt: 0.01, bodies: [Body(name: \"b\", master: Node(position: (0, 0, 0), mass: 1.0), shape: Sphere(radius: 0.1))])".to_string(), "bad.ron:1:"),
     ];
-    let expected_words = ["Expected opening `(` for struct `Scene`", "Expected float", "mass_kg", "overflow", "radius must be > 0", "rest_length must be ≥ 0", "length must be > 0", "finite", "not positive definite"];
+    let expected_words = [
+        "Expected opening `(` for struct `Scene`",
+        "Expected float",
+        "mass_kg",
+        "overflow",
+        "radius must be > 0",
+        "rest_length must be ≥ 0",
+        "length must be > 0",
+        "finite",
+        "not positive definite",
+    ];
     for ((text, prefix), words) in cases.iter().zip(expected_words) {
         let error = error_of(text);
         assert!(error.starts_with(prefix), "{error}");

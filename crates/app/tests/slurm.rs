@@ -39,7 +39,10 @@ impl Cluster {
             std::fs::create_dir(folder).unwrap();
         }
         set_mode(&munge, 0o755);
-        assert!(Command::new("chown").args(["munge:munge"]).arg(&munge).status().unwrap().success(), "chown munge: is the munge package installed?");
+        assert!(
+            Command::new("chown").args(["munge:munge"]).arg(&munge).status().unwrap().success(),
+            "chown munge: is the munge package installed?"
+        );
         let mut cluster = Self { dir, started: Vec::new() };
         let path = |name: &str| root.join(name).display().to_string();
         let munged = Command::new("runuser")
@@ -72,8 +75,14 @@ impl Cluster {
             d_log = path("slurmd.log"),
         );
         std::fs::write(root.join("slurm.conf"), conf).unwrap();
-        for (daemon, args, pid) in [("slurmctld", vec!["-i"], "slurmctld.pid"), ("slurmd", vec!["-N", "localhost"], "slurmd.pid")] {
-            let out = cluster.command(&format!("/usr/sbin/{daemon}")).args(args).output().unwrap_or_else(|e| panic!("{daemon} (apt-get install slurm-wlm): {e}"));
+        for (daemon, args, pid) in
+            [("slurmctld", vec!["-i"], "slurmctld.pid"), ("slurmd", vec!["-N", "localhost"], "slurmd.pid")]
+        {
+            let out = cluster
+                .command(&format!("/usr/sbin/{daemon}"))
+                .args(args)
+                .output()
+                .unwrap_or_else(|e| panic!("{daemon} (apt-get install slurm-wlm): {e}"));
             assert!(out.status.success(), "{daemon}: {}\n{}", String::from_utf8_lossy(&out.stderr), cluster.logs());
             cluster.started(root.join(pid));
         }
@@ -106,7 +115,12 @@ impl Cluster {
     fn wait_for_jobs(&self) {
         let start = Instant::now();
         while !run(self.command("squeue").arg("-h")).trim().is_empty() {
-            assert!(start.elapsed() < PATIENCE, "jobs still queued after {PATIENCE:?}:\n{}\n{}", run(&mut self.command("squeue")), self.logs());
+            assert!(
+                start.elapsed() < PATIENCE,
+                "jobs still queued after {PATIENCE:?}:\n{}\n{}",
+                run(&mut self.command("squeue")),
+                self.logs()
+            );
             std::thread::sleep(Duration::from_millis(500));
         }
     }
@@ -115,7 +129,9 @@ impl Cluster {
     fn logs(&self) -> String {
         ["munge/munged.log", "slurmctld.log", "slurmd.log"]
             .iter()
-            .map(|name| format!("--- {name}\n{}", std::fs::read_to_string(self.dir.path().join(name)).unwrap_or_default()))
+            .map(|name| {
+                format!("--- {name}\n{}", std::fs::read_to_string(self.dir.path().join(name)).unwrap_or_default())
+            })
             .collect::<Vec<_>>()
             .join("\n")
     }
@@ -126,7 +142,10 @@ impl Drop for Cluster {
     /// SIGKILL after 10 s.
     fn drop(&mut self) {
         for pid_file in self.started.iter().rev() {
-            let Some(pid) = std::fs::read_to_string(pid_file).ok().and_then(|t| t.trim().parse::<libc::pid_t>().ok()) else { continue };
+            let Some(pid) = std::fs::read_to_string(pid_file).ok().and_then(|t| t.trim().parse::<libc::pid_t>().ok())
+            else {
+                continue;
+            };
             // SAFETY: signalling a pid read from the daemon's own pid file.
             unsafe { libc::kill(pid, libc::SIGTERM) };
             let start = Instant::now();
@@ -164,10 +183,13 @@ fn without_cpu(path: &Path) -> Vec<Vec<String>> {
     let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
     let cpu = header.iter().position(|h| h == "cpu_s").unwrap();
     let rows = reader.records().map(|r| r.unwrap().iter().map(String::from).collect::<Vec<_>>());
-    std::iter::once(header).chain(rows).map(|mut row| {
-        row.remove(cpu);
-        row
-    }).collect()
+    std::iter::once(header)
+        .chain(rows)
+        .map(|mut row| {
+            row.remove(cpu);
+            row
+        })
+        .collect()
 }
 
 #[test]
@@ -201,12 +223,24 @@ fn a_job_array_and_its_merge_give_the_rows_of_a_local_run() {
     let merged = work.join("cluster-out/results.csv");
     assert!(merged.is_file(), "no merged results:\n{outputs}\n{}", cluster.logs());
     for shard in 0..4 {
-        assert!(work.join(format!("cluster-out/runs/shard-{shard}-of-4.csv")).is_file(), "shard {shard}'s rows:\n{outputs}");
+        assert!(
+            work.join(format!("cluster-out/runs/shard-{shard}-of-4.csv")).is_file(),
+            "shard {shard}'s rows:\n{outputs}"
+        );
     }
-    let local = Command::new(env!("CARGO_BIN_EXE_tether")).args(["sweep", "sweep.ron", "-o", "local", "--jobs", "1"]).current_dir(&work).output().unwrap();
+    let local = Command::new(env!("CARGO_BIN_EXE_tether"))
+        .args(["sweep", "sweep.ron", "-o", "local", "--jobs", "1"])
+        .current_dir(&work)
+        .output()
+        .unwrap();
     assert!(local.status.success(), "{}", String::from_utf8_lossy(&local.stderr));
     let rows = without_cpu(&merged);
     assert_eq!(rows.len(), 11, "header and ten cases");
     assert_eq!(rows, without_cpu(&work.join("local/results.csv")), "the cluster's rows are the local run's");
-    eprintln!("slurm: cluster up in {:.1} s, the array and the merge done in {:.1} s, {:.1} s in all", started.as_secs_f64(), jobs.as_secs_f64(), begin.elapsed().as_secs_f64());
+    eprintln!(
+        "slurm: cluster up in {:.1} s, the array and the merge done in {:.1} s, {:.1} s in all",
+        started.as_secs_f64(),
+        jobs.as_secs_f64(),
+        begin.elapsed().as_secs_f64()
+    );
 }

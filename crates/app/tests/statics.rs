@@ -10,7 +10,6 @@ fn tether(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_tether")).args(args).output().unwrap()
 }
 
-
 fn write(dir: &Path, name: &str, text: &str) -> String {
     let path = dir.join(name);
     std::fs::write(&path, text).unwrap();
@@ -30,7 +29,10 @@ fn equilibrium_prints_poses_tensions_and_stiffness_and_writes_the_scene_at_rest(
     let text = stdout(&tether(&["equilibrium", &scene, "--write", at_rest.to_str().unwrap()]));
     assert!(text.contains("static equilibrium in "), "{text}");
     assert!(text.contains("body \"buoy\"") && text.contains("stiffness at equilibrium"), "{text}");
-    assert!(text.contains("coupling \"m1\" (catenary): tension 0.000000e0 N at end 1"), "friction holds the anchors: {text}");
+    assert!(
+        text.contains("coupling \"m1\" (catenary): tension 0.000000e0 N at end 1"),
+        "friction holds the anchors: {text}"
+    );
     assert!(text.contains("on the seabed: grounded length L_B 144.7"), "{text}");
     // The scene written at equilibrium is at equilibrium: no Newton step, and the loaded world
     // puts the buoy where the report says.
@@ -46,7 +48,11 @@ fn equilibrium_prints_poses_tensions_and_stiffness_and_writes_the_scene_at_rest(
 #[test]
 fn an_unreachable_equilibrium_is_one_line_naming_the_body_and_direction() {
     let dir = tempfile::tempdir().unwrap();
-    let scene = write(dir.path(), "rock.ron", "Scene(dt: 0.01, bodies: [Body(name: \"rock\", master: Node(position: (0.0, 0.0, 0.0), mass: 10.0, inertia: Inertia(xx: 1.0, yy: 1.0, zz: 1.0)), shape: Sphere(radius: 0.1))])");
+    let scene = write(
+        dir.path(),
+        "rock.ron",
+        "Scene(dt: 0.01, bodies: [Body(name: \"rock\", master: Node(position: (0.0, 0.0, 0.0), mass: 10.0, inertia: Inertia(xx: 1.0, yy: 1.0, zz: 1.0)), shape: Sphere(radius: 0.1))])",
+    );
     let out = tether(&["equilibrium", &scene]);
     assert_eq!(out.status.code(), Some(1));
     let stderr = String::from_utf8_lossy(&out.stderr);
@@ -59,7 +65,20 @@ fn offsets_print_and_write_the_restoring_force_curve() {
     let dir = tempfile::tempdir().unwrap();
     let scene = write(dir.path(), "moored.ron", common::MOORED_ON_SEABED);
     let output = dir.path().join("curve");
-    let text = stdout(&tether(&["offsets", &scene, "--body", "buoy", "--direction", "x", "--to", "20", "--steps", "8", "-o", output.to_str().unwrap()]));
+    let text = stdout(&tether(&[
+        "offsets",
+        &scene,
+        "--body",
+        "buoy",
+        "--direction",
+        "x",
+        "--to",
+        "20",
+        "--steps",
+        "8",
+        "-o",
+        output.to_str().unwrap(),
+    ]));
     assert!(text.contains("restoring [N]"), "{text}");
     let csv = std::fs::read_to_string(output.with_extension("csv")).unwrap();
     let rows: Vec<Vec<f64>> = csv.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
@@ -78,7 +97,10 @@ fn offsets_refuse_bad_flags_with_one_line() {
     for (flags, expected) in [
         (vec!["--body", "bouy", "--direction", "x", "--to", "5"], "no body \"bouy\" (bodies: buoy)"),
         (vec!["--body", "buoy", "--direction", "x", "--to", "0"], "--to must be a non-zero number of m, got 0"),
-        (vec!["--body", "buoy", "--direction", "yaw", "--to", "0.1", "--steps", "0"], "--steps must be 1 to 10000, got 0"),
+        (
+            vec!["--body", "buoy", "--direction", "yaw", "--to", "0.1", "--steps", "0"],
+            "--steps must be 1 to 10000, got 0",
+        ),
     ] {
         let out = tether(&[&["offsets", scene.as_str()][..], &flags].concat());
         assert_eq!(out.status.code(), Some(1));

@@ -3,9 +3,9 @@
 mod common;
 
 use std::process::Command;
-use tether_physics::integrator::Integrator;
 use tether::study::closed_form::Oscillator;
 use tether::study::{self, Outcome, Plan, Reference, Setting, StudyError};
+use tether_physics::integrator::Integrator;
 use tether_scene::file::AdaptiveDef;
 
 fn spring_mass() -> tether_scene::Scene {
@@ -32,11 +32,22 @@ fn study_measures_orders_costs_and_divergence() {
     assert_eq!(lines, 1 + 4 + 4 + 2, "one progress line for the reference and for each run");
     assert_eq!(result.runs.len(), 10);
     assert!(result.translates);
-    let measures = |integrator: Integrator, setting: Setting| match &result.runs.iter().find(|r| r.integrator == integrator && r.setting == setting).unwrap().outcome {
+    let measures = |integrator: Integrator, setting: Setting| match &result
+        .runs
+        .iter()
+        .find(|r| r.integrator == integrator && r.setting == setting)
+        .unwrap()
+        .outcome
+    {
         Outcome::Finished(m) => *m,
         Outcome::Failed { message, .. } => panic!("{message}"),
     };
-    let failed = &result.runs.iter().find(|r| r.integrator == Integrator::Leapfrog && r.setting == Setting::Step(0.2)).unwrap().outcome;
+    let failed = &result
+        .runs
+        .iter()
+        .find(|r| r.integrator == Integrator::Leapfrog && r.setting == Setting::Step(0.2))
+        .unwrap()
+        .outcome;
     assert!(matches!(failed, Outcome::Failed { time, .. } if *time < 2.0), "{failed:?}");
     // RK4's limit there is 0.29 s: stable, but 45 % of the swing off.
     assert!(measures(Integrator::Rk4, Setting::Step(0.2)).position_error_max > 1e-3);
@@ -56,7 +67,10 @@ fn study_measures_orders_costs_and_divergence() {
     assert!(leapfrog[2].position_error_max < 3e-5 && rk4[2].position_error_max < 1e-11);
     assert!(leapfrog[2].energy_error < 1e-3 && rk4[2].energy_error < 1e-9);
     assert!(leapfrog[2].orientation_error_max == 0.0, "the mass is held against rotation");
-    let (loose, tight) = (measures(Integrator::Dopri45, Setting::Tolerance(1e-5)), measures(Integrator::Dopri45, Setting::Tolerance(1e-8)));
+    let (loose, tight) = (
+        measures(Integrator::Dopri45, Setting::Tolerance(1e-5)),
+        measures(Integrator::Dopri45, Setting::Tolerance(1e-8)),
+    );
     assert!(tight.position_error_max < loose.position_error_max / 100.0, "{loose:?} {tight:?}");
     assert!(tight.steps > loose.steps && loose.cpu_per_second > 0.0);
 
@@ -64,7 +78,10 @@ fn study_measures_orders_costs_and_divergence() {
     assert_eq!(csv.lines().count(), 11);
     assert!(csv.lines().nth(1).unwrap().starts_with("leapfrog,2e-1,,,,,,,,,,\"diverged at t = "), "{csv}");
     let table = study::report::markdown(&result);
-    assert!(table.contains("| leapfrog | dt 1.0e-3 s | ") && table.contains("| leapfrog | dt 2.0e-1 s | diverged at t = "), "{table}");
+    assert!(
+        table.contains("| leapfrog | dt 1.0e-3 s | ") && table.contains("| leapfrog | dt 2.0e-1 s | diverged at t = "),
+        "{table}"
+    );
     assert!(table.contains("| dopri45 | rtol 1e-8 | "), "{table}");
 
     let dir = tempfile::tempdir().unwrap();
@@ -87,7 +104,10 @@ fn study_refuses_steps_that_miss_the_sample_times() {
         reference: Reference::Adaptive { rtol: 1e-12 },
     };
     let error = study::run(&spring_mass(), &plan, |_| {}).unwrap_err();
-    assert!(matches!(error, StudyError::Plan(ref m) if m.contains("3e-3 s does not divide the sample interval 1e-2 s")), "{error}");
+    assert!(
+        matches!(error, StudyError::Plan(ref m) if m.contains("3e-3 s does not divide the sample interval 1e-2 s")),
+        "{error}"
+    );
 }
 
 /// The command prints the table and writes the CSV, the Markdown and the chart.
@@ -95,27 +115,64 @@ fn study_refuses_steps_that_miss_the_sample_times() {
 fn study_command_writes_its_outputs() {
     let dir = tempfile::tempdir().unwrap();
     let out = Command::new(env!("CARGO_BIN_EXE_tether"))
-        .args(["study", common::repo("scenes/spring_mass.ron").to_str().unwrap(), "--integrators", "splitting,rk4", "--dts", "2e-3,1e-3", "--duration", "1", "-o"])
+        .args([
+            "study",
+            common::repo("scenes/spring_mass.ron").to_str().unwrap(),
+            "--integrators",
+            "splitting,rk4",
+            "--dts",
+            "2e-3,1e-3",
+            "--duration",
+            "1",
+            "-o",
+        ])
         .arg(dir.path())
         .output()
         .unwrap();
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    assert!(stdout.contains("## Integrator study: spring_mass.ron (1 s simulated)") && stdout.contains("| rk4 | dt 1.0e-3 s | "), "{stdout}");
+    assert!(
+        stdout.contains("## Integrator study: spring_mass.ron (1 s simulated)")
+            && stdout.contains("| rk4 | dt 1.0e-3 s | "),
+        "{stdout}"
+    );
     for name in ["study.csv", "study.md", "study.png"] {
         assert!(dir.path().join(name).metadata().unwrap().len() > 100, "{name}");
     }
     let exact = Command::new(env!("CARGO_BIN_EXE_tether"))
-        .args(["study", common::repo("scenes/spring_mass.ron").to_str().unwrap(), "--integrators", "rk4", "--dts", "1e-3", "--duration", "1", "--reference", "closed-form", "-o"])
+        .args([
+            "study",
+            common::repo("scenes/spring_mass.ron").to_str().unwrap(),
+            "--integrators",
+            "rk4",
+            "--dts",
+            "1e-3",
+            "--duration",
+            "1",
+            "--reference",
+            "closed-form",
+            "-o",
+        ])
         .arg(dir.path().join("exact"))
         .output()
         .unwrap();
     assert!(exact.status.success(), "{}", String::from_utf8_lossy(&exact.stderr));
     assert!(String::from_utf8_lossy(&exact.stdout).contains("Errors against the closed form of the damped oscillator"));
-    let none = Command::new(env!("CARGO_BIN_EXE_tether")).args(["study", common::repo("scenes/chain.ron").to_str().unwrap(), "--reference", "closed-form", "-o"]).arg(dir.path().join("none")).output().unwrap();
+    let none = Command::new(env!("CARGO_BIN_EXE_tether"))
+        .args(["study", common::repo("scenes/chain.ron").to_str().unwrap(), "--reference", "closed-form", "-o"])
+        .arg(dir.path().join("none"))
+        .output()
+        .unwrap();
     assert_eq!(none.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&none.stderr).contains("the scene has no closed form: it has 10 bodies"), "{}", String::from_utf8_lossy(&none.stderr));
-    let bad = Command::new(env!("CARGO_BIN_EXE_tether")).args(["study", common::repo("scenes/spring_mass.ron").to_str().unwrap(), "--reference", "euler:1e-3"]).output().unwrap();
+    assert!(
+        String::from_utf8_lossy(&none.stderr).contains("the scene has no closed form: it has 10 bodies"),
+        "{}",
+        String::from_utf8_lossy(&none.stderr)
+    );
+    let bad = Command::new(env!("CARGO_BIN_EXE_tether"))
+        .args(["study", common::repo("scenes/spring_mass.ron").to_str().unwrap(), "--reference", "euler:1e-3"])
+        .output()
+        .unwrap();
     assert_eq!(bad.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&bad.stderr).contains("unknown integrator `euler`"));
 }
@@ -124,7 +181,10 @@ fn study_command_writes_its_outputs() {
 /// at `x` [m] with speed `v` [m/s] along x.
 fn spring_mass_with(damping: f64, x: f64, v: f64) -> tether_scene::Scene {
     let text = std::fs::read_to_string(common::repo("scenes/spring_mass.ron")).unwrap();
-    let text = text.replace("damping: 1.0", &format!("damping: {damping:e}")).replace("position: (1.01, 0.0, 0.0)", &format!("position: ({x:e}, 0.0, 0.0)")).replace("support: Fixed", &format!("velocity: ({v:e}, 0.0, 0.0), support: Fixed"));
+    let text = text
+        .replace("damping: 1.0", &format!("damping: {damping:e}"))
+        .replace("position: (1.01, 0.0, 0.0)", &format!("position: ({x:e}, 0.0, 0.0)"))
+        .replace("support: Fixed", &format!("velocity: ({v:e}, 0.0, 0.0), support: Fixed"));
     assert!(text.contains(&format!("damping: {damping:e}")) && text.contains("velocity: ("));
     tether_scene::parse(&text, &common::repo("scenes/spring_mass.ron")).unwrap()
 }
@@ -157,7 +217,8 @@ fn the_closed_form_is_the_exact_motion() {
     let (omega, zeta, x0) = (10.0_f64, 0.05_f64, 0.01);
     let omega_d = omega * (1.0 - zeta * zeta).sqrt();
     for t in [0.0, 0.37, 1.0, 4.2] {
-        let x = (-zeta * omega * t).exp() * (x0 * (omega_d * t).cos() + zeta * omega * x0 / omega_d * (omega_d * t).sin());
+        let x =
+            (-zeta * omega * t).exp() * (x0 * (omega_d * t).cos() + zeta * omega * x0 / omega_d * (omega_d * t).sin());
         approx::assert_relative_eq!(oscillator.at(t).position.x, 1.0 + x, epsilon = 1e-15);
     }
 }
@@ -166,12 +227,21 @@ fn the_closed_form_is_the_exact_motion() {
 #[test]
 fn a_scene_without_a_closed_form_is_refused() {
     let chain = tether_scene::load(&common::repo("scenes/chain.ron")).unwrap();
-    let plan = Plan { integrators: vec![Integrator::Leapfrog], dts: vec![1e-3], tolerances: vec![], duration: 1.0, sample_interval: 0.1, reference: Reference::ClosedForm };
+    let plan = Plan {
+        integrators: vec![Integrator::Leapfrog],
+        dts: vec![1e-3],
+        tolerances: vec![],
+        duration: 1.0,
+        sample_interval: 0.1,
+        reference: Reference::ClosedForm,
+    };
     let error = study::run(&chain, &plan, |_| {}).unwrap_err().to_string();
     assert_eq!(error, "the scene has no closed form: it has 10 bodies, the closed form one");
     // The spring with a polynomial law, and a body free in two axes.
     let polynomial = spring_mass_with(1.0, 1.01, 0.0);
-    let text = polynomial.text.replace("Linear(stiffness: 100.0, rest_length: 1.0)", "Polynomial(a: 100.0, c: 10.0, rest_length: 1.0)");
+    let text = polynomial
+        .text
+        .replace("Linear(stiffness: 100.0, rest_length: 1.0)", "Polynomial(a: 100.0, c: 10.0, rest_length: 1.0)");
     let why = Oscillator::of_scene(&tether_scene::parse(&text, &polynomial.path).unwrap()).unwrap_err();
     assert_eq!(why, "coupling \"spring\" has no linear law");
     let text = polynomial.text.replace("translation: (false, true, true)", "translation: (false, false, true)");

@@ -72,10 +72,13 @@ fn table(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
 fn without_cpu(path: &Path) -> Vec<Vec<String>> {
     let (header, rows) = table(path);
     let cpu = header.iter().position(|h| h == "cpu_s").unwrap();
-    std::iter::once(header).chain(rows).map(|mut row| {
-        row.remove(cpu);
-        row
-    }).collect()
+    std::iter::once(header)
+        .chain(rows)
+        .map(|mut row| {
+            row.remove(cpu);
+            row
+        })
+        .collect()
 }
 
 /// The value of column `name` in `row`.
@@ -133,7 +136,10 @@ fn metrics_of_an_undamped_oscillator_match_the_closed_form() {
         let value = |name: &str| cell(&header, row, name);
         let near = |name: &str, expected: f64, tolerance: f64| {
             let got = value(name);
-            assert!((got - expected).abs() <= tolerance * expected.abs().max(k * amplitude), "k = {k}, x = {x}: {name} = {got}, expected {expected}");
+            assert!(
+                (got - expected).abs() <= tolerance * expected.abs().max(k * amplitude),
+                "k = {k}, x = {x}: {name} = {got}, expected {expected}"
+            );
         };
         assert_eq!((value("couplings.spring.law.stiffness"), value("bodies.m.master.position.0")), (k, x));
         assert_eq!(row[header.iter().position(|h| h == "status").unwrap()], "ok");
@@ -155,7 +161,11 @@ fn metrics_of_an_undamped_oscillator_match_the_closed_form() {
         // The leapfrog keeps the energy balance to O((ω dt)²).
         assert!(value("energy_error") < 1e-5, "energy error {}", value("energy_error"));
         // Undamped, it never settles: the band is left again in the last period.
-        assert!(value("settle_time_s") > THREE_PERIODS - std::f64::consts::TAU / omega, "settle {}", value("settle_time_s"));
+        assert!(
+            value("settle_time_s") > THREE_PERIODS - std::f64::consts::TAU / omega,
+            "settle {}",
+            value("settle_time_s")
+        );
         assert_eq!(value("steps"), (THREE_PERIODS / 1e-4).round());
     }
 }
@@ -198,20 +208,26 @@ fn designs_make_the_cases_they_promise() {
     assert_eq!(grid[11], [n(200.0), n(1.0), t("rk4")]);
     // Base: k = 100, damping 0, leapfrog; then k = 50, 200; damping 1; rk4.
     let around = values("OneAtATime");
-    assert_eq!(around, [
-        vec![n(100.0), n(0.0), t("leapfrog")],
-        vec![n(50.0), n(0.0), t("leapfrog")],
-        vec![n(200.0), n(0.0), t("leapfrog")],
-        vec![n(100.0), n(1.0), t("leapfrog")],
-        vec![n(100.0), n(0.0), t("rk4")],
-    ]);
+    assert_eq!(
+        around,
+        [
+            vec![n(100.0), n(0.0), t("leapfrog")],
+            vec![n(50.0), n(0.0), t("leapfrog")],
+            vec![n(200.0), n(0.0), t("leapfrog")],
+            vec![n(100.0), n(1.0), t("leapfrog")],
+            vec![n(100.0), n(0.0), t("rk4")],
+        ]
+    );
     let ranges = r#"factors: [
             Factor(path: "couplings.spring.law.stiffness", values: LogUniform(from: 10.0, to: 1000.0)),
             Factor(path: "couplings.spring.damping", values: Uniform(from: 0.0, to: 2.0)),
             Factor(path: "integrator", values: List(["leapfrog", "rk4"])),
         ]"#;
     let latin = |seed: u64| {
-        let dir = folder(&scene, &format!("Sweep(scene: \"oscillator.ron\", design: LatinHypercube(samples: 20, seed: {seed}), {ranges})"));
+        let dir = folder(
+            &scene,
+            &format!("Sweep(scene: \"oscillator.ron\", design: LatinHypercube(samples: 20, seed: {seed}), {ranges})"),
+        );
         let plan = plan(dir.path());
         (0..plan.cases.len()).map(|c| plan.values(c)).collect::<Vec<_>>()
     };
@@ -269,7 +285,14 @@ fn serial_parallel_and_sharded_runs_give_the_same_rows() {
     assert_eq!(cases.len(), 3);
     assert!(cases.iter().all(|c| c.parse::<usize>().unwrap() % 3 == 1), "{cases:?}");
     // The summaries agree but for the CPU time.
-    let summary = |name: &str| std::fs::read_to_string(here.join(name).join("summary.md")).unwrap().lines().filter(|l| !l.contains("CPU time")).map(String::from).collect::<Vec<_>>();
+    let summary = |name: &str| {
+        std::fs::read_to_string(here.join(name).join("summary.md"))
+            .unwrap()
+            .lines()
+            .filter(|l| !l.contains("CPU time"))
+            .map(String::from)
+            .collect::<Vec<_>>()
+    };
     assert_eq!(summary("sharded"), summary("serial"));
 }
 
@@ -335,7 +358,11 @@ fn wait_for_rows(rows_file: &Path, rows: usize, child: &mut std::process::Child)
 fn a_killed_sweep_resumes_where_it_stopped() {
     let dir = twelve_long_cases();
     let here = dir.path();
-    let mut child = Command::new(env!("CARGO_BIN_EXE_tether")).args(["sweep", "sweep.ron", "-o", "out", "--jobs", "1"]).current_dir(here).spawn().unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_tether"))
+        .args(["sweep", "sweep.ron", "-o", "out", "--jobs", "1"])
+        .current_dir(here)
+        .spawn()
+        .unwrap();
     let rows_file = here.join("out/runs/all.csv");
     wait_for_rows(&rows_file, 3, &mut child);
     child.kill().unwrap();
@@ -345,10 +372,16 @@ fn a_killed_sweep_resumes_where_it_stopped() {
     assert!(!here.join("out/results.csv").exists());
     let before = std::fs::read(&rows_file).unwrap();
     let refused = tether_error(&["sweep", "sweep.ron", "-o", "out"], here);
-    assert!(refused.contains(&format!("already holds rows for {} of this sweep's 12 cases: pass --resume", kept.len())), "{refused}");
+    assert!(
+        refused.contains(&format!("already holds rows for {} of this sweep's 12 cases: pass --resume", kept.len())),
+        "{refused}"
+    );
     assert_eq!(std::fs::read(&rows_file).unwrap(), before, "nothing overwritten");
     let resumed = tether_ok(&["sweep", "sweep.ron", "-o", "out", "--resume"], here);
-    assert!(resumed.contains(&format!("ran {} of 12 cases ({} had a row already)", 12 - kept.len(), kept.len())), "{resumed}");
+    assert!(
+        resumed.contains(&format!("ran {} of 12 cases ({} had a row already)", 12 - kept.len(), kept.len())),
+        "{resumed}"
+    );
     tether_ok(&["sweep", "sweep.ron", "-o", "fresh"], here);
     assert_eq!(without_cpu(&here.join("out/results.csv")), without_cpu(&here.join("fresh/results.csv")));
 }
@@ -359,14 +392,24 @@ fn a_killed_sweep_resumes_where_it_stopped() {
 fn ctrl_c_keeps_the_rows_written_and_resume_finishes() {
     let dir = twelve_long_cases();
     let here = dir.path();
-    let mut child = Command::new(env!("CARGO_BIN_EXE_tether")).args(["sweep", "sweep.ron", "-o", "out", "--jobs", "2"]).current_dir(here).stdout(std::process::Stdio::piped()).spawn().unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_tether"))
+        .args(["sweep", "sweep.ron", "-o", "out", "--jobs", "2"])
+        .current_dir(here)
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
     let rows_file = here.join("out/runs/all.csv");
     wait_for_rows(&rows_file, 2, &mut child);
     // SAFETY: signalling the child this test started.
     unsafe { libc::kill(child.id() as libc::pid_t, libc::SIGINT) };
     let out = child.wait_with_output().unwrap();
     assert_eq!(out.status.code(), Some(130));
-    assert!(String::from_utf8_lossy(&out.stdout).contains("interrupted: the finished cases are kept; run again with --resume"), "{}", String::from_utf8_lossy(&out.stdout));
+    assert!(
+        String::from_utf8_lossy(&out.stdout)
+            .contains("interrupted: the finished cases are kept; run again with --resume"),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
     let (_, kept) = table(&rows_file);
     assert!((2..12).contains(&kept.len()), "{} rows kept", kept.len());
     let resumed = tether_ok(&["sweep", "sweep.ron", "-o", "out", "--resume"], here);
@@ -429,7 +472,11 @@ fn failing_cases_are_rows_and_the_sweep_goes_on() {
     }
     assert!(cell(&header, &rows[0], "spring.tension_max_N") > 9.99);
     let summary = std::fs::read_to_string(here.join("out/summary.md")).unwrap();
-    assert!(summary.contains("**Cases:** 3 — 1 ok, 1 diverged, 1 timed_out.") && summary.contains("| 1 | dt = 0.5 | diverged | the simulation diverged"), "{summary}");
+    assert!(
+        summary.contains("**Cases:** 3 — 1 ok, 1 diverged, 1 timed_out.")
+            && summary.contains("| 1 | dt = 0.5 | diverged | the simulation diverged"),
+        "{summary}"
+    );
 }
 
 /// With `--record`, each case's recording: application id the sweep's name, recording id the
@@ -442,11 +489,19 @@ fn recordings_carry_the_sweep_and_the_case() {
     for case in 0..9 {
         let path = here.join(format!("out/recordings/case-{case}.rrd"));
         let mut file = std::fs::File::open(&path).unwrap();
-        let stores = rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file).unwrap();
-        let ids: Vec<(String, String)> = stores.keys().map(|id| (id.application_id().as_str().to_string(), id.recording_id().as_str().to_string())).collect();
+        let stores =
+            rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file).unwrap();
+        let ids: Vec<(String, String)> = stores
+            .keys()
+            .map(|id| (id.application_id().as_str().to_string(), id.recording_id().as_str().to_string()))
+            .collect();
         assert_eq!(ids, [("sweep".to_string(), format!("case-{case}"))]);
     }
-    let verify = Command::new("rerun").args(["rrd", "verify"]).arg(here.join("out/recordings/case-4.rrd")).output().expect("the `rerun` CLI (pip install rerun-sdk==0.36.3)");
+    let verify = Command::new("rerun")
+        .args(["rrd", "verify"])
+        .arg(here.join("out/recordings/case-4.rrd"))
+        .output()
+        .expect("the `rerun` CLI (pip install rerun-sdk==0.36.3)");
     assert!(verify.status.success(), "{}", String::from_utf8_lossy(&verify.stderr));
 }
 
@@ -478,10 +533,13 @@ fn factor_paths_reach_every_part_of_a_scene() {
     assert_eq!(plan.scene_file(&plan.values(2)).unwrap().substeps, tether_physics::integrator::Substeps::Fixed(2));
     plan.scene(&plan.values(2)).unwrap();
 
-    let rtol = folder(&oscillator(0.0, 0.01), r#"Sweep(scene: "oscillator.ron", design: Grid, factors: [
+    let rtol = folder(
+        &oscillator(0.0, 0.01),
+        r#"Sweep(scene: "oscillator.ron", design: Grid, factors: [
         Factor(path: "adaptive.rtol", values: Log(from: 1e-8, to: 1e-4, count: 2)),
         Factor(path: "integrator", values: List(["dopri45"])),
-    ])"#);
+    ])"#,
+    );
     let plan = self::plan(rtol.path());
     let file = plan.scene_file(&plan.values(0)).unwrap();
     assert_eq!(file.adaptive.map(|a| a.rtol), Some(1e-8));
@@ -493,7 +551,11 @@ fn factor_paths_reach_every_part_of_a_scene() {
 #[test]
 fn shipped_specs_load() {
     let folder = common::repo("examples/sweeps");
-    let specs: Vec<PathBuf> = std::fs::read_dir(&folder).unwrap().map(|e| e.unwrap().path()).filter(|p| p.extension().is_some_and(|e| e == "ron")).collect();
+    let specs: Vec<PathBuf> = std::fs::read_dir(&folder)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "ron"))
+        .collect();
     assert!(!specs.is_empty());
     for spec in specs {
         let plan = Plan::load(&spec).unwrap_or_else(|e| panic!("{e}"));
@@ -515,8 +577,16 @@ fn bad_input_is_one_line_and_overwrites_nothing() {
         assert!(!dir.path().join("out").exists(), "nothing written for: {message}");
         message
     };
-    let grid = |factors: &str| format!("Sweep(\n  scene: \"oscillator.ron\",\n  design: Grid,\n  factors: [\n    {factors}\n  ],\n)");
-    assert_eq!(error("Sweep(scene: \"oscillator.ron\", design: Grid, factors: [Factor(path: \"dt\", values: List([1e-3])]", &[]), "sweep.ron:1:95: Expected comma");
+    let grid = |factors: &str| {
+        format!("Sweep(\n  scene: \"oscillator.ron\",\n  design: Grid,\n  factors: [\n    {factors}\n  ],\n)")
+    };
+    assert_eq!(
+        error(
+            "Sweep(scene: \"oscillator.ron\", design: Grid, factors: [Factor(path: \"dt\", values: List([1e-3])]",
+            &[]
+        ),
+        "sweep.ron:1:95: Expected comma"
+    );
     assert_eq!(
         error(&grid(r#"Factor(path: "couplings.sprung.damping", values: List([1.0]))"#), &[]),
         "sweep.ron:5:18: factor `couplings.sprung.damping`: `couplings` has no item named \"sprung\" (it has: spring)"
@@ -533,8 +603,14 @@ fn bad_input_is_one_line_and_overwrites_nothing() {
         error(&grid(r#"Factor(path: "integrator", values: List(["euler"]))"#), &[]),
         "sweep.ron:5:32: factor `integrator` = euler: unknown variant `euler`, expected one of `leapfrog`, `leapfrog2`, `splitting`, `rk4`, `dopri45`"
     );
-    assert_eq!(error(&grid(r#"Factor(path: "dt", values: List([]))"#), &[]), "sweep.ron:5:24: factor `dt`: the list of values is empty");
-    assert_eq!(error("Sweep(scene: \"oscillator.ron\", design: Grid, factors: [])", &[]), "sweep.ron:1:32: the sweep has no factor: the design is empty");
+    assert_eq!(
+        error(&grid(r#"Factor(path: "dt", values: List([]))"#), &[]),
+        "sweep.ron:5:24: factor `dt`: the list of values is empty"
+    );
+    assert_eq!(
+        error("Sweep(scene: \"oscillator.ron\", design: Grid, factors: [])", &[]),
+        "sweep.ron:1:32: the sweep has no factor: the design is empty"
+    );
     assert_eq!(
         error(&grid(r#"Factor(path: "dt", values: Uniform(from: 1e-4, to: 1e-3))"#), &[]),
         "sweep.ron:3:3: factor `dt` is a range (uniform from 1e-4 to 0.001), which only a Latin hypercube samples: give a grid levels (List, Linear or Log)"
@@ -542,20 +618,40 @@ fn bad_input_is_one_line_and_overwrites_nothing() {
     let metric = "Sweep(scene: \"oscillator.ron\", design: Grid, factors: [Factor(path: \"dt\", values: List([1e-3]))],\n  metrics: [Metric(name: \"heave\", of: Position(\"buoy\", Z), take: Max)])";
     assert_eq!(error(metric, &[]), "sweep.ron:2:26: metric \"heave\": the scene has no body \"buoy\" (bodies: m)");
     // Each value alone is fine; together the force curve's x would not increase.
-    let curve = oscillator(0.0, 0.01).replace("Linear(stiffness: 100.0, rest_length: 1.0)", "ForceCurve(points: [(0.9, -10.0), (1.1, 10.0)])");
-    let dir = folder(&curve, &grid(r#"Factor(path: "couplings.spring.law.points.0.0", values: List([0.9, 1.05])),
-    Factor(path: "couplings.spring.law.points.1.0", values: List([1.1, 1.0]))"#));
+    let curve = oscillator(0.0, 0.01)
+        .replace("Linear(stiffness: 100.0, rest_length: 1.0)", "ForceCurve(points: [(0.9, -10.0), (1.1, 10.0)])");
+    let dir = folder(
+        &curve,
+        &grid(
+            r#"Factor(path: "couplings.spring.law.points.0.0", values: List([0.9, 1.05])),
+    Factor(path: "couplings.spring.law.points.1.0", values: List([1.1, 1.0]))"#,
+        ),
+    );
     let message = tether_error(&["sweep", "sweep.ron", "-o", "out"], dir.path());
-    assert!(message.starts_with("case 3 (couplings.spring.law.points.0.0 = 1.05, couplings.spring.law.points.1.0 = 1): oscillator.ron:"), "{message}");
+    assert!(
+        message.starts_with(
+            "case 3 (couplings.spring.law.points.0.0 = 1.05, couplings.spring.law.points.1.0 = 1): oscillator.ron:"
+        ),
+        "{message}"
+    );
     assert!(!dir.path().join("out").exists());
     // Shards: out of range, and Slurm without an array.
     let dir = folder(&scene, &grid(r#"Factor(path: "dt", values: List([1e-3, 2e-3]))"#));
     let out = tether(&["sweep", "sweep.ron", "-o", "out", "--shard", "4/4"], dir.path());
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("shard index 4 is out of range for 4 shards (0 to 3)"));
-    let out = Command::new(env!("CARGO_BIN_EXE_tether")).args(["sweep", "sweep.ron", "-o", "out", "--shard", "auto"]).env("SLURM_JOB_ID", "41").current_dir(dir.path()).output().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_tether"))
+        .args(["sweep", "sweep.ron", "-o", "out", "--shard", "auto"])
+        .env("SLURM_JOB_ID", "41")
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&out.stderr).starts_with("error: --shard auto: Slurm job 41 is not a job array"), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        String::from_utf8_lossy(&out.stderr).starts_with("error: --shard auto: Slurm job 41 is not a job array"),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert!(!dir.path().join("out").exists());
     // Directories: another sweep's, a folder of other files, a merge of an unfinished sweep.
     tether_ok(&["sweep", "sweep.ron", "-o", "out"], dir.path());
@@ -566,9 +662,15 @@ fn bad_input_is_one_line_and_overwrites_nothing() {
     assert_eq!(std::fs::read(dir.path().join("out/results.csv")).unwrap(), results, "nothing overwritten");
     std::fs::create_dir(dir.path().join("notes")).unwrap();
     std::fs::write(dir.path().join("notes/todo.txt"), "x").unwrap();
-    assert_eq!(tether_error(&["sweep", "sweep.ron", "-o", "notes"], dir.path()), "notes is not empty and holds no sweep: choose a new or empty directory");
+    assert_eq!(
+        tether_error(&["sweep", "sweep.ron", "-o", "notes"], dir.path()),
+        "notes is not empty and holds no sweep: choose a new or empty directory"
+    );
     tether_ok(&["sweep", "sweep.ron", "-o", "half", "--shard", "0/2"], dir.path());
     let message = tether_error(&["sweep", "merge", "half"], dir.path());
-    assert!(message.starts_with("half: 1 of 2 cases have no row yet (cases 1): wait for the shards still running"), "{message}");
+    assert!(
+        message.starts_with("half: 1 of 2 cases have no row yet (cases 1): wait for the shards still running"),
+        "{message}"
+    );
     assert!(tether_error(&["sweep", "merge", "notes"], dir.path()).starts_with("notes holds no sweep (no sweep.json)"));
 }

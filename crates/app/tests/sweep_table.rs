@@ -27,7 +27,12 @@ fn sweep_with_failures() -> tempfile::TempDir {
     ])"#;
     std::fs::write(dir.path().join("sweep.ron"), spec).unwrap();
     let plan = Plan::load(&dir.path().join("sweep.ron")).unwrap();
-    let options = Options { runner: Runner::new(std::num::NonZeroUsize::new(2).unwrap()), shard: None, resume: false, record: None };
+    let options = Options {
+        runner: Runner::new(std::num::NonZeroUsize::new(2).unwrap()),
+        shard: None,
+        resume: false,
+        record: None,
+    };
     sweep::run(&plan, &dir.path().join("out"), &options, |_| {}).unwrap();
     dir
 }
@@ -35,7 +40,9 @@ fn sweep_with_failures() -> tempfile::TempDir {
 fn harness(sweep: &Path) -> Harness<'static, ControlPanel> {
     let mut panel = ControlPanel::new(Sinks::none(), Arc::new(|| {}), sweep.to_path_buf()).unwrap();
     panel.open_sweep(sweep);
-    Harness::builder().with_size([1400.0, 400.0]).build_ui_state(|ui, panel: &mut ControlPanel| panel.sweep_ui(ui), panel)
+    Harness::builder()
+        .with_size([1400.0, 400.0])
+        .build_ui_state(|ui, panel: &mut ControlPanel| panel.sweep_ui(ui), panel)
 }
 
 fn order(harness: &Harness<'_, ControlPanel>) -> Vec<usize> {
@@ -69,10 +76,18 @@ fn the_table_sorts_puts_failures_first_and_loads_a_case() {
     let world = panel.simulation().snapshot(Duration::from_secs(20)).expect("the case runs");
     assert_eq!(world.dt(), 0.5);
     match &world.couplings()[0].kind {
-        CouplingKind::SpringDamper(spring) => assert!(matches!(spring.law, ElasticLaw::Linear { stiffness, .. } if stiffness == 400.0), "{:?}", spring.law),
+        CouplingKind::SpringDamper(spring) => assert!(
+            matches!(spring.law, ElasticLaw::Linear { stiffness, .. } if stiffness == 400.0),
+            "{:?}",
+            spring.law
+        ),
         kind => panic!("{kind:?}"),
     }
-    assert!(panel.log().any(|l| l.text == "case 3 loaded: press Space to run it"), "{:?}", panel.log().collect::<Vec<_>>());
+    assert!(
+        panel.log().any(|l| l.text == "case 3 loaded: press Space to run it"),
+        "{:?}",
+        panel.log().collect::<Vec<_>>()
+    );
 }
 
 #[test]
@@ -82,5 +97,8 @@ fn a_folder_that_is_not_a_sweep_is_refused_in_the_log() {
     panel.open_sweep(dir.path());
     assert!(panel.sweep().is_none());
     let line = panel.log().last().expect("a line in the log");
-    assert!(line.error && line.text == format!("{}: not a sweep directory (no sweep.json)", dir.path().display()), "{line:?}");
+    assert!(
+        line.error && line.text == format!("{}: not a sweep directory (no sweep.json)", dir.path().display()),
+        "{line:?}"
+    );
 }

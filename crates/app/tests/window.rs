@@ -19,7 +19,12 @@ fn the_window_plays_a_scene_records_it_and_quits_cleanly() {
     let x = Xvfb::start();
     let home = tempfile::tempdir().unwrap();
     let out = home.path().join("shown.rrd");
-    let mut gui = Gui::start(&x, &common::repo("."), home.path(), &["gui", "scenes/spring_mass.ron", "--save", out.to_str().unwrap()]);
+    let mut gui = Gui::start(
+        &x,
+        &common::repo("."),
+        home.path(),
+        &["gui", "scenes/spring_mass.ron", "--save", out.to_str().unwrap()],
+    );
     gui.focus(&x);
     x.xdotool(&["key", "space"]);
     std::thread::sleep(Duration::from_secs(3));
@@ -47,7 +52,9 @@ impl Receiver {
             .stderr(Stdio::null())
             .spawn()
             .expect("the `rerun` CLI (pip install rerun-sdk==0.36.3)");
-        x11::wait_for("the receiver to listen", Duration::from_secs(30), || std::net::TcpStream::connect(("127.0.0.1", port)).is_ok());
+        x11::wait_for("the receiver to listen", Duration::from_secs(30), || {
+            std::net::TcpStream::connect(("127.0.0.1", port)).is_ok()
+        });
         Self { process, url: format!("rerun+http://127.0.0.1:{port}/proxy") }
     }
 
@@ -77,7 +84,8 @@ fn with_connect_the_window_streams_its_runs_to_an_external_viewer() {
     let received = home.path().join("received.rrd");
     let x = Xvfb::start();
     let mut receiver = Receiver::start(&received);
-    let mut gui = Gui::start(&x, &common::repo("."), home.path(), &["gui", "scenes/spring_mass.ron", "--connect", &receiver.url]);
+    let mut gui =
+        Gui::start(&x, &common::repo("."), home.path(), &["gui", "scenes/spring_mass.ron", "--connect", &receiver.url]);
     gui.focus(&x);
     x.xdotool(&["key", "space"]);
     std::thread::sleep(Duration::from_secs(3));
@@ -95,19 +103,27 @@ fn with_connect_the_window_streams_its_runs_to_an_external_viewer() {
     assert!(receiver.interrupt(), "the receiver did not stop on Ctrl-C");
     let stores = x11::stores(&received);
     let recordings: Vec<_> = stores.keys().filter(|id| id.is_recording()).collect();
-    assert!(!recordings.is_empty() && recordings.iter().all(|id| id.application_id().to_string() == "tether"), "{recordings:?}");
+    assert!(
+        !recordings.is_empty() && recordings.iter().all(|id| id.application_id().to_string() == "tether"),
+        "{recordings:?}"
+    );
     assert!(x11::has_entity(&received, "/world/bodies/mass"), "the body's poses reached the receiver");
     assert!(x11::has_entity(&received, "/world/springs"), "the spring's line reached the receiver");
     let simulated = x11::sim_time_in(&stores);
-    assert!(simulated > 1.0, "Space played the scene for about 3 s; the receiver got up to {simulated} s (last seen {last} s)");
+    assert!(
+        simulated > 1.0,
+        "Space played the scene for about 3 s; the receiver got up to {simulated} s (last seen {last} s)"
+    );
 }
-
 
 #[test]
 fn open_scene_shows_a_file_dialog_in_the_scenes_folder_and_loads_the_file_picked() {
     let x = Xvfb::start();
     let zenity = Command::new("zenity").arg("--version").env("DISPLAY", &x.display).output();
-    assert!(zenity.is_ok_and(|o| o.status.success()), "zenity must be installed (apt-get install zenity; .ci/run does it): without a desktop portal, rfd's file dialogs are zenity's");
+    assert!(
+        zenity.is_ok_and(|o| o.status.success()),
+        "zenity must be installed (apt-get install zenity; .ci/run does it): without a desktop portal, rfd's file dialogs are zenity's"
+    );
     let home = tempfile::tempdir().unwrap();
     let folder = tempfile::tempdir().unwrap();
     std::fs::create_dir(folder.path().join("scenes")).unwrap();
@@ -116,7 +132,8 @@ fn open_scene_shows_a_file_dialog_in_the_scenes_folder_and_loads_the_file_picked
     let out = folder.path().join("shown.rrd");
     // Run from the folder above `scenes/`: a dialog opened in the working folder would not find
     // `picked.ron` by its bare name.
-    let mut gui = Gui::start(&x, folder.path(), home.path(), &["gui", "scenes/start.ron", "--save", out.to_str().unwrap()]);
+    let mut gui =
+        Gui::start(&x, folder.path(), home.path(), &["gui", "scenes/start.ron", "--save", out.to_str().unwrap()]);
     let window = gui.focus(&x);
     // Tab gives the keyboard focus to the panel's first button, "Open scene…"; Enter presses it.
     x.xdotool(&["key", "Tab"]);
@@ -128,11 +145,16 @@ fn open_scene_shows_a_file_dialog_in_the_scenes_folder_and_loads_the_file_picked
     x.xdotool(&["type", "--delay", "20", "picked.ron"]);
     x.xdotool(&["key", "Return"]);
     let dialog_open = || x.xdotool(&["search", "--onlyvisible", "--name", "^zenity$"]).status.success();
-    x11::wait_for("the dialog to close on picked.ron (was it opened in scenes/?)", Duration::from_secs(30), || !dialog_open());
+    x11::wait_for("the dialog to close on picked.ron (was it opened in scenes/?)", Duration::from_secs(30), || {
+        !dialog_open()
+    });
     x.xdotool(&["windowfocus", "--sync", &window]);
     std::thread::sleep(Duration::from_secs(1));
     gui.quit(&x);
     x11::assert_verifies(&out);
     assert!(x11::has_entity(&out, "/world/bodies/start_body"), "the scene the window started on was recorded");
-    assert!(x11::has_entity(&out, "/world/bodies/picked_body"), "the scene picked in the dialog was loaded and recorded");
+    assert!(
+        x11::has_entity(&out, "/world/bodies/picked_body"),
+        "the scene picked in the dialog was loaded and recorded"
+    );
 }

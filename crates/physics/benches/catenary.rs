@@ -20,7 +20,9 @@ use tether_physics::surroundings::Surroundings;
 /// stiff lines.
 fn cases() -> Vec<Closure> {
     let mut cases = Vec::new();
-    for &(x, y) in &[(0.84, 0.49), (0.6, 0.2), (0.95, 0.1), (0.02, 0.99), (0.3, -0.8), (0.5, 0.0), (0.999, 0.03), (0.1, 0.3)] {
+    for &(x, y) in
+        &[(0.84, 0.49), (0.6, 0.2), (0.95, 0.1), (0.02, 0.99), (0.3, -0.8), (0.5, 0.0), (0.999, 0.03), (0.1, 0.3)]
+    {
         for &epsilon in &[1e-9, 1e-5, 1e-3, 0.1] {
             cases.push(Closure { x, y, epsilon });
         }
@@ -42,11 +44,15 @@ fn warm_cases() -> Vec<(Closure, Unknowns)> {
 
 fn report_iterations() {
     let cold: Vec<u32> = cases().iter().map(|c| solve(c, None).expect("finite case").iterations).collect();
-    let warm: Vec<u32> = warm_cases().iter().map(|(c, s)| solve(c, Some(*s)).expect("finite case").iterations).collect();
+    let warm: Vec<u32> =
+        warm_cases().iter().map(|(c, s)| solve(c, Some(*s)).expect("finite case").iterations).collect();
     let stats = |v: &[u32]| (v.iter().sum::<u32>() as f64 / v.len() as f64, v.iter().max().copied().unwrap_or(0));
     let (cold_mean, cold_max) = stats(&cold);
     let (warm_mean, warm_max) = stats(&warm);
-    eprintln!("catenary Newton iterations over {} cases: cold mean {cold_mean:.2} max {cold_max}; warm (1 % move) mean {warm_mean:.2} max {warm_max}", cold.len());
+    eprintln!(
+        "catenary Newton iterations over {} cases: cold mean {cold_mean:.2} max {cold_max}; warm (1 % move) mean {warm_mean:.2} max {warm_max}",
+        cold.len()
+    );
 }
 
 fn bench_solver(c: &mut Criterion) {
@@ -76,7 +82,9 @@ fn bench_solver(c: &mut Criterion) {
 /// and nearly lifted, and a line resting its middle between two raised ends.
 fn grounded_cases() -> Vec<Grounding> {
     let mut cases = Vec::new();
-    for &(x, z1, z2) in &[(0.8, 0.0, 0.4), (0.95, 0.0, 0.1), (0.85, 0.0, 0.25), (0.75, 0.0, 0.35), (0.9, 0.0, 0.2), (0.95, 0.05, 0.05)] {
+    for &(x, z1, z2) in
+        &[(0.8, 0.0, 0.4), (0.95, 0.0, 0.1), (0.85, 0.0, 0.25), (0.75, 0.0, 0.35), (0.9, 0.0, 0.2), (0.95, 0.05, 0.05)]
+    {
         for &epsilon in &[1e-9, 1e-5, 1e-3] {
             for &friction in &[0.0, 1.0] {
                 cases.push(Grounding { x, z1, z2, epsilon, friction });
@@ -95,15 +103,23 @@ fn grounded(outcome: Option<Outcome>) -> grounded_solver::Solved {
 
 /// Each grounded case with its span moved by 1 %, warm-started from the unmoved solution.
 fn grounded_warm_cases() -> Vec<(Grounding, f64)> {
-    grounded_cases().into_iter().map(|g| (Grounding { x: g.x * 1.01, ..g }, grounded(grounded_solver::solve(&g, None)).profile.h)).collect()
+    grounded_cases()
+        .into_iter()
+        .map(|g| (Grounding { x: g.x * 1.01, ..g }, grounded(grounded_solver::solve(&g, None)).profile.h))
+        .collect()
 }
 
 /// MoorPy's reference line (PHYSICS.md §7) moved by 1 % of its span each step, whole-line
 /// solves from the last state.
 fn moving_mooring() -> (Catenary, Surroundings, Vec<(Vec3, LineState)>) {
     let g = 9.80665;
-    let line = Catenary::new(Endpoint::World(Vec3::zeros()), Endpoint::World(Vec3::zeros()), 800.0 / g, 500.0, 7.51e9 / 500.0);
-    let surroundings = Surroundings { gravity: Vec3::new(0.0, 0.0, -g), fluid_density: 0.0, seabed: Some(Seabed::new(-80.0, 0.5).expect("a valid seabed")) };
+    let line =
+        Catenary::new(Endpoint::World(Vec3::zeros()), Endpoint::World(Vec3::zeros()), 800.0 / g, 500.0, 7.51e9 / 500.0);
+    let surroundings = Surroundings {
+        gravity: Vec3::new(0.0, 0.0, -g),
+        fluid_density: 0.0,
+        seabed: Some(Seabed::new(-80.0, 0.5).expect("a valid seabed")),
+    };
     let anchor = Vec3::new(0.0, 0.0, -80.0);
     let steps = (0..64)
         .map(|i| {
@@ -119,9 +135,14 @@ fn bench_grounded(c: &mut Criterion) {
     let cold = grounded_cases();
     let warm = grounded_warm_cases();
     let counts = |v: &[u32]| (v.iter().sum::<u32>() as f64 / v.len() as f64, v.iter().max().copied().unwrap_or(0));
-    let (cold_mean, cold_max) = counts(&cold.iter().map(|g| grounded(grounded_solver::solve(g, None)).iterations).collect::<Vec<_>>());
-    let (warm_mean, warm_max) = counts(&warm.iter().map(|(g, h)| grounded(grounded_solver::solve(g, Some(*h))).iterations).collect::<Vec<_>>());
-    eprintln!("grounded catenary Newton iterations over {} cases: cold mean {cold_mean:.2} max {cold_max}; warm (1 % move) mean {warm_mean:.2} max {warm_max}", cold.len());
+    let (cold_mean, cold_max) =
+        counts(&cold.iter().map(|g| grounded(grounded_solver::solve(g, None)).iterations).collect::<Vec<_>>());
+    let (warm_mean, warm_max) =
+        counts(&warm.iter().map(|(g, h)| grounded(grounded_solver::solve(g, Some(*h))).iterations).collect::<Vec<_>>());
+    eprintln!(
+        "grounded catenary Newton iterations over {} cases: cold mean {cold_mean:.2} max {cold_max}; warm (1 % move) mean {warm_mean:.2} max {warm_max}",
+        cold.len()
+    );
     let mut group = c.benchmark_group("catenary_grounded");
     let mut index = 0;
     group.bench_function("cold", |b| {

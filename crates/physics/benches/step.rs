@@ -28,7 +28,12 @@ fn chain_scene(n: usize) -> String {
         i => format!("Body(body: \"b{i}\")"),
     };
     for i in 0..=n {
-        let _ = write!(text, "SpringDamper(name: \"s{i}\", end1: {}, end2: {}, law: Linear(stiffness: 1e4, rest_length: 0.2), damping: 20.0),", end(i), end(i + 1));
+        let _ = write!(
+            text,
+            "SpringDamper(name: \"s{i}\", end1: {}, end2: {}, law: Linear(stiffness: 1e4, rest_length: 0.2), damping: 20.0),",
+            end(i),
+            end(i + 1)
+        );
     }
     text + "])"
 }
@@ -54,12 +59,23 @@ fn bench_chains(c: &mut Criterion) {
     // The buoy once the waves are fully ramped in (20 s: the ramp is 16 s), every step pays for
     // the waves.
     let buoy_text = std::fs::read_to_string(scenes().join("moored_buoy.ron")).expect("shipped scene");
-    let jonswap = buoy_text.replace("waves: Regular(height: 2.0, period: 8.0, heading_deg: 0.0)", "waves: Jonswap(hs: 2.0, tp: 8.0, components: 50, seed: 1)");
+    let jonswap = buoy_text.replace(
+        "waves: Regular(height: 2.0, period: 8.0, heading_deg: 0.0)",
+        "waves: Jonswap(hs: 2.0, tp: 8.0, components: 50, seed: 1)",
+    );
     assert_ne!(jonswap, buoy_text, "the shipped buoy's wave line changed: update the bench");
     let barge = shipped_in("barge_in_waves.ron");
     let floating = [
-        ("moored_buoy_regular", scene::parse(&buoy_text, Path::new("moored_buoy.ron")).expect("shipped scene").world, 10_000),
-        ("moored_buoy_jonswap50", scene::parse(&jonswap, Path::new("moored_buoy.ron")).expect("edited scene").world, 10_000),
+        (
+            "moored_buoy_regular",
+            scene::parse(&buoy_text, Path::new("moored_buoy.ron")).expect("shipped scene").world,
+            10_000,
+        ),
+        (
+            "moored_buoy_jonswap50",
+            scene::parse(&jonswap, Path::new("moored_buoy.ron")).expect("edited scene").world,
+            10_000,
+        ),
         ("barge_jonswap50", barge, 1_000),
     ];
     for (name, mut world, warm_up) in floating {

@@ -81,7 +81,10 @@ impl BodyEnergy {
         if body.is_kinematic() {
             return Self::default();
         }
-        Self { kinetic: body.kinetic_energy(&state.velocity, &state.angular_velocity), gravity: -body.mass() * gravity.dot(&state.position) }
+        Self {
+            kinetic: body.kinetic_energy(&state.velocity, &state.angular_velocity),
+            gravity: -body.mass() * gravity.dot(&state.position),
+        }
     }
 
     /// The energies of `bodies` in the synchronised `states`.

@@ -71,14 +71,16 @@ impl MassProperties {
         // points declared at it are exactly G.
         let center_of_mass =
             if slaves.is_empty() { master.position } else { nodes().map(|n| n.position * n.mass).sum::<Vec3>() / mass };
-        let inertia_about_g = nodes()
-            .map(|n| n.inertia + point_mass_inertia(n.mass, &(n.position - center_of_mass)))
-            .sum::<Mat3>();
-        if !(mass.is_finite() && center_of_mass.iter().all(|x| x.is_finite()) && inertia_about_g.iter().all(|x| x.is_finite())) {
+        let inertia_about_g =
+            nodes().map(|n| n.inertia + point_mass_inertia(n.mass, &(n.position - center_of_mass))).sum::<Mat3>();
+        if !(mass.is_finite()
+            && center_of_mass.iter().all(|x| x.is_finite())
+            && inertia_about_g.iter().all(|x| x.is_finite()))
+        {
             return Err(MassError::NotFinite { mass, inertia_norm: inertia_about_g.norm() });
         }
-        let (principal_moments, principal_axes) =
-            principal_frame(&inertia_about_g).ok_or(MassError::NotFinite { mass, inertia_norm: inertia_about_g.norm() })?;
+        let (principal_moments, principal_axes) = principal_frame(&inertia_about_g)
+            .ok_or(MassError::NotFinite { mass, inertia_norm: inertia_about_g.norm() })?;
         if principal_moments.iter().any(|&moment| !(moment > 1e-12 * principal_moments.max().max(f64::MIN_POSITIVE))) {
             return Err(MassError::NotPositiveDefinite(principal_moments.into()));
         }
@@ -125,7 +127,8 @@ mod tests {
 
     #[test]
     fn cube_of_eight_masses_around_a_master_with_added_inertia() {
-        let master = Node { position: Vec3::zeros(), mass: 2.0, inertia: Mat3::from_diagonal(&Vec3::new(0.1, 0.2, 0.3)) };
+        let master =
+            Node { position: Vec3::zeros(), mass: 2.0, inertia: Mat3::from_diagonal(&Vec3::new(0.1, 0.2, 0.3)) };
         let mut slaves = Vec::new();
         for sx in [-0.5, 0.5] {
             for sy in [-0.5, 0.5] {

@@ -10,5 +10,7 @@ pub type Rotation = nalgebra::UnitQuaternion<f64>;
 /// Corners `(low, high)` of the axis-aligned box around `points` (componentwise minimum and
 /// maximum); `(+∞, −∞)` when there are none.
 pub fn bounding_box(points: impl IntoIterator<Item = Vec3>) -> (Vec3, Vec3) {
-    points.into_iter().fold((Vec3::repeat(f64::INFINITY), Vec3::repeat(f64::NEG_INFINITY)), |(low, high), p| (low.inf(&p), high.sup(&p)))
+    points.into_iter().fold((Vec3::repeat(f64::INFINITY), Vec3::repeat(f64::NEG_INFINITY)), |(low, high), p| {
+        (low.inf(&p), high.sup(&p))
+    })
 }

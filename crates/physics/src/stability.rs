@@ -148,7 +148,8 @@ pub fn limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
     let mut limits = Vec::new();
     for (index, (coupling, forces)) in system.couplings().iter().zip(evaluation.forces()).enumerate() {
         let [end1, end2] = coupling.ends();
-        let along = |d: &Vec3| inverse_mass_along(system, frames, &end1, d) + inverse_mass_along(system, frames, &end2, d);
+        let along =
+            |d: &Vec3| inverse_mass_along(system, frames, &end1, d) + inverse_mass_along(system, frames, &end2, d);
         let dt = match &coupling.kind {
             CouplingKind::SpringDamper(spring) => {
                 let chord = forces.point2 - forces.point1;
@@ -169,13 +170,29 @@ pub fn limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
                 oscillator_limit(integrator, eigen.eigenvalues[largest], 0.0, along(&d))
             }
             CouplingKind::Contact(contact) => {
-                let inverse: f64 = [Some(contact.body), contact.other_body()].into_iter().flatten().map(|i| translational_inverse_mass(system, i)).sum();
+                let inverse: f64 = [Some(contact.body), contact.other_body()]
+                    .into_iter()
+                    .flatten()
+                    .map(|i| translational_inverse_mass(system, i))
+                    .sum();
                 let area = contact.limit_area(frames);
-                let normal = oscillator_limit(integrator, contact.law.stiffness * area, contact.law.damping * area, inverse);
-                let friction = contact.law.friction * contact.law.friction_sharpness * evaluation.contact_forces(index).map_or(0.0, |forces| forces.normal);
+                let normal =
+                    oscillator_limit(integrator, contact.law.stiffness * area, contact.law.damping * area, inverse);
+                let friction = contact.law.friction
+                    * contact.law.friction_sharpness
+                    * evaluation.contact_forces(index).map_or(0.0, |forces| forces.normal);
                 // Without a normal force friction damps nothing (an infinite limit): the faces
                 // need not be evaluated again.
-                if friction > 0.0 { normal.min(oscillator_limit(integrator, 0.0, friction, sliding_inverse_mass(system, frames, contact))) } else { normal }
+                if friction > 0.0 {
+                    normal.min(oscillator_limit(
+                        integrator,
+                        0.0,
+                        friction,
+                        sliding_inverse_mass(system, frames, contact),
+                    ))
+                } else {
+                    normal
+                }
             }
         };
         if dt.is_finite() {
@@ -213,9 +230,12 @@ fn water_limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
             continue;
         }
         let hydro = &floating.hydro;
-        let speed = water.peak_flow_speed() + frame.velocity.norm() + state.angular_velocity.norm() * hydro.drag_center.norm();
+        let speed =
+            water.peak_flow_speed() + frame.velocity.norm() + state.angular_velocity.norm() * hydro.drag_center.norm();
         let (drag, turning) = hydro.linearised(&frame, speed, rho, wetted);
-        let righting = rho_g * statics.displaced_volume * statics.metacentric_heights(frame.position.z).into_iter().fold(0.0, f64::max);
+        let righting = rho_g
+            * statics.displaced_volume
+            * statics.metacentric_heights(frame.position.z).into_iter().fold(0.0, f64::max);
         let smallest_moment = body.principal_moments().min();
         let mut dt = f64::INFINITY;
         for j in 0..3 {
@@ -243,7 +263,11 @@ pub fn impact_limits(situation: &Situation) -> Vec<Limit> {
         .filter_map(|(index, coupling)| match &coupling.kind {
             CouplingKind::Contact(contact) => {
                 let inverse = inverse_mass(contact.body) + contact.other_body().map_or(0.0, inverse_mass);
-                Some(Limit { limiter: Limiter::Impact(index), dt: contact.stopping_time(contact.limit_area(situation.evaluation.frames()), inverse) / STEPS_PER_STOPPING_TIME })
+                Some(Limit {
+                    limiter: Limiter::Impact(index),
+                    dt: contact.stopping_time(contact.limit_area(situation.evaluation.frames()), inverse)
+                        / STEPS_PER_STOPPING_TIME,
+                })
             }
             _ => None,
         })
@@ -263,10 +287,13 @@ fn sliding_inverse_mass(system: &System, frames: &[BodyFrame], contact: &Contact
     let faces = contact.active_faces(frames);
     let frame = &frames[contact.body];
     let on_body = faces.iter().map(|face| face.centroid);
-    let mut sliding_inverse = translational_inverse_mass(system, contact.body) + turning_inverse_mass(system, contact.body, on_body);
+    let mut sliding_inverse =
+        translational_inverse_mass(system, contact.body) + turning_inverse_mass(system, contact.body, on_body);
     if let Some(other) = contact.other_body() {
-        let to_other = |c: Vec3| frames[other].rotation.tr_mul(&(frame.position + frame.rotation * c - frames[other].position));
-        sliding_inverse += translational_inverse_mass(system, other) + turning_inverse_mass(system, other, faces.iter().map(|face| to_other(face.centroid)));
+        let to_other =
+            |c: Vec3| frames[other].rotation.tr_mul(&(frame.position + frame.rotation * c - frames[other].position));
+        sliding_inverse += translational_inverse_mass(system, other)
+            + turning_inverse_mass(system, other, faces.iter().map(|face| to_other(face.centroid)));
     }
     sliding_inverse
 }

@@ -27,10 +27,10 @@ use crate::math::Vec3;
 use crate::seabed::Seabed;
 use crate::simd::Level;
 use crate::surroundings::Surroundings;
-use crate::water::{WaterSpec, WaterStage};
 use crate::water::environment::WaterError;
 use crate::water::morison::HydroSpec;
 use crate::water::stage::{FloatingBody, FloatingError};
+use crate::water::{WaterSpec, WaterStage};
 
 /// Bodies, couplings and gravity: what a run does not change (live edits aside).
 #[derive(Debug, Clone)]
@@ -64,7 +64,9 @@ pub enum SystemError {
     Hydro { body: String, source: FloatingError },
     #[error("the system has no water")]
     NoWater,
-    #[error("coupling \"{coupling}\": end {end} is {depth} m below the seabed (z_b = {elevation} m): an anchor lies on the seabed or above it")]
+    #[error(
+        "coupling \"{coupling}\": end {end} is {depth} m below the seabed (z_b = {elevation} m): an anchor lies on the seabed or above it"
+    )]
     BelowSeabed { coupling: String, end: usize, depth: f64, elevation: f64 },
 }
 
@@ -81,7 +83,12 @@ impl System {
     ///
     /// # Errors
     /// As many states as bodies are needed, and every coupling's bodies must exist.
-    pub fn new(gravity: Vec3, bodies: Vec<RigidBody>, couplings: Vec<Coupling>, initial_states: Vec<BodyState>) -> Result<Self, SystemError> {
+    pub fn new(
+        gravity: Vec3,
+        bodies: Vec<RigidBody>,
+        couplings: Vec<Coupling>,
+        initial_states: Vec<BodyState>,
+    ) -> Result<Self, SystemError> {
         if bodies.len() != initial_states.len() {
             return Err(SystemError::StateCount { bodies: bodies.len(), states: initial_states.len() });
         }
@@ -89,7 +96,15 @@ impl System {
             check_bodies(coupling, bodies.len())?;
         }
         let kinematic_bodies = (0..bodies.len()).filter(|&i| bodies[i].is_kinematic()).collect();
-        Ok(Self { surroundings: Surroundings::dry(gravity), bodies, couplings, initial_states, kinematic_bodies, level: Level::best(), water: None })
+        Ok(Self {
+            surroundings: Surroundings::dry(gravity),
+            bodies,
+            couplings,
+            initial_states,
+            kinematic_bodies,
+            level: Level::best(),
+            water: None,
+        })
     }
 
     /// The system with its lines lying on `seabed` where they reach it (PHYSICS.md §7).
@@ -117,7 +132,10 @@ impl System {
             if *body >= count || floating[..index].iter().any(|(b, _)| b == body) {
                 return Err(SystemError::FloatingBody { body: *body, count });
             }
-            bodies.push(FloatingBody::new(&self.bodies, *body, *spec).map_err(|source| SystemError::Hydro { body: self.bodies[*body].name.clone(), source })?);
+            bodies.push(
+                FloatingBody::new(&self.bodies, *body, *spec)
+                    .map_err(|source| SystemError::Hydro { body: self.bodies[*body].name.clone(), source })?,
+            );
         }
         // The lines weigh in the same water: `(λ0 − ρ A_d) g` (PHYSICS.md §7).
         self.surroundings.fluid_density = water.density();
@@ -138,14 +156,16 @@ impl System {
         let Some(stage) = &self.water else { return std::borrow::Cow::Borrowed(self) };
         let spec = WaterSpec { waves: crate::water::WaveSpec::Calm, ramp: Some(0.0), ..*stage.water.spec() };
         // Still water with a ramp of 0 s passes every check the accepted water passed.
-        let water = crate::water::Water::new(spec, &self.surroundings.gravity).expect("still water from accepted water");
+        let water =
+            crate::water::Water::new(spec, &self.surroundings.gravity).expect("still water from accepted water");
         let floating = stage
             .floating
             .iter()
             .map(|entry| {
                 let spec = HydroSpec { added_mass: Vec3::zeros(), added_inertia: Vec3::zeros(), ..entry.hydro.spec };
                 // Accepted coefficients with the added mass zeroed stay in range.
-                let hydro = crate::water::Hydro::new(spec, &self.bodies[entry.body], &entry.hull).expect("accepted coefficients without added mass");
+                let hydro = crate::water::Hydro::new(spec, &self.bodies[entry.body], &entry.hull)
+                    .expect("accepted coefficients without added mass");
                 FloatingBody { hydro, ..entry.clone() }
             })
             .collect();
@@ -173,9 +193,11 @@ impl System {
     pub(crate) fn replace_hydro(&mut self, body: usize, spec: HydroSpec) -> Result<(), SystemError> {
         let count = self.bodies.len();
         let stage = self.water.as_mut().ok_or(SystemError::NoWater)?;
-        let entry = stage.floating.iter_mut().find(|f| f.body == body).ok_or(SystemError::FloatingBody { body, count })?;
-        let hydro = crate::water::Hydro::new(spec, &self.bodies[body], &entry.hull)
-            .map_err(|e| SystemError::Hydro { body: self.bodies[body].name.clone(), source: FloatingError::Hydro(e) })?;
+        let entry =
+            stage.floating.iter_mut().find(|f| f.body == body).ok_or(SystemError::FloatingBody { body, count })?;
+        let hydro = crate::water::Hydro::new(spec, &self.bodies[body], &entry.hull).map_err(|e| {
+            SystemError::Hydro { body: self.bodies[body].name.clone(), source: FloatingError::Hydro(e) }
+        })?;
         entry.hydro = hydro;
         Ok(())
     }
@@ -253,7 +275,12 @@ impl System {
     ///
     /// # Errors
     /// A coupling that cannot give its forces (only non-finite states make one).
-    pub fn evaluate(&self, states: &[BodyState], evaluation: &mut Evaluation, time: f64) -> Result<Powers, EvaluationError> {
+    pub fn evaluate(
+        &self,
+        states: &[BodyState],
+        evaluation: &mut Evaluation,
+        time: f64,
+    ) -> Result<Powers, EvaluationError> {
         for (frame, state) in evaluation.frames.iter_mut().zip(states) {
             *frame = state.frame();
         }
@@ -269,7 +296,11 @@ impl System {
     /// body, which forces do not move).
     #[inline(always)]
     pub fn gravity_load(&self, body: &RigidBody) -> Load {
-        if body.is_kinematic() { Load::default() } else { Load { force: self.surroundings.gravity * body.mass(), moment: Vec3::zeros() } }
+        if body.is_kinematic() {
+            Load::default()
+        } else {
+            Load { force: self.surroundings.gravity * body.mass(), moment: Vec3::zeros() }
+        }
     }
 
     /// Stage *couplings* at the kinematics `evaluation.frames`: each coupling's forces, kept per
@@ -279,7 +310,14 @@ impl System {
     /// The first coupling that cannot give its forces.
     pub fn apply_couplings(&self, evaluation: &mut Evaluation) -> Result<f64, EvaluationError> {
         let Evaluation { frames, loads, forces, caches, .. } = evaluation;
-        let stage = CouplingsStage { couplings: &self.couplings, surroundings: &self.surroundings, frames, caches, forces, loads };
+        let stage = CouplingsStage {
+            couplings: &self.couplings,
+            surroundings: &self.surroundings,
+            frames,
+            caches,
+            forces,
+            loads,
+        };
         stage.run(self.level).map_err(|(coupling, source)| EvaluationError { coupling, source })
     }
 
@@ -303,7 +341,11 @@ impl System {
         if self.water.is_none() {
             return 0.0;
         }
-        evaluation.water.iter().map(|record| crate::water::stage::power(&record.total(), &evaluation.frames[record.body])).sum()
+        evaluation
+            .water
+            .iter()
+            .map(|record| crate::water::stage::power(&record.total(), &evaluation.frames[record.body]))
+            .sum()
     }
 
     /// Stage *powers*: what the prescribed motions put in, `−Σ (F_k·v_k + M_k·ω_k)` [W] (of
@@ -341,7 +383,12 @@ fn check_anchors(couplings: &[Coupling], seabed: &Seabed, gravity: &Vec3) -> Res
             let Endpoint::World(point) = endpoint else { continue };
             let height = seabed.height(point, &up);
             if height < -ON_SEABED * line.length {
-                return Err(SystemError::BelowSeabed { coupling: coupling.name.clone(), end, depth: -height, elevation: seabed.elevation });
+                return Err(SystemError::BelowSeabed {
+                    coupling: coupling.name.clone(),
+                    end,
+                    depth: -height,
+                    elevation: seabed.elevation,
+                });
             }
         }
     }

@@ -133,7 +133,8 @@ fn build_pieces(points: &[(f64, f64)], extrapolation: Extrapolation) -> Vec<Piec
     let mut integral_a = 0.0;
     let mut double_integral_a = 0.0;
     for i in 0..n - 1 {
-        let piece = Piece { x_a: points[i].0, y_a: points[i].1, slope: segment_slope(i), integral_a, double_integral_a };
+        let piece =
+            Piece { x_a: points[i].0, y_a: points[i].1, slope: segment_slope(i), integral_a, double_integral_a };
         integral_a = piece.integral(points[i + 1].0);
         double_integral_a = piece.double_integral(points[i + 1].0);
         pieces.push(piece);
@@ -177,8 +178,7 @@ mod tests {
             let m = 0.5 * (a + b);
             let y_int = (b - a) / 6.0 * (t.value(a) + 4.0 * t.value(m) + t.value(b));
             assert_relative_eq!(t.integral(a, b), y_int, epsilon = 1e-14);
-            let yy_int = (b - a) / 6.0
-                * (t.antiderivative(a) + 4.0 * t.antiderivative(m) + t.antiderivative(b));
+            let yy_int = (b - a) / 6.0 * (t.antiderivative(a) + 4.0 * t.antiderivative(m) + t.antiderivative(b));
             yy += yy_int;
             assert_relative_eq!(t.second_antiderivative(b), yy, epsilon = 1e-13);
         }

@@ -38,7 +38,9 @@ fn code(text: &str) -> String {
 /// Every path a `use` tree names: `a::{b, c::{d, e}}` → `a::b`, `a::c::d`, `a::c::e`.
 fn expand(tree: &str) -> Vec<String> {
     let tree = tree.trim();
-    let Some(open) = tree.find('{') else { return vec![tree.split(" as ").next().unwrap_or_default().trim().to_string()] };
+    let Some(open) = tree.find('{') else {
+        return vec![tree.split(" as ").next().unwrap_or_default().trim().to_string()];
+    };
     let prefix = tree[..open].trim_end_matches("::").trim();
     let inner = &tree[open + 1..tree.rfind('}').unwrap_or(tree.len())];
     let (mut items, mut depth, mut start) = (Vec::new(), 0, 0);
@@ -54,7 +56,12 @@ fn expand(tree: &str) -> Vec<String> {
         }
     }
     items.push(&inner[start..]);
-    items.into_iter().filter(|item| !item.trim().is_empty()).flat_map(expand).map(|path| if path == "self" { prefix.to_string() } else { format!("{prefix}::{path}") }).collect()
+    items
+        .into_iter()
+        .filter(|item| !item.trim().is_empty())
+        .flat_map(expand)
+        .map(|path| if path == "self" { prefix.to_string() } else { format!("{prefix}::{path}") })
+        .collect()
 }
 
 /// The paths a module's code names: its `use` trees, and the paths inline that start with
@@ -63,10 +70,14 @@ fn named_paths(code: &str, children: &[&str]) -> Vec<String> {
     let mut paths = Vec::new();
     for statement in code.split(';') {
         let statement = statement.trim();
-        let tree = statement.strip_prefix("pub use ").or_else(|| statement.strip_prefix("pub(crate) use ")).or_else(|| statement.strip_prefix("use "));
+        let tree = statement
+            .strip_prefix("pub use ")
+            .or_else(|| statement.strip_prefix("pub(crate) use "))
+            .or_else(|| statement.strip_prefix("use "));
         if let Some(tree) = tree {
             let child = |path: &String| children.iter().any(|c| path.split("::").next() == Some(c));
-            paths.extend(expand(tree).into_iter().map(|path| if child(&path) { format!("self::{path}") } else { path }));
+            paths
+                .extend(expand(tree).into_iter().map(|path| if child(&path) { format!("self::{path}") } else { path }));
         }
     }
     let bytes = code.as_bytes();
@@ -75,8 +86,11 @@ fn named_paths(code: &str, children: &[&str]) -> Vec<String> {
         let mut from = 0;
         while let Some(at) = code[from..].find(start) {
             let begin = from + at;
-            let boundary = begin == 0 || !(bytes[begin - 1].is_ascii_alphanumeric() || bytes[begin - 1] == b'_' || bytes[begin - 1] == b':');
-            let end = code[begin..].find(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':')).map_or(code.len(), |e| begin + e);
+            let boundary = begin == 0
+                || !(bytes[begin - 1].is_ascii_alphanumeric() || bytes[begin - 1] == b'_' || bytes[begin - 1] == b':');
+            let end = code[begin..]
+                .find(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':'))
+                .map_or(code.len(), |e| begin + e);
             if boundary {
                 let path = code[begin..end].trim_end_matches(':');
                 let relative = !path.starts_with("crate::") && !path.starts_with("super::");
@@ -122,7 +136,12 @@ fn target(from: &str, path: &str, known: &BTreeSet<String>) -> Option<String> {
 
 /// A cycle of `graph`, if there is one.
 fn cycle(graph: &BTreeMap<String, BTreeSet<String>>) -> Option<Vec<String>> {
-    fn visit(node: &str, graph: &BTreeMap<String, BTreeSet<String>>, state: &mut BTreeMap<String, u8>, stack: &mut Vec<String>) -> Option<Vec<String>> {
+    fn visit(
+        node: &str,
+        graph: &BTreeMap<String, BTreeSet<String>>,
+        state: &mut BTreeMap<String, u8>,
+        stack: &mut Vec<String>,
+    ) -> Option<Vec<String>> {
         state.insert(node.to_string(), 1);
         stack.push(node.to_string());
         for next in graph.get(node).into_iter().flatten() {
@@ -144,7 +163,9 @@ fn cycle(graph: &BTreeMap<String, BTreeSet<String>>) -> Option<Vec<String>> {
         None
     }
     let mut state = BTreeMap::new();
-    graph.keys().find_map(|node| if state.contains_key(node) { None } else { visit(node, graph, &mut state, &mut Vec::new()) })
+    graph
+        .keys()
+        .find_map(|node| if state.contains_key(node) { None } else { visit(node, graph, &mut state, &mut Vec::new()) })
 }
 
 /// The import graph of the physics crate.
@@ -155,8 +176,13 @@ fn import_graph() -> BTreeMap<String, BTreeSet<String>> {
     for (module, file) in &files {
         let text = std::fs::read_to_string(file).expect("a source file reads");
         let prefix = format!("{module}::");
-        let children: Vec<&str> = known.iter().filter_map(|m| m.strip_prefix(&prefix)).filter(|rest| !rest.contains("::")).collect();
-        let edges: BTreeSet<String> = named_paths(&code(&text), &children).iter().filter_map(|p| target(module, p, &known)).filter(|t| t != module).collect();
+        let children: Vec<&str> =
+            known.iter().filter_map(|m| m.strip_prefix(&prefix)).filter(|rest| !rest.contains("::")).collect();
+        let edges: BTreeSet<String> = named_paths(&code(&text), &children)
+            .iter()
+            .filter_map(|p| target(module, p, &known))
+            .filter(|t| t != module)
+            .collect();
         graph.insert(module.clone(), edges);
     }
     graph
@@ -187,13 +213,23 @@ fn no_module_imports_one_that_imports_it_back() {
 fn the_graph_reader_sees_a_planted_circle() {
     let known: BTreeSet<String> = ["crate", "crate::a", "crate::a::b"].map(String::from).into();
     let paths_a = named_paths(&code("pub use b::Thing;\nfn f() -> Thing { todo!() }"), &["b"]);
-    let paths_b = named_paths(&code("use super::{Other, b::Thing};\n#[cfg(test)]\nmod tests { use crate::a::Y; }"), &[]);
-    let edges = |from: &str, paths: &[String]| paths.iter().filter_map(|p| target(from, p, &known)).filter(|t| t != from).collect::<BTreeSet<String>>();
+    let paths_b =
+        named_paths(&code("use super::{Other, b::Thing};\n#[cfg(test)]\nmod tests { use crate::a::Y; }"), &[]);
+    let edges = |from: &str, paths: &[String]| {
+        paths.iter().filter_map(|p| target(from, p, &known)).filter(|t| t != from).collect::<BTreeSet<String>>()
+    };
     assert_eq!(graph_edges_of_a(&paths_a, &known), ["crate::a::b".to_string()].into(), "a names its child b");
-    let graph: BTreeMap<String, BTreeSet<String>> = [("crate::a".to_string(), edges("crate::a", &paths_a)), ("crate::a::b".to_string(), edges("crate::a::b", &paths_b))].into();
+    let graph: BTreeMap<String, BTreeSet<String>> = [
+        ("crate::a".to_string(), edges("crate::a", &paths_a)),
+        ("crate::a::b".to_string(), edges("crate::a::b", &paths_b)),
+    ]
+    .into();
     assert_eq!(graph["crate::a::b"], ["crate::a".to_string()].into(), "b names its parent's item: {graph:?}");
     assert!(cycle(&graph).is_some(), "{graph:?}");
-    assert_eq!(expand("crate::x::{a, b::{c, d as e}, self}"), ["crate::x::a", "crate::x::b::c", "crate::x::b::d", "crate::x"]);
+    assert_eq!(
+        expand("crate::x::{a, b::{c, d as e}, self}"),
+        ["crate::x::a", "crate::x::b::c", "crate::x::b::d", "crate::x"]
+    );
 }
 
 /// The edges of module `crate::a` for `paths`.

@@ -4,9 +4,9 @@
 use approx::assert_relative_eq;
 use nalgebra::Vector3;
 use proptest::prelude::*;
+use tether_physics::coupling::Endpoint;
 use tether_physics::coupling::catenary::equations::{Closure, rise};
 use tether_physics::coupling::catenary::{Catenary, LineState};
-use tether_physics::coupling::Endpoint;
 use tether_physics::surroundings::Surroundings;
 
 type V = Vector3<f64>;

@@ -6,8 +6,8 @@ mod common;
 use approx::assert_relative_eq;
 use common::scene;
 use tether_physics::coupling::CouplingKind;
-use tether_physics::world::World;
 use tether_physics::math::{Mat3, Vec3};
+use tether_physics::world::World;
 
 /// A 1 kg, 0.1 m box (bottom area A = 0.01 m²) at height `z` of its centre, falling at `vz`,
 /// on the ground plane z = 0 with A·k1 = 1e5 N/m, damping ratio `zeta`, range d0 = 1 mm, friction

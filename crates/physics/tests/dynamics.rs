@@ -38,7 +38,9 @@ fn assert_convergence(damping: f64, exact: &dyn Fn(f64) -> f64, tolerance: f64, 
 fn spring_mass_damper_matches_the_closed_form_at_first_order() {
     let (omega0, zeta, x0) = (10.0_f64, 0.05_f64, 0.01_f64);
     let omega_d = omega0 * (1.0 - zeta * zeta).sqrt();
-    let exact = |t: f64| (-zeta * omega0 * t).exp() * (x0 * (omega_d * t).cos() + zeta * omega0 * x0 / omega_d * (omega_d * t).sin());
+    let exact = |t: f64| {
+        (-zeta * omega0 * t).exp() * (x0 * (omega_d * t).cos() + zeta * omega0 * x0 / omega_d * (omega_d * t).sin())
+    };
     // The reference values, checked against the formula first.
     assert_relative_eq!(exact(0.5), 1.787858062988e-3, max_relative = 1e-11);
     assert_relative_eq!(exact(1.0), -5.292088189070e-3, max_relative = 1e-11);

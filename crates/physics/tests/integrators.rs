@@ -30,7 +30,9 @@ fn run_to(world: &mut World, t: f64) {
 /// angular velocity difference [rad/s], whichever is larger.
 fn rotation_error(a: &World, b: &World) -> f64 {
     let (sa, sb) = (a.state(0), b.state(0));
-    (sa.orientation.inverse() * sb.orientation).angle().max((sa.orientation * sa.angular_velocity - sb.orientation * sb.angular_velocity).norm())
+    (sa.orientation.inverse() * sb.orientation)
+        .angle()
+        .max((sa.orientation * sa.angular_velocity - sb.orientation * sb.angular_velocity).norm())
 }
 
 /// Slope of log(error) against log(dt) between consecutive halvings, each within 0.2 of
@@ -38,7 +40,10 @@ fn rotation_error(a: &World, b: &World) -> f64 {
 fn assert_order(label: &str, errors: &[f64], order: f64) {
     for pair in errors.windows(2) {
         let observed = (pair[0] / pair[1]).log2();
-        assert!((observed - order).abs() < 0.2, "{label}: observed order {observed}, expected {order} (errors {errors:?})");
+        assert!(
+            (observed - order).abs() < 0.2,
+            "{label}: observed order {observed}, expected {order} (errors {errors:?})"
+        );
     }
 }
 
@@ -51,7 +56,9 @@ fn assert_order(label: &str, errors: &[f64], order: f64) {
 fn convergence_orders_in_rotation() {
     let mut reference = tumbling("dopri45", 0.5, "adaptive: (rtol: 1e-13, atol: 1e-15),");
     run_to(&mut reference, 10.0);
-    for (integrator, order, tolerance_at_0_01) in [("leapfrog", 1.0, 2e-2), ("leapfrog2", 2.0, 5e-5), ("splitting", 2.0, 2e-5), ("rk4", 4.0, 5e-10)] {
+    for (integrator, order, tolerance_at_0_01) in
+        [("leapfrog", 1.0, 2e-2), ("leapfrog2", 2.0, 5e-5), ("splitting", 2.0, 2e-5), ("rk4", 4.0, 5e-10)]
+    {
         let errors: Vec<f64> = [0.04, 0.02, 0.01, 0.005]
             .iter()
             .map(|&dt| {
@@ -88,12 +95,23 @@ fn convergence_orders_in_translation() {
     let (omega0, x0) = (10.0_f64, 0.01_f64);
     for zeta in [0.0_f64, 0.05] {
         let omega_d = omega0 * (1.0 - zeta * zeta).sqrt();
-        let exact = |t: f64| (-zeta * omega0 * t).exp() * (x0 * (omega_d * t).cos() + zeta * omega0 * x0 / omega_d * (omega_d * t).sin());
+        let exact = |t: f64| {
+            (-zeta * omega0 * t).exp() * (x0 * (omega_d * t).cos() + zeta * omega0 * x0 / omega_d * (omega_d * t).sin())
+        };
         for integrator in ["leapfrog", "leapfrog2", "splitting", "rk4"] {
             let errors: Vec<f64> = [4e-3, 2e-3, 1e-3]
                 .iter()
                 .map(|&dt| {
-                    let mut world = with_integrator(oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", 2.0 * zeta * omega0, 1.0 + x0, 0.0, dt), integrator);
+                    let mut world = with_integrator(
+                        oscillator(
+                            "Linear(stiffness: 100.0, rest_length: 1.0)",
+                            2.0 * zeta * omega0,
+                            1.0 + x0,
+                            0.0,
+                            dt,
+                        ),
+                        integrator,
+                    );
                     run_to(&mut world, 1.0);
                     (world.state(0).position.x - 1.0 - exact(1.0)).abs()
                 })
@@ -127,7 +145,8 @@ fn ten_thousand_periods_energy_trend() {
     let steps = (1e4 * period / dt) as usize;
     let window = (10.0 * period / dt) as usize;
     for integrator in ["leapfrog", "splitting", "rk4"] {
-        let mut world = with_integrator(oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", 0.0, 1.1, 0.0, dt), integrator);
+        let mut world =
+            with_integrator(oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", 0.0, 1.1, 0.0, dt), integrator);
         let e0 = world.energy().balance();
         let (mut early, mut late) = (0.0_f64, 0.0_f64);
         let mut period_energies = Vec::new();
@@ -165,7 +184,9 @@ fn ten_thousand_periods_energy_trend() {
 /// 1e-9.
 #[test]
 fn damped_energy_balance_per_integrator() {
-    for (integrator, tolerance) in [("leapfrog", 1e-3), ("leapfrog2", 1e-3), ("splitting", 1e-3), ("rk4", 1e-9), ("dopri45", 1e-9)] {
+    for (integrator, tolerance) in
+        [("leapfrog", 1e-3), ("leapfrog2", 1e-3), ("splitting", 1e-3), ("rk4", 1e-9), ("dopri45", 1e-9)]
+    {
         let base = oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", 1.0, 1.01, 0.0, 1e-3);
         let mut file = base.file.clone();
         file.integrator = tether_physics::integrator::Integrator::from_name(integrator).unwrap();
@@ -225,7 +246,8 @@ fn penalty_pendulum_period(integrator: &str, k: f64, dt: f64) -> f64 {
     let theta = 0.5_f64.to_radians();
     let (s, c) = theta.sin_cos();
     // Rod inertia about G: (1/12)(E − u uᵀ) + 1e-4 u uᵀ, u = (s, 0, −c).
-    let (xx, zz, xz) = ((1.0 - s * s) / 12.0 + 1e-4 * s * s, (1.0 - c * c) / 12.0 + 1e-4 * c * c, (s * c) / 12.0 - 1e-4 * s * c);
+    let (xx, zz, xz) =
+        ((1.0 - s * s) / 12.0 + 1e-4 * s * s, (1.0 - c * c) / 12.0 + 1e-4 * c * c, (s * c) / 12.0 - 1e-4 * s * c);
     let mut world = scene(&format!(
         "Scene(gravity: (0, 0, -9.81), dt: {dt:e}, integrator: {integrator}, substeps: Auto, adaptive: (rtol: 1e-9, atol: 1e-12), bodies: [Body(name: \"rod\",
             master: Node(position: ({:e}, 0, {:e}), mass: 1.0, inertia: Inertia(xx: {xx:e}, yy: {:e}, zz: {zz:e}, xz: {xz:e})),
@@ -263,7 +285,9 @@ fn penalty_pendulum_period(integrator: &str, k: f64, dt: f64) -> f64 {
 #[test]
 fn stiffness_ratio_of_a_million() {
     let expected = 1.63794658591 * (1.0 + 0.5_f64.to_radians().powi(2) / 16.0);
-    for (integrator, tolerance) in [("leapfrog", 2e-3), ("leapfrog2", 2e-3), ("splitting", 1e-3), ("rk4", 1e-5), ("dopri45", 1e-5)] {
+    for (integrator, tolerance) in
+        [("leapfrog", 2e-3), ("leapfrog2", 2e-3), ("splitting", 1e-3), ("rk4", 1e-5), ("dopri45", 1e-5)]
+    {
         let period = penalty_pendulum_period(integrator, 1e6, 1e-3);
         assert_relative_eq!(period, expected, max_relative = tolerance);
     }
@@ -276,7 +300,9 @@ fn stiffness_ratio_of_a_million() {
 #[test]
 fn mass_ratio_of_a_million() {
     let omega = (1e4 * (1.0 + 1e-6_f64)).sqrt();
-    for (integrator, tolerance) in [("leapfrog", 1e-5), ("leapfrog2", 1e-5), ("splitting", 1e-5), ("rk4", 1e-10), ("dopri45", 1e-8)] {
+    for (integrator, tolerance) in
+        [("leapfrog", 1e-5), ("leapfrog2", 1e-5), ("splitting", 1e-5), ("rk4", 1e-10), ("dopri45", 1e-8)]
+    {
         let mut world = scene(&format!(
             "Scene(gravity: (0, 0, 0), dt: 1e-4, integrator: {integrator}, adaptive: (rtol: 1e-10, atol: 1e-13), bodies: [
                 Body(name: \"heavy\", master: Node(position: (0, 0, 0), mass: 1e6, inertia: Inertia(xx: 1e5, yy: 1e5, zz: 1e5)), shape: Sphere(radius: 1.0)),
@@ -286,7 +312,11 @@ fn mass_ratio_of_a_million() {
         .world;
         run_to(&mut world, 1.0);
         let relative = world.state(1).position.x - world.state(0).position.x - 1.0;
-        assert!((relative - 0.01 * omega.cos()).abs() < tolerance, "{integrator}: relative position error {}", relative - 0.01 * omega.cos());
+        assert!(
+            (relative - 0.01 * omega.cos()).abs() < tolerance,
+            "{integrator}: relative position error {}",
+            relative - 0.01 * omega.cos()
+        );
         let momentum = world.state(0).velocity * 1e6 + world.state(1).velocity;
         assert!(momentum.norm() < 1e-9, "{integrator}: momentum {momentum}");
     }
@@ -299,7 +329,13 @@ fn mass_ratio_of_a_million() {
 /// by 32 % (bounded: ω = I⁻¹Rᵀ L); dopri45 adapts and keeps the energy within 4e-5.
 #[test]
 fn rotation_step_near_one_radian() {
-    for (integrator, energy_tolerance) in [("leapfrog", None), ("leapfrog2", None), ("splitting", Some(6e-3)), ("rk4", Some(0.4)), ("dopri45", Some(1e-4))] {
+    for (integrator, energy_tolerance) in [
+        ("leapfrog", None),
+        ("leapfrog2", None),
+        ("splitting", Some(6e-3)),
+        ("rk4", Some(0.4)),
+        ("dopri45", Some(1e-4)),
+    ] {
         let mut world = scene(&format!(
             "Scene(gravity: (0, 0, 0), dt: 0.1, integrator: {integrator}, bodies: [Body(name: \"b\",
                 master: Node(position: (0, 0, 0), mass: 1.0, inertia: Inertia(xx: 1, yy: 2, zz: 3)),
@@ -311,7 +347,10 @@ fn rotation_step_near_one_radian() {
             let limit = tether_physics::stability::binding(&world.limits()).unwrap();
             assert_relative_eq!(limit.dt * spin, 1.0, max_relative = 1e-12);
         }
-        let momentum = |w: &World| (w.state(0).orientation * w.bodies()[0].principal_moments().component_mul(&w.state(0).angular_velocity)).norm();
+        let momentum = |w: &World| {
+            (w.state(0).orientation * w.bodies()[0].principal_moments().component_mul(&w.state(0).angular_velocity))
+                .norm()
+        };
         let (l0, e0) = (momentum(&world), world.energy().kinetic);
         let (mut worst_l, mut worst_e) = (0.0_f64, 0.0_f64);
         let outcome = (0..600).try_for_each(|_| {
@@ -321,7 +360,11 @@ fn rotation_step_near_one_radian() {
             Ok::<(), tether_physics::world::StepError>(())
         });
         match energy_tolerance {
-            None => assert!(outcome.is_err() && world.time() < 3.2, "{integrator} should blow up: {outcome:?} at {}", world.time()),
+            None => assert!(
+                outcome.is_err() && world.time() < 3.2,
+                "{integrator} should blow up: {outcome:?} at {}",
+                world.time()
+            ),
             Some(tolerance) => {
                 assert!(outcome.is_ok(), "{integrator}: {outcome:?}");
                 assert!(worst_l < 1e-12, "{integrator}: |L| error {worst_l}");
@@ -338,13 +381,29 @@ fn adaptive_settings_are_checked_where_they_are_written() {
     let parse = |text: &str| tether_scene::parse(text, std::path::Path::new("bad.ron"));
     let body = "bodies: [Body(name: \"b\", master: Node(position: (0, 0, 0), mass: 1.0, inertia: Inertia(xx: 1, yy: 1, zz: 1)), shape: Sphere(radius: 0.1))]";
     let error = |text: String| parse(&text).err().map(|e| e.to_string()).unwrap_or_default();
-    assert_eq!(error(format!("Scene(dt: 0.01, integrator: dopri45,\n  adaptive: (rtol: 0.0), {body})")), "bad.ron:2:14: adaptive rtol must be > 0 and < 1, got 0");
-    assert_eq!(error(format!("Scene(dt: 0.01, integrator: dopri45,\n  adaptive: (atol: -1e-9), {body})")), "bad.ron:2:14: adaptive atol must be > 0, got -0.000000001");
-    assert_eq!(error(format!("Scene(dt: 0.01, integrator: dopri45,\n  adaptive: (max_step: 0), {body})")), "bad.ron:2:14: adaptive max_step must be > 0 s, got 0");
-    assert!(error(format!("Scene(dt: 0.01, adaptive: (rtl: 1e-6), {body})")).starts_with("bad.ron:1:"), "unknown field");
+    assert_eq!(
+        error(format!("Scene(dt: 0.01, integrator: dopri45,\n  adaptive: (rtol: 0.0), {body})")),
+        "bad.ron:2:14: adaptive rtol must be > 0 and < 1, got 0"
+    );
+    assert_eq!(
+        error(format!("Scene(dt: 0.01, integrator: dopri45,\n  adaptive: (atol: -1e-9), {body})")),
+        "bad.ron:2:14: adaptive atol must be > 0, got -0.000000001"
+    );
+    assert_eq!(
+        error(format!("Scene(dt: 0.01, integrator: dopri45,\n  adaptive: (max_step: 0), {body})")),
+        "bad.ron:2:14: adaptive max_step must be > 0 s, got 0"
+    );
+    assert!(
+        error(format!("Scene(dt: 0.01, adaptive: (rtl: 1e-6), {body})")).starts_with("bad.ron:1:"),
+        "unknown field"
+    );
     assert!(error(format!("Scene(dt: 0.01, integrator: rk5, {body})")).starts_with("bad.ron:1:"), "unknown integrator");
     let scene = parse(&format!("Scene(dt: 0.01, integrator: rk4, adaptive: (rtol: 1e-8), {body})")).unwrap();
     assert_eq!(scene.warnings, ["the adaptive settings are for integrator dopri45; rk4 ignores them"]);
-    let scene = parse(&format!("Scene(dt: 0.01, integrator: dopri45, adaptive: (rtol: 1e-8, max_step: 1e-3), {body})")).unwrap();
-    assert_eq!((scene.world.tolerances().rtol, scene.world.tolerances().atol, scene.world.tolerances().max_step), (1e-8, 1e-9, Some(1e-3)));
+    let scene = parse(&format!("Scene(dt: 0.01, integrator: dopri45, adaptive: (rtol: 1e-8, max_step: 1e-3), {body})"))
+        .unwrap();
+    assert_eq!(
+        (scene.world.tolerances().rtol, scene.world.tolerances().atol, scene.world.tolerances().max_step),
+        (1e-8, 1e-9, Some(1e-3))
+    );
 }

@@ -33,7 +33,9 @@ fn a_stiffer_spring_swapped_in_continues_the_motion_at_the_new_frequency() {
     let world = &mut loaded.world;
     let (t0, state) = (world.time(), world.state(0));
     let before = world.energy();
-    if let scene::file::CouplingDef::SpringDamper { law: scene::file::LawDef::Linear { stiffness, .. }, .. } = &mut loaded.file.couplings[0] {
+    if let scene::file::CouplingDef::SpringDamper { law: scene::file::LawDef::Linear { stiffness, .. }, .. } =
+        &mut loaded.file.couplings[0]
+    {
         *stiffness = 400.0;
     }
     let stiffer = build::coupling(&loaded.file, 0, &mut loaded.bodies).unwrap();
@@ -87,12 +89,37 @@ fn tuned_values_are_checked_by_the_scene_builder() {
 fn the_time_step_changed_while_running_keeps_the_motion() {
     let mut world = oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", 0.0, 1.01, 0.0, 1e-3).world;
     run_to(&mut world, 0.25);
-    world.set_timing(Timing { dt: 5e-4, integrator: Integrator::Leapfrog2, substeps: Substeps::Fixed(2), tolerances: Tolerances::default() }).unwrap();
+    world
+        .set_timing(Timing {
+            dt: 5e-4,
+            integrator: Integrator::Leapfrog2,
+            substeps: Substeps::Fixed(2),
+            tolerances: Tolerances::default(),
+        })
+        .unwrap();
     assert_eq!((world.dt(), world.substeps()), (5e-4, 2));
     run_to(&mut world, 1.0);
     let error = world.state(0).position.x - 1.0 - 0.01 * (10.0 * world.time()).cos();
     assert!(error.abs() < 1e-6, "error {error:e} m");
-    assert!(world.set_timing(Timing { dt: 0.0, integrator: Integrator::Leapfrog, substeps: Substeps::Fixed(1), tolerances: Tolerances::default() }).is_err());
-    assert!(world.set_timing(Timing { dt: 1e-3, integrator: Integrator::Leapfrog, substeps: Substeps::Fixed(0), tolerances: Tolerances::default() }).is_err());
+    assert!(
+        world
+            .set_timing(Timing {
+                dt: 0.0,
+                integrator: Integrator::Leapfrog,
+                substeps: Substeps::Fixed(1),
+                tolerances: Tolerances::default()
+            })
+            .is_err()
+    );
+    assert!(
+        world
+            .set_timing(Timing {
+                dt: 1e-3,
+                integrator: Integrator::Leapfrog,
+                substeps: Substeps::Fixed(0),
+                tolerances: Tolerances::default()
+            })
+            .is_err()
+    );
     assert_eq!(world.dt(), 5e-4, "a refused setting leaves the world as it was");
 }

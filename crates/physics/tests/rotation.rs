@@ -77,7 +77,11 @@ fn intermediate_axis_flip_other_integrators() {
     for (integrator, tolerance) in [("splitting", 1e-6), ("rk4", 2e-7), ("dopri45", 2e-7)] {
         let times = flips(integrator, 1e-3, 25.0);
         assert!((times[0] - first).abs() < tolerance, "{integrator}: first flip {}", times[0]);
-        assert!((times[1] - times[0] - half_period).abs() < tolerance, "{integrator}: half period {}", times[1] - times[0]);
+        assert!(
+            (times[1] - times[0] - half_period).abs() < tolerance,
+            "{integrator}: half period {}",
+            times[1] - times[0]
+        );
     }
 }
 
@@ -101,7 +105,9 @@ fn thin_pole_extreme() {
     // Measured: |L| of the splitting within 1.4e-14, of RK4 9.6e-12 (L is exact, its round trip
     // through ω is not), of dopri45 1.4e-11; energy deviation leapfrog2 1.2e-5, splitting
     // 1.6e-8, rk4 1.3e-11, dopri45 2.6e-11.
-    for (integrator, momentum_tolerance, energy_tolerance) in [("leapfrog2", 1e-5, 3e-5), ("splitting", 1e-13, 1e-7), ("rk4", 1e-10, 1e-10), ("dopri45", 1e-10, 1e-8)] {
+    for (integrator, momentum_tolerance, energy_tolerance) in
+        [("leapfrog2", 1e-5, 3e-5), ("splitting", 1e-13, 1e-7), ("rk4", 1e-10, 1e-10), ("dopri45", 1e-10, 1e-8)]
+    {
         let (growth, energy) = run(integrator);
         assert_relative_eq!(growth, 1.0, epsilon = momentum_tolerance);
         assert!(energy < energy_tolerance, "{integrator}: energy deviation {energy}");
@@ -151,7 +157,9 @@ fn symmetric_top(integrator: &str) -> (f64, f64, f64) {
 /// rates are averaged over 10 s, so they carry the azimuth's start and end offsets (1e-6).
 #[test]
 fn symmetric_top_precession() {
-    for (integrator, cone_tolerance, rate_tolerance) in [("leapfrog2", 1e-5, 1e-6), ("splitting", 1e-5, 1e-6), ("rk4", 1e-9, 1e-6), ("dopri45", 1e-8, 1e-6)] {
+    for (integrator, cone_tolerance, rate_tolerance) in
+        [("leapfrog2", 1e-5, 1e-6), ("splitting", 1e-5, 1e-6), ("rk4", 1e-9, 1e-6), ("dopri45", 1e-8, 1e-6)]
+    {
         let (cone_error, body_rate, world_rate) = symmetric_top(integrator);
         assert!(cone_error < cone_tolerance, "{integrator}: cone angle error {cone_error}");
         assert_relative_eq!(body_rate, -1.5, max_relative = rate_tolerance);
@@ -251,13 +259,20 @@ fn top_axis(world: &World) -> (f64, f64) {
 fn heavy_top_slow_precession() {
     let (theta, spin, precession): (f64, f64, f64) = (30f64.to_radians(), 200.0, 2.00554155917);
     let (mass, arm, i3, i_perp): (f64, f64, f64, f64) = (0.5, 0.05, 6.25e-4, 3.125e-4 + 0.5 * 0.05 * 0.05);
-    let root = (i3 * spin - ((i3 * spin).powi(2) - 4.0 * i_perp * theta.cos() * mass * 9.81 * arm).sqrt()) / (2.0 * i_perp * theta.cos());
+    let root = (i3 * spin - ((i3 * spin).powi(2) - 4.0 * i_perp * theta.cos() * mass * 9.81 * arm).sqrt())
+        / (2.0 * i_perp * theta.cos());
     assert_relative_eq!(root, precession, max_relative = 1e-10);
     // Measured rate errors: leapfrog 1.6e-3 (its lagged gyroscopic term is first order in
     // ω dt), leapfrog2 6.8e-6, the others 4.4e-6 (the penalty pivot stretches by m g/k ≈ 5e-7 m
     // of 0.05 m); tilt within 1e-5 rad. The leapfrogs run at dt = 2e-5: at 1e-4 the leapfrog2's
     // predicted ω(t), fed by the stiff pivot's moment, diverges (see its module docs).
-    for (integrator, dt, tolerance) in [("leapfrog", 2e-5, 3e-3), ("leapfrog2", 2e-5, 2e-5), ("splitting", 1e-4, 2e-5), ("rk4", 1e-4, 2e-5), ("dopri45", 1e-4, 2e-5)] {
+    for (integrator, dt, tolerance) in [
+        ("leapfrog", 2e-5, 3e-3),
+        ("leapfrog2", 2e-5, 2e-5),
+        ("splitting", 1e-4, 2e-5),
+        ("rk4", 1e-4, 2e-5),
+        ("dopri45", 1e-4, 2e-5),
+    ] {
         let mut world = heavy_top(integrator, theta, spin, precession, dt);
         let (mut azimuth, mut previous, mut tilt_error) = (0.0, top_axis(&world).1, 0.0_f64);
         while world.time() < 1.0 - 0.5 * dt {
@@ -283,11 +298,12 @@ fn heavy_top_sleeping_threshold() {
     for integrator in ["splitting", "rk4"] {
         let largest_tilt = |factor: f64| {
             let mut world = heavy_top(integrator, 0.02, factor * threshold, 0.0, 1e-4);
-            (0..30_000).map(|_| {
-                world.step().unwrap();
-                top_axis(&world).0
-            })
-            .fold(0.0_f64, f64::max)
+            (0..30_000)
+                .map(|_| {
+                    world.step().unwrap();
+                    top_axis(&world).0
+                })
+                .fold(0.0_f64, f64::max)
         };
         let (above, below) = (largest_tilt(1.05), largest_tilt(0.95));
         assert!(above < 0.1, "{integrator}: a sleeping top tilted to {above} rad");

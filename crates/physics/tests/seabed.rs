@@ -6,8 +6,8 @@
 use approx::assert_relative_eq;
 use nalgebra::{Matrix3, Vector3};
 use proptest::prelude::*;
-use tether_physics::coupling::catenary::{Catenary, LineState};
 use tether_physics::coupling::Endpoint;
+use tether_physics::coupling::catenary::{Catenary, LineState};
 use tether_physics::seabed::Seabed;
 use tether_physics::surroundings::Surroundings;
 
@@ -16,7 +16,11 @@ const G: f64 = 9.80665;
 
 /// Surroundings with a seabed at `elevation` [m] with line friction `friction`, dry.
 fn on_seabed(elevation: f64, friction: f64) -> Surroundings {
-    Surroundings { gravity: V::new(0.0, 0.0, -G), fluid_density: 0.0, seabed: Some(Seabed::new(elevation, friction).unwrap()) }
+    Surroundings {
+        gravity: V::new(0.0, 0.0, -G),
+        fluid_density: 0.0,
+        seabed: Some(Seabed::new(elevation, friction).unwrap()),
+    }
 }
 
 /// A line of submerged weight `w` [N/m], unstretched `length` [m] and axial stiffness `ea` [N].
@@ -55,7 +59,12 @@ fn moorpy_reference_values() {
 #[derive(Debug, Clone, Copy)]
 enum Reference {
     /// `H`, `V_F`, `L_B`, `H_A` [N, N, m, N].
-    Grounded { h: f64, v: f64, lb: f64, anchor: f64 },
+    Grounded {
+        h: f64,
+        v: f64,
+        lb: f64,
+        anchor: f64,
+    },
     Lifted,
 }
 
@@ -100,7 +109,9 @@ fn reference(x: f64, z: f64, w: f64, length: f64, ea: f64, cb: f64) -> Reference
 
 #[test]
 fn the_reference_reproduces_moorpy() {
-    let Reference::Grounded { h, v, lb, .. } = reference(400.0, 200.0, 800.0, 500.0, 7.51e12, 0.0) else { panic!("grounded") };
+    let Reference::Grounded { h, v, lb, .. } = reference(400.0, 200.0, 800.0, 500.0, 7.51e12, 0.0) else {
+        panic!("grounded")
+    };
     assert_relative_eq!(h, 96_643.45, max_relative = 1e-6);
     assert_relative_eq!(v, 237_751.77, max_relative = 1e-6);
     assert_relative_eq!(lb, 202.810, epsilon = 5e-4);
@@ -286,7 +297,13 @@ fn end_stiffness_matches_finite_differences() {
                     continue;
                 }
                 let e = V::ith(axis, d);
-                let moved = |sign: f64| if j == 0 { solve(&l, p1 + e * sign, p2, &surroundings) } else { solve(&l, p1, p2 + e * sign, &surroundings) };
+                let moved = |sign: f64| {
+                    if j == 0 {
+                        solve(&l, p1 + e * sign, p2, &surroundings)
+                    } else {
+                        solve(&l, p1, p2 + e * sign, &surroundings)
+                    }
+                };
                 let (plus, minus) = (moved(1.0).end_forces(), moved(-1.0).end_forces());
                 fd[0].set_column(axis, &((plus.0 - minus.0) / (2.0 * d)));
                 fd[1].set_column(axis, &((plus.1 - minus.1) / (2.0 * d)));
@@ -297,7 +314,13 @@ fn end_stiffness_matches_finite_differences() {
                     analytic.set_column(2, &V::zeros());
                 }
                 let scale = fd[i].norm().max(blocks[i][j].norm()).max(1e-9);
-                assert!((analytic - fd[i]).norm() <= 1e-5 * scale, "∂f{}/∂p{} with C_B = {cb}:\n{analytic}\nvs\n{}", i + 1, j + 1, fd[i]);
+                assert!(
+                    (analytic - fd[i]).norm() <= 1e-5 * scale,
+                    "∂f{}/∂p{} with C_B = {cb}:\n{analytic}\nvs\n{}",
+                    i + 1,
+                    j + 1,
+                    fd[i]
+                );
             }
         }
     }
@@ -345,12 +368,14 @@ fn continuous_across_the_lift_off_and_the_heap() {
 /// that weight; a line lighter than the water it displaces arches upward.
 #[test]
 fn submerged_weight_and_a_buoyant_line() {
-    let chain = Catenary::new(Endpoint::World(V::zeros()), Endpoint::World(V::zeros()), 100.0, 50.0, 1e6).with_displaced_area(0.0127);
+    let chain = Catenary::new(Endpoint::World(V::zeros()), Endpoint::World(V::zeros()), 100.0, 50.0, 1e6)
+        .with_displaced_area(0.0127);
     let water = Surroundings { gravity: V::new(0.0, 0.0, -G), fluid_density: 1025.0, seabed: None };
     let s = chain.solve(&V::zeros(), &V::new(40.0, 0.0, 10.0), &water, None).unwrap();
     let (f1, f2) = s.end_forces();
     assert_relative_eq!(f1 + f2, V::new(0.0, 0.0, -(100.0 - 1025.0 * 0.0127) * G * 50.0), max_relative = 1e-10);
-    let float = Catenary::new(Endpoint::World(V::zeros()), Endpoint::World(V::zeros()), 5.0, 50.0, 1e6).with_displaced_area(0.01);
+    let float = Catenary::new(Endpoint::World(V::zeros()), Endpoint::World(V::zeros()), 5.0, 50.0, 1e6)
+        .with_displaced_area(0.01);
     let arch = float.solve(&V::zeros(), &V::new(40.0, 0.0, 0.0), &water, None).unwrap();
     let (f1, f2) = arch.end_forces();
     assert_relative_eq!(f1 + f2, V::new(0.0, 0.0, (1025.0 * 0.01 - 5.0) * G * 50.0), max_relative = 1e-10);

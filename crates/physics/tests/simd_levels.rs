@@ -78,7 +78,8 @@ fn state_sets(system: &System) -> Vec<Vec<BodyState>> {
                 // Beside the crate, on the ground.
                 states[ball].position = Vec3::new(0.45 + 0.01 * numbers.next(), 0.0, 0.098 + 2e-3 * numbers.next());
             } else {
-                states[ball].position += Vec3::new(0.05 * numbers.next(), 0.05 * numbers.next(), -3e-3 + 1e-3 * numbers.next());
+                states[ball].position +=
+                    Vec3::new(0.05 * numbers.next(), 0.05 * numbers.next(), -3e-3 + 1e-3 * numbers.next());
             }
             states[block].position += numbers.vector(0.2);
             for state in &mut states {
@@ -133,10 +134,17 @@ fn every_build_of_the_couplings_stage_gives_the_portable_forces() {
     for level in Level::available().into_iter().filter(|&l| l != Level::Portable) {
         for (k, (built, reference)) in evaluations(&system, level, &sets).iter().zip(&portable).enumerate() {
             for (i, (a, b)) in built.forces().iter().zip(reference.forces()).enumerate() {
-                assert!(same_record(a, b), "{level:?}, state set {k}, coupling \"{}\": {a:?} vs {b:?}", system.couplings()[i].name);
+                assert!(
+                    same_record(a, b),
+                    "{level:?}, state set {k}, coupling \"{}\": {a:?} vs {b:?}",
+                    system.couplings()[i].name
+                );
             }
             for (i, (a, b)) in built.loads().iter().zip(reference.loads()).enumerate() {
-                assert!(close_vectors(&a.force, &b.force) && close_vectors(&a.moment, &b.moment), "{level:?}, state set {k}, body {i}: {a:?} vs {b:?}");
+                assert!(
+                    close_vectors(&a.force, &b.force) && close_vectors(&a.moment, &b.moment),
+                    "{level:?}, state set {k}, body {i}: {a:?} vs {b:?}"
+                );
             }
         }
     }
@@ -151,13 +159,21 @@ fn check_coverage(system: &System, evaluations: &[Evaluation]) {
         let CouplingKind::Contact(contact) = &coupling.kind else { continue };
         for (k, evaluation) in evaluations.iter().enumerate() {
             let totals = contact.totals(evaluation.frames());
-            assert!(totals.faces == 0 || totals.friction > 0.0, "contact \"{}\" in range without friction in set {k}", coupling.name);
+            assert!(
+                totals.faces == 0 || totals.friction > 0.0,
+                "contact \"{}\" in range without friction in set {k}",
+                coupling.name
+            );
             if coupling.name == "crate_ground" {
                 let frame = &evaluation.frames()[contact.body];
                 let bottom = contact.boundary.faces().iter().filter(|f| (frame.rotation * f.normal).z < -0.99);
                 let heights: Vec<f64> = bottom.map(|f| frame.position.z + (frame.rotation * f.centroid).z).collect();
                 let in_range = heights.iter().filter(|&&z| z < contact.law.range).count();
-                assert!(in_range > 0 && in_range < heights.len(), "set {k}: {in_range} of the {} bottom faces in range", heights.len());
+                assert!(
+                    in_range > 0 && in_range < heights.len(),
+                    "set {k}: {in_range} of the {} bottom faces in range",
+                    heights.len()
+                );
             }
         }
     }
@@ -180,7 +196,9 @@ fn every_build_runs_the_portable_motion() {
     let portable = run(Level::Portable);
     for level in Level::available().into_iter().filter(|&l| l != Level::Portable) {
         for (i, (a, b)) in run(level).iter().zip(&portable).enumerate() {
-            let same = close_vectors(&a.position, &b.position) && close_vectors(&a.velocity, &b.velocity) && close_vectors(&a.angular_velocity, &b.angular_velocity);
+            let same = close_vectors(&a.position, &b.position)
+                && close_vectors(&a.velocity, &b.velocity)
+                && close_vectors(&a.angular_velocity, &b.angular_velocity);
             assert!(same && a.orientation.angle_to(&b.orientation) <= 1e-12, "{level:?}, body {i}: {a:?} vs {b:?}");
         }
     }

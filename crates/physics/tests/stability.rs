@@ -30,13 +30,16 @@ fn leapfrog_thresholds_match_the_estimator_within_one_percent() {
         let _ = expected;
         assert_relative_eq!(limit.dt, 2.0 * ((1.0 + zeta * zeta).sqrt() - zeta) / omega, max_relative = 1e-12);
 
-        let mut below = oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", damping, 1.01, 0.0, 0.99 * limit.dt).world;
+        let mut below =
+            oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", damping, 1.01, 0.0, 0.99 * limit.dt).world;
         assert_eq!(steps_to_failure(&mut below, 20_000), None, "ζ = {zeta} at 0.99 of the limit");
         let amplitude = (below.state(0).position.x - 1.0).abs();
         assert!(amplitude <= 0.0101, "bounded: {amplitude}");
 
-        let mut above = oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", damping, 1.01, 0.0, 1.01 * limit.dt).world;
-        let (_, error) = steps_to_failure(&mut above, 20_000).unwrap_or_else(|| panic!("ζ = {zeta} at 1.01 of the limit did not diverge"));
+        let mut above =
+            oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", damping, 1.01, 0.0, 1.01 * limit.dt).world;
+        let (_, error) = steps_to_failure(&mut above, 20_000)
+            .unwrap_or_else(|| panic!("ζ = {zeta} at 1.01 of the limit did not diverge"));
         let message = error.to_string();
         assert!(matches!(error, StepError::Diverged { ref body, .. } if body == "m"), "{message}");
         assert!(message.contains("set by coupling \"s\""), "{message}");
@@ -117,7 +120,9 @@ fn rk4_gain(x: f64, y: f64) -> f64 {
 #[test]
 fn rk4_thresholds_match_the_estimator_within_one_percent() {
     let omega: f64 = 10.0;
-    for (zeta, expected, below_factor) in [(0.0_f64, 0.2828427, 0.99), (0.1, 0.295085, 0.99), (0.5, 0.262254, 0.99), (1.0, 0.2785294, 0.8)] {
+    for (zeta, expected, below_factor) in
+        [(0.0_f64, 0.2828427, 0.99), (0.1, 0.295085, 0.99), (0.5, 0.262254, 0.99), (1.0, 0.2785294, 0.8)]
+    {
         let damping = 2.0 * zeta * omega;
         let scene = |dt: f64| {
             common::scene(&format!(
@@ -138,7 +143,8 @@ fn rk4_thresholds_match_the_estimator_within_one_percent() {
         assert_eq!(steps_to_failure(&mut below, 20_000), None, "ζ = {zeta} at {below_factor} of the limit");
         assert!((below.state(0).position.x - 1.0).abs() <= 0.0101);
         let mut above = scene(1.01 * limit.dt);
-        let (_, error) = steps_to_failure(&mut above, 20_000).unwrap_or_else(|| panic!("ζ = {zeta} at 1.01 of the limit did not diverge"));
+        let (_, error) = steps_to_failure(&mut above, 20_000)
+            .unwrap_or_else(|| panic!("ζ = {zeta} at 1.01 of the limit did not diverge"));
         assert!(error.to_string().contains("set by coupling \"s\""), "{error}");
     }
 }
@@ -194,7 +200,12 @@ fn auto_substeps_follow_the_integrator() {
             // x = 0.01 cos(10 t) at t = 10 s; every world step ends exactly on its boundary.
             assert_relative_eq!(world.state(0).position.x - 1.0, 0.01 * 100f64.cos(), epsilon = 1e-8);
             assert_eq!(world.time(), 10.0);
-            assert!(world.integrator_steps() > 20 && world.rejected_steps() < world.integrator_steps(), "{} / {}", world.integrator_steps(), world.rejected_steps());
+            assert!(
+                world.integrator_steps() > 20 && world.rejected_steps() < world.integrator_steps(),
+                "{} / {}",
+                world.integrator_steps(),
+                world.rejected_steps()
+            );
         }
     }
 }
@@ -226,7 +237,8 @@ fn catenary_threshold_matches_the_estimator_within_one_percent() {
     // The tangent stiffness comes from the solver's vertical closed form: exact to round-off.
     assert_relative_eq!(limit.dt, 2.0 / (stiffness / mass).sqrt(), max_relative = 1e-12);
 
-    let (swing, _) = vertical_swing(&mut scene(0.99 * limit.dt), 20_000, rest).unwrap_or_else(|e| panic!("0.99 of the limit: {e}"));
+    let (swing, _) =
+        vertical_swing(&mut scene(0.99 * limit.dt), 20_000, rest).unwrap_or_else(|e| panic!("0.99 of the limit: {e}"));
     // Started at rest 1 mm off, the leapfrog on a linear oscillator gives x_n = x0 cos(nθ),
     // cos θ = 1 − (ωh)²/2, exactly: the swing stays 1 mm (the taut line is linear; the margin is
     // round-off).
@@ -288,7 +300,8 @@ fn contact_threshold_matches_the_estimator_within_one_percent() {
         assert_relative_eq!(limit.dt, expected, max_relative = 5e-5);
         assert_relative_eq!(limit.dt, 2.0 * ((1.0 + zeta * zeta).sqrt() - zeta) / omega, max_relative = 1e-12);
 
-        let (swing, late) = vertical_swing(&mut scene(0.99 * limit.dt), 20_000, rest).unwrap_or_else(|e| panic!("ζ = {zeta} at 0.99 of the limit: {e}"));
+        let (swing, late) = vertical_swing(&mut scene(0.99 * limit.dt), 20_000, rest)
+            .unwrap_or_else(|e| panic!("ζ = {zeta} at 0.99 of the limit: {e}"));
         // Undamped, x_n = x0 cos(nθ) exactly (see the catenary above); damped, it only decays.
         assert!(swing <= start * (1.0 + 1e-9), "ζ = {zeta} at 0.99: bounded: {swing}");
         if zeta > 0.0 {
@@ -296,9 +309,13 @@ fn contact_threshold_matches_the_estimator_within_one_percent() {
         }
 
         match vertical_swing(&mut scene(1.01 * limit.dt), 20_000, rest) {
-            Err(error) => assert!(zeta < 0.2 && error.to_string().contains("set by coupling \"ground\""), "ζ = {zeta}: {error}"),
+            Err(error) => {
+                assert!(zeta < 0.2 && error.to_string().contains("set by coupling \"ground\""), "ζ = {zeta}: {error}")
+            }
             // Grown from round-off to most of the start offset, and held there.
-            Ok((_, late)) => assert!(zeta > 0.2 && late > 0.8 * start, "ζ = {zeta} at 1.01 of the limit: late swing {late}"),
+            Ok((_, late)) => {
+                assert!(zeta > 0.2 && late > 0.8 * start, "ζ = {zeta} at 1.01 of the limit: late swing {late}")
+            }
         }
     }
 }

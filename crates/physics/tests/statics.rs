@@ -46,7 +46,11 @@ fn finite_differences(system: &System, states: &[BodyState]) -> DMatrix<f64> {
     let loads = |states: &[BodyState]| {
         let mut evaluation = Evaluation::new(n, system.couplings());
         system.evaluate(states, &mut evaluation, 0.0).unwrap();
-        evaluation.loads().iter().flat_map(|l| [l.force.x, l.force.y, l.force.z, l.moment.x, l.moment.y, l.moment.z]).collect::<Vec<f64>>()
+        evaluation
+            .loads()
+            .iter()
+            .flat_map(|l| [l.force.x, l.force.y, l.force.z, l.moment.x, l.moment.y, l.moment.z])
+            .collect::<Vec<f64>>()
     };
     let step = 1e-6;
     for body in 0..n {
@@ -72,7 +76,11 @@ fn assert_stiffness_matches(system: &System, states: &[BodyState], what: &str) {
     let fd = finite_differences(system, states);
     // Central differences of 1e-6 on forces solved to 1e-12 of the line: about 1e-6 of K.
     let error = (&analytic - &fd).norm();
-    assert!(error <= 1e-5 * fd.norm(), "{what}: |K − K_fd| = {error:.3e} of |K_fd| = {:.3e}\nanalytic {analytic:.4e}\nfd {fd:.4e}", fd.norm());
+    assert!(
+        error <= 1e-5 * fd.norm(),
+        "{what}: |K − K_fd| = {error:.3e} of |K_fd| = {:.3e}\nanalytic {analytic:.4e}\nfd {fd:.4e}",
+        fd.norm()
+    );
 }
 
 #[test]
@@ -147,7 +155,12 @@ fn the_moored_buoy_settles_where_the_static_solve_says() {
     }
     let settled = world.state(0);
     assert!(settled.velocity.norm() < 1e-4, "still moving at {} m/s", settled.velocity.norm());
-    assert!((settled.position - eq.states[0].position).norm() < 1e-6, "settled at {:?}, equilibrium {:?}", settled.position, eq.states[0].position);
+    assert!(
+        (settled.position - eq.states[0].position).norm() < 1e-6,
+        "settled at {:?}, equilibrium {:?}",
+        settled.position,
+        eq.states[0].position
+    );
 }
 
 /// A body nothing holds up, and a cart on rails down a slope, have no equilibrium: the error names the
@@ -171,7 +184,10 @@ fn an_unreachable_equilibrium_names_the_body_and_the_direction() {
     .clone();
     let error = equilibrium::solve(&sliding, sliding.initial_states(), &[], &Settings::default()).unwrap_err();
     let message = error.to_string();
-    assert!(message.contains("body \"cart\" has no restoring force in x") && message.contains("1.5000e1 N"), "{message}");
+    assert!(
+        message.contains("body \"cart\" has no restoring force in x") && message.contains("1.5000e1 N"),
+        "{message}"
+    );
 }
 
 /// A body held at offsets along x from equilibrium: the curve starts at zero load with the slope

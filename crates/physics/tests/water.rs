@@ -105,7 +105,12 @@ fn metacentric_height_and_righting_arm_from_the_static_moment() {
     assert_relative_eq!(gz(phi), expected, max_relative = 1e-9);
     assert!((expected - 0.85831).abs() < 5e-6, "{expected}");
     // The hydrostatics `check` prints agree.
-    let statics = Hydrostatics::at(&world.system().water().expect("water").floating[0].hull, &Vec3::zeros(), &world.frames()[0].rotation, 0.0);
+    let statics = Hydrostatics::at(
+        &world.system().water().expect("water").floating[0].hull,
+        &Vec3::zeros(),
+        &world.frames()[0].rotation,
+        0.0,
+    );
     assert_relative_eq!(statics.metacentric_heights(0.0)[0], gm, max_relative = 1e-12);
 }
 
@@ -115,7 +120,8 @@ fn metacentric_height_and_righting_arm_from_the_static_moment() {
 #[test]
 fn free_heave_period_of_the_box() {
     let critical = 2.0 * (RHO * G * 200.0 * 0.5 * RHO * 800.0).sqrt();
-    let mut world = floating_box(0.1, "", &format!("linear_damping: (0.0, 0.0, {:e})", 0.005 * critical), "leapfrog", 0.005);
+    let mut world =
+        floating_box(0.1, "", &format!("linear_damping: (0.0, 0.0, {:e})", 0.005 * critical), "leapfrog", 0.005);
     let samples = run(&mut world, 18.0, |w| w.state(0).position.z);
     let expected = 2.0 * PI * (2.0 / G).sqrt();
     assert!((expected - 2.8375).abs() < 5e-5);
@@ -161,7 +167,8 @@ fn a_sphere_of_relative_density_a_quarter_floats_at_its_closed_form_draft() {
     let draft = |subdivisions: u32| {
         let (vertices, triangles) = tether_physics::mesh::primitives::icosphere(1.0, &Vec3::zeros(), subdivisions);
         let hull = Hull::new(vertices, triangles).expect("closed");
-        let z = equilibrium_height(&hull, &tether_physics::math::Mat3::identity(), 0.0, 0.0, 0.0, volume).expect("floats");
+        let z =
+            equilibrium_height(&hull, &tether_physics::math::Mat3::identity(), 0.0, 0.0, 0.0, volume).expect("floats");
         1.0 - z
     };
     let (d3, d4, d5) = (draft(3), draft(4), draft(5));
@@ -189,7 +196,15 @@ fn a_damped_sphere_comes_to_rest_at_its_hydrostatic_equilibrium() {
     }
     let floating = &world.system().water().expect("water").floating[0];
     let state = world.state(0);
-    let rest = equilibrium_height(&floating.hull, &world.frames()[0].rotation, 0.0, state.position.x, state.position.y, mass / RHO).expect("floats");
+    let rest = equilibrium_height(
+        &floating.hull,
+        &world.frames()[0].rotation,
+        0.0,
+        state.position.x,
+        state.position.y,
+        mass / RHO,
+    )
+    .expect("floats");
     assert!((state.position.z - rest).abs() < 1e-6, "{} vs {rest}", state.position.z);
     assert!((1.0 - rest - sphere_draft()).abs() < 0.01, "icosphere 3 within 1 % of the sphere's draft");
 }
@@ -217,7 +232,11 @@ fn every_integrator_solves_with_the_added_mass() {
         for _ in 0..100 {
             world.step().expect("stable");
         }
-        assert_relative_eq!(world.state(0).position.z + 20.0, 0.5 * expected * world.time().powi(2), max_relative = 1e-9);
+        assert_relative_eq!(
+            world.state(0).position.z + 20.0,
+            0.5 * expected * world.time().powi(2),
+            max_relative = 1e-9
+        );
         assert_relative_eq!(world.state(0).velocity.z, expected * world.time(), max_relative = 1e-9);
     }
 }
@@ -269,10 +288,15 @@ fn bodies_out_of_the_water_feel_nothing_and_under_it_their_volume() {
     assert_relative_eq!(water[1].submerged_volume, volume, max_relative = 1e-12);
     assert_eq!(water[1].wetted_fraction, 1.0);
     // Through the centroid of the hull's volume (Σ over the tetrahedra from G).
-    let centroid = hull.triangles().iter().map(|t| {
-        let [a, b, c] = t.map(|i| hull.vertices()[i as usize]);
-        (a + b + c) / 4.0 * (a.dot(&b.cross(&c)) / 6.0)
-    }).sum::<Vec3>() / volume;
+    let centroid = hull
+        .triangles()
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|i| hull.vertices()[i as usize]);
+            (a + b + c) / 4.0 * (a.dot(&b.cross(&c)) / 6.0)
+        })
+        .sum::<Vec3>()
+        / volume;
     let arm = world.frames()[1].rotation * centroid;
     assert_relative_eq!(water[1].pressure.moment, arm.cross(&water[1].pressure.force), epsilon = 1e-12 * buoyancy);
 }
@@ -290,7 +314,8 @@ fn a_small_buoy_heaves_with_a_long_wave() {
     .world;
     let samples = run(&mut world, 120.0, |w| w.state(0).position.z);
     let last: Vec<f64> = samples.iter().filter(|(t, _)| *t > 80.0).map(|(_, z)| *z).collect();
-    let amplitude = 0.5 * (last.iter().copied().fold(f64::MIN, f64::max) - last.iter().copied().fold(f64::MAX, f64::min));
+    let amplitude =
+        0.5 * (last.iter().copied().fold(f64::MIN, f64::max) - last.iter().copied().fold(f64::MAX, f64::min));
     assert_relative_eq!(amplitude / 0.5, 1.0, max_relative = 0.01);
 }
 
@@ -319,7 +344,8 @@ fn wave_forces_on_a_fixed_box_converge_at_second_order() {
         let force = water_at(world.system(), world.system().initial_states(), time)[0].pressure.force;
         let decay = ((k * z2).exp() - (k * z1).exp()) / k;
         let fx = -4.0 * RHO * G * a * b * decay * (k * l).sin() * (omega * time).sin();
-        let fz = 4.0 * RHO * G * a * b * -decay * (k * l).sin() * (omega * time).cos() + RHO * G * 2.0 * l * 2.0 * b * (z2 - z1);
+        let fz = 4.0 * RHO * G * a * b * -decay * (k * l).sin() * (omega * time).cos()
+            + RHO * G * 2.0 * l * 2.0 * b * (z2 - z1);
         (force - Vec3::new(fx, 0.0, fz)).norm()
     };
     let time = 1.3;
@@ -361,7 +387,11 @@ fn the_stable_time_step_includes_the_hydrostatic_stiffness() {
     let limit = world.limits().into_iter().find(|l| l.limiter == Limiter::Water(0)).expect("a water limit");
     let m = 0.5 * RHO * 800.0;
     let righting = RHO * G * 400.0 * (1.0 + 400.0 / 24.0 - 2.0);
-    let expected = oscillator_limit(Integrator::Leapfrog, righting, 0.0, 12.0 / (m * 116.0)).min(oscillator_limit(Integrator::Leapfrog, RHO * G * 200.0, 0.0, 1.0 / m));
+    let expected = oscillator_limit(Integrator::Leapfrog, righting, 0.0, 12.0 / (m * 116.0)).min(oscillator_limit(
+        Integrator::Leapfrog,
+        RHO * G * 200.0,
+        0.0,
+        1.0 / m,
+    ));
     assert_relative_eq!(limit.dt, expected, max_relative = 1e-9);
 }
-

@@ -15,9 +15,16 @@ use rerun::{ComponentDescriptor, RecordingStream, SerializedComponentColumn};
 use std::sync::Arc;
 
 /// A component column: row `r` holds the next `lengths[r]` values of `values`.
-pub(crate) fn column(descriptor: ComponentDescriptor, values: ArrayRef, lengths: impl IntoIterator<Item = usize>) -> SerializedComponentColumn {
+pub(crate) fn column(
+    descriptor: ComponentDescriptor,
+    values: ArrayRef,
+    lengths: impl IntoIterator<Item = usize>,
+) -> SerializedComponentColumn {
     let field = Field::new_list_field(values.data_type().clone(), true);
-    SerializedComponentColumn { list_array: ListArray::new(Arc::new(field), OffsetBuffer::from_lengths(lengths), values, None), descriptor }
+    SerializedComponentColumn {
+        list_array: ListArray::new(Arc::new(field), OffsetBuffer::from_lengths(lengths), values, None),
+        descriptor,
+    }
 }
 
 /// `N`-vectors of `f32` — positions, vectors, translations (`N` = 3), quaternions `[x, y, z, w]`
@@ -25,11 +32,19 @@ pub(crate) fn column(descriptor: ComponentDescriptor, values: ArrayRef, lengths:
 pub(crate) fn floats<const N: usize>(values: impl IntoIterator<Item = [f32; N]>) -> ArrayRef {
     let flat: Vec<f32> = values.into_iter().flatten().collect();
     // `flat` holds whole N-vectors, so the list array's length check cannot fail.
-    Arc::new(FixedSizeListArray::new(Arc::new(Field::new_list_field(DataType::Float32, false)), N as i32, Arc::new(Float32Array::from(flat)), None))
+    Arc::new(FixedSizeListArray::new(
+        Arc::new(Field::new_list_field(DataType::Float32, false)),
+        N as i32,
+        Arc::new(Float32Array::from(flat)),
+        None,
+    ))
 }
 
 /// Line strips (Rerun's `LineStrip3D`): strip `s` holds the next `points_per_strip[s]` points.
-pub(crate) fn strips(points: impl IntoIterator<Item = [f32; 3]>, points_per_strip: impl IntoIterator<Item = usize>) -> ArrayRef {
+pub(crate) fn strips(
+    points: impl IntoIterator<Item = [f32; 3]>,
+    points_per_strip: impl IntoIterator<Item = usize>,
+) -> ArrayRef {
     let points = floats(points);
     let field = Field::new_list_field(points.data_type().clone(), false);
     Arc::new(ListArray::new(Arc::new(field), OffsetBuffer::from_lengths(points_per_strip), points, None))
@@ -38,7 +53,11 @@ pub(crate) fn strips(points: impl IntoIterator<Item = [f32; 3]>, points_per_stri
 /// A plot's column (Rerun's `Scalars`): `series` values a row, row after row.
 pub(crate) fn plot(values: Vec<f64>, series: usize) -> SerializedComponentColumn {
     let rows = values.len() / series.max(1);
-    column(rerun::Scalars::descriptor_scalars(), Arc::new(Float64Array::from(values)), std::iter::repeat_n(series, rows))
+    column(
+        rerun::Scalars::descriptor_scalars(),
+        Arc::new(Float64Array::from(values)),
+        std::iter::repeat_n(series, rows),
+    )
 }
 
 /// Colours (Rerun's `Color`, RGBA packed in a `u32`).
@@ -52,12 +71,19 @@ pub(crate) fn colors(values: impl IntoIterator<Item = rerun::Color>) -> ArrayRef
 ///
 /// # Errors
 /// Columns whose lengths differ from the times'.
-pub(crate) fn send(stream: &RecordingStream, path: &str, times: [TimeColumn; 2], columns: Vec<SerializedComponentColumn>) -> Result<(), RecordError> {
+pub(crate) fn send(
+    stream: &RecordingStream,
+    path: &str,
+    times: [TimeColumn; 2],
+    columns: Vec<SerializedComponentColumn>,
+) -> Result<(), RecordError> {
     let first = RowId::new();
-    let row_ids: Vec<RowId> = std::iter::successors(Some(first), |row| Some(row.next())).take(times[0].num_rows()).collect();
+    let row_ids: Vec<RowId> =
+        std::iter::successors(Some(first), |row| Some(row.next())).take(times[0].num_rows()).collect();
     let timelines = times.into_iter().map(|time| (*time.timeline().name(), time)).collect();
     let components = columns.into_iter().map(|column| (column.descriptor, column.list_array)).collect();
-    let chunk = Chunk::new(ChunkId::new(), path.into(), Some(true), RowId::arrow_from_slice(&row_ids), timelines, components)?;
+    let chunk =
+        Chunk::new(ChunkId::new(), path.into(), Some(true), RowId::arrow_from_slice(&row_ids), timelines, components)?;
     stream.send_chunk(chunk);
     Ok(())
 }
@@ -102,10 +128,20 @@ mod tests {
         // Three rows of 2, 0 and 1 strips of 2, 3 and 2 points.
         let points = translations();
         let strip_lengths = [2, 3, 2];
-        let rerun_strips: Vec<Vec<[f32; 3]>> = vec![points[0..2].to_vec(), points[2..5].to_vec(), points[5..7].to_vec()];
-        let palette = [rerun::Color::from_rgb(1, 2, 3), rerun::Color::from_rgb(200, 100, 0), rerun::Color::from_rgb(9, 9, 9)];
-        let theirs: Vec<_> = rerun::LineStrips3D::update_fields().with_strips(rerun_strips).with_colors(palette).columns([2, 0, 1]).expect("serializable").collect();
-        let ours = [column(rerun::LineStrips3D::descriptor_strips(), strips(points, strip_lengths), [2, 0, 1]), column(rerun::LineStrips3D::descriptor_colors(), colors(palette), [2, 0, 1])];
+        let rerun_strips: Vec<Vec<[f32; 3]>> =
+            vec![points[0..2].to_vec(), points[2..5].to_vec(), points[5..7].to_vec()];
+        let palette =
+            [rerun::Color::from_rgb(1, 2, 3), rerun::Color::from_rgb(200, 100, 0), rerun::Color::from_rgb(9, 9, 9)];
+        let theirs: Vec<_> = rerun::LineStrips3D::update_fields()
+            .with_strips(rerun_strips)
+            .with_colors(palette)
+            .columns([2, 0, 1])
+            .expect("serializable")
+            .collect();
+        let ours = [
+            column(rerun::LineStrips3D::descriptor_strips(), strips(points, strip_lengths), [2, 0, 1]),
+            column(rerun::LineStrips3D::descriptor_colors(), colors(palette), [2, 0, 1]),
+        ];
         assert_same(&ours, &theirs);
     }
 

@@ -7,7 +7,10 @@
 use crate::paths;
 use rerun::RecordingStream;
 use rerun::blueprint::components::PanelState;
-use rerun::blueprint::{Blueprint, BlueprintActivation, BlueprintPanel, ContainerLike, Horizontal, SelectionPanel, Spatial3DView, TimePanel, TimeSeriesView, Vertical};
+use rerun::blueprint::{
+    Blueprint, BlueprintActivation, BlueprintPanel, ContainerLike, Horizontal, SelectionPanel, Spatial3DView,
+    TimePanel, TimeSeriesView, Vertical,
+};
 use tether_physics::coupling::CouplingKind;
 use tether_physics::world::World;
 
@@ -30,8 +33,16 @@ pub fn layout(world: &World) -> Blueprint {
     if let Some(stage) = world.system().water() {
         for floating in &stage.floating {
             let name = &world.bodies()[floating.body].name;
-            plots.push(TimeSeriesView::new(format!("{name}: elevation, heave [m]")).with_origin(paths::water_plot(name, "motion")).into());
-            plots.push(TimeSeriesView::new(format!("{name}: roll, pitch [deg]")).with_origin(paths::water_plot(name, "angles")).into());
+            plots.push(
+                TimeSeriesView::new(format!("{name}: elevation, heave [m]"))
+                    .with_origin(paths::water_plot(name, "motion"))
+                    .into(),
+            );
+            plots.push(
+                TimeSeriesView::new(format!("{name}: roll, pitch [deg]"))
+                    .with_origin(paths::water_plot(name, "angles"))
+                    .into(),
+            );
         }
     }
     let scene: ContainerLike = Spatial3DView::new("scene").with_origin(paths::WORLD).into();

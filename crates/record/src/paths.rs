@@ -98,7 +98,12 @@ pub fn coupling(coupling: &Coupling) -> String {
 /// The body an entity path (`world/bodies/<name>` or below, with or without a leading `/`)
 /// belongs to.
 pub fn body_of(path: &str) -> Option<&str> {
-    path.trim_start_matches('/').strip_prefix(BODIES)?.strip_prefix('/')?.split('/').next().filter(|name| !name.is_empty())
+    path.trim_start_matches('/')
+        .strip_prefix(BODIES)?
+        .strip_prefix('/')?
+        .split('/')
+        .next()
+        .filter(|name| !name.is_empty())
 }
 
 #[cfg(test)]

@@ -2,9 +2,14 @@
 //! simulation state. Every check that needs more than one value (names, references, mass
 //! properties, tables) is made here and reported with the item it concerns.
 
-use super::file::{AgainstDef, BodyDef, CouplingDef, EndDef, InertiaDef, LawDef, NodeDef, SceneFile, SeabedContactDef, SeabedDef, ShapeDef, SupportDef, Triple, VelocityDef};
+use super::file::{
+    AgainstDef, BodyDef, CouplingDef, EndDef, InertiaDef, LawDef, NodeDef, SceneFile, SeabedContactDef, SeabedDef,
+    ShapeDef, SupportDef, Triple, VelocityDef,
+};
 use super::mesh_file;
 use super::source::ItemKind;
+use std::path::Path;
+use std::sync::Arc;
 use tether_physics::body::{BodyState, PrescribedMotion, RigidBody, Shape, Support, VelocityProfile};
 use tether_physics::coupling::contact::{ContactLaw, Opposing, Plane};
 use tether_physics::coupling::{Catenary, Contact, Coupling, CouplingKind, ElasticLaw, Endpoint, SpringDamper};
@@ -16,8 +21,6 @@ use tether_physics::seabed::Seabed;
 use tether_physics::system::{System, SystemError};
 use tether_physics::water::Hull;
 use tether_physics::world::{StepError, World};
-use std::path::Path;
-use std::sync::Arc;
 
 mod water;
 pub use water::{hydro_spec, water_spec};
@@ -63,7 +66,11 @@ impl Bodies {
     pub fn build(file: &SceneFile, directory: &Path) -> Result<Self, Problem> {
         let mut bodies = Vec::with_capacity(file.bodies.len());
         for (index, def) in file.bodies.iter().enumerate() {
-            let at = ItemAt::new(ItemKind::Body, &def.name, file.bodies[..index].iter().filter(|b| b.name == def.name).count());
+            let at = ItemAt::new(
+                ItemKind::Body,
+                &def.name,
+                file.bodies[..index].iter().filter(|b| b.name == def.name).count(),
+            );
             check_name(&at, file.bodies[..index].iter().map(|b| b.name.as_str()))?;
             let in_water = file.water.is_some() && def.hydro.is_some();
             bodies.push(build_body(def, directory, &at, in_water)?);
@@ -83,7 +90,10 @@ pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
     let mut warnings = Vec::new();
     let timing = timing_with_warnings(file, &mut warnings)?;
     if !(file.duration > 0.0) {
-        return Err(Problem { place: Place::Top("duration"), message: format!("duration must be > 0 s, got {}", file.duration) });
+        return Err(Problem {
+            place: Place::Top("duration"),
+            message: format!("duration must be > 0 s, got {}", file.duration),
+        });
     }
     let mut bodies = Bodies::build(file, directory)?;
     let mut states = Vec::with_capacity(file.bodies.len());
@@ -110,14 +120,17 @@ pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
         None => None,
     };
     warn_about_lines(file, &mut warnings);
-    let system = System::new(vec3(file.gravity), bodies.bodies.clone(), couplings, states).map_err(|e| Problem { place: Place::Top("couplings"), message: e.to_string() })?;
+    let system = System::new(vec3(file.gravity), bodies.bodies.clone(), couplings, states)
+        .map_err(|e| Problem { place: Place::Top("couplings"), message: e.to_string() })?;
     let mut system = water::add_water(system, file, &bodies.bodies, &mut warnings)?;
     if let Some(seabed) = seabed {
         system = system.with_seabed(seabed).map_err(|e| system_problem(file, e))?;
     }
     // Names are unique by now: the coupling at fault is the first of its name.
     let world = World::new(system, timing).map_err(|e| match e {
-        StepError::Coupling { coupling, source, .. } => ItemAt::new(ItemKind::Coupling, &coupling, 0).at_name(format!("at t = 0: {source}")),
+        StepError::Coupling { coupling, source, .. } => {
+            ItemAt::new(ItemKind::Coupling, &coupling, 0).at_name(format!("at t = 0: {source}"))
+        }
         other => Problem { place: Place::Top("bodies"), message: other.to_string() },
     })?;
     Ok(Built { world, bodies, warnings })
@@ -131,15 +144,26 @@ fn initial_state(def: &BodyDef, body: &RigidBody) -> BodyState {
     let master = vec3(def.master.position);
     let spin = state.orientation * state.angular_velocity;
     let orientation = turn * state.orientation;
-    BodyState { position: master + turn * (state.position - master), orientation, angular_velocity: orientation.inverse_transform_vector(&spin), ..state }
+    BodyState {
+        position: master + turn * (state.position - master),
+        orientation,
+        angular_velocity: orientation.inverse_transform_vector(&spin),
+        ..state
+    }
 }
 
 /// The seabed section: its elevation and line friction, and a contact coupling
 /// `seabed.<body>` against its plane for each body listed (added to `couplings`).
-fn build_seabed(def: &SeabedDef, file: &SceneFile, built: &mut Bodies, couplings: &mut Vec<Coupling>) -> Result<Seabed, Problem> {
+fn build_seabed(
+    def: &SeabedDef,
+    file: &SceneFile,
+    built: &mut Bodies,
+    couplings: &mut Vec<Coupling>,
+) -> Result<Seabed, Problem> {
     let at = ItemAt::section("seabed");
     let elevation = seabed_elevation(def, file, &at)?;
-    let seabed = Seabed::new(elevation, at.require("line_friction", def.line_friction, Bound::NonNegative, "")?).map_err(|e| at.at_field("line_friction", e.to_string()))?;
+    let seabed = Seabed::new(elevation, at.require("line_friction", def.line_friction, Bound::NonNegative, "")?)
+        .map_err(|e| at.at_field("line_friction", e.to_string()))?;
     if let Some(contact) = &def.contact {
         couplings.extend(seabed_contacts(contact, &seabed, file, built, &at)?);
     }
@@ -152,10 +176,15 @@ fn build_seabed(def: &SeabedDef, file: &SceneFile, built: &mut Bodies, couplings
 fn seabed_elevation(def: &SeabedDef, file: &SceneFile, at: &ItemAt) -> Result<f64, Problem> {
     match (&file.water, def.elevation) {
         (None, Some(elevation)) => Ok(elevation),
-        (None, None) => Err(at.at_name("the seabed needs an elevation (z_b, m): the scene has no water depth to take it from".into())),
+        (None, None) => {
+            Err(at
+                .at_name("the seabed needs an elevation (z_b, m): the scene has no water depth to take it from".into()))
+        }
         (Some(water), declared) => {
             let Some(depth) = water.depth else {
-                return Err(at.at_name("the water is deep (no depth): give the water a depth, and the seabed lies there".into()));
+                return Err(at.at_name(
+                    "the water is deep (no depth): give the water a depth, and the seabed lies there".into(),
+                ));
             };
             let bottom = water.level - depth;
             match declared {
@@ -171,7 +200,13 @@ fn seabed_elevation(def: &SeabedDef, file: &SceneFile, at: &ItemAt) -> Result<f6
 }
 
 /// A contact coupling against the seabed's plane for each body of `def`.
-fn seabed_contacts(def: &SeabedContactDef, seabed: &Seabed, file: &SceneFile, built: &mut Bodies, at: &ItemAt) -> Result<Vec<Coupling>, Problem> {
+fn seabed_contacts(
+    def: &SeabedContactDef,
+    seabed: &Seabed,
+    file: &SceneFile,
+    built: &mut Bodies,
+    at: &ItemAt,
+) -> Result<Vec<Coupling>, Problem> {
     let law = build_contact_law(def.stiffness, def.damping, def.range, def.friction, def.friction_sharpness, at)?;
     let up = -vec3(file.gravity).try_normalize(0.0).unwrap_or_else(|| -Vec3::z());
     let plane = Plane { point: up * seabed.elevation, normal: up };
@@ -184,9 +219,15 @@ fn seabed_contacts(def: &SeabedContactDef, seabed: &Seabed, file: &SceneFile, bu
         }
         let coupling = format!("seabed.{name}");
         if file.couplings.iter().any(|c| c.name() == coupling) {
-            return Err(at.problem(Some("bodies"), Some(name), format!("the seabed contact of body {name:?} would be named {coupling:?}, which a coupling already is")));
+            return Err(at.problem(
+                Some("bodies"),
+                Some(name),
+                format!("the seabed contact of body {name:?} would be named {coupling:?}, which a coupling already is"),
+            ));
         }
-        let boundary = boundaries.mesh(bodies, body).map_err(|e| at.problem(Some("bodies"), Some(name), format!("boundary of body {name:?}: {e}")))?;
+        let boundary = boundaries
+            .mesh(bodies, body)
+            .map_err(|e| at.problem(Some("bodies"), Some(name), format!("boundary of body {name:?}: {e}")))?;
         let expected_area = boundary.area() / 6.0;
         let contact = Contact::new(body, boundary, Opposing::Planes(vec![plane]), law, expected_area);
         couplings.push(Coupling { name: coupling, kind: CouplingKind::Contact(contact) });
@@ -244,7 +285,10 @@ pub fn timing(file: &SceneFile) -> Result<Timing, Problem> {
 
 fn timing_with_warnings(file: &SceneFile, warnings: &mut Vec<String>) -> Result<Timing, Problem> {
     if !(file.dt > 0.0 && file.dt.is_finite()) {
-        return Err(Problem { place: Place::Top("dt"), message: format!("time step dt must be > 0 s, got {}", file.dt) });
+        return Err(Problem {
+            place: Place::Top("dt"),
+            message: format!("time step dt must be > 0 s, got {}", file.dt),
+        });
     }
     if file.substeps == Substeps::Fixed(0) {
         return Err(Problem { place: Place::Top("substeps"), message: "substeps must be at least 1".into() });
@@ -267,16 +311,26 @@ pub fn coupling(file: &SceneFile, index: usize, bodies: &mut Bodies) -> Result<C
 fn build_tolerances(file: &SceneFile, warnings: &mut Vec<String>) -> Result<Tolerances, Problem> {
     let Some(def) = file.adaptive else { return Ok(Tolerances::default()) };
     if !(def.rtol > 0.0 && def.rtol < 1.0) {
-        return Err(Problem { place: Place::Top("rtol"), message: format!("adaptive rtol must be > 0 and < 1, got {}", def.rtol) });
+        return Err(Problem {
+            place: Place::Top("rtol"),
+            message: format!("adaptive rtol must be > 0 and < 1, got {}", def.rtol),
+        });
     }
     if !(def.atol > 0.0) {
-        return Err(Problem { place: Place::Top("atol"), message: format!("adaptive atol must be > 0, got {}", def.atol) });
+        return Err(Problem {
+            place: Place::Top("atol"),
+            message: format!("adaptive atol must be > 0, got {}", def.atol),
+        });
     }
     if let Some(max_step) = def.max_step.filter(|m| !(*m > 0.0)) {
-        return Err(Problem { place: Place::Top("max_step"), message: format!("adaptive max_step must be > 0 s, got {max_step}") });
+        return Err(Problem {
+            place: Place::Top("max_step"),
+            message: format!("adaptive max_step must be > 0 s, got {max_step}"),
+        });
     }
     if !file.integrator.is_adaptive() {
-        warnings.push(format!("the adaptive settings are for integrator dopri45; {} ignores them", file.integrator.name()));
+        warnings
+            .push(format!("the adaptive settings are for integrator dopri45; {} ignores them", file.integrator.name()));
     }
     Ok(Tolerances { rtol: def.rtol, atol: def.atol, max_step: def.max_step })
 }
@@ -302,10 +356,19 @@ impl<'a> ItemAt<'a> {
 
     fn problem(&self, field: Option<&'static str>, literal: Option<&str>, message: String) -> Problem {
         if let Some(section) = self.section {
-            return Problem { place: Place::Section { section, field, literal: literal.map(str::to_string) }, message: format!("{section}: {message}") };
+            return Problem {
+                place: Place::Section { section, field, literal: literal.map(str::to_string) },
+                message: format!("{section}: {message}"),
+            };
         }
         Problem {
-            place: Place::Item { kind: self.kind, name: self.name.to_string(), occurrence: self.occurrence, field, literal: literal.map(str::to_string) },
+            place: Place::Item {
+                kind: self.kind,
+                name: self.name.to_string(),
+                occurrence: self.occurrence,
+                field,
+                literal: literal.map(str::to_string),
+            },
             // Debug formatting quotes the name and escapes what would break the one-line error.
             message: format!("{} {:?}: {message}", self.kind.label(), self.name),
         }
@@ -380,16 +443,28 @@ fn build_body(def: &BodyDef, directory: &Path, at: &ItemAt, in_water: bool) -> R
 fn build_support(def: &SupportDef, at: &ItemAt) -> Result<Support, Problem> {
     Ok(match def {
         SupportDef::Free => Support::Free,
-        SupportDef::Fixed { translation: (x, y, z), rotation } => Support::Fixed { translation: [*x, *y, *z], rotation: *rotation },
+        SupportDef::Fixed { translation: (x, y, z), rotation } => {
+            Support::Fixed { translation: [*x, *y, *z], rotation: *rotation }
+        }
         SupportDef::Kinematic { velocity, angular_velocity } => {
             let velocity = match velocity {
                 VelocityDef::Constant(v) => VelocityProfile::Constant(vec3(*v)),
                 VelocityDef::Table(points) => {
                     if points.len() < 2 {
-                        return Err(at.at_field("velocity", format!("a velocity table needs at least 2 points, got {}", points.len())));
+                        return Err(at.at_field(
+                            "velocity",
+                            format!("a velocity table needs at least 2 points, got {}", points.len()),
+                        ));
                     }
                     if let Some(i) = (1..points.len()).find(|&i| points[i].0 <= points[i - 1].0) {
-                        return Err(at.at_field("velocity", format!("velocity table point {i}: time must increase strictly ({} then {})", points[i - 1].0, points[i].0)));
+                        return Err(at.at_field(
+                            "velocity",
+                            format!(
+                                "velocity table point {i}: time must increase strictly ({} then {})",
+                                points[i - 1].0,
+                                points[i].0
+                            ),
+                        ));
                     }
                     VelocityProfile::Table(points.iter().map(|(t, v)| (*t, vec3(*v))).collect())
                 }
@@ -417,14 +492,20 @@ fn build_shape(def: &ShapeDef, directory: &Path, at: &ItemAt, in_water: bool) ->
                 positive("size", *s)?;
             }
             if !(1..=MAX_BOX_SUBDIVISIONS).contains(subdivisions) {
-                return Err(at.at_field("subdivisions", format!("box subdivisions must be 1 to {MAX_BOX_SUBDIVISIONS}, got {subdivisions}")));
+                return Err(at.at_field(
+                    "subdivisions",
+                    format!("box subdivisions must be 1 to {MAX_BOX_SUBDIVISIONS}, got {subdivisions}"),
+                ));
             }
             Shape::Box { size: vec3(*size), center: vec3(*center), subdivisions: *subdivisions }
         }
         ShapeDef::Sphere { radius, center, subdivisions } => {
             positive("radius", *radius)?;
             if *subdivisions > MAX_SUBDIVISIONS {
-                return Err(at.at_field("subdivisions", format!("subdivisions must be at most {MAX_SUBDIVISIONS}, got {subdivisions}")));
+                return Err(at.at_field(
+                    "subdivisions",
+                    format!("subdivisions must be at most {MAX_SUBDIVISIONS}, got {subdivisions}"),
+                ));
             }
             Shape::Sphere { radius: *radius, center: vec3(*center), subdivisions: *subdivisions }
         }
@@ -439,13 +520,17 @@ fn build_shape(def: &ShapeDef, directory: &Path, at: &ItemAt, in_water: bool) ->
         }
         ShapeDef::Mesh { file, scale, center } => {
             at.require("scale", *scale, Bound::Positive, "")?;
-            let (vertices, triangles) = mesh_file::read(&directory.join(file)).map_err(|e| at.problem(Some("file"), Some(file), e))?;
+            let (vertices, triangles) =
+                mesh_file::read(&directory.join(file)).map_err(|e| at.problem(Some("file"), Some(file), e))?;
             let vertices: Vec<Vec3> = vertices.iter().map(|v| v * *scale + vec3(*center)).collect();
             if in_water {
-                Hull::new(vertices.clone(), triangles.clone()).map_err(|e| at.problem(Some("file"), Some(file), format!("mesh file {file:?} as a hull in water: {e}")))?;
+                Hull::new(vertices.clone(), triangles.clone()).map_err(|e| {
+                    at.problem(Some("file"), Some(file), format!("mesh file {file:?} as a hull in water: {e}"))
+                })?;
             }
             // Checked now, so that a contact can always mesh the body.
-            let mesh = BoundaryMesh::new(vertices, triangles).map_err(|e| at.problem(Some("file"), Some(file), format!("mesh file {file:?}: {e}")))?;
+            let mesh = BoundaryMesh::new(vertices, triangles)
+                .map_err(|e| at.problem(Some("file"), Some(file), format!("mesh file {file:?}: {e}")))?;
             Shape::Mesh { vertices: mesh.vertices, triangles: mesh.triangles }
         }
     })
@@ -508,9 +593,21 @@ fn build_coupling(def: &CouplingDef, built: &mut Bodies, at: &ItemAt) -> Result<
             let length = at.require("length", *length, Bound::Positive, "m")?;
             let stiffness = at.require("stiffness", *stiffness, Bound::Positive, "N/m")?;
             let displaced_area = at.require("displaced_area", *displaced_area, Bound::NonNegative, "m²")?;
-            CouplingKind::Catenary(Catenary::new(end1, end2, mass_per_length, length, stiffness).with_displaced_area(displaced_area))
+            CouplingKind::Catenary(
+                Catenary::new(end1, end2, mass_per_length, length, stiffness).with_displaced_area(displaced_area),
+            )
         }
-        CouplingDef::Contact { body, against, stiffness, damping, range, friction, friction_sharpness, expected_area, .. } => {
+        CouplingDef::Contact {
+            body,
+            against,
+            stiffness,
+            damping,
+            range,
+            friction,
+            friction_sharpness,
+            expected_area,
+            ..
+        } => {
             let law = build_contact_law(*stiffness, *damping, *range, *friction, *friction_sharpness, at)?;
             let index = body_index(body, bodies, "body", at)?;
             let mesh_problem = |e: MeshError| at.at_field("body", format!("boundary of body {body:?}: {e}"));
@@ -527,14 +624,26 @@ fn build_coupling(def: &CouplingDef, built: &mut Bodies, at: &ItemAt) -> Result<
 }
 
 /// A spring's or a line's two ends, which must differ.
-fn build_ends(end1: &EndDef, end2: &EndDef, bodies: &[RigidBody], at: &ItemAt) -> Result<(Endpoint, Endpoint), Problem> {
+fn build_ends(
+    end1: &EndDef,
+    end2: &EndDef,
+    bodies: &[RigidBody],
+    at: &ItemAt,
+) -> Result<(Endpoint, Endpoint), Problem> {
     if end1 == end2 {
         return Err(at.at_field("end2", "both ends are the same point: the coupling has no direction".into()));
     }
     Ok((build_end(end1, bodies, at)?, build_end(end2, bodies, at)?))
 }
 
-fn build_contact_law(stiffness: f64, damping: f64, range: f64, friction: f64, friction_sharpness: f64, at: &ItemAt) -> Result<ContactLaw, Problem> {
+fn build_contact_law(
+    stiffness: f64,
+    damping: f64,
+    range: f64,
+    friction: f64,
+    friction_sharpness: f64,
+    at: &ItemAt,
+) -> Result<ContactLaw, Problem> {
     Ok(ContactLaw {
         stiffness: at.require("stiffness", stiffness, Bound::Positive, "N/m³")?,
         damping: at.require("damping", damping, Bound::NonNegative, "N·s/m³")?,
@@ -544,7 +653,13 @@ fn build_contact_law(stiffness: f64, damping: f64, range: f64, friction: f64, fr
     })
 }
 
-fn build_against(def: &AgainstDef, body: usize, bodies: &[RigidBody], boundaries: &mut Boundaries, at: &ItemAt) -> Result<Opposing, Problem> {
+fn build_against(
+    def: &AgainstDef,
+    body: usize,
+    bodies: &[RigidBody],
+    boundaries: &mut Boundaries,
+    at: &ItemAt,
+) -> Result<Opposing, Problem> {
     Ok(match def {
         AgainstDef::Plane { point, normal } => {
             let Some(normal) = vec3(*normal).try_normalize(1e-12) else {
@@ -554,16 +669,24 @@ fn build_against(def: &AgainstDef, body: usize, bodies: &[RigidBody], boundaries
         }
         AgainstDef::DomainBox { min, max } => {
             if !(0..3).all(|i| min[i] < max[i]) {
-                return Err(at.at_field("max", format!("domain box max {max:?} must exceed min {min:?} in every coordinate")));
+                return Err(
+                    at.at_field("max", format!("domain box max {max:?} must exceed min {min:?} in every coordinate"))
+                );
             }
             Opposing::Planes(Plane::domain_box(&vec3(*min), &vec3(*max)).to_vec())
         }
         AgainstDef::Body(name) => {
             let other = body_index(name, bodies, "against", at)?;
             if other == body {
-                return Err(at.problem(Some("against"), Some(name), format!("body {name:?} cannot be in contact with itself")));
+                return Err(at.problem(
+                    Some("against"),
+                    Some(name),
+                    format!("body {name:?} cannot be in contact with itself"),
+                ));
             }
-            let surface = boundaries.surface(bodies, other).map_err(|e| at.problem(Some("against"), Some(name), format!("boundary of body {name:?}: {e}")))?;
+            let surface = boundaries
+                .surface(bodies, other)
+                .map_err(|e| at.problem(Some("against"), Some(name), format!("boundary of body {name:?}: {e}")))?;
             Opposing::Body { body: other, surface }
         }
     })
@@ -579,7 +702,9 @@ fn body_index(name: &str, bodies: &[RigidBody], field: &'static str, at: &ItemAt
 
 fn build_law(def: &LawDef, at: &ItemAt) -> Result<ElasticLaw, Problem> {
     let non_negative = |field: &'static str, value: f64, unit: &str| at.require(field, value, Bound::NonNegative, unit);
-    let table = |points: &[(f64, f64)]| ElasticLaw::stiffness_table(points.to_vec()).map_err(|e| at.at_field("points", e.to_string()));
+    let table = |points: &[(f64, f64)]| {
+        ElasticLaw::stiffness_table(points.to_vec()).map_err(|e| at.at_field("points", e.to_string()))
+    };
     Ok(match def {
         LawDef::Linear { stiffness, rest_length } => ElasticLaw::Linear {
             stiffness: non_negative("stiffness", *stiffness, "N/m")?,
@@ -588,15 +713,20 @@ fn build_law(def: &LawDef, at: &ItemAt) -> Result<ElasticLaw, Problem> {
         LawDef::Polynomial { a, b, c, rest_length } => {
             ElasticLaw::Polynomial { a: *a, b: *b, c: *c, rest_length: non_negative("rest_length", *rest_length, "m")? }
         }
-        LawDef::ForceCurve { points } => ElasticLaw::force_curve(points.clone()).map_err(|e| at.at_field("points", e.to_string()))?,
-        LawDef::StiffnessCurve { points, rest_length } => {
-            ElasticLaw::StiffnessCurve { stiffness: table(points)?, rest_length: non_negative("rest_length", *rest_length, "m")? }
+        LawDef::ForceCurve { points } => {
+            ElasticLaw::force_curve(points.clone()).map_err(|e| at.at_field("points", e.to_string()))?
         }
-        LawDef::ReferenceForce { points, reference_length, reference_force, rest_length } => ElasticLaw::ReferenceForce {
+        LawDef::StiffnessCurve { points, rest_length } => ElasticLaw::StiffnessCurve {
             stiffness: table(points)?,
-            reference_length: non_negative("reference_length", *reference_length, "m")?,
-            reference_force: *reference_force,
-            rest_length: *rest_length,
+            rest_length: non_negative("rest_length", *rest_length, "m")?,
         },
+        LawDef::ReferenceForce { points, reference_length, reference_force, rest_length } => {
+            ElasticLaw::ReferenceForce {
+                stiffness: table(points)?,
+                reference_length: non_negative("reference_length", *reference_length, "m")?,
+                reference_force: *reference_force,
+                rest_length: *rest_length,
+            }
+        }
     })
 }

@@ -4,10 +4,10 @@
 //! axes parallel to the world axes at t = 0. Vectors are RON tuples `(x, y, z)`. Every number
 //! must be finite; unknown fields are rejected.
 
-use super::finite::{finite, finite_option, finite3, finite_pairs, finite_velocity_table};
+use super::finite::{finite, finite_option, finite_pairs, finite_velocity_table, finite3};
 use super::water::{HydroDef, WaterDef};
-use tether_physics::integrator::{Integrator, Substeps};
 use serde::{Deserialize, Serialize};
+use tether_physics::integrator::{Integrator, Substeps};
 
 /// `(x, y, z)`.
 pub type Triple = [f64; 3];

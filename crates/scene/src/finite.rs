@@ -4,11 +4,7 @@
 use serde::de::{Deserialize, Deserializer, Error};
 
 fn check<E: Error>(value: f64) -> Result<f64, E> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(E::custom(format!("number must be finite, got {value}")))
-    }
+    if value.is_finite() { Ok(value) } else { Err(E::custom(format!("number must be finite, got {value}"))) }
 }
 
 pub fn finite<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {

@@ -12,10 +12,10 @@ pub mod source;
 pub mod water;
 
 use build::{Bodies, Place, Problem};
-use tether_physics::world::World;
 pub use file::SceneFile;
 use source::Source;
 use std::path::{Path, PathBuf};
+use tether_physics::world::World;
 
 /// A scene file that could not be loaded, with the place of the fault.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -65,8 +65,16 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
 /// checks are those of [`parse`]; a problem is placed in `text` at the item and field it
 /// concerns, so that the message points at the value the variant changed.
 pub fn build_variant(text: &str, path: &Path, file: SceneFile) -> Result<Scene, SceneError> {
-    let built = build::build(&file, directory(path)).map_err(|p| placed(&Source::new(text), &path.display().to_string(), p))?;
-    Ok(Scene { path: path.to_path_buf(), text: text.to_string(), file, world: built.world, bodies: built.bodies, warnings: built.warnings })
+    let built =
+        build::build(&file, directory(path)).map_err(|p| placed(&Source::new(text), &path.display().to_string(), p))?;
+    Ok(Scene {
+        path: path.to_path_buf(),
+        text: text.to_string(),
+        file,
+        world: built.world,
+        bodies: built.bodies,
+        warnings: built.warnings,
+    })
 }
 
 /// The scene with a fresh world at t = 0 under the time step settings of `scene.file` (`dt`,

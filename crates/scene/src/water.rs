@@ -14,8 +14,8 @@
 //! ),
 //! ```
 
-use super::finite::{finite, finite3, finite_option};
 use super::file::Triple;
+use super::finite::{finite, finite_option, finite3};
 use serde::{Deserialize, Serialize};
 use tether_physics::math::Vec3;
 use tether_physics::water::morison::HydroSpec;
@@ -156,13 +156,24 @@ fn vec3(t: Triple) -> Vec3 {
 impl WaterDef {
     /// The physics' spec (angles to radians).
     pub fn spec(&self) -> WaterSpec {
-        let current = self.current.as_ref().map_or_else(CurrentSpec::default, |c| CurrentSpec { speed: c.speed, heading: c.heading_deg.to_radians(), profile: c.profile });
+        let current = self.current.as_ref().map_or_else(CurrentSpec::default, |c| CurrentSpec {
+            speed: c.speed,
+            heading: c.heading_deg.to_radians(),
+            profile: c.profile,
+        });
         let waves = match self.waves {
             WavesDef::Calm => WaveSpec::Calm,
-            WavesDef::Regular { height, period, heading_deg, phase_deg } => WaveSpec::Regular { height, period, heading: heading_deg.to_radians(), phase: phase_deg.to_radians() },
-            WavesDef::Jonswap { hs, tp, gamma, heading_deg, components, seed } => {
-                WaveSpec::Jonswap { significant_height: hs, peak_period: tp, gamma, heading: heading_deg.to_radians(), components, seed }
+            WavesDef::Regular { height, period, heading_deg, phase_deg } => {
+                WaveSpec::Regular { height, period, heading: heading_deg.to_radians(), phase: phase_deg.to_radians() }
             }
+            WavesDef::Jonswap { hs, tp, gamma, heading_deg, components, seed } => WaveSpec::Jonswap {
+                significant_height: hs,
+                peak_period: tp,
+                gamma,
+                heading: heading_deg.to_radians(),
+                components,
+                seed,
+            },
         };
         WaterSpec { density: self.density, level: self.level, depth: self.depth, current, waves, ramp: self.ramp }
     }
@@ -177,7 +188,9 @@ impl WaterDef {
             WaterError::Breaking { .. } => "waves",
             WaterError::ProfileWithoutDepth => "profile",
             WaterError::Gravity(..) => "water",
-            WaterError::NotFinite { field, .. } | WaterError::NotPositive { field, .. } | WaterError::Negative { field, .. } => match *field {
+            WaterError::NotFinite { field, .. }
+            | WaterError::NotPositive { field, .. }
+            | WaterError::Negative { field, .. } => match *field {
                 "wave height" => "height",
                 "wave period" => "period",
                 "significant wave height" => "hs",

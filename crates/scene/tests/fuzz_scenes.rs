@@ -10,11 +10,42 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::Path;
 
 const TOKENS: &[&str] = &[
-    "NaN", "inf", "-inf", "1e308", "-1e308", "-1", "0", "0.0", "1e-320", "1e400", "(", ")", "[", "]", ",", ":", "\"", "\n", "//", "/*", "*/",
-    "é", "\u{0}", "Body(", "name: \"x\"", "World((0, 0, 0))", "Body(body: \"ghost\")", "Linear(stiffness: -5, rest_length: 0)",
+    "NaN",
+    "inf",
+    "-inf",
+    "1e308",
+    "-1e308",
+    "-1",
+    "0",
+    "0.0",
+    "1e-320",
+    "1e400",
+    "(",
+    ")",
+    "[",
+    "]",
+    ",",
+    ":",
+    "\"",
+    "\n",
+    "//",
+    "/*",
+    "*/",
+    "é",
+    "\u{0}",
+    "Body(",
+    "name: \"x\"",
+    "World((0, 0, 0))",
+    "Body(body: \"ghost\")",
+    "Linear(stiffness: -5, rest_length: 0)",
     "Catenary(name: \"c\", end1: World((0,0,0)), end2: World((0,0,0)), mass_per_length: 1, length: 1, stiffness: 1),",
-    "Fixed(translation: (true, true, true), rotation: true)", "Kinematic(velocity: Table([(0.0, (0, 0, 0))]))", "Sphere(radius: 0)",
-    "slaves: [Node(position: (0, 0, 0), mass: 0)],", "ForceCurve(points: [(1, 1)])", "mass: -3", "dt: 1e-300,",
+    "Fixed(translation: (true, true, true), rotation: true)",
+    "Kinematic(velocity: Table([(0.0, (0, 0, 0))]))",
+    "Sphere(radius: 0)",
+    "slaves: [Node(position: (0, 0, 0), mass: 0)],",
+    "ForceCurve(points: [(1, 1)])",
+    "mass: -3",
+    "dt: 1e-300,",
 ];
 
 #[derive(Debug, Clone)]
@@ -47,12 +78,19 @@ fn apply(text: &str, m: &Mutation) -> String {
         }
         Mutation::Number { nth, token } => {
             // Replace the nth number-looking run of characters.
-            let starts: Vec<usize> = (0..chars.len()).filter(|&i| chars[i].is_ascii_digit() && (i == 0 || !chars[i - 1].is_ascii_alphanumeric() && chars[i - 1] != '.')).collect();
+            let starts: Vec<usize> = (0..chars.len())
+                .filter(|&i| {
+                    chars[i].is_ascii_digit()
+                        && (i == 0 || !chars[i - 1].is_ascii_alphanumeric() && chars[i - 1] != '.')
+                })
+                .collect();
             if starts.is_empty() {
                 return text.to_string();
             }
             let start = starts[nth % starts.len()];
-            let end = (start..chars.len()).find(|&i| !(chars[i].is_ascii_digit() || chars[i] == '.' || chars[i] == 'e' || chars[i] == '-')).unwrap_or(chars.len());
+            let end = (start..chars.len())
+                .find(|&i| !(chars[i].is_ascii_digit() || chars[i] == '.' || chars[i] == 'e' || chars[i] == '-'))
+                .unwrap_or(chars.len());
             chars[..start].iter().collect::<String>() + TOKENS[token % 12] + &chars[end..].iter().collect::<String>()
         }
         Mutation::DuplicateLine { nth } => {
@@ -80,7 +118,11 @@ pub fn exercise(text: &str) -> Result<(), String> {
                 let well_formed = message.lines().count() == 1
                     && message.strip_prefix("fuzz.ron:").and_then(|rest| {
                         let mut parts = rest.splitn(3, ':');
-                        Some(parts.next()?.parse::<usize>().is_ok() && parts.next()?.parse::<usize>().is_ok() && parts.next()?.starts_with(' '))
+                        Some(
+                            parts.next()?.parse::<usize>().is_ok()
+                                && parts.next()?.parse::<usize>().is_ok()
+                                && parts.next()?.starts_with(' '),
+                        )
                     }) == Some(true);
                 if well_formed { Ok(()) } else { Err(format!("malformed error: {message:?}")) }
             }
@@ -97,7 +139,13 @@ pub fn exercise(text: &str) -> Result<(), String> {
                     }
                     for i in 0..scene.world.bodies().len() {
                         let s = scene.world.state(i);
-                        if !s.position.iter().chain(s.velocity.iter()).chain(s.orientation.coords.iter()).all(|x| x.is_finite()) {
+                        if !s
+                            .position
+                            .iter()
+                            .chain(s.velocity.iter())
+                            .chain(s.orientation.coords.iter())
+                            .all(|x| x.is_finite())
+                        {
                             return Err(format!("non-finite state of body {i} after a step reported healthy"));
                         }
                     }
@@ -106,7 +154,12 @@ pub fn exercise(text: &str) -> Result<(), String> {
             }
         }
     }));
-    outcome.unwrap_or_else(|panic| Err(format!("panic: {:?}", panic.downcast_ref::<String>().map(String::as_str).or(panic.downcast_ref::<&str>().copied()))))
+    outcome.unwrap_or_else(|panic| {
+        Err(format!(
+            "panic: {:?}",
+            panic.downcast_ref::<String>().map(String::as_str).or(panic.downcast_ref::<&str>().copied())
+        ))
+    })
 }
 
 fn sources() -> Vec<String> {

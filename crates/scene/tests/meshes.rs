@@ -109,7 +109,11 @@ fn bad_contact_declarations_are_errors_naming_the_coupling() {
 /// The message after `path:line:col: `, checking the position is there.
 fn error_of(full: &str) -> String {
     let mut parts = full.splitn(4, ':');
-    let (path, line, col) = (parts.next(), parts.next().and_then(|l| l.parse::<usize>().ok()), parts.next().and_then(|c| c.parse::<usize>().ok()));
+    let (path, line, col) = (
+        parts.next(),
+        parts.next().and_then(|l| l.parse::<usize>().ok()),
+        parts.next().and_then(|c| c.parse::<usize>().ok()),
+    );
     assert!(path == Some("c.ron") && line.is_some() && col.is_some(), "no position in {full}");
     parts.next().unwrap_or_default().to_string()
 }

@@ -14,7 +14,8 @@ fn every_scene_round_trips_through_ron() {
         let loaded = scene::load(&path).unwrap();
         let text = scene::to_ron(&loaded.file).unwrap();
         // Beside the original, where its mesh files are.
-        let again = scene::parse(&text, &path.with_file_name("saved.ron")).unwrap_or_else(|e| panic!("{}: {e}\n{text}", path.display()));
+        let again = scene::parse(&text, &path.with_file_name("saved.ron"))
+            .unwrap_or_else(|e| panic!("{}: {e}\n{text}", path.display()));
         assert_eq!(again.file, loaded.file, "{}", path.display());
         assert_eq!(again.world.couplings(), loaded.world.couplings(), "{}", path.display());
     }

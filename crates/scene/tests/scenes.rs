@@ -25,9 +25,17 @@ fn bench_chain_is_as_specified() {
     assert_eq!(world.dt(), 0.002);
     for (i, body) in world.bodies().iter().enumerate() {
         assert_eq!(body.mass(), 1.0);
-        approx::assert_relative_eq!(body.principal_moments(), nalgebra::Vector3::repeat(0.4 * 0.05 * 0.05), epsilon = 1e-15);
+        approx::assert_relative_eq!(
+            body.principal_moments(),
+            nalgebra::Vector3::repeat(0.4 * 0.05 * 0.05),
+            epsilon = 1e-15
+        );
         let x = 15.0 * (i + 1) as f64 / 101.0;
-        approx::assert_relative_eq!(body.mass_properties.center_of_mass, nalgebra::Vector3::new(x, 0.0, 30.0), epsilon = 1e-12);
+        approx::assert_relative_eq!(
+            body.mass_properties.center_of_mass,
+            nalgebra::Vector3::new(x, 0.0, 30.0),
+            epsilon = 1e-12
+        );
     }
 }
 
@@ -73,12 +81,18 @@ fn syntax_error() {
 
 #[test]
 fn unknown_field() {
-    assert_error(("mass: 2.0,", "mass: 2.0, colour: 3,"), "bad.ron:6:70: body \"box\": Unexpected field named `colour` in `Node`");
+    assert_error(
+        ("mass: 2.0,", "mass: 2.0, colour: 3,"),
+        "bad.ron:6:70: body \"box\": Unexpected field named `colour` in `Node`",
+    );
 }
 
 #[test]
 fn unknown_body_in_a_coupling() {
-    assert_error(("end2: Body(body: \"ball\")", "end2: Body(body: \"bal\")"), "bad.ron:19:30: coupling \"link\": unknown body \"bal\" (bodies: box, ball)");
+    assert_error(
+        ("end2: Body(body: \"ball\")", "end2: Body(body: \"bal\")"),
+        "bad.ron:19:30: coupling \"link\": unknown body \"bal\" (bodies: box, ball)",
+    );
 }
 
 #[test]
@@ -89,7 +103,10 @@ fn duplicate_body_name() {
 #[test]
 fn non_positive_mass() {
     assert_error(("mass: 1.0,", "mass: 0.0,"), "bad.ron:11:53: body \"ball\": total mass must be > 0 kg, got 0 kg");
-    assert_error(("mass: 1.0,", "mass: -1.0,"), "bad.ron:11:53: body \"ball\": the master node has negative mass -1 kg");
+    assert_error(
+        ("mass: 1.0,", "mass: -1.0,"),
+        "bad.ron:11:53: body \"ball\": the master node has negative mass -1 kg",
+    );
 }
 
 #[test]
@@ -107,24 +124,36 @@ fn zero_time_step() {
 
 #[test]
 fn non_monotonic_table() {
-    assert_error(("(0.5, 10.0), (1.0, 20.0)", "(0.5, 10.0), (0.4, 20.0)"), "bad.ron:20:33: coupling \"link\": table point 1: x must increase strictly (0.5 then 0.4)");
+    assert_error(
+        ("(0.5, 10.0), (1.0, 20.0)", "(0.5, 10.0), (0.4, 20.0)"),
+        "bad.ron:20:33: coupling \"link\": table point 1: x must increase strictly (0.5 then 0.4)",
+    );
 }
 
 #[test]
 fn table_with_one_point() {
-    assert_error(("(0.5, 10.0), (1.0, 20.0)", "(0.5, 10.0)"), "bad.ron:20:33: coupling \"link\": a table needs at least 2 points, got 1");
+    assert_error(
+        ("(0.5, 10.0), (1.0, 20.0)", "(0.5, 10.0)"),
+        "bad.ron:20:33: coupling \"link\": a table needs at least 2 points, got 1",
+    );
 }
 
 #[test]
 fn nan_and_infinite_values() {
     assert_error(("mass: 1.0,", "mass: NaN,"), "bad.ron:11:62: body \"ball\": number must be finite, got NaN");
-    assert_error(("rest_length: 1.0", "rest_length: inf"), "bad.ron:20:85: coupling \"link\": number must be finite, got inf");
+    assert_error(
+        ("rest_length: 1.0", "rest_length: inf"),
+        "bad.ron:20:85: coupling \"link\": number must be finite, got inf",
+    );
     assert_error(("mass: 1.0,", "mass: 1e999,"), "bad.ron:11:64: body \"ball\": number must be finite, got inf");
 }
 
 #[test]
 fn same_point_of_the_same_body() {
-    assert_error(("end2: Body(body: \"ball\")", "end2: Body(body: \"box\")"), "bad.ron:19:13: coupling \"link\": both ends are the same point");
+    assert_error(
+        ("end2: Body(body: \"ball\")", "end2: Body(body: \"box\")"),
+        "bad.ron:19:13: coupling \"link\": both ends are the same point",
+    );
 }
 
 #[test]

@@ -63,7 +63,8 @@ fn a_chain_anchored_on_the_seabed_lies_on_it_and_a_block_touches_it() {
 
 #[test]
 fn a_body_starts_turned_by_its_rotation_about_its_master_node() {
-    let turned = MOORED.replacen("name: \"buoy\",", "name: \"buoy\",\n            rotation: (0.0, 0.0, 1.5707963267948966),", 1);
+    let turned =
+        MOORED.replacen("name: \"buoy\",", "name: \"buoy\",\n            rotation: (0.0, 0.0, 1.5707963267948966),", 1);
     let world = common::scene(&turned).world;
     // The fairlead 1 m below the master node stays there; a point 1 m along x goes to y.
     let state = world.state(0);
@@ -85,17 +86,26 @@ fn the_seabed_section_round_trips_through_ron() {
 
 #[test]
 fn a_seabed_needs_an_elevation_without_water() {
-    assert_error(("        elevation: -40.0,\n", ""), "bad.ron:26:5: seabed: the seabed needs an elevation (z_b, m): the scene has no water depth to take it from");
+    assert_error(
+        ("        elevation: -40.0,\n", ""),
+        "bad.ron:26:5: seabed: the seabed needs an elevation (z_b, m): the scene has no water depth to take it from",
+    );
 }
 
 #[test]
 fn negative_line_friction() {
-    assert_error(("line_friction: 0.6", "line_friction: -0.1"), "bad.ron:28:9: seabed: line_friction must be ≥ 0, got -0.1");
+    assert_error(
+        ("line_friction: 0.6", "line_friction: -0.1"),
+        "bad.ron:28:9: seabed: line_friction must be ≥ 0, got -0.1",
+    );
 }
 
 #[test]
 fn negative_displaced_area() {
-    assert_error(("displaced_area: 0.0064", "displaced_area: -0.01"), "bad.ron:23:13: coupling \"chain\": displaced_area must be ≥ 0 m², got -0.01");
+    assert_error(
+        ("displaced_area: 0.0064", "displaced_area: -0.01"),
+        "bad.ron:23:13: coupling \"chain\": displaced_area must be ≥ 0 m², got -0.01",
+    );
 }
 
 #[test]
@@ -108,18 +118,28 @@ fn an_anchor_below_the_seabed() {
 
 #[test]
 fn an_unknown_body_on_the_seabed() {
-    assert_error(("bodies: [\"block\"]", "bodies: [\"blok\"]"), "bad.ron:29:41: seabed: unknown body \"blok\" (bodies: buoy, block)");
+    assert_error(
+        ("bodies: [\"block\"]", "bodies: [\"blok\"]"),
+        "bad.ron:29:41: seabed: unknown body \"blok\" (bodies: buoy, block)",
+    );
 }
 
 #[test]
 fn bad_seabed_contact_parameters() {
     assert_error(("stiffness: 2e5", "stiffness: 0.0"), "bad.ron:29:51: seabed: stiffness must be > 0 N/m³, got 0");
-    assert_error(("bodies: [\"block\"]", "bodies: [\"block\", \"block\"]"), "bad.ron:29:41: seabed: body \"block\" is listed twice");
+    assert_error(
+        ("bodies: [\"block\"]", "bodies: [\"block\", \"block\"]"),
+        "bad.ron:29:41: seabed: body \"block\" is listed twice",
+    );
 }
 
 /// `MOORED` in 40 m of water: `water` inserted before the seabed section, its elevation removed.
 fn in_water(water: &str) -> String {
-    MOORED.replacen("    seabed: Seabed(\n        elevation: -40.0,\n", &format!("    water: {water},\n    seabed: Seabed(\n"), 1)
+    MOORED.replacen(
+        "    seabed: Seabed(\n        elevation: -40.0,\n",
+        &format!("    water: {water},\n    seabed: Seabed(\n"),
+        1,
+    )
 }
 
 #[test]
@@ -131,7 +151,12 @@ fn in_water_the_seabed_lies_at_its_depth_and_the_lines_weigh_what_they_displace_
     assert_eq!(system.seabed().map(|s| s.elevation), Some(-40.0));
     assert_eq!(system.surroundings().fluid_density, 1025.0);
     // The same line dry with λ0 − ρ A_d per metre gives the same forces: W = (λ0 − ρ A_d) g.
-    let dry = common::scene(&MOORED.replacen("mass_per_length: 50.0", &format!("mass_per_length: {}", 50.0 - 1025.0 * 0.0064), 1).replacen("displaced_area: 0.0064,", "", 1));
+    let dry =
+        common::scene(
+            &MOORED
+                .replacen("mass_per_length: 50.0", &format!("mass_per_length: {}", 50.0 - 1025.0 * 0.0064), 1)
+                .replacen("displaced_area: 0.0064,", "", 1),
+        );
     let (wet, reference) = (loaded.world.line_state(0).unwrap(), dry.world.line_state(0).unwrap());
     // Both solved by the same Newton from the same start to round-off of the line's equations.
     assert_relative_eq!(wet.horizontal_tension, reference.horizontal_tension, max_relative = 1e-12);
@@ -143,17 +168,25 @@ fn in_water_the_seabed_lies_at_its_depth_and_the_lines_weigh_what_they_displace_
 
 #[test]
 fn a_seabed_that_disagrees_with_the_water_or_has_none_to_lie_under() {
-    let text = in_water("Water(depth: 40.0)").replacen("    seabed: Seabed(\n", "    seabed: Seabed(\n        elevation: -45.0,\n", 1);
+    let text = in_water("Water(depth: 40.0)").replacen(
+        "    seabed: Seabed(\n",
+        "    seabed: Seabed(\n        elevation: -45.0,\n",
+        1,
+    );
     assert_eq!(
         common::error_of(&text),
         "bad.ron:28:9: seabed: the seabed elevation -45 m disagrees with the water's bottom (level 0 m − depth 40 m = -40 m): leave it out and it lies there"
     );
-    assert_eq!(common::error_of(&in_water("Water()")), "bad.ron:27:5: seabed: the water is deep (no depth): give the water a depth, and the seabed lies there");
+    assert_eq!(
+        common::error_of(&in_water("Water()")),
+        "bad.ron:27:5: seabed: the water is deep (no depth): give the water a depth, and the seabed lies there"
+    );
 }
 
 #[test]
 fn a_line_that_floats_is_warned_of() {
-    let loaded = common::scene(&in_water("Water(depth: 40.0)").replacen("displaced_area: 0.0064", "displaced_area: 0.1", 1));
+    let loaded =
+        common::scene(&in_water("Water(depth: 40.0)").replacen("displaced_area: 0.0064", "displaced_area: 0.1", 1));
     let warning = loaded.warnings.iter().find(|w| w.contains("chain")).expect("a warning about the chain");
     assert!(warning.contains("the line floats (ρ A_d = 102.5 kg/m > λ0 = 50 kg/m): it arches upward"), "{warning}");
 }

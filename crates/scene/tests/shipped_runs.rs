@@ -42,64 +42,111 @@ const BOUNDS: &[Bounds] = &[
     // Heaves, rolls and pitches in the 50-component sea: G between 0.64 m below and 2.48 m above
     // its start, surging ±1.3 m; the slowly varying wave loads of this seed set it drifting
     // 12.9 m to −y in 120 s (nothing moors it). Measured drift 2.08 kJ (first-order dampers).
-    Bounds { scene: "barge_in_waves.ron", regions: &[region("barge", [-0.92, -12.9, -0.66], [1.36, 0.42, 2.50])], balance_budget: 3.1e3 },
+    Bounds {
+        scene: "barge_in_waves.ron",
+        regions: &[region("barge", [-0.92, -12.9, -0.66], [1.36, 0.42, 2.50])],
+        balance_budget: 3.1e3,
+    },
     // Dropped 0.5 m, undershoots to −0.428 m, settles at G = 0 (draft 2 m); the heave damper,
     // along the heeled body's z axis, walks it 0.26 m sideways. Measured drift 30.8 J (first-order dampers).
-    Bounds { scene: "floating_box.ron", regions: &[region("box", [-1e-6, -0.27, -0.44], [1e-6, 1e-6, 0.5 + 1e-6])], balance_budget: 46.0 },
+    Bounds {
+        scene: "floating_box.ron",
+        regions: &[region("box", [-1e-6, -0.27, -0.44], [1e-6, 1e-6, 0.5 + 1e-6])],
+        balance_budget: 46.0,
+    },
     // Falls 2 m, sinks at 5.15 m/s, lands on the seabed at z = −30 m (G 2.4 cm into the contact's
     // range at the first impact), bounces and rests at G = −29.494 m. Measured drift 1.51 kJ,
     // the contact damper's first-order work at the 17.8 kJ impact.
-    Bounds { scene: "sinking_sphere.ron", regions: &[region("ball", [-0.01, -0.01, -29.53], [0.01, 0.01, 2.5 + 1e-6])], balance_budget: 2.3e3 },
+    Bounds {
+        scene: "sinking_sphere.ron",
+        regions: &[region("ball", [-0.01, -0.01, -29.53], [0.01, 0.01, 2.5 + 1e-6])],
+        balance_budget: 2.3e3,
+    },
     // Settles onto the ramp, creeps, then is dragged 20 m down it behind the tug. Measured drift
     // 2.46 kJ, all of it at the settling impact of the 30 t barge (the contact damper at 5 ms
     // steps), 0.8 % of its 316 kJ of gravity energy.
     Bounds {
         scene: "barge_slipway.ron",
-        regions: &[region("barge", [-20.6, -0.05, -0.35], [0.01, 0.05, 1.08]), region("tug", [-59.51, -0.01, -1.01], [-34.99, 0.01, -0.99])],
+        regions: &[
+            region("barge", [-20.6, -0.05, -0.35], [0.01, 0.05, 1.08]),
+            region("tug", [-59.51, -0.01, -1.01], [-34.99, 0.01, -0.99]),
+        ],
         balance_budget: 3.6e3,
     },
     // Released straight, bounded by the slack it can take up; measured drift 0.0107 J (the
     // springs' first-order dampers) of the 28 J it dissipates.
-    Bounds { scene: "chain.ron", regions: &[region("ball*", [0.12, -1e-9, 2.03], [2.08, 1e-9, 3.04])], balance_budget: 0.016 },
+    Bounds {
+        scene: "chain.ron",
+        regions: &[region("ball*", [0.12, -1e-9, 2.03], [2.08, 1e-9, 3.04])],
+        balance_budget: 0.016,
+    },
     // The trolley's 7 m move and the load's ±4.5 m swing under it. Conservative: measured drift
     // 2.3 mJ of 98 kJ.
     Bounds {
         scene: "crane.ron",
-        regions: &[region("tip", [-1e-9, -1e-9, 20.0 - 1e-9], [7.0 + 1e-9, 1e-9, 20.0 + 1e-9]), region("load", [-0.02, -1e-9, 4.28], [11.55, 1e-9, 4.99])],
+        regions: &[
+            region("tip", [-1e-9, -1e-9, 20.0 - 1e-9], [7.0 + 1e-9, 1e-9, 20.0 + 1e-9]),
+            region("load", [-0.02, -1e-9, 4.28], [11.55, 1e-9, 4.99]),
+        ],
         balance_budget: 3.5e-3,
     },
     // Dropped from 1 m, hops and comes to rest 3.1 m away on a long face. Measured drift 17.4 J
     // of the 241 J (the first corner impact at 4.4 m/s: contact damper and friction, first order).
-    Bounds { scene: "box_drop.ron", regions: &[region("crate", [-0.01, -2.22, 0.195], [2.2, 0.01, 1.2 + 1e-9])], balance_budget: 26.0 },
+    Bounds {
+        scene: "box_drop.ron",
+        regions: &[region("crate", [-0.01, -2.22, 0.195], [2.2, 0.01, 1.2 + 1e-9])],
+        balance_budget: 26.0,
+    },
     // Hangs against the quay, squeezed by 8 cm and released. Measured drift 0.20 J against the
     // 2.38 kJ the hull puts in.
     Bounds {
         scene: "fender.ron",
-        regions: &[region("fender", [0.355, -0.01, -0.025], [0.425, 0.01, 0.005]), region("hull", [2.725 - 1e-9, -1e-9, 0.5 - 1e-9], [3.7 + 1e-9, 1e-9, 0.5 + 1e-9])],
+        regions: &[
+            region("fender", [0.355, -0.01, -0.025], [0.425, 0.01, 0.005]),
+            region("hull", [2.725 - 1e-9, -1e-9, 0.5 - 1e-9], [3.7 + 1e-9, 1e-9, 0.5 + 1e-9]),
+        ],
         balance_budget: 0.3,
     },
     // Held by its four chains within 2.59 m in surge, 3.78 m in sway of its rest, G between
     // −0.71 and 2.41 m. Measured drift 2.02 kJ (the free barge's 2.08 kJ: first-order dampers).
-    Bounds { scene: "spread_moored_barge.ron", regions: &[region("barge", [-2.60, -3.58, -0.72], [2.47, 3.79, 2.42])], balance_budget: 3.0e3 },
+    Bounds {
+        scene: "spread_moored_barge.ron",
+        regions: &[region("barge", [-2.60, -3.58, -0.72], [2.47, 3.79, 2.42])],
+        balance_budget: 3.0e3,
+    },
     // Swings back from its 5 m push to x = −3.59 m, surging under the 8 s wave, heaving 0.93 m
     // below and 1.01 m above its rest at z = −0.203 m; no roll or sway in a head sea. Measured
     // drift 412 J: the seabed's friction law (C_B = 1) is not a potential (16 mJ with C_B = 0).
-    Bounds { scene: "moored_buoy.ron", regions: &[region("buoy", [-3.60, -0.01, -1.15], [5.097 + 1e-6, 0.01, 0.82])], balance_budget: 620.0 },
+    Bounds {
+        scene: "moored_buoy.ron",
+        regions: &[region("buoy", [-3.60, -0.01, -1.15], [5.097 + 1e-6, 0.01, 0.82])],
+        balance_budget: 620.0,
+    },
     // b swings between x = 18.6 and 22.9 m on the chain and its rope, a moves 0.25 m; z held.
     // Conservative: measured drift 1.9 mJ of the 2.6 kJ of motion.
     Bounds {
         scene: "sagging_chain.ron",
-        regions: &[region("a", [-0.2, -0.85, -1e-9], [0.26, 1.0, 1e-9]), region("b", [18.55, -1.78, -1e-9], [22.96, 1.85, 1e-9])],
+        regions: &[
+            region("a", [-0.2, -0.85, -1e-9], [0.26, 1.0, 1e-9]),
+            region("b", [18.55, -1.78, -1e-9], [22.96, 1.85, 1e-9]),
+        ],
         balance_budget: 3e-3,
     },
     // The closed form's envelope: |x − 1| ≤ 0.01 m. Measured drift 2.3e-6 J of the 5 mJ the
     // first-order damper takes.
-    Bounds { scene: "spring_mass.ron", regions: &[region("mass", [0.99, -1e-9, -1e-9], [1.01 + 1e-9, 1e-9, 1e-9])], balance_budget: 3.5e-6 },
+    Bounds {
+        scene: "spring_mass.ron",
+        regions: &[region("mass", [0.99, -1e-9, -1e-9], [1.01 + 1e-9, 1e-9, 1e-9])],
+        balance_budget: 3.5e-6,
+    },
     // The body dips 53 mm and rebounds 51 mm. Measured drift 0.122 J of the 127 J the dampers
     // take (first order).
     Bounds {
         scene: "suspension.ron",
-        regions: &[region("wheel", [-1e-9, -1e-9, 0.272], [1e-9, 1e-9, 0.32]), region("car", [-1e-9, -1e-9, 0.842], [1e-9, 1e-9, 0.956])],
+        regions: &[
+            region("wheel", [-1e-9, -1e-9, 0.272], [1e-9, 1e-9, 0.32]),
+            region("car", [-1e-9, -1e-9, 0.842], [1e-9, 1e-9, 0.956]),
+        ],
         balance_budget: 0.18,
     },
     // Torque-free: G stays at the origin. Measured drift 8.4e-8 J of 1.00125 J (leapfrog2).
@@ -107,16 +154,27 @@ const BOUNDS: &[Bounds] = &[
     // The ball knocks the box 0.167 m on and rolls back. Measured drift 0.097 J of the 12.6 J.
     Bounds {
         scene: "two_bodies.ron",
-        regions: &[region("ball", [-1.0 - 1e-9, -0.29, 0.094], [-0.23, 0.01, 0.145]), region("box", [-0.001, 0.035, 0.15], [0.172, 0.06, 0.16])],
+        regions: &[
+            region("ball", [-1.0 - 1e-9, -0.29, 0.094], [-0.23, 0.01, 0.145]),
+            region("box", [-0.001, 0.035, 0.15], [0.172, 0.06, 0.16]),
+        ],
         balance_budget: 0.15,
     },
     // 20.2 m of chain across 15 m: it bulges 1.3 m past its anchors; 74 balls land on the soft
     // ground, sink up to 30 mm and roll up to 0.16 m sideways. Measured drift 821 J of the
     // 4.28 kJ: contact dampers and friction with c dt/m ≈ 0.2, first order (see its comment).
-    Bounds { scene: "bench/chain100.ron", regions: &[region("ball*", [-1.35, -0.2, 0.015], [16.35, 0.2, 3.1])], balance_budget: 1.2e3 },
+    Bounds {
+        scene: "bench/chain100.ron",
+        regions: &[region("ball*", [-1.35, -0.2, 0.015], [16.35, 0.2, 3.1])],
+        balance_budget: 1.2e3,
+    },
     // Falls 13.5 m at the middle and swings, bulging 1.3 m past its anchors. Measured drift 70 J
     // (the springs' first-order dampers) of the 3.4 kJ they take.
-    Bounds { scene: "bench/chain100_air.ron", regions: &[region("ball*", [-1.35, -1e-9, 16.45], [16.35, 1e-9, 30.93])], balance_budget: 105.0 },
+    Bounds {
+        scene: "bench/chain100_air.ron",
+        regions: &[region("ball*", [-1.35, -1e-9, 16.45], [16.35, 1e-9, 30.93])],
+        balance_budget: 105.0,
+    },
 ];
 
 /// The bounds of the shipped scene at `path`, if declared.
@@ -130,7 +188,11 @@ fn every_shipped_scene_declares_its_bounds() {
     let undeclared: Vec<_> = files.iter().filter(|f| bounds_of(f).is_none()).collect();
     assert!(undeclared.is_empty(), "declare the bounds of {undeclared:?} in {}", file!());
     for bounds in BOUNDS {
-        assert!(files.contains(&common::repo(&format!("scenes/{}", bounds.scene))), "no shipped scene {}", bounds.scene);
+        assert!(
+            files.contains(&common::repo(&format!("scenes/{}", bounds.scene))),
+            "no shipped scene {}",
+            bounds.scene
+        );
     }
 }
 
@@ -145,7 +207,11 @@ struct Reached {
 fn run(world: &mut World, duration: f64) -> Result<Reached, String> {
     let bodies = world.bodies().len();
     let start = world.energy().balance();
-    let mut reached = Reached { low: vec![Vector3::repeat(f64::INFINITY); bodies], high: vec![Vector3::repeat(f64::NEG_INFINITY); bodies], drift: 0.0 };
+    let mut reached = Reached {
+        low: vec![Vector3::repeat(f64::INFINITY); bodies],
+        high: vec![Vector3::repeat(f64::NEG_INFINITY); bodies],
+        drift: 0.0,
+    };
     let steps = (duration / world.dt()).round() as u64;
     for _ in 0..steps {
         world.step().map_err(|e| e.to_string())?;
@@ -166,18 +232,30 @@ fn run(world: &mut World, duration: f64) -> Result<Reached, String> {
 fn breaches(bounds: &Bounds, world: &World, reached: &Reached) -> Vec<String> {
     let mut out = Vec::new();
     for (i, body) in world.bodies().iter().enumerate() {
-        let matches = |r: &&Region| r.bodies.strip_suffix('*').map_or(r.bodies == body.name, |prefix| body.name.starts_with(prefix));
+        let matches = |r: &&Region| {
+            r.bodies.strip_suffix('*').map_or(r.bodies == body.name, |prefix| body.name.starts_with(prefix))
+        };
         let Some(region) = bounds.regions.iter().find(matches) else {
             out.push(format!("body \"{}\" has no declared box", body.name));
             continue;
         };
         let (low, high) = (Vector3::from(region.low), Vector3::from(region.high));
         if (0..3).any(|k| reached.low[i][k] < low[k] || reached.high[i][k] > high[k]) {
-            out.push(format!("body \"{}\" reached {:?} .. {:?}, outside {:?} .. {:?}", body.name, reached.low[i].as_slice(), reached.high[i].as_slice(), region.low, region.high));
+            out.push(format!(
+                "body \"{}\" reached {:?} .. {:?}, outside {:?} .. {:?}",
+                body.name,
+                reached.low[i].as_slice(),
+                reached.high[i].as_slice(),
+                region.low,
+                region.high
+            ));
         }
     }
     if reached.drift > bounds.balance_budget {
-        out.push(format!("the energy balance drifted by {:.4e} J, over its budget of {:.4e} J", reached.drift, bounds.balance_budget));
+        out.push(format!(
+            "the energy balance drifted by {:.4e} J, over its budget of {:.4e} J",
+            reached.drift, bounds.balance_budget
+        ));
     }
     out
 }
@@ -192,8 +270,13 @@ fn every_shipped_scene_runs_its_duration_within_its_bounds() {
         match run(&mut world, scene.file.duration) {
             Err(error) => failures.push(format!("{}: {error}", bounds.scene)),
             Ok(reached) => {
-                assert!(world.time() >= scene.file.duration - 0.5 * world.dt(), "{} ran its whole duration", bounds.scene);
-                failures.extend(breaches(bounds, &world, &reached).into_iter().map(|b| format!("{}: {b}", bounds.scene)));
+                assert!(
+                    world.time() >= scene.file.duration - 0.5 * world.dt(),
+                    "{} ran its whole duration",
+                    bounds.scene
+                );
+                failures
+                    .extend(breaches(bounds, &world, &reached).into_iter().map(|b| format!("{}: {b}", bounds.scene)));
             }
         }
     }

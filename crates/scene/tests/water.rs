@@ -44,7 +44,10 @@ fn the_good_scene_reaches_the_physics_in_radians() {
     }
     assert_eq!(stage.floating.len(), 1);
     // Projected areas from the mesh: 2 × 1 m across x and y, 2 × 2 m across z.
-    assert_eq!(stage.floating[0].hydro.drag_areas.map(|a| (a * 1e12).round() / 1e12), nalgebra::Vector3::new(2.0, 2.0, 4.0));
+    assert_eq!(
+        stage.floating[0].hydro.drag_areas.map(|a| (a * 1e12).round() / 1e12),
+        nalgebra::Vector3::new(2.0, 2.0, 4.0)
+    );
 }
 
 #[test]
@@ -53,14 +56,26 @@ fn a_scene_without_water_has_no_water_stage_and_saves_without_it() {
     assert!(!text.contains("Water("));
     let loaded = common::scene(&text);
     assert!(loaded.world.system().water().is_none());
-    assert!(loaded.warnings.iter().any(|w| w.contains("declares hydro but the scene has no water")), "{:?}", loaded.warnings);
+    assert!(
+        loaded.warnings.iter().any(|w| w.contains("declares hydro but the scene has no water")),
+        "{:?}",
+        loaded.warnings
+    );
     assert!(!scene::to_ron(&loaded.file).unwrap().contains("water"));
 }
 
 #[test]
 fn a_body_under_the_surface_without_hydro_is_warned_about() {
-    let loaded = common::scene(&GOOD.replace("            hydro: Hydro(drag: (1.0, 1.0, 1.0), added_mass: (0.5, 0.5, 1.0)),\n", "").replace("position: (0.0, 0.0, 0.0)", "position: (0.0, 0.0, -3.0)"));
-    assert!(loaded.warnings.iter().any(|w| w.contains("body \"box\" starts under the water surface but declares no hydro")), "{:?}", loaded.warnings);
+    let loaded = common::scene(
+        &GOOD
+            .replace("            hydro: Hydro(drag: (1.0, 1.0, 1.0), added_mass: (0.5, 0.5, 1.0)),\n", "")
+            .replace("position: (0.0, 0.0, 0.0)", "position: (0.0, 0.0, -3.0)"),
+    );
+    assert!(
+        loaded.warnings.iter().any(|w| w.contains("body \"box\" starts under the water surface but declares no hydro")),
+        "{:?}",
+        loaded.warnings
+    );
 }
 
 #[test]
@@ -69,26 +84,47 @@ fn bad_water_is_refused_at_its_field() {
     assert_error(("depth: 30.0", "depth: -2.0"), "bad.ron:5:9: water: depth must be > 0 m, got -2");
     assert_error(("period: 6.0", "period: 0.0"), "bad.ron:7:37: water: wave period must be > 0 s, got 0");
     // 5 m high at 2 s (λ = 6.2 m): steeper than 1/7.
-    assert_error(("height: 1.0, period: 6.0", "height: 5.0, period: 2.0"), "bad.ron:7:9: water: the wave is steeper than the breaking limit: H/λ = 5/6.");
+    assert_error(
+        ("height: 1.0, period: 6.0", "height: 5.0, period: 2.0"),
+        "bad.ron:7:9: water: the wave is steeper than the breaking limit: H/λ = 5/6.",
+    );
     assert_error(
         ("Regular(height: 1.0, period: 6.0, heading_deg: 45.0)", "Jonswap(hs: 1.0, tp: 6.0, gamma: 0.5)"),
         "bad.ron:7:42: water: JONSWAP gamma must be ≥ 1, got 0.5",
     );
     assert_error(("speed: 0.5", "speed: NaN"), "bad.ron:6:36: number must be finite, got NaN");
     assert_error(("ramp: 10.0", "ramp: -1.0"), "bad.ron:8:9: water: ramp must be ≥ 0 s, got -1");
-    let deep_power_law = GOOD.replace("        depth: 30.0,\n", "").replace("heading_deg: 90.0)", "heading_deg: 90.0, profile: PowerLaw)");
-    assert_eq!(common::error_of(&deep_power_law), "bad.ron:5:57: water: a power-law current needs a depth (it is zero at the seabed)");
+    let deep_power_law = GOOD
+        .replace("        depth: 30.0,\n", "")
+        .replace("heading_deg: 90.0)", "heading_deg: 90.0, profile: PowerLaw)");
+    assert_eq!(
+        common::error_of(&deep_power_law),
+        "bad.ron:5:57: water: a power-law current needs a depth (it is zero at the seabed)"
+    );
 }
 
 #[test]
 fn bad_coefficients_and_hulls_are_refused_naming_the_body() {
-    assert_error(("drag: (1.0, 1.0, 1.0)", "drag: (1.0, -1.0, 1.0)"), "bad.ron:15:13: body \"box\": hydro: drag must be finite and ≥ 0 on every axis, got (1, -1, 1)");
-    assert_error(("added_mass: (0.5, 0.5, 1.0)", "added_mass: (0.5, 0.5, 1.0), drag_areas: (1.0, 0.0, 1.0)"), "bad.ron:15:13: body \"box\": hydro: drag_areas must be finite and > 0 m² on every axis, got (1, 0, 1)");
+    assert_error(
+        ("drag: (1.0, 1.0, 1.0)", "drag: (1.0, -1.0, 1.0)"),
+        "bad.ron:15:13: body \"box\": hydro: drag must be finite and ≥ 0 on every axis, got (1, -1, 1)",
+    );
+    assert_error(
+        ("added_mass: (0.5, 0.5, 1.0)", "added_mass: (0.5, 0.5, 1.0), drag_areas: (1.0, 0.0, 1.0)"),
+        "bad.ron:15:13: body \"box\": hydro: drag_areas must be finite and > 0 m² on every axis, got (1, 0, 1)",
+    );
     let fixture = |name: &str| common::here(&format!("fixtures/{name}")).display().to_string();
-    for (file, expected) in [("open_box.obj", "the hull is open"), ("flat.obj", "the hull encloses no volume"), ("cube_inward.stl", "the hull is inside out")] {
+    for (file, expected) in [
+        ("open_box.obj", "the hull is open"),
+        ("flat.obj", "the hull encloses no volume"),
+        ("cube_inward.stl", "the hull is inside out"),
+    ] {
         let text = GOOD.replace("Box(size: (2.0, 2.0, 1.0))", &format!("Mesh(file: {:?})", fixture(file)));
         let error = common::error_of(&text);
-        assert!(error.contains("body \"box\"") && error.contains(expected) && error.starts_with("bad.ron:14:"), "{error}");
+        assert!(
+            error.contains("body \"box\"") && error.contains(expected) && error.starts_with("bad.ron:14:"),
+            "{error}"
+        );
     }
 }
 

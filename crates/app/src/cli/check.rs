@@ -4,12 +4,12 @@ use std::fmt::Write as _;
 use tether_physics::body::Support;
 use tether_physics::coupling::contact::Opposing;
 use tether_physics::coupling::{Contact, CouplingKind, ElasticLaw, Endpoint};
-use tether_physics::stability;
-use tether_physics::world::World;
 use tether_physics::math::{Mat3, Vec3};
+use tether_physics::stability;
 use tether_physics::water::WaveSpec;
 use tether_physics::water::dispersion::wavelength;
 use tether_physics::water::hydrostatics::floating_equilibrium;
+use tether_physics::world::World;
 use tether_scene::Scene;
 
 pub fn run(scene: &Scene) -> anyhow::Result<()> {
@@ -62,24 +62,47 @@ fn report(world: &World, label: &str) -> String {
             }
             CouplingKind::Catenary(line) => {
                 let _ = writeln!(out, "{ends}");
-                let _ = writeln!(out, "  λ0 = {} kg/m, L_eq = {} m, D = {} N/m (EA = {} N)", line.mass_per_length, line.length, line.stiffness, line.stiffness * line.length);
+                let _ = writeln!(
+                    out,
+                    "  λ0 = {} kg/m, L_eq = {} m, D = {} N/m (EA = {} N)",
+                    line.mass_per_length,
+                    line.length,
+                    line.stiffness,
+                    line.stiffness * line.length
+                );
                 let fluid = world.system().surroundings().fluid_density;
                 if line.displaced_area > 0.0 {
-                    let _ = writeln!(out, "  A_d = {} m²: submerged weight {:.6} N/m", line.displaced_area, line.submerged_mass_per_length(fluid) * world.gravity().norm());
+                    let _ = writeln!(
+                        out,
+                        "  A_d = {} m²: submerged weight {:.6} N/m",
+                        line.displaced_area,
+                        line.submerged_mass_per_length(fluid) * world.gravity().norm()
+                    );
                 }
                 if let Some(state) = world.line_state(index) {
                     let (t1, t2) = state.end_tensions();
                     let _ = writeln!(
                         out,
                         "  chord {chord:.6} m, H = {:.6} N, V1 = {:.6} N, V2 = {:.6} N, end tensions {t1:.6} / {t2:.6} N ({} Newton iterations)",
-                        state.horizontal_tension, state.vertical1, state.vertical2(), state.iterations
+                        state.horizontal_tension,
+                        state.vertical1,
+                        state.vertical2(),
+                        state.iterations
                     );
                     if state.ground.is_some() {
                         let touchdowns: Vec<String> = state.touchdowns().iter().map(v).collect();
-                        let _ = writeln!(out, "  on the seabed: L_B = {:.6} m, touchdown {}", state.grounded_length(), if touchdowns.is_empty() { "none".to_string() } else { touchdowns.join(", ") });
+                        let _ = writeln!(
+                            out,
+                            "  on the seabed: L_B = {:.6} m, touchdown {}",
+                            state.grounded_length(),
+                            if touchdowns.is_empty() { "none".to_string() } else { touchdowns.join(", ") }
+                        );
                     }
                     if line.submerged_mass_per_length(fluid) < 0.0 {
-                        let _ = writeln!(out, "  warning: the line is buoyant (ρ A_d > λ0): it arches upward; nothing stops it at the water surface");
+                        let _ = writeln!(
+                            out,
+                            "  warning: the line is buoyant (ρ A_d > λ0): it arches upward; nothing stops it at the water surface"
+                        );
                     }
                 }
             }
@@ -88,33 +111,62 @@ fn report(world: &World, label: &str) -> String {
     }
     let limits = world.limits();
     let adaptive = world.integrator().is_adaptive();
-    let title = if adaptive { "stiffness limit (dopri45 adapts its step; explicit steps are held below these)" } else { "stable time step" };
+    let title = if adaptive {
+        "stiffness limit (dopri45 adapts its step; explicit steps are held below these)"
+    } else {
+        "stable time step"
+    };
     let _ = writeln!(out, "\n{title} ({}):", world.integrator().name());
     for limit in &limits {
         let _ = writeln!(out, "  {:<40} {:.6e} s", limit.describe(world.system()), limit.dt);
     }
     match stability::binding(&limits) {
         Some(binding) if adaptive => {
-            let verdict = if world.step_size() <= binding.dt { "does not hold it back" } else { "holds its steps near this" };
-            let _ = writeln!(out, "  binding: {} at {:.6e} s; with the integrator step {:.6e} s it {verdict}", binding.describe(world.system()), binding.dt, world.step_size());
+            let verdict =
+                if world.step_size() <= binding.dt { "does not hold it back" } else { "holds its steps near this" };
+            let _ = writeln!(
+                out,
+                "  binding: {} at {:.6e} s; with the integrator step {:.6e} s it {verdict}",
+                binding.describe(world.system()),
+                binding.dt,
+                world.step_size()
+            );
         }
         Some(binding) => {
             let verdict = if world.step_size() <= binding.dt { "stable" } else { "UNSTABLE: lower dt or add substeps" };
-            let _ = writeln!(out, "  binding: {} at {:.6e} s; the integrator step {:.6e} s is {verdict}", binding.describe(world.system()), binding.dt, world.step_size());
+            let _ = writeln!(
+                out,
+                "  binding: {} at {:.6e} s; the integrator step {:.6e} s is {verdict}",
+                binding.describe(world.system()),
+                binding.dt,
+                world.step_size()
+            );
         }
         None => {
             let _ = writeln!(out, "  nothing limits the time step");
         }
     }
     for impact in world.impact_limits() {
-        let verdict = if world.step_size() <= impact.dt { "resolved" } else { "UNDER-RESOLVED: the rebound will be wrong; lower dt or add substeps" };
-        let _ = writeln!(out, "  {:<40} {:.6e} s; the integrator step is {verdict}", impact.describe(world.system()), impact.dt);
+        let verdict = if world.step_size() <= impact.dt {
+            "resolved"
+        } else {
+            "UNDER-RESOLVED: the rebound will be wrong; lower dt or add substeps"
+        };
+        let _ = writeln!(
+            out,
+            "  {:<40} {:.6e} s; the integrator step is {verdict}",
+            impact.describe(world.system()),
+            impact.dt
+        );
     }
     let e = world.energy();
     let _ = writeln!(
         out,
         "\ninitial energy: kinetic {:.6} J, gravity {:.6} J, elastic {:.6} J, total {:.6} J",
-        e.kinetic + 0.0, e.gravity + 0.0, e.elastic + 0.0, e.total() + 0.0
+        e.kinetic + 0.0,
+        e.gravity + 0.0,
+        e.elastic + 0.0,
+        e.total() + 0.0
     );
     out
 }
@@ -125,7 +177,8 @@ fn water_report(out: &mut String, world: &World) {
     let Some(stage) = world.system().water() else { return };
     let water = &stage.water;
     let spec = water.spec();
-    let depth = spec.depth.map_or_else(|| "deep".to_string(), |h| format!("depth {h} m (seabed at {} m)", spec.level - h));
+    let depth =
+        spec.depth.map_or_else(|| "deep".to_string(), |h| format!("depth {h} m (seabed at {} m)", spec.level - h));
     let waves = match spec.waves {
         WaveSpec::Calm => "calm".to_string(),
         WaveSpec::Regular { height, period, heading, phase } => format!(
@@ -135,13 +188,22 @@ fn water_report(out: &mut String, world: &World) {
             phase.to_degrees()
         ),
         WaveSpec::Jonswap { significant_height, peak_period, gamma, heading, components, seed } => {
-            format!("JONSWAP Hs = {significant_height} m, Tp = {peak_period} s, γ = {gamma}, heading {}°, {components} components (seed {seed})", heading.to_degrees())
+            format!(
+                "JONSWAP Hs = {significant_height} m, Tp = {peak_period} s, γ = {gamma}, heading {}°, {components} components (seed {seed})",
+                heading.to_degrees()
+            )
         }
     };
     let _ = writeln!(out, "\nwater: ρ = {} kg/m³, level {} m, {depth}", spec.density, spec.level);
     let _ = writeln!(out, "  waves {waves}; ramp {} s", water.ramp_time());
     if spec.current.speed > 0.0 {
-        let _ = writeln!(out, "  current {} m/s toward {}° ({:?})", spec.current.speed, spec.current.heading.to_degrees(), spec.current.profile);
+        let _ = writeln!(
+            out,
+            "  current {} m/s toward {}° ({:?})",
+            spec.current.speed,
+            spec.current.heading.to_degrees(),
+            spec.current.profile
+        );
     }
     for (floating, record) in stage.floating.iter().zip(world.water_forces()) {
         let index = floating.body;
@@ -149,8 +211,19 @@ fn water_report(out: &mut String, world: &World) {
         let gravity = world.system().gravity_load(body);
         let pull = world.load(index).force.z - gravity.force.z - record.total().force.z;
         let hull = &floating.hull;
-        let _ = writeln!(out, "\nfloating body \"{}\" (hull of {} triangles, {:.6} m³)", body.name, hull.triangles().len(), hull.volume());
-        let _ = writeln!(out, "  at t = 0: submerged {:.6} m³, water force {} N", record.submerged_volume, v(&record.total().force));
+        let _ = writeln!(
+            out,
+            "\nfloating body \"{}\" (hull of {} triangles, {:.6} m³)",
+            body.name,
+            hull.triangles().len(),
+            hull.volume()
+        );
+        let _ = writeln!(
+            out,
+            "  at t = 0: submerged {:.6} m³, water force {} N",
+            record.submerged_volume,
+            v(&record.total().force)
+        );
         if body.is_kinematic() {
             let _ = writeln!(out, "  kinematic: its motion is prescribed and the water does not act on it");
             continue;
@@ -166,14 +239,34 @@ fn water_report(out: &mut String, world: &World) {
             }
             Some(e) => {
                 let s = &e.statics;
-                let _ = writeln!(out, "  free-floating equilibrium (weight, and the couplings' vertical pull at t = 0 of {pull:.6} N), heave only:");
+                let _ = writeln!(
+                    out,
+                    "  free-floating equilibrium (weight, and the couplings' vertical pull at t = 0 of {pull:.6} N), heave only:"
+                );
                 let _ = writeln!(out, "  displaced volume   {:.6} m³", s.displaced_volume);
                 let _ = writeln!(out, "  draft              {:.6} m (G at z = {:.6} m)", s.draft, e.height);
                 let _ = writeln!(out, "  centre of buoyancy {} m", v(&s.center_of_buoyancy));
-                let _ = writeln!(out, "  waterplane area    {:.6} m² (centre ({:.6}, {:.6}) m)", s.waterplane_area, s.waterplane_center[0] + 0.0, s.waterplane_center[1] + 0.0);
-                let _ = writeln!(out, "  GM transverse      {:.6} m (roll, about x), longitudinal {:.6} m (pitch, about y)", e.metacentric_heights[0], e.metacentric_heights[1]);
-                let period = |p: Option<f64>| p.map_or_else(|| "none (no restoring)".to_string(), |p| format!("{p:.6} s"));
-                let _ = writeln!(out, "  natural periods    heave {}, roll {}, pitch {} (with added mass)", period(e.periods[0]), period(e.periods[1]), period(e.periods[2]));
+                let _ = writeln!(
+                    out,
+                    "  waterplane area    {:.6} m² (centre ({:.6}, {:.6}) m)",
+                    s.waterplane_area,
+                    s.waterplane_center[0] + 0.0,
+                    s.waterplane_center[1] + 0.0
+                );
+                let _ = writeln!(
+                    out,
+                    "  GM transverse      {:.6} m (roll, about x), longitudinal {:.6} m (pitch, about y)",
+                    e.metacentric_heights[0], e.metacentric_heights[1]
+                );
+                let period =
+                    |p: Option<f64>| p.map_or_else(|| "none (no restoring)".to_string(), |p| format!("{p:.6} s"));
+                let _ = writeln!(
+                    out,
+                    "  natural periods    heave {}, roll {}, pitch {} (with added mass)",
+                    period(e.periods[0]),
+                    period(e.periods[1]),
+                    period(e.periods[2])
+                );
             }
         }
     }
@@ -192,12 +285,20 @@ fn adaptive(world: &World) -> String {
 fn contact_report(out: &mut String, world: &World, contact: &Contact) {
     let body = &world.bodies()[contact.body];
     let against = match &contact.against {
-        Opposing::Planes(planes) if planes.len() == 1 => format!("the plane through {} m with normal {}", v(&planes[0].point), v(&planes[0].normal)),
+        Opposing::Planes(planes) if planes.len() == 1 => {
+            format!("the plane through {} m with normal {}", v(&planes[0].point), v(&planes[0].normal))
+        }
         Opposing::Planes(planes) => format!("{} walls of the domain box", planes.len()),
         Opposing::Body { body, .. } => format!("body \"{}\"", world.bodies()[*body].name),
     };
     let boundary = &contact.boundary;
-    let _ = writeln!(out, "  faces of body \"{}\" ({} faces, {:.6} m²) against {against}", body.name, boundary.faces().len(), boundary.area());
+    let _ = writeln!(
+        out,
+        "  faces of body \"{}\" ({} faces, {:.6} m²) against {against}",
+        body.name,
+        boundary.faces().len(),
+        boundary.area()
+    );
     let law = &contact.law;
     let _ = writeln!(
         out,
@@ -253,11 +354,20 @@ fn end(world: &World, e: &Endpoint) -> String {
 fn law(l: &ElasticLaw) -> String {
     match l {
         ElasticLaw::Linear { stiffness, rest_length } => format!("linear k = {stiffness} N/m, x0 = {rest_length} m"),
-        ElasticLaw::Polynomial { a, b, c, rest_length } => format!("polynomial k_eff = {a} + {b} s + {c} s² N/m, x0 = {rest_length} m"),
-        ElasticLaw::ForceCurve { curve } => format!("force curve ({} points), x0 = {:.6} m", curve.points().len(), l.rest_length()),
-        ElasticLaw::StiffnessCurve { stiffness, rest_length } => format!("stiffness curve ({} points), x0 = {rest_length} m", stiffness.points().len()),
+        ElasticLaw::Polynomial { a, b, c, rest_length } => {
+            format!("polynomial k_eff = {a} + {b} s + {c} s² N/m, x0 = {rest_length} m")
+        }
+        ElasticLaw::ForceCurve { curve } => {
+            format!("force curve ({} points), x0 = {:.6} m", curve.points().len(), l.rest_length())
+        }
+        ElasticLaw::StiffnessCurve { stiffness, rest_length } => {
+            format!("stiffness curve ({} points), x0 = {rest_length} m", stiffness.points().len())
+        }
         ElasticLaw::ReferenceForce { stiffness, reference_length, reference_force, .. } => {
-            format!("reference force f_r = {reference_force} N at x_r = {reference_length} m, stiffness curve ({} points)", stiffness.points().len())
+            format!(
+                "reference force f_r = {reference_force} N at x_r = {reference_length} m, stiffness curve ({} points)",
+                stiffness.points().len()
+            )
         }
     }
 }

@@ -31,9 +31,12 @@ pub fn run(args: &EquilibriumArgs) -> anyhow::Result<()> {
     super::print(&format!("{label}: {}", report::equilibrium(system, &solved, start, elapsed)))?;
     if let Some(out) = &args.write {
         let mut placed = scene::pose::with_poses(&loaded.file, loaded.bodies.bodies(), &solved.states);
-        let folder = |p: &std::path::Path| std::path::absolute(p.parent().unwrap_or(std::path::Path::new("."))).unwrap_or_default();
+        let folder = |p: &std::path::Path| {
+            std::path::absolute(p.parent().unwrap_or(std::path::Path::new("."))).unwrap_or_default()
+        };
         scene::relocate_meshes(&mut placed, &folder(&args.scene), &folder(out));
-        let text = scene::to_ron(&placed).with_context(|| format!("{}: cannot write the scene as RON", out.display()))?;
+        let text =
+            scene::to_ron(&placed).with_context(|| format!("{}: cannot write the scene as RON", out.display()))?;
         std::fs::write(out, text).with_context(|| format!("{}: cannot write", out.display()))?;
         super::print(&format!("\nwrote {} (the scene starting at equilibrium)\n", out.display()))?;
     }

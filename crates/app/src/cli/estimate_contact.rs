@@ -34,7 +34,15 @@ pub struct EstimateArgs {
 }
 
 pub fn run(args: &EstimateArgs) -> anyhow::Result<()> {
-    let impact = Impact { mass: args.mass, other_mass: args.mass2, area: args.area, speed: args.speed, range: args.d0, min_distance: args.dmin, damping_ratio: args.zeta };
+    let impact = Impact {
+        mass: args.mass,
+        other_mass: args.mass2,
+        area: args.area,
+        speed: args.speed,
+        range: args.d0,
+        min_distance: args.dmin,
+        damping_ratio: args.zeta,
+    };
     let estimate = estimator::estimate(&impact)?;
     let mut out = String::new();
     let _ = writeln!(out, "effective mass   m_e = {:.6e} kg", estimate.effective_mass);
@@ -47,7 +55,11 @@ pub fn run(args: &EstimateArgs) -> anyhow::Result<()> {
             anyhow::bail!("--dt must be a positive number of seconds, got {dt}");
         }
         let substeps = estimator::substeps_for(dt, estimate.recommended_dt);
-        let _ = writeln!(out, "at dt = {dt:e} s: substeps: Fixed({substeps}) (integrator step {:.6e} s)", dt / f64::from(substeps));
+        let _ = writeln!(
+            out,
+            "at dt = {dt:e} s: substeps: Fixed({substeps}) (integrator step {:.6e} s)",
+            dt / f64::from(substeps)
+        );
     }
     super::print(&out)
 }

@@ -1,8 +1,8 @@
 //! `tether forces SCENE --json`: the forces of the initial state.
 
 use serde::Serialize;
-use tether_physics::world::World;
 use tether_physics::math::Vec3;
+use tether_physics::world::World;
 use tether_scene::Scene;
 
 #[derive(Serialize)]
@@ -85,13 +85,24 @@ fn report(world: &World) -> Report<'_> {
             .iter()
             .zip(world.coupling_forces())
             .enumerate()
-            .map(|(i, (c, f))| CouplingReport { name: &c.name, kind: c.kind_name(), f1: a(&f.f1), f2: a(&f.f2), catenary: catenary_report(world, i) })
+            .map(|(i, (c, f))| CouplingReport {
+                name: &c.name,
+                kind: c.kind_name(),
+                f1: a(&f.f1),
+                f2: a(&f.f2),
+                catenary: catenary_report(world, i),
+            })
             .collect(),
         bodies: world
             .bodies()
             .iter()
             .enumerate()
-            .map(|(i, b)| BodyReport { name: &b.name, force: a(&world.load(i).force), moment: a(&world.load(i).moment), water: water_report(world, i) })
+            .map(|(i, b)| BodyReport {
+                name: &b.name,
+                force: a(&world.load(i).force),
+                moment: a(&world.load(i).moment),
+                water: water_report(world, i),
+            })
             .collect(),
     }
 }
@@ -108,7 +119,10 @@ pub fn run(scene: &Scene, json: bool) -> anyhow::Result<()> {
         for b in &report.bodies {
             out += &format!("body     {:<20} force {:?} N  moment {:?} N·m\n", b.name, b.force, b.moment);
             if let Some(w) = &b.water {
-                out += &format!("  water  {:<20} force {:?} N  moment {:?} N·m  submerged {} m³\n", "", w.force, w.moment, w.submerged_volume);
+                out += &format!(
+                    "  water  {:<20} force {:?} N  moment {:?} N·m  submerged {} m³\n",
+                    "", w.force, w.moment, w.submerged_volume
+                );
             }
         }
         out

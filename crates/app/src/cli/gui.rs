@@ -35,7 +35,14 @@ pub fn run(args: GuiArgs) -> anyhow::Result<()> {
     {
         bail!("{} is not a sweep directory (no {})", dir.display(), tether::sweep::store::MANIFEST);
     }
-    let options = GuiOptions { scene, recording: None, connect: args.connect, save: args.save, scenes_dir: PathBuf::from(SCENES_DIR), sweep: args.sweep };
+    let options = GuiOptions {
+        scene,
+        recording: None,
+        connect: args.connect,
+        save: args.save,
+        scenes_dir: PathBuf::from(SCENES_DIR),
+        sweep: args.sweep,
+    };
     tether::gui::run(options).context("the window")
 }
 
@@ -43,6 +50,7 @@ pub fn view(recording: PathBuf) -> anyhow::Result<()> {
     if !Path::new(&recording).is_file() {
         bail!("no recording at {}", recording.display());
     }
-    let options = GuiOptions { recording: Some(recording), scenes_dir: PathBuf::from(SCENES_DIR), ..Default::default() };
+    let options =
+        GuiOptions { recording: Some(recording), scenes_dir: PathBuf::from(SCENES_DIR), ..Default::default() };
     tether::gui::run(options).context("the window")
 }

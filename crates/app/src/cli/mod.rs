@@ -106,7 +106,9 @@ fn load(path: &Path) -> anyhow::Result<Scene> {
 /// integrator; for the adaptive one, notes that a stiff coupling will hold its steps.
 fn warn_if_unstable(world: &tether_physics::world::World) {
     let limits = world.limits();
-    let Some(binding) = tether_physics::stability::binding(&limits).filter(|b| world.step_size() > b.dt) else { return };
+    let Some(binding) = tether_physics::stability::binding(&limits).filter(|b| world.step_size() > b.dt) else {
+        return;
+    };
     let name = world.integrator().name();
     if world.integrator().is_adaptive() {
         eprintln!(

@@ -58,12 +58,19 @@ pub fn run(args: &OffsetsArgs) -> anyhow::Result<()> {
     }
     let settings = Settings::default();
     let at_rest = equilibrium::solve(system, system.initial_states(), &[], &settings).with_context(|| label.clone())?;
-    let curve = offsets::curve(system, &at_rest, dof, args.to, args.steps, &settings).with_context(|| format!("{label}: offset curve of body \"{}\" in {}", args.body, args.direction))?;
+    let curve = offsets::curve(system, &at_rest, dof, args.to, args.steps, &settings)
+        .with_context(|| format!("{label}: offset curve of body \"{}\" in {}", args.body, args.direction))?;
     let rows = table::table(system, &curve);
     let stem = args.scene.file_stem().map_or_else(|| "scene".to_string(), |s| s.to_string_lossy().into_owned());
-    let output = args.output.clone().unwrap_or_else(|| PathBuf::from(format!("offsets-{stem}-{}-{}", args.body, args.direction)));
+    let output = args
+        .output
+        .clone()
+        .unwrap_or_else(|| PathBuf::from(format!("offsets-{stem}-{}-{}", args.body, args.direction)));
     let (csv, png) = (output.with_extension("csv"), output.with_extension("png"));
-    let header = format!("{label}: body \"{}\" held at offsets in {} from its equilibrium, the rest settled at each\n\n", args.body, args.direction);
+    let header = format!(
+        "{label}: body \"{}\" held at offsets in {} from its equilibrium, the rest settled at each\n\n",
+        args.body, args.direction
+    );
     super::print(&(header + &rows.text()))?;
     std::fs::write(&csv, rows.csv()).with_context(|| format!("{}: cannot write", csv.display()))?;
     let title = format!("{stem}: offset curve of \"{}\" in {}", args.body, args.direction);

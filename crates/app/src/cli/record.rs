@@ -81,7 +81,8 @@ fn parse_contacts(text: &str) -> Result<ArrowedContacts, String> {
 
 /// The face arrows the flags ask for.
 fn face_arrows(args: &RecordArgs) -> anyhow::Result<FaceArrows> {
-    for (name, time) in [("--face-arrows-from", args.face_arrows_from), ("--face-arrows-until", args.face_arrows_until)] {
+    for (name, time) in [("--face-arrows-from", args.face_arrows_from), ("--face-arrows-until", args.face_arrows_until)]
+    {
         if let Some(time) = time.filter(|t| !t.is_finite()) {
             bail!("{name} must be a time in seconds, got {time}");
         }
@@ -91,7 +92,11 @@ fn face_arrows(args: &RecordArgs) -> anyhow::Result<FaceArrows> {
     {
         bail!("--face-arrows-until ({until} s) is before --face-arrows-from ({from} s)");
     }
-    Ok(FaceArrows { contacts: args.face_arrows.clone().unwrap_or_default(), from: args.face_arrows_from, until: args.face_arrows_until })
+    Ok(FaceArrows {
+        contacts: args.face_arrows.clone().unwrap_or_default(),
+        from: args.face_arrows_from,
+        until: args.face_arrows_until,
+    })
 }
 
 fn positive(name: &str, value: f64, unit: &str) -> anyhow::Result<f64> {
@@ -124,10 +129,12 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     let frames = FrameSchedule::new(log_hz, dt, total_steps);
     let face_arrows = face_arrows(args)?;
     face_arrows.check(world)?;
-    let mut recorder = Recorder::to_file(&args.output, world, &face_arrows).with_context(|| format!("cannot write {}", args.output.display()))?;
+    let mut recorder = Recorder::to_file(&args.output, world, &face_arrows)
+        .with_context(|| format!("cannot write {}", args.output.display()))?;
     let interrupted = Arc::new(AtomicBool::new(false));
     let flag = Arc::clone(&interrupted);
-    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst)).context("installing the Ctrl-C / SIGTERM handler")?;
+    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
+        .context("installing the Ctrl-C / SIGTERM handler")?;
 
     let mut stopwatch = super::timing::Stopwatch::start();
     stopwatch.recorder(|| recorder.log_frame(world))?;
@@ -157,7 +164,8 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     let stats = stopwatch.recorder_waiting(|| recorder.finish())?;
     if args.timing {
         let file_bytes = std::fs::metadata(&args.output).map_or(0, |m| m.len());
-        let measured = super::timing::Measured { stats: &stats, simulated: world.time(), steps: world.steps(), file_bytes };
+        let measured =
+            super::timing::Measured { stats: &stats, simulated: world.time(), steps: world.steps(), file_bytes };
         eprint!("{}", stopwatch.report(&measured));
     }
     let output = args.output.display();

@@ -56,13 +56,19 @@ fn parse_reference(text: &str) -> Result<Reference, String> {
     if text == "closed-form" {
         return Ok(Reference::ClosedForm);
     }
-    let (name, value) = text.split_once(':').ok_or_else(|| format!("expected closed-form or NAME:VALUE (e.g. dopri45:1e-12 or rk4:1e-5), got `{text}`"))?;
+    let (name, value) = text
+        .split_once(':')
+        .ok_or_else(|| format!("expected closed-form or NAME:VALUE (e.g. dopri45:1e-12 or rk4:1e-5), got `{text}`"))?;
     let integrator = super::record::parse_integrator(name)?;
     let value: f64 = value.parse().map_err(|_| format!("`{value}` is not a number"))?;
     if !(value.is_finite() && value > 0.0) {
         return Err(format!("the reference's value must be positive, got {value}"));
     }
-    Ok(if integrator.is_adaptive() { Reference::Adaptive { rtol: value } } else { Reference::Fixed { integrator, dt: value } })
+    Ok(if integrator.is_adaptive() {
+        Reference::Adaptive { rtol: value }
+    } else {
+        Reference::Fixed { integrator, dt: value }
+    })
 }
 
 pub fn run(args: &StudyArgs) -> anyhow::Result<()> {
@@ -92,7 +98,14 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<()> {
     }
     let sample_interval = base * (wanted / (f64::from(args.samples) * base)).round().max(1.0);
     let duration = sample_interval * (wanted / sample_interval).round().max(1.0);
-    let plan = Plan { integrators, dts, tolerances: args.tolerances.clone(), duration, sample_interval, reference: args.reference };
+    let plan = Plan {
+        integrators,
+        dts,
+        tolerances: args.tolerances.clone(),
+        duration,
+        sample_interval,
+        reference: args.reference,
+    };
     let runner = Runner::new(args.jobs.unwrap_or_else(all_cores));
     let result = study::run_on(&runner, &scene, &plan, |line| eprintln!("{line}"))?;
 

@@ -71,7 +71,12 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<Outcome> {
     if let Some(SweepCommand::Merge { dir, jobs }) = &args.command {
         let runner = Runner::new(jobs.unwrap_or_else(tether::runner::all_cores));
         let written = sweep::merge(dir, &runner)?;
-        super::print(&format!("merged {}: {}\nwritten: {}\n", dir.display(), written.statuses, list(&written.files, written.charts)))?;
+        super::print(&format!(
+            "merged {}: {}\nwritten: {}\n",
+            dir.display(),
+            written.statuses,
+            list(&written.files, written.charts)
+        ))?;
         return Ok(Outcome::Finished);
     }
     let (Some(spec), Some(output)) = (&args.spec, &args.output) else { bail!("give a sweep spec and -o DIR") };
@@ -85,17 +90,28 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<Outcome> {
     let plan = Plan::load(spec)?;
     let cancel = Arc::new(AtomicBool::new(false));
     let flag = Arc::clone(&cancel);
-    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst)).context("installing the Ctrl-C / SIGTERM handler")?;
-    let runner = Runner::new(args.jobs.unwrap_or_else(tether::runner::all_cores)).with_case_timeout(Duration::from_secs_f64(args.case_timeout)).with_cancel(cancel);
+    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
+        .context("installing the Ctrl-C / SIGTERM handler")?;
+    let runner = Runner::new(args.jobs.unwrap_or_else(tether::runner::all_cores))
+        .with_case_timeout(Duration::from_secs_f64(args.case_timeout))
+        .with_cancel(cancel);
     let jobs = runner.jobs();
-    let options = Options { runner, shard: shard.as_ref().map(|(s, _)| *s), resume: args.resume, record: args.record.then_some(args.log_hz) };
+    let options = Options {
+        runner,
+        shard: shard.as_ref().map(|(s, _)| *s),
+        resume: args.resume,
+        record: args.record.then_some(args.log_hz),
+    };
     let which = shard.as_ref().map_or_else(String::new, |(s, source)| format!(", shard {s} (from {source})"));
     eprintln!("sweep {}: {} cases ({}){which}, on {jobs} threads", plan.name, plan.cases.len(), plan.design.describe());
     let bar = ProgressBar::hidden();
     let report = sweep::run(&plan, output, &options, |p: Progress| {
         if bar.is_hidden() && bar.length().is_none() {
             bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
-            bar.set_style(ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} cases, {msg}, {eta} left").expect("the template is a valid literal"));
+            bar.set_style(
+                ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} cases, {msg}, {eta} left")
+                    .expect("the template is a valid literal"),
+            );
             bar.set_length(p.total as u64);
         }
         bar.set_position(p.done as u64);
@@ -137,11 +153,20 @@ fn describe(report: &Report, output: &std::path::Path, jobs: NonZeroUsize) -> St
         );
     }
     if report.interrupted {
-        text += &format!("interrupted: the finished cases are kept; run again with --resume to finish into {}\n", output.display());
+        text += &format!(
+            "interrupted: the finished cases are kept; run again with --resume to finish into {}\n",
+            output.display()
+        );
     }
     match &report.written {
         Some(written) => text += &format!("written: {}\n", list(&written.files, written.charts)),
-        None if !report.interrupted => text += &format!("rows in {}/runs/; when every shard is done: tether sweep merge {}\n", output.display(), output.display()),
+        None if !report.interrupted => {
+            text += &format!(
+                "rows in {}/runs/; when every shard is done: tether sweep merge {}\n",
+                output.display(),
+                output.display()
+            )
+        }
         None => {}
     }
     text
@@ -149,6 +174,11 @@ fn describe(report: &Report, output: &std::path::Path, jobs: NonZeroUsize) -> St
 
 /// `out/results.csv, out/results.parquet, out/summary.md, out/plots (12 charts)`.
 fn list(files: &[PathBuf], charts: usize) -> String {
-    let names: Vec<String> = files.iter().map(|f| if f.extension().is_none() { format!("{} ({charts} charts)", f.display()) } else { f.display().to_string() }).collect();
+    let names: Vec<String> = files
+        .iter()
+        .map(|f| {
+            if f.extension().is_none() { format!("{} ({charts} charts)", f.display()) } else { f.display().to_string() }
+        })
+        .collect();
     names.join(", ")
 }

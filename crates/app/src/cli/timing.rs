@@ -38,7 +38,12 @@ pub(super) struct Measured<'a> {
 
 impl Stopwatch {
     pub(super) fn start() -> Self {
-        Self { started: Instant::now(), process_cpu: process_cpu_seconds(), thread_cpu: thread_cpu_seconds(), recorder: Duration::ZERO }
+        Self {
+            started: Instant::now(),
+            process_cpu: process_cpu_seconds(),
+            thread_cpu: thread_cpu_seconds(),
+            recorder: Duration::ZERO,
+        }
     }
 
     /// Runs `call` (a call of the recorder that computes, never waits) and adds its time to the
@@ -72,7 +77,14 @@ impl Stopwatch {
         let frames = stats.frames.max(1) as f64;
         let mut text = String::new();
         // Writing to a String cannot fail.
-        let _ = writeln!(text, "timing: {:.3} s simulated in {wall:.3} s wall ({:.1}× real time), {} steps, {} frames", run.simulated, run.simulated / wall.max(f64::MIN_POSITIVE), run.steps, stats.frames);
+        let _ = writeln!(
+            text,
+            "timing: {:.3} s simulated in {wall:.3} s wall ({:.1}× real time), {} steps, {} frames",
+            run.simulated,
+            run.simulated / wall.max(f64::MIN_POSITIVE),
+            run.steps,
+            stats.frames
+        );
         let _ = writeln!(
             text,
             "  CPU {process:.3} s: physics {physics:.3} s ({:.0}%, {:.2} µs per step), recording {recording:.3} s ({:.0}%, {:.1} µs per frame: {:.3} s on the simulation thread, {rerun_threads:.3} s in Rerun's threads)",
@@ -90,7 +102,14 @@ impl Stopwatch {
             stats.bytes_per_frame()
         );
         for kind in &stats.kinds {
-            let _ = writeln!(text, "  {:<13} {:>5} entities {:>9} rows {:>8.0} bytes per frame", kind.kind, kind.entities, kind.rows, kind.bytes_per_frame(stats.frames));
+            let _ = writeln!(
+                text,
+                "  {:<13} {:>5} entities {:>9} rows {:>8.0} bytes per frame",
+                kind.kind,
+                kind.entities,
+                kind.rows,
+                kind.bytes_per_frame(stats.frames)
+            );
         }
         text
     }

@@ -39,7 +39,8 @@ impl TetherApp {
             sinks.push(sink);
             viewer
         });
-        let mut panel = ControlPanel::new(Sinks::new(sinks), waker(&cc.egui_ctx), options.scenes_dir.clone()).map_err(GuiError::Thread)?;
+        let mut panel = ControlPanel::new(Sinks::new(sinks), waker(&cc.egui_ctx), options.scenes_dir.clone())
+            .map_err(GuiError::Thread)?;
         if let Some(settings) = cc.storage.and_then(|storage| eframe::get_value::<Settings>(storage, SETTINGS_KEY)) {
             panel.settings = settings;
         }
@@ -82,7 +83,10 @@ impl TetherApp {
                 viewer.open_url_or_file(&path.display().to_string());
                 self.panel.note(format!("playing back {}", path.display()));
             }
-            None => self.panel.note_error(format!("{}: recordings play back in the embedded viewer, not with --connect", path.display())),
+            None => self.panel.note_error(format!(
+                "{}: recordings play back in the embedded viewer, not with --connect",
+                path.display()
+            )),
         }
     }
 
@@ -90,13 +94,21 @@ impl TetherApp {
     /// directories (or their `sweep.json`) by the sweep table; any other file is refused with a
     /// line in the log.
     fn take_dropped_files(&mut self, ctx: &egui::Context) {
-        let dropped: Vec<PathBuf> = ctx.input_mut(|i| std::mem::take(&mut i.raw.dropped_files)).into_iter().map(|f| f.path().to_path_buf()).filter(|p| !p.as_os_str().is_empty()).collect();
+        let dropped: Vec<PathBuf> = ctx
+            .input_mut(|i| std::mem::take(&mut i.raw.dropped_files))
+            .into_iter()
+            .map(|f| f.path().to_path_buf())
+            .filter(|p| !p.as_os_str().is_empty())
+            .collect();
         for path in dropped {
             match Dropped::of(&path) {
                 Dropped::Scene => self.panel.open_scene(&path),
                 Dropped::Recording => self.open_recording(&path),
                 Dropped::Sweep(dir) => self.panel.open_sweep(&dir),
-                Dropped::Other => self.panel.note_error(format!("{}: not a scene (.ron), a recording (.rrd) or a sweep directory; nothing opened", path.display())),
+                Dropped::Other => self.panel.note_error(format!(
+                    "{}: not a scene (.ron), a recording (.rrd) or a sweep directory; nothing opened",
+                    path.display()
+                )),
             }
         }
     }

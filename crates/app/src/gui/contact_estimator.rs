@@ -5,8 +5,8 @@
 //! the contact's knobs, which tune the running simulation as any edit does.
 
 use super::simulation::ContactStatus;
-use tether_physics::coupling::contact::estimator::{self, Impact};
 use rerun::external::egui;
+use tether_physics::coupling::contact::estimator::{self, Impact};
 
 /// The impact being estimated for.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -40,7 +40,11 @@ pub fn ui(ui: &mut egui::Ui, contacts: &[ContactStatus], impact: &mut ImpactDraf
     }
     ui.strong("Contact estimator");
     egui::Grid::new("impact").num_columns(3).show(ui, |ui| {
-        for (label, value, unit) in [("impact speed v", &mut impact.speed, "m/s"), ("stopped at d_min", &mut impact.min_distance, "m"), ("damping ratio ζ", &mut impact.damping_ratio, "–")] {
+        for (label, value, unit) in [
+            ("impact speed v", &mut impact.speed, "m/s"),
+            ("stopped at d_min", &mut impact.min_distance, "m"),
+            ("damping ratio ζ", &mut impact.damping_ratio, "–"),
+        ] {
             let name = ui.label(label);
             let speed = 0.001_f64.max(value.abs() * 0.01);
             ui.add(egui::DragValue::new(value).speed(speed).max_decimals(6)).labelled_by(name.id);
@@ -59,7 +63,10 @@ pub fn ui(ui: &mut egui::Ui, contacts: &[ContactStatus], impact: &mut ImpactDraf
             min_distance: impact.min_distance,
             damping_ratio: impact.damping_ratio,
         });
-        ui.label(format!("{} (m_e from {:.3} kg, A = {:.4} m², d0 = {} m)", contact.name, contact.mass, contact.area, contact.range));
+        ui.label(format!(
+            "{} (m_e from {:.3} kg, A = {:.4} m², d0 = {} m)",
+            contact.name, contact.mass, contact.area, contact.range
+        ));
         match estimate {
             Ok(e) => {
                 ui.label(format!("k1 = {:.4e} N/m³   k2 = {:.4e} N·s/m³", e.stiffness, e.damping));

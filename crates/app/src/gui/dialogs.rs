@@ -38,7 +38,9 @@ impl Dialogs {
             let path = match purpose {
                 Purpose::OpenScene => dialog.add_filter("Tether scene", &["ron"]).pick_file(),
                 Purpose::OpenRecording => dialog.add_filter("Rerun recording", &["rrd"]).pick_file(),
-                Purpose::SaveScene => dialog.add_filter("Tether scene", &["ron"]).set_file_name("tuned.ron").save_file(),
+                Purpose::SaveScene => {
+                    dialog.add_filter("Tether scene", &["ron"]).set_file_name("tuned.ron").save_file()
+                }
             };
             reply.send(path).ok();
             wake();

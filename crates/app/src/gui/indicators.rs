@@ -88,7 +88,13 @@ fn drift_plot(ui: &mut egui::Ui, history: &EnergyHistory) {
     painter.hline(rect.x_range(), rect.center().y, egui::Stroke::new(1.0, ui.visuals().weak_text_color()));
     let line: Vec<egui::Pos2> = points.iter().map(to_screen).collect();
     painter.add(egui::Shape::line(line, egui::Stroke::new(1.5, ui.visuals().strong_text_color())));
-    painter.text(rect.left_top(), egui::Align2::LEFT_TOP, format!("drift ±{largest:.1e} J"), egui::FontId::monospace(10.0), ui.visuals().weak_text_color());
+    painter.text(
+        rect.left_top(),
+        egui::Align2::LEFT_TOP,
+        format!("drift ±{largest:.1e} J"),
+        egui::FontId::monospace(10.0),
+        ui.visuals().weak_text_color(),
+    );
 }
 
 /// The integrator step against each stable time step.
@@ -102,7 +108,8 @@ fn stability_ui(ui: &mut egui::Ui, status: &Status) {
             ui.label(name);
             match limit {
                 Some(dt) => {
-                    let (color, verdict) = if status.step_size <= dt { (GREEN, "ok") } else { (RED, "too large: will diverge") };
+                    let (color, verdict) =
+                        if status.step_size <= dt { (GREEN, "ok") } else { (RED, "too large: will diverge") };
                     ui.colored_label(color, format!("{dt:.3e} s {verdict}"));
                 }
                 None => {
@@ -113,7 +120,8 @@ fn stability_ui(ui: &mut egui::Ui, status: &Status) {
         }
         for (name, dt) in &status.impact_limits {
             ui.label(name);
-            let (color, verdict) = if status.step_size <= *dt { (GREEN, "resolved") } else { (RED, "too coarse: impacts not resolved") };
+            let (color, verdict) =
+                if status.step_size <= *dt { (GREEN, "resolved") } else { (RED, "too coarse: impacts not resolved") };
             ui.colored_label(color, format!("{dt:.3e} s {verdict}"));
             ui.end_row();
         }
@@ -130,7 +138,11 @@ fn body_ui(ui: &mut egui::Ui, body: &BodyStatus) {
     ui.strong(format!("Selected body: {}", body.name));
     let v = |v: &tether_physics::math::Vec3| format!("({:.4}, {:.4}, {:.4})", v.x, v.y, v.z);
     egui::Grid::new("selected body").num_columns(2).show(ui, |ui| {
-        for (name, value, unit) in [("position of G", &body.position, "m"), ("velocity of G", &body.velocity, "m/s"), ("angular velocity", &body.angular_velocity, "rad/s")] {
+        for (name, value, unit) in [
+            ("position of G", &body.position, "m"),
+            ("velocity of G", &body.velocity, "m/s"),
+            ("angular velocity", &body.angular_velocity, "rad/s"),
+        ] {
             ui.label(name);
             ui.label(format!("{} {unit}", v(value)));
             ui.end_row();

@@ -82,11 +82,21 @@ pub fn run(options: GuiOptions) -> Result<(), GuiError> {
     }
     // `run_native` must be called on the main thread, which is where `tether` calls this.
     let main_thread = re_viewer::MainThreadToken::i_promise_i_am_on_the_main_thread();
-    let runtime = rerun::external::tokio::runtime::Builder::new_multi_thread().worker_threads(1).enable_all().build().map_err(GuiError::Runtime)?;
+    let runtime = rerun::external::tokio::runtime::Builder::new_multi_thread()
+        .worker_threads(1)
+        .enable_all()
+        .build()
+        .map_err(GuiError::Runtime)?;
     let mut native = re_viewer::native::eframe_options(None);
     // A plain, opaque, decorated window: transparent ones come out black under X without a
     // compositor (Xvfb screenshots).
-    native.viewport = native.viewport.with_title("Tether").with_app_id("tether").with_decorations(true).with_transparent(false).with_inner_size([1600.0, 1000.0]);
+    native.viewport = native
+        .viewport
+        .with_title("Tether")
+        .with_app_id("tether")
+        .with_decorations(true)
+        .with_transparent(false)
+        .with_inner_size([1600.0, 1000.0]);
     let mut failure: Option<GuiError> = None;
     let result = eframe::run_native(
         "Tether",

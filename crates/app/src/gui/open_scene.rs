@@ -4,15 +4,15 @@
 //! simulation what it accepts.
 
 use super::simulation::Run;
-use super::watch::FileWatch;
 use super::simulation::Wake;
+use super::watch::FileWatch;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 use tether_physics::coupling::Coupling;
 use tether_physics::integrator::Timing;
-use tether_scene::build::{self, Bodies};
 use tether_physics::water::WaterSpec;
 use tether_physics::water::morison::HydroSpec;
+use tether_scene::build::{self, Bodies};
 use tether_scene::file::CouplingDef;
 use tether_scene::water::{HydroDef, WaterDef};
 use tether_scene::{self as scene, SceneError, SceneFile};
@@ -106,7 +106,13 @@ impl OpenScene {
         let Loaded { scene: base, mut notes, .. } = Self::load(path, wake)?;
         let case = scene::build_variant(&base.text, path, variant)?;
         notes.extend(case.warnings.iter().map(|w| format!("warning: {w}")));
-        let scene = Self { drafts: case.file.couplings.clone(), refusals: vec![None; case.file.couplings.len()], tuned: case.file, bodies: case.bodies, ..base };
+        let scene = Self {
+            drafts: case.file.couplings.clone(),
+            refusals: vec![None; case.file.couplings.len()],
+            tuned: case.file,
+            bodies: case.bodies,
+            ..base
+        };
         Ok(Loaded { scene, run: Run { label, world: case.world }, notes })
     }
 
@@ -185,7 +191,9 @@ impl OpenScene {
         self.water_draft.clone_from(&self.file.water);
         let water = self.tuned.water != self.file.water || self.water_refusal.is_some();
         self.hydro_drafts = self.file.bodies.iter().map(|b| b.hydro.clone()).collect();
-        let bodies = (0..self.hydro_drafts.len()).filter(|&i| self.tuned.bodies[i].hydro != self.file.bodies[i].hydro || self.hydro_refusals[i].is_some()).collect();
+        let bodies = (0..self.hydro_drafts.len())
+            .filter(|&i| self.tuned.bodies[i].hydro != self.file.bodies[i].hydro || self.hydro_refusals[i].is_some())
+            .collect();
         (water, bodies)
     }
 
@@ -201,7 +209,9 @@ impl OpenScene {
     /// tuned, or refused).
     pub fn revert_to_file(&mut self) -> Vec<usize> {
         self.drafts.clone_from(&self.file.couplings);
-        (0..self.drafts.len()).filter(|&i| self.tuned.couplings[i] != self.file.couplings[i] || self.refusals[i].is_some()).collect()
+        (0..self.drafts.len())
+            .filter(|&i| self.tuned.couplings[i] != self.file.couplings[i] || self.refusals[i].is_some())
+            .collect()
     }
 
     /// Writes the tuned scene to `path` as RON that loads back to the same scene (mesh files

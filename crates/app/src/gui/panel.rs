@@ -12,16 +12,16 @@ use super::open_scene::{OnDisk, OpenScene};
 use super::run_controls::{self, RunAction, TimingDraft};
 use super::scenes::{self, SceneAction};
 use super::simulation::{Command, Report, Simulation, Speed, Status, Wake};
+use super::statics::{self, StaticsAction, StaticsDraft};
 use super::stream::Sinks;
 use super::sweep_table::{SweepAction, SweepTable};
 use super::tuning::{self, TuningAction};
-use super::statics::{self, StaticsAction, StaticsDraft};
 use super::water::{self, WaterAction};
 use rerun::external::egui;
-use tether_scene::file::CouplingDef;
 use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
+use tether_scene::file::CouplingDef;
 
 /// Keys of the run shortcuts: play/pause, one step, reset.
 const SHORTCUTS: [egui::Key; 3] = [egui::Key::Space, egui::Key::ArrowRight, egui::Key::Backspace];
@@ -245,7 +245,13 @@ impl ControlPanel {
                 self.scene_action(action);
             }
             ui.separator();
-            let actions = run_controls::ui(ui, self.status.as_ref(), &mut self.timing, &mut self.settings.speed, &mut self.settings.face_arrows);
+            let actions = run_controls::ui(
+                ui,
+                self.status.as_ref(),
+                &mut self.timing,
+                &mut self.settings.speed,
+                &mut self.settings.face_arrows,
+            );
             for action in actions {
                 self.run_action(action);
             }
@@ -278,7 +284,12 @@ impl ControlPanel {
                 Report::Message(text) => self.note(text),
                 Report::Error(text) => self.note_error(text),
                 Report::OffsetCurve(curve) => {
-                    self.note(format!("offset curve of body \"{}\" in {}: {} offsets", curve.body, curve.direction, curve.points.len()));
+                    self.note(format!(
+                        "offset curve of body \"{}\" in {}: {} offsets",
+                        curve.body,
+                        curve.direction,
+                        curve.points.len()
+                    ));
                     self.statics.curve = Some(curve);
                 }
             }
@@ -324,7 +335,9 @@ impl ControlPanel {
         }
         let mut pressed = Vec::new();
         events.retain(|event| match event {
-            egui::Event::Key { key, pressed: down, repeat, modifiers, .. } if modifiers.is_none() && SHORTCUTS.contains(key) => {
+            egui::Event::Key { key, pressed: down, repeat, modifiers, .. }
+                if modifiers.is_none() && SHORTCUTS.contains(key) =>
+            {
                 if *down && (!*repeat || *key == egui::Key::ArrowRight) {
                     pressed.push(*key);
                 }
@@ -364,7 +377,9 @@ impl ControlPanel {
         match action {
             SceneAction::Open(path) => self.open_scene(&path),
             SceneAction::Browse => self.dialogs.open(Purpose::OpenScene, &self.scenes_dir, self.wake.clone()),
-            SceneAction::BrowseRecording => self.dialogs.open(Purpose::OpenRecording, Path::new("."), self.wake.clone()),
+            SceneAction::BrowseRecording => {
+                self.dialogs.open(Purpose::OpenRecording, Path::new("."), self.wake.clone())
+            }
             SceneAction::Refresh => self.scene_list = tether_scene::list(&self.scenes_dir),
         }
     }
@@ -409,7 +424,8 @@ impl ControlPanel {
                 TuningAction::Edited(index) => self.tune(index),
                 TuningAction::Revert => self.revert_to_file(),
                 TuningAction::SaveAs => {
-                    let folder = self.scene.as_ref().and_then(|s| s.path.parent().map(Path::to_path_buf)).unwrap_or_default();
+                    let folder =
+                        self.scene.as_ref().and_then(|s| s.path.parent().map(Path::to_path_buf)).unwrap_or_default();
                     self.dialogs.open(Purpose::SaveScene, &folder, self.wake.clone());
                 }
             }
@@ -427,7 +443,9 @@ impl ControlPanel {
                 .zip(&open.hydro_refusals)
                 .zip(&open.file.bodies)
                 .enumerate()
-                .filter_map(|(index, ((draft, refusal), body))| draft.as_mut().map(|hydro| (index, body.name.as_str(), hydro, refusal.as_deref())))
+                .filter_map(|(index, ((draft, refusal), body))| {
+                    draft.as_mut().map(|hydro| (index, body.name.as_str(), hydro, refusal.as_deref()))
+                })
                 .collect(),
         });
         for action in water::ui(ui, drafts) {
@@ -454,7 +472,9 @@ impl ControlPanel {
                     Command::SetSeabedFriction(friction)
                 }
                 StaticsAction::Equilibrium => Command::Equilibrium,
-                StaticsAction::OffsetCurve { body, direction, to, steps } => Command::OffsetCurve { body, direction, to, steps },
+                StaticsAction::OffsetCurve { body, direction, to, steps } => {
+                    Command::OffsetCurve { body, direction, to, steps }
+                }
             };
             self.simulation.send(command);
         }

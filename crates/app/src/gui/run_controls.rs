@@ -2,9 +2,9 @@
 //! settings (integrator, dt, substeps) applied to the running simulation.
 
 use super::simulation::{Speed, Status};
+use rerun::external::egui;
 use tether_physics::integrator::{Integrator, Substeps};
 use tether_scene::SceneFile;
-use rerun::external::egui;
 
 /// What the run controls ask for.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -59,7 +59,13 @@ impl TimingDraft {
 const FACTORS: [f64; 7] = [0.1, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0];
 
 /// Draws the controls; `status` is the simulation's latest.
-pub fn ui(ui: &mut egui::Ui, status: Option<&Status>, timing: &mut TimingDraft, speed: &mut Speed, face_arrows: &mut bool) -> Vec<RunAction> {
+pub fn ui(
+    ui: &mut egui::Ui,
+    status: Option<&Status>,
+    timing: &mut TimingDraft,
+    speed: &mut Speed,
+    face_arrows: &mut bool,
+) -> Vec<RunAction> {
     let mut actions = Vec::new();
     let running = status.is_some_and(|s| s.running);
     ui.horizontal(|ui| {
@@ -136,7 +142,11 @@ fn timing_ui(ui: &mut egui::Ui, timing: &mut TimingDraft) -> bool {
         ui.label("Substeps");
         ui.horizontal(|ui| {
             let mut auto = timing.substeps.is_none();
-            if ui.checkbox(&mut auto, "Auto").on_hover_text("Enough to stay under 0.9 of the stable time step").changed() {
+            if ui
+                .checkbox(&mut auto, "Auto")
+                .on_hover_text("Enough to stay under 0.9 of the stable time step")
+                .changed()
+            {
                 timing.substeps = if auto { None } else { Some(1) };
                 apply = true;
             }

@@ -16,7 +16,12 @@ pub enum SceneAction {
 }
 
 /// Draws the picker: the open scene, the load error in red, the list and the dialogs.
-pub fn ui(ui: &mut egui::Ui, current: Option<&Path>, scenes: &[PathBuf], load_error: Option<&str>) -> Option<SceneAction> {
+pub fn ui(
+    ui: &mut egui::Ui,
+    current: Option<&Path>,
+    scenes: &[PathBuf],
+    load_error: Option<&str>,
+) -> Option<SceneAction> {
     let mut action = None;
     match current {
         Some(path) => ui.label(format!("Scene: {}", file_name(path))).on_hover_text(path.display().to_string()),
@@ -38,7 +43,11 @@ pub fn ui(ui: &mut egui::Ui, current: Option<&Path>, scenes: &[PathBuf], load_er
     });
     egui::CollapsingHeader::new(format!("Scenes ({})", scenes.len())).default_open(current.is_none()).show(ui, |ui| {
         for path in scenes {
-            if ui.selectable_label(current == Some(path.as_path()), file_name(path)).on_hover_text(path.display().to_string()).clicked() {
+            if ui
+                .selectable_label(current == Some(path.as_path()), file_name(path))
+                .on_hover_text(path.display().to_string())
+                .clicked()
+            {
                 action = Some(SceneAction::Open(path.clone()));
             }
         }

@@ -15,7 +15,12 @@ pub enum StaticsAction {
     /// The seabed's `C_B`, checked.
     SeabedFriction(f64),
     Equilibrium,
-    OffsetCurve { body: usize, direction: Direction, to: f64, steps: u32 },
+    OffsetCurve {
+        body: usize,
+        direction: Direction,
+        to: f64,
+        steps: u32,
+    },
 }
 
 /// What the panel's knobs show.
@@ -43,11 +48,19 @@ impl StaticsDraft {
 
 /// Draws the panel for a scene with `bodies` (names); `selected` is the body selected in the
 /// viewer, if any.
-pub fn ui(ui: &mut egui::Ui, draft: &mut StaticsDraft, bodies: &[String], selected: Option<&str>) -> Vec<StaticsAction> {
+pub fn ui(
+    ui: &mut egui::Ui,
+    draft: &mut StaticsDraft,
+    bodies: &[String],
+    selected: Option<&str>,
+) -> Vec<StaticsAction> {
     let mut actions = Vec::new();
     egui::CollapsingHeader::new("Statics and seabed").id_salt("statics").default_open(true).show(ui, |ui| {
         if let Some(friction) = &mut draft.friction {
-            let edited = egui::Grid::new("seabed knobs").num_columns(3).show(ui, |ui| knob(ui, "seabed line friction C_B", friction, "–")).inner;
+            let edited = egui::Grid::new("seabed knobs")
+                .num_columns(3)
+                .show(ui, |ui| knob(ui, "seabed line friction C_B", friction, "–"))
+                .inner;
             if edited {
                 // The elevation is the running seabed's; only C_B is checked here.
                 match Seabed::new(0.0, *friction) {
@@ -62,7 +75,11 @@ pub fn ui(ui: &mut egui::Ui, draft: &mut StaticsDraft, bodies: &[String], select
                 ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refusal}"));
             }
         }
-        if ui.button("Equilibrium").on_hover_text("Put every free body at its static pose, at rest (tether equilibrium)").clicked() {
+        if ui
+            .button("Equilibrium")
+            .on_hover_text("Put every free body at its static pose, at rest (tether equilibrium)")
+            .clicked()
+        {
             actions.push(StaticsAction::Equilibrium);
         }
         if bodies.is_empty() {
@@ -91,8 +108,17 @@ pub fn ui(ui: &mut egui::Ui, draft: &mut StaticsDraft, bodies: &[String], select
             ui.end_row();
         });
         let valid = draft.to.is_finite() && draft.to != 0.0;
-        if ui.add_enabled(valid, egui::Button::new("Offset curve")).on_hover_text("The restoring force held at offsets from equilibrium (tether offsets)").clicked() {
-            actions.push(StaticsAction::OffsetCurve { body: draft.body, direction: draft.direction, to: draft.to, steps: draft.steps });
+        if ui
+            .add_enabled(valid, egui::Button::new("Offset curve"))
+            .on_hover_text("The restoring force held at offsets from equilibrium (tether offsets)")
+            .clicked()
+        {
+            actions.push(StaticsAction::OffsetCurve {
+                body: draft.body,
+                direction: draft.direction,
+                to: draft.to,
+                steps: draft.steps,
+            });
         }
         if let Some(curve) = &draft.curve {
             plot(ui, curve);
@@ -104,23 +130,49 @@ pub fn ui(ui: &mut egui::Ui, draft: &mut StaticsDraft, bodies: &[String], select
 /// The curve as a line in a framed box, with its ranges written at the axes.
 fn plot(ui: &mut egui::Ui, curve: &OffsetCurve) {
     ui.label(format!("body \"{}\": restoring force against offset in {}", curve.body, curve.direction));
-    let (response, painter) = ui.allocate_painter(egui::vec2(ui.available_width().max(200.0), 160.0), egui::Sense::hover());
+    let (response, painter) =
+        ui.allocate_painter(egui::vec2(ui.available_width().max(200.0), 160.0), egui::Sense::hover());
     let rect = response.rect.shrink(4.0);
     painter.rect_stroke(rect, 2.0, ui.visuals().widgets.noninteractive.bg_stroke, egui::StrokeKind::Inside);
-    let span = |values: &mut dyn Iterator<Item = f64>| values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    let span = |values: &mut dyn Iterator<Item = f64>| {
+        values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)))
+    };
     let (x0, x1) = span(&mut curve.points.iter().map(|p| p.0));
     let (y0, y1) = span(&mut curve.points.iter().map(|p| p.1));
     if !(x0.is_finite() && y0.is_finite()) {
         return;
     }
     let fit = |v: f64, lo: f64, hi: f64| if hi > lo { (v - lo) / (hi - lo) } else { 0.5 };
-    let to_screen = |(x, y): (f64, f64)| egui::pos2(rect.left() + rect.width() * fit(x, x0, x1) as f32, rect.bottom() - rect.height() * fit(y, y0, y1) as f32);
+    let to_screen = |(x, y): (f64, f64)| {
+        egui::pos2(
+            rect.left() + rect.width() * fit(x, x0, x1) as f32,
+            rect.bottom() - rect.height() * fit(y, y0, y1) as f32,
+        )
+    };
     let line: Vec<egui::Pos2> = curve.points.iter().copied().map(to_screen).collect();
     painter.add(egui::Shape::line(line, egui::Stroke::new(2.0, ui.visuals().hyperlink_color)));
     let text = ui.visuals().text_color();
     let font = egui::FontId::proportional(11.0);
     let (unit, load) = (curve.direction.unit(), curve.direction.load_unit());
-    painter.text(rect.left_top() + egui::vec2(4.0, 2.0), egui::Align2::LEFT_TOP, format!("{y1:.4e} {load}"), font.clone(), text);
-    painter.text(rect.left_bottom() + egui::vec2(4.0, -2.0), egui::Align2::LEFT_BOTTOM, format!("{y0:.4e} {load}"), font.clone(), text);
-    painter.text(rect.right_bottom() + egui::vec2(-4.0, -2.0), egui::Align2::RIGHT_BOTTOM, format!("offset {x0:.3} … {x1:.3} {unit}"), font, text);
+    painter.text(
+        rect.left_top() + egui::vec2(4.0, 2.0),
+        egui::Align2::LEFT_TOP,
+        format!("{y1:.4e} {load}"),
+        font.clone(),
+        text,
+    );
+    painter.text(
+        rect.left_bottom() + egui::vec2(4.0, -2.0),
+        egui::Align2::LEFT_BOTTOM,
+        format!("{y0:.4e} {load}"),
+        font.clone(),
+        text,
+    );
+    painter.text(
+        rect.right_bottom() + egui::vec2(-4.0, -2.0),
+        egui::Align2::RIGHT_BOTTOM,
+        format!("offset {x0:.3} … {x1:.3} {unit}"),
+        font,
+        text,
+    );
 }

@@ -42,7 +42,8 @@ impl Sinks {
 
     /// An `.rrd` file sink at `path` (created now, so a bad path fails before any run).
     pub fn file(path: &std::path::Path) -> Result<Box<dyn LogSink>, SinkError> {
-        let sink = rerun::sink::FileSink::new(path).map_err(|source| SinkError::File { path: path.display().to_string(), source })?;
+        let sink = rerun::sink::FileSink::new(path)
+            .map_err(|source| SinkError::File { path: path.display().to_string(), source })?;
         Ok(Box::new(sink))
     }
 

@@ -57,10 +57,29 @@ impl SweepTable {
     /// Not a sweep directory, or its spec, scene or rows cannot be read.
     pub fn open(dir: &Path) -> Result<Self, String> {
         let store = Store::new(dir);
-        let manifest = store.manifest().map_err(|e| e.to_string())?.ok_or_else(|| format!("{}: not a sweep directory (no sweep.json)", dir.display()))?;
-        let plan = Plan::from_text(&manifest.spec_path, manifest.spec_text.clone(), Some((manifest.scene_path.clone(), manifest.scene_text.clone()))).map_err(|e| e.to_string())?;
-        let base_changed = std::fs::read_to_string(&manifest.scene_path).map_or(true, |text| text != manifest.scene_text);
-        let mut table = Self { dir: dir.to_path_buf(), plan, columns: manifest.columns, rows: Vec::new(), order: Vec::new(), sort: None, failures_first: false, selected: None, base_changed };
+        let manifest = store
+            .manifest()
+            .map_err(|e| e.to_string())?
+            .ok_or_else(|| format!("{}: not a sweep directory (no sweep.json)", dir.display()))?;
+        let plan = Plan::from_text(
+            &manifest.spec_path,
+            manifest.spec_text.clone(),
+            Some((manifest.scene_path.clone(), manifest.scene_text.clone())),
+        )
+        .map_err(|e| e.to_string())?;
+        let base_changed =
+            std::fs::read_to_string(&manifest.scene_path).map_or(true, |text| text != manifest.scene_text);
+        let mut table = Self {
+            dir: dir.to_path_buf(),
+            plan,
+            columns: manifest.columns,
+            rows: Vec::new(),
+            order: Vec::new(),
+            sort: None,
+            failures_first: false,
+            selected: None,
+            base_changed,
+        };
         table.reload()?;
         Ok(table)
     }
@@ -114,9 +133,15 @@ impl SweepTable {
     /// # Errors
     /// No row for the case, or values the scene data does not take.
     pub fn case_scene(&self, case: usize) -> Result<(PathBuf, SceneFile, Option<String>), String> {
-        let row = self.rows.iter().find(|r| r.case == case).ok_or_else(|| format!("the sweep has no row for case {case}"))?;
+        let row =
+            self.rows.iter().find(|r| r.case == case).ok_or_else(|| format!("the sweep has no row for case {case}"))?;
         let file = self.plan.scene_file(&row.values)?;
-        let note = self.base_changed.then(|| format!("{} changed since the sweep ran: case {case}'s values are set on the scene as the sweep had it", self.plan.scene_path.display()));
+        let note = self.base_changed.then(|| {
+            format!(
+                "{} changed since the sweep ran: case {case}'s values are set on the scene as the sweep had it",
+                self.plan.scene_path.display()
+            )
+        });
         Ok((self.plan.scene_path.clone(), file, note))
     }
 
@@ -132,7 +157,10 @@ impl SweepTable {
                     // A case without the value comes last either way.
                     let missing = |i: usize| matches!(column, Column::Metric(k) if rows[i].metrics[k].is_none());
                     let by = compare(&rows[a], &rows[b], column);
-                    missing(a).cmp(&missing(b)).then(if ascending { by } else { by.reverse() }).then(rows[a].case.cmp(&rows[b].case))
+                    missing(a)
+                        .cmp(&missing(b))
+                        .then(if ascending { by } else { by.reverse() })
+                        .then(rows[a].case.cmp(&rows[b].case))
                 }
             })
         });
@@ -168,7 +196,11 @@ impl SweepTable {
         let failed = self.rows.iter().filter(|r| r.status != Status::Ok).count();
         ui.horizontal(|ui| {
             ui.strong(format!("Sweep {}", self.plan.name)).on_hover_text(self.dir.display().to_string());
-            ui.label(format!("{} of {} cases have a row, {failed} failed — choose a case (#) to load it", self.rows.len(), self.plan.cases.len()));
+            ui.label(format!(
+                "{} of {} cases have a row, {failed} failed — choose a case (#) to load it",
+                self.rows.len(),
+                self.plan.cases.len()
+            ));
             let mut first = self.failures_first;
             if ui.checkbox(&mut first, "failures first").changed() {
                 self.set_failures_first(first);
@@ -182,7 +214,12 @@ impl SweepTable {
         let shown = self.shown();
         let mut clicked_header: Option<Column> = None;
         egui::ScrollArea::horizontal().id_salt("sweep_table_scroll").show(ui, |ui| {
-            let mut table = egui_extras::TableBuilder::new(ui).id_salt("sweep_table").striped(true).resizable(true).sense(egui::Sense::click()).cell_layout(egui::Layout::left_to_right(egui::Align::Center));
+            let mut table = egui_extras::TableBuilder::new(ui)
+                .id_salt("sweep_table")
+                .striped(true)
+                .resizable(true)
+                .sense(egui::Sense::click())
+                .cell_layout(egui::Layout::left_to_right(egui::Align::Center));
             for column in &shown {
                 table = table.column(match column {
                     Column::Message => egui_extras::Column::remainder().at_least(200.0),
@@ -199,7 +236,11 @@ impl SweepTable {
                                 Some((c, false)) if c == column => " ▼",
                                 _ => "",
                             };
-                            if ui.button(format!("{}{arrow}", self.title(column))).on_hover_text("Sort by this column (again: the other way)").clicked() {
+                            if ui
+                                .button(format!("{}{arrow}", self.title(column)))
+                                .on_hover_text("Sort by this column (again: the other way)")
+                                .clicked()
+                            {
                                 clicked_header = Some(column);
                             }
                         });
@@ -213,7 +254,11 @@ impl SweepTable {
                         for &column in &shown {
                             table_row.col(|ui| {
                                 if column == Column::Case {
-                                    if ui.selectable_label(selected, format!("#{}", row.case)).on_hover_text("Load this case into the tuning panel").clicked() {
+                                    if ui
+                                        .selectable_label(selected, format!("#{}", row.case))
+                                        .on_hover_text("Load this case into the tuning panel")
+                                        .clicked()
+                                    {
                                         action = Some(SweepAction::Load(row.case));
                                     }
                                 } else {

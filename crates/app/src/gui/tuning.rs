@@ -8,9 +8,9 @@
 //! The matches on [`CouplingDef`] and [`LawDef`] are exhaustive: a new coupling kind or elastic
 //! law does not compile until it has its knobs here.
 
+use rerun::external::egui;
 use tether_scene::SceneFile;
 use tether_scene::file::{CouplingDef, LawDef};
-use rerun::external::egui;
 
 /// What the tuning panel asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -23,11 +23,20 @@ pub enum TuningAction {
 
 /// Draws a section per coupling with its knobs; `refusals` are the reasons drafts were refused,
 /// `file` what the scene file says (edited couplings are marked).
-pub fn ui(ui: &mut egui::Ui, drafts: &mut [CouplingDef], refusals: &[Option<String>], file: &SceneFile) -> Vec<TuningAction> {
+pub fn ui(
+    ui: &mut egui::Ui,
+    drafts: &mut [CouplingDef],
+    refusals: &[Option<String>],
+    file: &SceneFile,
+) -> Vec<TuningAction> {
     let mut actions = Vec::new();
     ui.horizontal(|ui| {
         ui.strong("Couplings");
-        if ui.button("Revert to file").on_hover_text("Every coupling and the water back to what the scene file says").clicked() {
+        if ui
+            .button("Revert to file")
+            .on_hover_text("Every coupling and the water back to what the scene file says")
+            .clicked()
+        {
             actions.push(TuningAction::Revert);
         }
         if ui.button("Save as…").on_hover_text("Write the scene with the tuned values (RON)").clicked() {
@@ -65,7 +74,9 @@ fn coupling_knobs(ui: &mut egui::Ui, index: usize, def: &mut CouplingDef) -> boo
     egui::Grid::new(("knobs", index))
         .num_columns(3)
         .show(ui, |ui| match def {
-            CouplingDef::SpringDamper { law, damping, .. } => law_knobs(ui, law) | knob(ui, "damping k_d", damping, "N·s/m"),
+            CouplingDef::SpringDamper { law, damping, .. } => {
+                law_knobs(ui, law) | knob(ui, "damping k_d", damping, "N·s/m")
+            }
             CouplingDef::Catenary { mass_per_length, length, stiffness, displaced_area, .. } => {
                 knob(ui, "mass per length λ0", mass_per_length, "kg/m")
                     | knob(ui, "length L_eq", length, "m")
@@ -87,9 +98,14 @@ fn coupling_knobs(ui: &mut egui::Ui, index: usize, def: &mut CouplingDef) -> boo
 /// The knobs of an elastic law (PHYSICS.md §2).
 fn law_knobs(ui: &mut egui::Ui, law: &mut LawDef) -> bool {
     match law {
-        LawDef::Linear { stiffness, rest_length } => knob(ui, "stiffness k", stiffness, "N/m") | knob(ui, "rest length x0", rest_length, "m"),
+        LawDef::Linear { stiffness, rest_length } => {
+            knob(ui, "stiffness k", stiffness, "N/m") | knob(ui, "rest length x0", rest_length, "m")
+        }
         LawDef::Polynomial { a, b, c, rest_length } => {
-            knob(ui, "a", a, "N/m") | knob(ui, "b", b, "N/m²") | knob(ui, "c", c, "N/m³") | knob(ui, "rest length x0", rest_length, "m")
+            knob(ui, "a", a, "N/m")
+                | knob(ui, "b", b, "N/m²")
+                | knob(ui, "c", c, "N/m³")
+                | knob(ui, "rest length x0", rest_length, "m")
         }
         LawDef::ForceCurve { points } => table_knobs(ui, points, ("x", "m"), ("f", "N")),
         LawDef::StiffnessCurve { points, rest_length } => {

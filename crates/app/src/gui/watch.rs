@@ -20,7 +20,8 @@ impl FileWatch {
     /// Watches `path`; `wake` repaints on a change.
     pub fn new(path: &Path, wake: Wake) -> notify::Result<Self> {
         let name = path.file_name().map(ToOwned::to_owned);
-        let folder = path.parent().filter(|p| !p.as_os_str().is_empty()).map_or_else(|| PathBuf::from("."), Path::to_path_buf);
+        let folder =
+            path.parent().filter(|p| !p.as_os_str().is_empty()).map_or_else(|| PathBuf::from("."), Path::to_path_buf);
         let changed = Arc::new(Mutex::new(None));
         let flag = Arc::clone(&changed);
         let mut watcher = notify::recommended_watcher(move |event: notify::Result<notify::Event>| {

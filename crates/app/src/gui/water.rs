@@ -39,7 +39,8 @@ pub fn ui(ui: &mut egui::Ui, drafts: Option<WaterDrafts>) -> Vec<WaterAction> {
         }
         for (index, name, hydro, refusal) in bodies {
             ui.label(format!("body \"{name}\" in the water"));
-            let edited = egui::Grid::new(("hydro knobs", index)).num_columns(3).show(ui, |ui| hydro_knobs(ui, hydro)).inner;
+            let edited =
+                egui::Grid::new(("hydro knobs", index)).num_columns(3).show(ui, |ui| hydro_knobs(ui, hydro)).inner;
             if edited {
                 actions.push(WaterAction::Hydro(index));
             }
@@ -61,11 +62,21 @@ fn water_knobs(ui: &mut egui::Ui, water: &mut WaterDef) -> bool {
             ui.end_row();
             false
         }
-        WavesDef::Regular { height, period, heading_deg, .. } => knob(ui, "wave height H", height, "m") | knob(ui, "wave period T", period, "s") | knob(ui, "wave heading", heading_deg, "°"),
-        WavesDef::Jonswap { hs, tp, heading_deg, .. } => knob(ui, "significant height Hs", hs, "m") | knob(ui, "peak period Tp", tp, "s") | knob(ui, "wave heading", heading_deg, "°"),
+        WavesDef::Regular { height, period, heading_deg, .. } => {
+            knob(ui, "wave height H", height, "m")
+                | knob(ui, "wave period T", period, "s")
+                | knob(ui, "wave heading", heading_deg, "°")
+        }
+        WavesDef::Jonswap { hs, tp, heading_deg, .. } => {
+            knob(ui, "significant height Hs", hs, "m")
+                | knob(ui, "peak period Tp", tp, "s")
+                | knob(ui, "wave heading", heading_deg, "°")
+        }
     };
-    let mut current = water.current.clone().unwrap_or(CurrentDef { speed: 0.0, heading_deg: 0.0, profile: Default::default() });
-    if knob(ui, "current speed", &mut current.speed, "m/s") | knob(ui, "current heading", &mut current.heading_deg, "°") {
+    let mut current =
+        water.current.clone().unwrap_or(CurrentDef { speed: 0.0, heading_deg: 0.0, profile: Default::default() });
+    if knob(ui, "current speed", &mut current.speed, "m/s") | knob(ui, "current heading", &mut current.heading_deg, "°")
+    {
         water.current = Some(current);
         edited = true;
     }

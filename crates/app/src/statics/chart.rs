@@ -31,9 +31,16 @@ pub fn write(table: &Table, title: &str, path: &Path) -> Result<(), ChartError> 
         .iter()
         .enumerate()
         .filter(|(_, name)| name.ends_with(" T1 [N]") || name.ends_with(" T2 [N]"))
-        .map(|(index, name)| (name.trim_end_matches(" [N]").to_string(), offsets.iter().copied().zip(column(index)).filter(|(_, t)| t.is_finite()).collect()))
+        .map(|(index, name)| {
+            (
+                name.trim_end_matches(" [N]").to_string(),
+                offsets.iter().copied().zip(column(index)).filter(|(_, t)| t.is_finite()).collect(),
+            )
+        })
         .collect();
-    let span = |values: &mut dyn Iterator<Item = f64>| values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    let span = |values: &mut dyn Iterator<Item = f64>| {
+        values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)))
+    };
     let padded = |(lo, hi): (f64, f64)| {
         let margin = 0.05 * (hi - lo).abs().max(hi.abs().max(lo.abs()) * 1e-3).max(1e-9);
         (lo - margin)..(hi + margin)
@@ -78,14 +85,22 @@ pub fn write(table: &Table, title: &str, path: &Path) -> Result<(), ChartError> 
     for (index, (name, points)) in tensions.iter().enumerate() {
         let colour = COLOURS[(index / 2) % COLOURS.len()];
         // End 2 (the fairlead of a mooring) solid, end 1 (its anchor) thin.
-        let style = if name.ends_with("T2") { ShapeStyle::from(&colour).stroke_width(3) } else { ShapeStyle::from(&colour.mix(0.6)).stroke_width(1) };
+        let style = if name.ends_with("T2") {
+            ShapeStyle::from(&colour).stroke_width(3)
+        } else {
+            ShapeStyle::from(&colour.mix(0.6)).stroke_width(1)
+        };
         chart
             .draw_series(LineSeries::new(points.iter().copied(), style))
             .map_err(|e| draw(&e))?
             .label(name.as_str())
             .legend(move |(x, y)| PathElement::new(vec![(x - 5, y), (x + 18, y)], style));
     }
-    chart_style::legend(&mut chart.configure_series_labels(), 18).position(SeriesLabelPosition::UpperLeft).margin(12).draw().map_err(|e| draw(&e))?;
+    chart_style::legend(&mut chart.configure_series_labels(), 18)
+        .position(SeriesLabelPosition::UpperLeft)
+        .margin(12)
+        .draw()
+        .map_err(|e| draw(&e))?;
     root.present().map_err(|e| draw(&e))?;
     Ok(())
 }

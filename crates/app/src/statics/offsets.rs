@@ -16,10 +16,18 @@ pub struct Table {
 /// end tensions and grounded length, for each spring its tension.
 pub fn table(system: &System, curve: &OffsetCurve) -> Table {
     let direction = curve.dof.direction;
-    let mut columns = vec![format!("offset {} [{}]", direction, direction.unit()), format!("load [{}]", direction.load_unit()), format!("restoring [{}]", direction.load_unit())];
+    let mut columns = vec![
+        format!("offset {} [{}]", direction, direction.unit()),
+        format!("load [{}]", direction.load_unit()),
+        format!("restoring [{}]", direction.load_unit()),
+    ];
     for coupling in system.couplings() {
         match coupling.kind {
-            CouplingKind::Catenary(_) => columns.extend([format!("{} T1 [N]", coupling.name), format!("{} T2 [N]", coupling.name), format!("{} L_B [m]", coupling.name)]),
+            CouplingKind::Catenary(_) => columns.extend([
+                format!("{} T1 [N]", coupling.name),
+                format!("{} T2 [N]", coupling.name),
+                format!("{} L_B [m]", coupling.name),
+            ]),
             CouplingKind::SpringDamper(_) => columns.push(format!("{} tension [N]", coupling.name)),
             CouplingKind::Contact(_) => columns.push(format!("{} normal [N]", coupling.name)),
         }
@@ -37,7 +45,9 @@ pub fn table(system: &System, curve: &OffsetCurve) -> Table {
                         row.extend([t1, t2, line.map_or(f64::NAN, |l| l.grounded_length())]);
                     }
                     CouplingKind::SpringDamper(_) => row.push(forces.tension),
-                    CouplingKind::Contact(_) => row.push(point.evaluation.contact_forces(index).map_or(f64::NAN, |f| f.normal)),
+                    CouplingKind::Contact(_) => {
+                        row.push(point.evaluation.contact_forces(index).map_or(f64::NAN, |f| f.normal))
+                    }
                 }
             }
             row
@@ -61,7 +71,9 @@ impl Table {
 
     /// Comma-separated values with a header line, full precision.
     pub fn csv(&self) -> String {
-        let quote = |c: &String| if c.contains(',') || c.contains('"') { format!("\"{}\"", c.replace('"', "\"\"")) } else { c.clone() };
+        let quote = |c: &String| {
+            if c.contains(',') || c.contains('"') { format!("\"{}\"", c.replace('"', "\"\"")) } else { c.clone() }
+        };
         let mut out = self.columns.iter().map(quote).collect::<Vec<_>>().join(",");
         out.push('\n');
         for row in &self.rows {

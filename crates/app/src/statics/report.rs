@@ -22,7 +22,12 @@ pub fn equilibrium(system: &System, equilibrium: &Equilibrium, start: &[BodyStat
         equilibrium.residual_moment
     );
     if let Some(dof) = equilibrium.unstable {
-        let _ = writeln!(out, "warning: the equilibrium is unstable: body \"{}\" has a negative stiffness in {}", system.bodies()[dof.body].name, dof.direction);
+        let _ = writeln!(
+            out,
+            "warning: the equilibrium is unstable: body \"{}\" has a negative stiffness in {}",
+            system.bodies()[dof.body].name,
+            dof.direction
+        );
     }
     for (index, body) in system.bodies().iter().enumerate() {
         if body.is_kinematic() {
@@ -32,9 +37,24 @@ pub fn equilibrium(system: &System, equilibrium: &Equilibrium, start: &[BodyStat
         let turn = state.orientation * body.mass_properties.principal_axes.inverse();
         let (roll, pitch, yaw) = turn.euler_angles();
         let _ = writeln!(out, "\nbody \"{}\"", body.name);
-        let _ = writeln!(out, "  centre of mass  {} m (moved {} m)", v(&state.position), v(&(state.position - start[index].position)));
-        let _ = writeln!(out, "  attitude        roll {:.4}°, pitch {:.4}°, yaw {:.4}° (rotation vector {} rad)", roll.to_degrees(), pitch.to_degrees(), yaw.to_degrees(), v(&turn.scaled_axis()));
-        let _ = writeln!(out, "  stiffness at equilibrium, the other bodies held (rows: force x, y, z [N], moment roll, pitch, yaw [N·m]; columns: move x, y, z [m], turn roll, pitch, yaw [rad]):");
+        let _ = writeln!(
+            out,
+            "  centre of mass  {} m (moved {} m)",
+            v(&state.position),
+            v(&(state.position - start[index].position))
+        );
+        let _ = writeln!(
+            out,
+            "  attitude        roll {:.4}°, pitch {:.4}°, yaw {:.4}° (rotation vector {} rad)",
+            roll.to_degrees(),
+            pitch.to_degrees(),
+            yaw.to_degrees(),
+            v(&turn.scaled_axis())
+        );
+        let _ = writeln!(
+            out,
+            "  stiffness at equilibrium, the other bodies held (rows: force x, y, z [N], moment roll, pitch, yaw [N·m]; columns: move x, y, z [m], turn roll, pitch, yaw [rad]):"
+        );
         let k = equilibrium.body_stiffness(index);
         let header: String = Direction::ALL.iter().map(|d| format!("{:>14}", d.name())).collect();
         let _ = writeln!(out, "  {:>6}{header}", "");
@@ -49,11 +69,23 @@ pub fn equilibrium(system: &System, equilibrium: &Equilibrium, start: &[BodyStat
             CouplingKind::Catenary(_) => match equilibrium.evaluation.line_state(index) {
                 Some(line) => {
                     let (t1, t2) = line.end_tensions();
-                    let _ = writeln!(out, "tension {t1:.6e} N at end 1, {t2:.6e} N at end 2; horizontal tension {:.6e} N", line.horizontal_tension);
+                    let _ = writeln!(
+                        out,
+                        "tension {t1:.6e} N at end 1, {t2:.6e} N at end 2; horizontal tension {:.6e} N",
+                        line.horizontal_tension
+                    );
                     if line.ground.is_some() {
                         let touchdowns: Vec<String> = line.touchdowns().iter().map(v).collect();
-                        let touchdowns = if touchdowns.is_empty() { "none (the line lies on the seabed from both ends)".to_string() } else { format!("{} m", touchdowns.join(", ")) };
-                        let _ = writeln!(out, "  on the seabed: grounded length L_B {:.6} m, touchdown {touchdowns}", line.grounded_length());
+                        let touchdowns = if touchdowns.is_empty() {
+                            "none (the line lies on the seabed from both ends)".to_string()
+                        } else {
+                            format!("{} m", touchdowns.join(", "))
+                        };
+                        let _ = writeln!(
+                            out,
+                            "  on the seabed: grounded length L_B {:.6} m, touchdown {touchdowns}",
+                            line.grounded_length()
+                        );
                     } else {
                         let _ = writeln!(out, "  clear of the seabed");
                     }
@@ -63,10 +95,19 @@ pub fn equilibrium(system: &System, equilibrium: &Equilibrium, start: &[BodyStat
                 }
             },
             CouplingKind::SpringDamper(_) => {
-                let _ = writeln!(out, "tension {:.6e} N at length {:.6} m", forces.tension, (forces.point2 - forces.point1).norm());
+                let _ = writeln!(
+                    out,
+                    "tension {:.6e} N at length {:.6} m",
+                    forces.tension,
+                    (forces.point2 - forces.point1).norm()
+                );
             }
             CouplingKind::Contact(_) => {
-                let _ = writeln!(out, "normal force {:.6e} N", equilibrium.evaluation.contact_forces(index).map_or(f64::NAN, |f| f.normal));
+                let _ = writeln!(
+                    out,
+                    "normal force {:.6e} N",
+                    equilibrium.evaluation.contact_forces(index).map_or(f64::NAN, |f| f.normal)
+                );
             }
         }
     }

@@ -2,10 +2,10 @@
 //! (font and colours: [`crate::chart_style`]).
 
 use super::{Outcome, Study, StudyError};
-use tether_physics::integrator::Integrator;
 use crate::chart_style::{self, COLOURS, register_font_family};
 use plotters::prelude::*;
 use std::path::Path;
+use tether_physics::integrator::Integrator;
 
 /// Errors below this are drawn at it (an exact result has no logarithm).
 const FLOOR: f64 = 1e-16;
@@ -42,18 +42,30 @@ pub fn write(study: &Study, path: &Path) -> Result<(), StudyError> {
         .filter(|(_, points)| !points.is_empty())
         .collect();
     let all = curves.iter().flat_map(|(_, p)| p.iter());
-    let (x_min, x_max, y_min, y_max) = all.fold((f64::INFINITY, 0.0_f64, f64::INFINITY, 0.0_f64), |(a, b, c, d), &(x, y)| (a.min(x), b.max(x), c.min(y), d.max(y)));
+    let (x_min, x_max, y_min, y_max) = all
+        .fold((f64::INFINITY, 0.0_f64, f64::INFINITY, 0.0_f64), |(a, b, c, d), &(x, y)| {
+            (a.min(x), b.max(x), c.min(y), d.max(y))
+        });
     if curves.is_empty() {
         return Err(failed("no run finished: nothing to chart".into()));
     }
     // A decade of margin split around the data, so no marker sits on a frame.
     let (x_range, y_range) = ((x_min / 2.0)..(x_max * 2.0), (y_min / 3.0)..(y_max * 3.0));
-    let quantity = if study.translates { "largest position error over time [m]" } else { "largest orientation error over time [rad]" };
+    let quantity = if study.translates {
+        "largest position error over time [m]"
+    } else {
+        "largest orientation error over time [rad]"
+    };
 
     let root = BitMapBackend::new(path, (1200, 800)).into_drawing_area();
     let draw = |e: &dyn std::fmt::Display| failed(e.to_string());
     root.fill(&WHITE).map_err(|e| draw(&e))?;
-    let title = format!("{}: error against cost, {} s simulated (reference {})", study.scene, study.duration, study.reference.describe());
+    let title = format!(
+        "{}: error against cost, {} s simulated (reference {})",
+        study.scene,
+        study.duration,
+        study.reference.describe()
+    );
     let mut chart = ChartBuilder::on(&root)
         .caption(title, ("sans-serif", 26))
         .margin(20)
@@ -79,7 +91,11 @@ pub fn write(study: &Study, path: &Path) -> Result<(), StudyError> {
             .legend(move |(x, y)| PathElement::new(vec![(x - 5, y), (x + 18, y)], style));
         chart.draw_series(points.iter().map(|&p| Circle::new(p, 6, colour.filled()))).map_err(|e| draw(&e))?;
     }
-    chart_style::legend(&mut chart.configure_series_labels(), 20).position(SeriesLabelPosition::UpperRight).margin(15).draw().map_err(|e| draw(&e))?;
+    chart_style::legend(&mut chart.configure_series_labels(), 20)
+        .position(SeriesLabelPosition::UpperRight)
+        .margin(15)
+        .draw()
+        .map_err(|e| draw(&e))?;
     root.present().map_err(|e| draw(&e))?;
     Ok(())
 }

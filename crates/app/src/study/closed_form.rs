@@ -66,20 +66,35 @@ impl Oscillator {
     pub fn of_scene(scene: &Scene) -> Result<Self, String> {
         let world = &scene.world;
         let system = world.system();
-        let [body] = system.bodies() else { return Err(format!("it has {} bodies, the closed form one", system.bodies().len())) };
-        let [coupling] = system.couplings() else { return Err(format!("it has {} couplings, the closed form one spring-damper", system.couplings().len())) };
+        let [body] = system.bodies() else {
+            return Err(format!("it has {} bodies, the closed form one", system.bodies().len()));
+        };
+        let [coupling] = system.couplings() else {
+            return Err(format!("it has {} couplings, the closed form one spring-damper", system.couplings().len()));
+        };
         let Support::Fixed { translation, rotation: true } = body.support else {
             return Err(format!("body \"{}\" must be held against rotation and free along one axis only", body.name));
         };
         let free: Vec<usize> = (0..3).filter(|&axis| !translation[axis]).collect();
-        let [axis] = free[..] else { return Err(format!("body \"{}\" must be free along exactly one axis, it is along {}", body.name, free.len())) };
-        let CouplingKind::SpringDamper(spring) = &coupling.kind else { return Err(format!("coupling \"{}\" is not a spring-damper", coupling.name)) };
-        let ElasticLaw::Linear { stiffness, rest_length } = spring.law else { return Err(format!("coupling \"{}\" has no linear law", coupling.name)) };
+        let [axis] = free[..] else {
+            return Err(format!(
+                "body \"{}\" must be free along exactly one axis, it is along {}",
+                body.name,
+                free.len()
+            ));
+        };
+        let CouplingKind::SpringDamper(spring) = &coupling.kind else {
+            return Err(format!("coupling \"{}\" is not a spring-damper", coupling.name));
+        };
+        let ElasticLaw::Linear { stiffness, rest_length } = spring.law else {
+            return Err(format!("coupling \"{}\" has no linear law", coupling.name));
+        };
         if !(stiffness > 0.0) {
             return Err(format!("coupling \"{}\" has no stiffness", coupling.name));
         }
         let anchor = match (spring.end1, spring.end2) {
-            (Endpoint::World(anchor), Endpoint::Body { .. } | Endpoint::Center { .. }) | (Endpoint::Body { .. } | Endpoint::Center { .. }, Endpoint::World(anchor)) => anchor,
+            (Endpoint::World(anchor), Endpoint::Body { .. } | Endpoint::Center { .. })
+            | (Endpoint::Body { .. } | Endpoint::Center { .. }, Endpoint::World(anchor)) => anchor,
             _ => return Err(format!("coupling \"{}\" must join the body to a world point", coupling.name)),
         };
         let initial = system.initial_states()[0];
@@ -114,7 +129,10 @@ impl Oscillator {
         // The energy of the motion about equilibrium never grows: |y| ≤ √(y0² + m v0²/k).
         let reach = (oscillator.offset.powi(2) + mass * oscillator.speed.powi(2) / stiffness).sqrt();
         if !(length_at_equilibrium > reach) {
-            return Err(format!("coupling \"{}\" could pass through zero length, where the closed form ends", coupling.name));
+            return Err(format!(
+                "coupling \"{}\" could pass through zero length, where the closed form ends",
+                coupling.name
+            ));
         }
         Ok(oscillator)
     }
@@ -134,7 +152,10 @@ impl Oscillator {
             let (a, b) = (y0, (v0 + zeta * omega * y0) / omega_d);
             let (sin, cos) = (omega_d * t).sin_cos();
             let decay = (-zeta * omega * t).exp();
-            (decay * (a * cos + b * sin), decay * ((b * omega_d - zeta * omega * a) * cos - (a * omega_d + zeta * omega * b) * sin))
+            (
+                decay * (a * cos + b * sin),
+                decay * ((b * omega_d - zeta * omega * a) * cos - (a * omega_d + zeta * omega * b) * sin),
+            )
         } else if zeta == 1.0 {
             let b = v0 + omega * y0;
             let decay = (-omega * t).exp();
@@ -155,6 +176,11 @@ impl Oscillator {
         let mut position = self.start;
         position[self.axis] = self.equilibrium + y;
         let stretch = self.length_at_equilibrium + self.side * y - self.rest_length;
-        Exact { position, orientation: self.orientation, kinetic: 0.5 * self.mass * v * v, elastic: 0.5 * self.stiffness * stretch * stretch }
+        Exact {
+            position,
+            orientation: self.orientation,
+            kinetic: 0.5 * self.mass * v * v,
+            elastic: 0.5 * self.stiffness * stretch * stretch,
+        }
     }
 }

@@ -21,11 +21,11 @@ pub mod chart;
 pub mod closed_form;
 pub mod report;
 
-use tether_physics::math::Vec3;
+use crate::runner::{Runner, thread_cpu_seconds};
 use tether_physics::integrator::{Integrator, Substeps};
+use tether_physics::math::Vec3;
 use tether_physics::world::{StepError, World};
 use tether_scene::file::AdaptiveDef;
-use crate::runner::{Runner, thread_cpu_seconds};
 use tether_scene::{Scene, SceneError};
 
 /// What a study runs.
@@ -97,7 +97,10 @@ pub struct Measures {
 pub enum Outcome {
     Finished(Measures),
     /// The run stopped at `time` [s] with `message`.
-    Failed { time: f64, message: String },
+    Failed {
+        time: f64,
+        message: String,
+    },
 }
 
 /// One integrator at one setting.
@@ -154,7 +157,11 @@ impl Plan {
     /// [`StudyError::Plan`] naming the setting at fault.
     pub fn check(&self) -> Result<(), StudyError> {
         let positive = |name: &str, value: f64| {
-            if value.is_finite() && value > 0.0 { Ok(()) } else { Err(StudyError::Plan(format!("{name} must be a positive number, got {value}"))) }
+            if value.is_finite() && value > 0.0 {
+                Ok(())
+            } else {
+                Err(StudyError::Plan(format!("{name} must be a positive number, got {value}")))
+            }
         };
         positive("the duration", self.duration)?;
         positive("the sample interval", self.sample_interval)?;
@@ -164,7 +171,10 @@ impl Plan {
         for &dt in &self.dts {
             positive("a time step", dt)?;
             if !divides(dt, self.sample_interval) {
-                return Err(StudyError::Plan(format!("the time step {dt:e} s does not divide the sample interval {:e} s: the runs could not be compared at common times", self.sample_interval)));
+                return Err(StudyError::Plan(format!(
+                    "the time step {dt:e} s does not divide the sample interval {:e} s: the runs could not be compared at common times",
+                    self.sample_interval
+                )));
             }
         }
         if self.dts.is_empty() && self.integrators.iter().any(|i| !i.is_adaptive()) {
@@ -179,13 +189,17 @@ impl Plan {
             return Err(StudyError::Plan("no tolerance for dopri45".into()));
         }
         match self.reference {
-            Reference::Adaptive { rtol } if !(rtol > 0.0 && rtol < 1.0) => Err(StudyError::Plan(format!("the reference tolerance must be > 0 and < 1, got {rtol}"))),
-            Reference::Fixed { dt, .. } if !divides(dt, self.sample_interval) => {
-                Err(StudyError::Plan(format!("the reference time step {dt:e} s does not divide the sample interval {:e} s", self.sample_interval)))
+            Reference::Adaptive { rtol } if !(rtol > 0.0 && rtol < 1.0) => {
+                Err(StudyError::Plan(format!("the reference tolerance must be > 0 and < 1, got {rtol}")))
             }
-            _ if !divides(self.sample_interval, self.duration) => {
-                Err(StudyError::Plan(format!("the duration {} s is not a multiple of the sample interval {:e} s", self.duration, self.sample_interval)))
-            }
+            Reference::Fixed { dt, .. } if !divides(dt, self.sample_interval) => Err(StudyError::Plan(format!(
+                "the reference time step {dt:e} s does not divide the sample interval {:e} s",
+                self.sample_interval
+            ))),
+            _ if !divides(self.sample_interval, self.duration) => Err(StudyError::Plan(format!(
+                "the duration {} s is not a multiple of the sample interval {:e} s",
+                self.duration, self.sample_interval
+            ))),
             _ => Ok(()),
         }
     }
@@ -215,44 +229,67 @@ pub fn run(scene: &Scene, plan: &Plan, progress: impl FnMut(&str)) -> Result<Stu
 ///
 /// # Errors
 /// As [`run`].
-pub fn run_on(runner: &Runner, scene: &Scene, plan: &Plan, mut progress: impl FnMut(&str)) -> Result<Study, StudyError> {
+pub fn run_on(
+    runner: &Runner,
+    scene: &Scene,
+    plan: &Plan,
+    mut progress: impl FnMut(&str),
+) -> Result<Study, StudyError> {
     plan.check()?;
     let samples = (plan.duration / plan.sample_interval).round() as usize;
     let reference = reference_samples(scene, plan, samples)?;
     progress(&format!("reference ({}) done in {:.2} s of CPU", plan.reference.describe(), reference.cpu_seconds));
     let energy_budget = if reference.peak_energy > 0.0 { reference.peak_energy } else { 1.0 };
     let start = &reference.poses[0];
-    let translates = reference.poses.iter().any(|poses| poses.iter().zip(start).any(|(a, b)| (a.0 - b.0).norm() > 1e-12));
+    let translates =
+        reference.poses.iter().any(|poses| poses.iter().zip(start).any(|(a, b)| (a.0 - b.0).norm() > 1e-12));
     let settings: Vec<(Integrator, Setting)> = plan
         .integrators
         .iter()
         .flat_map(|&integrator| {
-            let settings: Vec<Setting> =
-                if integrator.is_adaptive() { plan.tolerances.iter().map(|&r| Setting::Tolerance(r)).collect() } else { plan.dts.iter().map(|&dt| Setting::Step(dt)).collect() };
+            let settings: Vec<Setting> = if integrator.is_adaptive() {
+                plan.tolerances.iter().map(|&r| Setting::Tolerance(r)).collect()
+            } else {
+                plan.dts.iter().map(|&dt| Setting::Step(dt)).collect()
+            };
             settings.into_iter().map(move |setting| (integrator, setting))
         })
         .collect();
     let mut runs: Vec<Option<Run>> = vec![None; settings.len()];
-    let measured = |&(integrator, setting): &(Integrator, Setting), _: &crate::runner::Watch<'_>| -> Result<Run, StudyError> {
-        let mut world = match setting {
-            Setting::Step(dt) => world(scene, integrator, dt, None)?,
-            Setting::Tolerance(rtol) => world(scene, integrator, plan.sample_interval, Some(rtol))?,
+    let measured =
+        |&(integrator, setting): &(Integrator, Setting), _: &crate::runner::Watch<'_>| -> Result<Run, StudyError> {
+            let mut world = match setting {
+                Setting::Step(dt) => world(scene, integrator, dt, None)?,
+                Setting::Tolerance(rtol) => world(scene, integrator, plan.sample_interval, Some(rtol))?,
+            };
+            let outcome = match sample(&mut world, plan.sample_interval, samples) {
+                Err(error) => Outcome::Failed { time: error_time(&error), message: error.to_string() },
+                Ok(run) => Outcome::Finished(measure(&run, &reference, energy_budget, plan.duration, &world)),
+            };
+            Ok(Run { integrator, setting, outcome })
         };
-        let outcome = match sample(&mut world, plan.sample_interval, samples) {
-            Err(error) => Outcome::Failed { time: error_time(&error), message: error.to_string() },
-            Ok(run) => Outcome::Finished(measure(&run, &reference, energy_budget, plan.duration, &world)),
-        };
-        Ok(Run { integrator, setting, outcome })
-    };
     let numbered = settings.iter().copied().enumerate();
-    runner.run(numbered, |(_, setting), watch| measured(setting, watch), |(index, _), result| {
-        let run = result?;
-        progress(&report::describe(&run));
-        runs[index] = Some(run);
-        Ok::<(), StudyError>(())
-    })?;
-    let scene_name = scene.path.file_name().map_or_else(|| scene.path.display().to_string(), |n| n.to_string_lossy().into_owned());
-    Ok(Study { scene: scene_name, duration: plan.duration, sample_interval: plan.sample_interval, reference: plan.reference, energy_budget, translates, runs: runs.into_iter().flatten().collect() })
+    runner.run(
+        numbered,
+        |(_, setting), watch| measured(setting, watch),
+        |(index, _), result| {
+            let run = result?;
+            progress(&report::describe(&run));
+            runs[index] = Some(run);
+            Ok::<(), StudyError>(())
+        },
+    )?;
+    let scene_name =
+        scene.path.file_name().map_or_else(|| scene.path.display().to_string(), |n| n.to_string_lossy().into_owned());
+    Ok(Study {
+        scene: scene_name,
+        duration: plan.duration,
+        sample_interval: plan.sample_interval,
+        reference: plan.reference,
+        energy_budget,
+        translates,
+        runs: runs.into_iter().flatten().collect(),
+    })
 }
 
 /// The reference's samples: a run of the reference integrator, or the closed form at the
@@ -265,11 +302,13 @@ fn reference_samples(scene: &Scene, plan: &Plan, samples: usize) -> Result<Sampl
         Reference::Adaptive { rtol } => world(scene, Integrator::Dopri45, plan.sample_interval, Some(rtol))?,
         Reference::Fixed { integrator, dt } => world(scene, integrator, dt, None)?,
         Reference::ClosedForm => {
-            let oscillator = closed_form::Oscillator::of_scene(scene).map_err(|why| StudyError::Plan(format!("the scene has no closed form: {why}")))?;
+            let oscillator = closed_form::Oscillator::of_scene(scene)
+                .map_err(|why| StudyError::Plan(format!("the scene has no closed form: {why}")))?;
             return Ok(exact_samples(&oscillator, plan.sample_interval, samples));
         }
     };
-    sample(&mut reference_world, plan.sample_interval, samples).map_err(|source| StudyError::Reference { reference: plan.reference.describe(), source })
+    sample(&mut reference_world, plan.sample_interval, samples)
+        .map_err(|source| StudyError::Reference { reference: plan.reference.describe(), source })
 }
 
 /// The closed form at `samples` sample intervals `interval` [s] (t = 0 included): the motion
@@ -307,15 +346,24 @@ fn error_time(error: &StepError) -> f64 {
 /// Runs `world` to `samples` sample intervals, recording every sample (t = 0 included).
 fn sample(world: &mut World, interval: f64, samples: usize) -> Result<Samples, StepError> {
     let record = |w: &World, out: &mut Samples| {
-        out.poses.push((0..w.bodies().len()).map(|i| {
-            let s = w.state(i);
-            (s.position, s.orientation)
-        }).collect());
+        out.poses.push(
+            (0..w.bodies().len())
+                .map(|i| {
+                    let s = w.state(i);
+                    (s.position, s.orientation)
+                })
+                .collect(),
+        );
         let energy = w.energy();
         out.balances.push(energy.balance());
         out.peak_energy = out.peak_energy.max(energy.kinetic + energy.elastic.abs());
     };
-    let mut out = Samples { poses: Vec::with_capacity(samples + 1), balances: Vec::with_capacity(samples + 1), peak_energy: 0.0, cpu_seconds: 0.0 };
+    let mut out = Samples {
+        poses: Vec::with_capacity(samples + 1),
+        balances: Vec::with_capacity(samples + 1),
+        peak_energy: 0.0,
+        cpu_seconds: 0.0,
+    };
     record(world, &mut out);
     let dt = world.dt();
     let start = thread_cpu_seconds();

@@ -24,7 +24,9 @@ pub fn describe(run: &Run) -> String {
             m.cpu_per_second,
             m.steps + m.rejected
         ),
-        Outcome::Failed { time, .. } => format!("{:<10} {:<14} diverged at t = {time:.4} s", run.integrator.name(), setting(run)),
+        Outcome::Failed { time, .. } => {
+            format!("{:<10} {:<14} diverged at t = {time:.4} s", run.integrator.name(), setting(run))
+        }
     }
 }
 
@@ -53,7 +55,12 @@ pub fn csv(study: &Study) -> String {
                 m.rejected
             ),
             Outcome::Failed { time, message } => {
-                writeln!(out, "{},{dt},{rtol},,,,,,,,,\"diverged at t = {time} s: {}\"", run.integrator.name(), message.replace('"', "'"))
+                writeln!(
+                    out,
+                    "{},{dt},{rtol},,,,,,,,,\"diverged at t = {time} s: {}\"",
+                    run.integrator.name(),
+                    message.replace('"', "'")
+                )
             }
         };
     }
@@ -88,7 +95,9 @@ pub fn markdown(study: &Study) -> String {
                 number(m.cpu_per_second),
                 steps(m)
             ),
-            Outcome::Failed { time, .. } => writeln!(out, "| {} | {} | diverged at t = {time:.4} s | | | | |", run.integrator.name(), setting(run)),
+            Outcome::Failed { time, .. } => {
+                writeln!(out, "| {} | {} | diverged at t = {time:.4} s | | | | |", run.integrator.name(), setting(run))
+            }
         };
     }
     out

@@ -92,12 +92,29 @@ pub enum CaseError {
 /// # Errors
 /// [`CaseError::Cancelled`] when the run is cancelled mid-case; [`CaseError::Recording`] when
 /// the recording cannot be written.
-pub fn run(mut world: World, duration: f64, metrics: &[Metric], settle_band: f64, watch: &Watch<'_>, recording: Option<&Recording<'_>>) -> Result<Outcome, CaseError> {
+pub fn run(
+    mut world: World,
+    duration: f64,
+    metrics: &[Metric],
+    settle_band: f64,
+    watch: &Watch<'_>,
+    recording: Option<&Recording<'_>>,
+) -> Result<Outcome, CaseError> {
     let dt = world.dt();
     let total_steps = (duration / dt).round().max(1.0) as u64;
-    let mut recorder = recording.map(|r| Recorder::to_file_as(&r.path, &world, r.application, &r.id).map_err(|e| CaseError::Recording(unwritable(r, &e)))).transpose()?;
+    let mut recorder = recording
+        .map(|r| {
+            Recorder::to_file_as(&r.path, &world, r.application, &r.id)
+                .map_err(|e| CaseError::Recording(unwritable(r, &e)))
+        })
+        .transpose()?;
     let frames = recording.map(|r| FrameSchedule::new(r.log_hz, dt, total_steps));
-    let mut log = |world: &World| recorder.as_mut().map_or(Ok(()), |rec| rec.log_frame(world)).map_err(|e| recording.map_or_else(String::new, |r| unwritable(r, &e)));
+    let mut log = |world: &World| {
+        recorder
+            .as_mut()
+            .map_or(Ok(()), |rec| rec.log_frame(world))
+            .map_err(|e| recording.map_or_else(String::new, |r| unwritable(r, &e)))
+    };
     log(&world).map_err(CaseError::Recording)?;
     let cpu_start = thread_cpu_seconds();
     let mut observer = Observer::new(metrics, &world, total_steps);
@@ -138,7 +155,15 @@ pub fn run(mut world: World, duration: f64, metrics: &[Metric], settle_band: f64
             Err(message) => (Status::Diverged, message, world.time(), None),
         },
     };
-    Ok(Outcome { status, message, end_time, steps: world.integrator_steps(), rejected_steps: world.rejected_steps(), cpu_seconds, metrics })
+    Ok(Outcome {
+        status,
+        message,
+        end_time,
+        steps: world.integrator_steps(),
+        rejected_steps: world.rejected_steps(),
+        cpu_seconds,
+        metrics,
+    })
 }
 
 fn unwritable(recording: &Recording<'_>, error: &dyn std::fmt::Display) -> String {

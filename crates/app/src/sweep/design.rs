@@ -48,8 +48,12 @@ impl Cases {
         }
         match *design {
             Design::Grid => {
-                let sizes = factors.iter().map(|f| levels(f, "a grid").map(<[Level]>::len)).collect::<Result<Vec<_>, _>>()?;
-                let count = sizes.iter().try_fold(1_usize, |n, &size| n.checked_mul(size)).ok_or("the grid has more cases than can be counted")?;
+                let sizes =
+                    factors.iter().map(|f| levels(f, "a grid").map(<[Level]>::len)).collect::<Result<Vec<_>, _>>()?;
+                let count = sizes
+                    .iter()
+                    .try_fold(1_usize, |n, &size| n.checked_mul(size))
+                    .ok_or("the grid has more cases than can be counted")?;
                 Ok(Self { layout: Layout::Grid { sizes }, count })
             }
             Design::OneAtATime => {
@@ -80,7 +84,10 @@ impl Cases {
                     .map(|_| {
                         let mut strata: Vec<usize> = (0..count).collect();
                         strata.shuffle(&mut random);
-                        strata.into_iter().map(|stratum| (stratum as f64 + random.random::<f64>()) / count as f64).collect()
+                        strata
+                            .into_iter()
+                            .map(|stratum| (stratum as f64 + random.random::<f64>()) / count as f64)
+                            .collect()
                     })
                     .collect();
                 Ok(Self { layout: Layout::Latin { places }, count })
@@ -117,7 +124,9 @@ impl Cases {
                 }
                 values
             }
-            Layout::Latin { places } => factors.iter().zip(places).map(|(factor, places)| at_place(factor, places[case])).collect(),
+            Layout::Latin { places } => {
+                factors.iter().zip(places).map(|(factor, places)| at_place(factor, places[case])).collect()
+            }
         }
     }
 }
@@ -126,7 +135,11 @@ impl Cases {
 fn levels<'f>(factor: &'f Factor, design: &str) -> Result<&'f [Level], String> {
     match &factor.values {
         Values::Levels(levels) => Ok(levels),
-        Values::Range { .. } => Err(format!("factor `{}` is a range ({}), which only a Latin hypercube samples: give {design} levels (List, Linear or Log)", factor.name, factor.describe_values())),
+        Values::Range { .. } => Err(format!(
+            "factor `{}` is a range ({}), which only a Latin hypercube samples: give {design} levels (List, Linear or Log)",
+            factor.name,
+            factor.describe_values()
+        )),
     }
 }
 

@@ -73,12 +73,23 @@ pub struct Report {
 /// A directory that holds another sweep or rows of this run's cases (without `resume`); a
 /// value or case the loader refuses; a file that cannot be written; an interruption while
 /// the cases are checked.
-pub fn run(plan: &Plan, dir: &Path, options: &Options, mut progress: impl FnMut(Progress)) -> Result<Report, SweepError> {
+pub fn run(
+    plan: &Plan,
+    dir: &Path,
+    options: &Options,
+    mut progress: impl FnMut(Progress),
+) -> Result<Report, SweepError> {
     let start = Instant::now();
     let cpu_start = process_cpu_seconds();
     let store = Store::new(dir);
     let columns = plan.columns();
-    let manifest = Manifest::new(&plan.name, (&plan.spec_path, &plan.spec_text), (&plan.scene_path, &plan.scene_text), plan.cases.len(), columns.clone());
+    let manifest = Manifest::new(
+        &plan.name,
+        (&plan.spec_path, &plan.spec_text),
+        (&plan.scene_path, &plan.scene_text),
+        plan.cases.len(),
+        columns.clone(),
+    );
     let done = store.check(&manifest)?;
     let in_slice = |case: usize| options.shard.is_none_or(|s| s.contains(case));
     let slice = (0..plan.cases.len()).filter(|&c| in_slice(c)).count();
@@ -130,7 +141,9 @@ pub fn run(plan: &Plan, dir: &Path, options: &Options, mut progress: impl FnMut(
             let outcome = match outcome {
                 Ok(outcome) => outcome,
                 Err(CaseError::Cancelled) => return Ok(()),
-                Err(CaseError::Recording(message)) => return Err(SweepError::Io { path: format!("case {case}"), message }),
+                Err(CaseError::Recording(message)) => {
+                    return Err(SweepError::Io { path: format!("case {case}"), message });
+                }
             };
             let row = Row::new(case, values, outcome, columns.metrics.len());
             run_file.append(&row)?;
@@ -150,12 +163,33 @@ pub fn run(plan: &Plan, dir: &Path, options: &Options, mut progress: impl FnMut(
     let written = if options.shard.is_none() && !interrupted { complete(plan, &store, &options.runner)? } else { None };
     statuses.retain(|(_, n)| *n > 0);
     let writing = start.elapsed() - checking - running;
-    Ok(Report { cases: plan.cases.len(), slice, skipped, ran: state.done, statuses, checking, running, writing, case_cpu_seconds, process_cpu_seconds, written, interrupted })
+    Ok(Report {
+        cases: plan.cases.len(),
+        slice,
+        skipped,
+        ran: state.done,
+        statuses,
+        checking,
+        running,
+        writing,
+        case_cpu_seconds,
+        process_cpu_seconds,
+        written,
+        interrupted,
+    })
 }
 
 /// A row for a case whose scene the loader refused.
 fn refused(message: String) -> Outcome {
-    Outcome { status: Status::Refused, message, end_time: 0.0, steps: 0, rejected_steps: 0, cpu_seconds: 0.0, metrics: None }
+    Outcome {
+        status: Status::Refused,
+        message,
+        end_time: 0.0,
+        steps: 0,
+        rejected_steps: 0,
+        cpu_seconds: 0.0,
+        metrics: None,
+    }
 }
 
 /// Writes the results if every case has a row.
@@ -174,9 +208,17 @@ fn complete(plan: &Plan, store: &Store, runner: &Runner) -> Result<Option<Writte
 pub fn merge(dir: &Path, runner: &Runner) -> Result<Written, SweepError> {
     let store = Store::new(dir);
     let Some(manifest) = store.manifest()? else {
-        return Err(SweepError::Directory(format!("{} holds no sweep (no {}): give the directory a sweep was run into with -o", dir.display(), store::MANIFEST)));
+        return Err(SweepError::Directory(format!(
+            "{} holds no sweep (no {}): give the directory a sweep was run into with -o",
+            dir.display(),
+            store::MANIFEST
+        )));
     };
-    let plan = Plan::from_text(&manifest.spec_path, manifest.spec_text.clone(), Some((manifest.scene_path.clone(), manifest.scene_text.clone())))?;
+    let plan = Plan::from_text(
+        &manifest.spec_path,
+        manifest.spec_text.clone(),
+        Some((manifest.scene_path.clone(), manifest.scene_text.clone())),
+    )?;
     let rows = Rows::gather(&store, &manifest.columns)?;
     let missing = rows.missing(manifest.cases);
     if !missing.is_empty() {

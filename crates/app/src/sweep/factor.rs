@@ -2,7 +2,7 @@
 //! a list of levels, a linear or logarithmic ladder of levels, or a range the Latin hypercube
 //! samples.
 
-use super::spec::{FactorDef, Level, LevelKind, SpecText, SpecError, ValuesDef};
+use super::spec::{FactorDef, Level, LevelKind, SpecError, SpecText, ValuesDef};
 use super::table::compact;
 use super::value_path::{ValuePath, number_value};
 use serde_json::Value;
@@ -44,13 +44,15 @@ impl Factor {
         };
         let mut found = Vec::with_capacity(paths.len());
         for path in paths {
-            let value_path = ValuePath::find(tree, path).map_err(|message| spec.error_at(path, "factors", format!("factor `{name}`: {message}")))?;
+            let value_path = ValuePath::find(tree, path)
+                .map_err(|message| spec.error_at(path, "factors", format!("factor `{name}`: {message}")))?;
             if found.iter().any(|p: &ValuePath| p.text == *path) {
                 return Err(spec.error_at(path, "factors", format!("factor `{name}` names `{path}` twice")));
             }
             found.push(value_path);
         }
-        let values = values(&def.values).map_err(|message| spec.error_after(first, "values", format!("factor `{name}`: {message}")))?;
+        let values = values(&def.values)
+            .map_err(|message| spec.error_after(first, "values", format!("factor `{name}`: {message}")))?;
         let bases: Vec<Option<Level>> = found.iter().map(|p| p.get(tree).and_then(level_of)).collect();
         let base = bases.first().cloned().flatten().filter(|b| bases.iter().all(|other| other.as_ref() == Some(b)));
         Ok(Self { name, paths: found, values, base })
@@ -102,11 +104,14 @@ impl Factor {
     pub fn describe_values(&self) -> String {
         match &self.values {
             Values::Levels(levels) => {
-                let shown: Vec<String> = levels.iter().take(8).map(|l| l.number().map_or_else(|| l.to_string(), compact)).collect();
+                let shown: Vec<String> =
+                    levels.iter().take(8).map(|l| l.number().map_or_else(|| l.to_string(), compact)).collect();
                 let more = if levels.len() > 8 { format!(", … ({} levels)", levels.len()) } else { String::new() };
                 format!("{}{more}", shown.join(", "))
             }
-            Values::Range { from, to, log } => format!("{} from {} to {}", if *log { "log-uniform" } else { "uniform" }, compact(*from), compact(*to)),
+            Values::Range { from, to, log } => {
+                format!("{} from {} to {}", if *log { "log-uniform" } else { "uniform" }, compact(*from), compact(*to))
+            }
         }
     }
 }
@@ -124,13 +129,19 @@ fn level_of(value: &Value) -> Option<Level> {
 /// The values `def` gives, checked: at least one, finite, of one kind; a logarithmic ladder or
 /// range of positive numbers.
 fn values(def: &ValuesDef) -> Result<Values, String> {
-    let finite = |name: &str, x: f64| if x.is_finite() { Ok(x) } else { Err(format!("`{name}` must be a finite number, got {x}")) };
-    let positive = |name: &str, x: f64| if x > 0.0 { Ok(x) } else { Err(format!("`{name}` of a logarithmic spread must be > 0, got {x}")) };
+    let finite = |name: &str, x: f64| {
+        if x.is_finite() { Ok(x) } else { Err(format!("`{name}` must be a finite number, got {x}")) }
+    };
+    let positive = |name: &str, x: f64| {
+        if x > 0.0 { Ok(x) } else { Err(format!("`{name}` of a logarithmic spread must be > 0, got {x}")) }
+    };
     match def {
         ValuesDef::List(levels) => {
             let Some(first) = levels.first() else { return Err("the list of values is empty".into()) };
             if let Some(other) = levels.iter().find(|l| l.kind() != first.kind()) {
-                return Err(format!("the values mix kinds ({first} and {other}): give numbers, names or flags, not several"));
+                return Err(format!(
+                    "the values mix kinds ({first} and {other}): give numbers, names or flags, not several"
+                ));
             }
             for level in levels {
                 if let Level::Number(x) = level {
@@ -148,7 +159,9 @@ fn values(def: &ValuesDef) -> Result<Values, String> {
             Ok(Values::Levels(ladder(from, to, count, |a, b, t| (a.ln() + t * (b.ln() - a.ln())).exp())?))
         }
         &ValuesDef::Uniform { from, to } => range(finite("from", from)?, finite("to", to)?, false),
-        &ValuesDef::LogUniform { from, to } => range(positive("from", finite("from", from)?)?, positive("to", finite("to", to)?)?, true),
+        &ValuesDef::LogUniform { from, to } => {
+            range(positive("from", finite("from", from)?)?, positive("to", finite("to", to)?)?, true)
+        }
     }
 }
 
@@ -170,7 +183,11 @@ fn ladder(from: f64, to: f64, count: u32, between: impl Fn(f64, f64, f64) -> f64
 }
 
 fn range(from: f64, to: f64, log: bool) -> Result<Values, String> {
-    if from < to { Ok(Values::Range { from, to, log }) } else { Err(format!("`from` must be below `to`, got {from} and {to}")) }
+    if from < to {
+        Ok(Values::Range { from, to, log })
+    } else {
+        Err(format!("`from` must be below `to`, got {from} and {to}"))
+    }
 }
 
 #[cfg(test)]
@@ -200,9 +217,18 @@ mod tests {
         let error = |def: ValuesDef| values(&def).unwrap_err();
         assert_eq!(error(ValuesDef::List(vec![])), "the list of values is empty");
         assert_eq!(error(ValuesDef::Linear { from: 0.0, to: 1.0, count: 0 }), "`count` must be at least 1");
-        assert_eq!(error(ValuesDef::Log { from: 0.0, to: 1.0, count: 3 }), "`from` of a logarithmic spread must be > 0, got 0");
+        assert_eq!(
+            error(ValuesDef::Log { from: 0.0, to: 1.0, count: 3 }),
+            "`from` of a logarithmic spread must be > 0, got 0"
+        );
         assert_eq!(error(ValuesDef::Uniform { from: 2.0, to: 1.0 }), "`from` must be below `to`, got 2 and 1");
-        assert_eq!(error(ValuesDef::List(vec![Level::Number(f64::INFINITY)])), "`values` must be a finite number, got inf");
-        assert_eq!(error(ValuesDef::List(vec![Level::Number(1.0), Level::Text("rk4".into())])), "the values mix kinds (1 and rk4): give numbers, names or flags, not several");
+        assert_eq!(
+            error(ValuesDef::List(vec![Level::Number(f64::INFINITY)])),
+            "`values` must be a finite number, got inf"
+        );
+        assert_eq!(
+            error(ValuesDef::List(vec![Level::Number(1.0), Level::Text("rk4".into())])),
+            "the values mix kinds (1 and rk4): give numbers, names or flags, not several"
+        );
     }
 }

@@ -135,7 +135,12 @@ impl Probe {
     /// The body whose state it reads.
     fn body(self) -> Option<usize> {
         match self {
-            Self::Position(b, _) | Self::Velocity(b, _) | Self::Speed(b) | Self::AngularSpeed(b) | Self::Excursion(b) | Self::Rotation(b) => Some(b),
+            Self::Position(b, _)
+            | Self::Velocity(b, _)
+            | Self::Speed(b)
+            | Self::AngularSpeed(b)
+            | Self::Excursion(b)
+            | Self::Rotation(b) => Some(b),
             Self::Tension(_) | Self::Length(_) | Self::Energy(_) => None,
         }
     }
@@ -159,22 +164,48 @@ impl Metric {
     /// # Errors
     /// A declared metric naming a body or coupling the scene does not have, or an invalid
     /// window, placed at the metric's name.
-    pub fn all(world: &World, standard: bool, declared: &[MetricDef], spec: &SpecText<'_>) -> Result<Vec<Self>, SpecError> {
+    pub fn all(
+        world: &World,
+        standard: bool,
+        declared: &[MetricDef],
+        spec: &SpecText<'_>,
+    ) -> Result<Vec<Self>, SpecError> {
         let mut metrics = Vec::new();
         if standard {
             for (index, coupling) in world.couplings().iter().enumerate() {
-                metrics.push(reduced(format!("{}.tension_max_N", coupling.name), Probe::Tension(index), Reduction::Max, 0.0));
-                metrics.push(reduced(format!("{}.tension_min_N", coupling.name), Probe::Tension(index), Reduction::Min, 0.0));
+                metrics.push(reduced(
+                    format!("{}.tension_max_N", coupling.name),
+                    Probe::Tension(index),
+                    Reduction::Max,
+                    0.0,
+                ));
+                metrics.push(reduced(
+                    format!("{}.tension_min_N", coupling.name),
+                    Probe::Tension(index),
+                    Reduction::Min,
+                    0.0,
+                ));
             }
             for (index, body) in world.bodies().iter().enumerate().filter(|(_, b)| moves(&b.support)) {
-                metrics.push(reduced(format!("{}.excursion_max_m", body.name), Probe::Excursion(index), Reduction::Max, 0.0));
-                metrics.push(reduced(format!("{}.rotation_max_rad", body.name), Probe::Rotation(index), Reduction::Max, 0.0));
+                metrics.push(reduced(
+                    format!("{}.excursion_max_m", body.name),
+                    Probe::Excursion(index),
+                    Reduction::Max,
+                    0.0,
+                ));
+                metrics.push(reduced(
+                    format!("{}.rotation_max_rad", body.name),
+                    Probe::Rotation(index),
+                    Reduction::Max,
+                    0.0,
+                ));
             }
         }
         metrics.push(Self { name: "settle_time_s".into(), unit: "s", measure: Measure::SettleTime });
         metrics.push(Self { name: "energy_error".into(), unit: "–", measure: Measure::EnergyError });
         for def in declared {
-            let fail = |message: String| spec.error_at(&def.name, "metrics", format!("metric \"{}\": {message}", def.name));
+            let fail =
+                |message: String| spec.error_at(&def.name, "metrics", format!("metric \"{}\": {message}", def.name));
             let probe = probe(world, &def.of).map_err(fail)?;
             if !(def.after.is_finite() && def.after >= 0.0) {
                 return Err(fail(format!("`after` must be a time ≥ 0 s, got {}", def.after)));
@@ -213,7 +244,10 @@ fn probe(world: &World, quantity: &Quantity) -> Result<Probe, String> {
     let coupling = |name: &str| {
         world.couplings().iter().position(|c| c.name == name).ok_or_else(|| {
             let names: Vec<&str> = world.couplings().iter().map(|c| c.name.as_str()).collect();
-            format!("the scene has no coupling \"{name}\" (couplings: {})", if names.is_empty() { "none".into() } else { names.join(", ") })
+            format!(
+                "the scene has no coupling \"{name}\" (couplings: {})",
+                if names.is_empty() { "none".into() } else { names.join(", ") }
+            )
         })
     };
     Ok(match quantity {
@@ -243,7 +277,15 @@ struct Tally {
 
 impl Default for Tally {
     fn default() -> Self {
-        Self { max: f64::NEG_INFINITY, min: f64::INFINITY, max_abs: 0.0, sum: 0.0, sum_of_squares: 0.0, count: 0, last: 0.0 }
+        Self {
+            max: f64::NEG_INFINITY,
+            min: f64::INFINITY,
+            max_abs: 0.0,
+            sum: 0.0,
+            sum_of_squares: 0.0,
+            count: 0,
+            last: 0.0,
+        }
     }
 }
 
@@ -317,7 +359,12 @@ impl<'m> Observer<'m> {
         let moving: Vec<usize> = (0..bodies).filter(|&i| moves(&world.bodies()[i].support)).collect();
         let stride = steps.div_ceil(SETTLE_SAMPLES).max(1);
         let capacity = (steps / stride + 2) as usize;
-        let settle = SettleTrack { stride, times: Vec::with_capacity(capacity), positions: Vec::with_capacity(capacity * moving.len()), bodies: moving };
+        let settle = SettleTrack {
+            stride,
+            times: Vec::with_capacity(capacity),
+            positions: Vec::with_capacity(capacity * moving.len()),
+            bodies: moving,
+        };
         let energy = world.energy();
         let mut observer = Self {
             metrics,

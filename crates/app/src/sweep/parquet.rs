@@ -66,7 +66,8 @@ impl ParquetTable {
         if self.rows.is_empty() {
             return Ok(());
         }
-        let batch = RecordBatch::try_new(Arc::clone(&self.schema), arrays(&self.columns, &self.rows)).map_err(|e| failed(&self.path, &e))?;
+        let batch = RecordBatch::try_new(Arc::clone(&self.schema), arrays(&self.columns, &self.rows))
+            .map_err(|e| failed(&self.path, &e))?;
         self.writer.write(&batch).map_err(|e| failed(&self.path, &e))?;
         self.rows.clear();
         Ok(())
@@ -97,7 +98,9 @@ fn schema(columns: &Columns) -> Schema {
         Field::new(rejected, DataType::UInt64, false),
         Field::new(cpu, DataType::Float64, false).with_metadata(unit("s")),
     ]);
-    fields.extend(columns.metrics.iter().map(|m| Field::new(&m.name, DataType::Float64, true).with_metadata(unit(&m.unit))));
+    fields.extend(
+        columns.metrics.iter().map(|m| Field::new(&m.name, DataType::Float64, true).with_metadata(unit(&m.unit))),
+    );
     Schema::new(fields)
 }
 
@@ -107,7 +110,8 @@ fn unit(unit: &str) -> HashMap<String, String> {
 
 /// The columns of `rows` as arrays, in the schema's order.
 fn arrays(columns: &Columns, rows: &[Row]) -> Vec<ArrayRef> {
-    let whole = |f: &dyn Fn(&Row) -> u64| -> ArrayRef { Arc::new(rows.iter().map(f).collect::<arrow_array::UInt64Array>()) };
+    let whole =
+        |f: &dyn Fn(&Row) -> u64| -> ArrayRef { Arc::new(rows.iter().map(f).collect::<arrow_array::UInt64Array>()) };
     let real = |f: &dyn Fn(&Row) -> Option<f64>| -> ArrayRef {
         let mut builder = Float64Builder::with_capacity(rows.len());
         rows.iter().for_each(|r| builder.append_option(f(r)));

@@ -45,7 +45,10 @@ impl Plan {
     /// # Errors
     /// A spec or scene that cannot be read or is wrong, placed `path:line:col`.
     pub fn load(spec_path: &Path) -> Result<Self, SweepError> {
-        let spec_text = std::fs::read_to_string(spec_path).map_err(|e| SweepError::Io { path: spec_path.display().to_string(), message: format!("cannot read the sweep spec: {e}") })?;
+        let spec_text = std::fs::read_to_string(spec_path).map_err(|e| SweepError::Io {
+            path: spec_path.display().to_string(),
+            message: format!("cannot read the sweep spec: {e}"),
+        })?;
         Self::from_text(spec_path, spec_text, None)
     }
 
@@ -54,38 +57,62 @@ impl Plan {
     ///
     /// # Errors
     /// As [`Plan::load`].
-    pub fn from_text(spec_path: &Path, spec_text: String, scene: Option<(PathBuf, String)>) -> Result<Self, SweepError> {
+    pub fn from_text(
+        spec_path: &Path,
+        spec_text: String,
+        scene: Option<(PathBuf, String)>,
+    ) -> Result<Self, SweepError> {
         let spec = SpecText { path: spec_path, text: &spec_text };
         let file = spec.parse()?;
         let (scene_path, scene_text) = match scene {
             Some(given) => given,
             None => {
                 let path = spec_path.parent().unwrap_or(Path::new(".")).join(&file.scene);
-                let text = std::fs::read_to_string(&path).map_err(|e| spec.error_at(&file.scene, "scene", format!("cannot read the scene {}: {e}", path.display())))?;
+                let text = std::fs::read_to_string(&path).map_err(|e| {
+                    spec.error_at(&file.scene, "scene", format!("cannot read the scene {}: {e}", path.display()))
+                })?;
                 (path, text)
             }
         };
         let scene = tether_scene::parse(&scene_text, &scene_path)?;
-        let mut base = serde_json::to_value(&scene.file).map_err(|e| spec.error_at(&file.scene, "scene", format!("the scene's data cannot be addressed: {e}")))?;
+        let mut base = serde_json::to_value(&scene.file)
+            .map_err(|e| spec.error_at(&file.scene, "scene", format!("the scene's data cannot be addressed: {e}")))?;
         if let Some(duration) = file.duration {
             if !(duration.is_finite() && duration > 0.0) {
                 return Err(spec.error_at("", "duration", format!("duration must be > 0 s, got {duration}")).into());
             }
             base["duration"] = Value::from(duration);
         }
-        let name = file.name.clone().unwrap_or_else(|| spec_path.file_stem().map_or_else(|| "sweep".into(), |s| s.to_string_lossy().into_owned()));
+        let name = file.name.clone().unwrap_or_else(|| {
+            spec_path.file_stem().map_or_else(|| "sweep".into(), |s| s.to_string_lossy().into_owned())
+        });
         if name.is_empty() || !name.chars().all(|c| c.is_alphanumeric() || "-_".contains(c)) {
             return Err(spec.error_at(&name, "name", format!("the sweep's name \"{name}\" must be letters, digits, - and _ (it names the recordings' application)")).into());
         }
         let factors = file.factors.iter().map(|def| Factor::new(def, &base, &spec)).collect::<Result<Vec<_>, _>>()?;
         let cases = Cases::new(&file.design, &factors).map_err(|message| spec.error_at("", "design", message))?;
         if !(file.settle_band > 0.0 && file.settle_band < 1.0) {
-            return Err(spec.error_at("", "settle_band", format!("settle_band must be > 0 and < 1, got {}", file.settle_band)).into());
+            return Err(spec
+                .error_at("", "settle_band", format!("settle_band must be > 0 and < 1, got {}", file.settle_band))
+                .into());
         }
         let metrics = Metric::all(&scene.world, file.standard_metrics, &file.metrics, &spec)?;
         check_names(&factors, &metrics, &file.metrics, &spec)?;
         let names = names(&scene);
-        Ok(Self { name, spec_path: spec_path.to_path_buf(), spec_text, scene_path, scene_text, base, factors, design: file.design, cases, metrics, settle_band: file.settle_band, names })
+        Ok(Self {
+            name,
+            spec_path: spec_path.to_path_buf(),
+            spec_text,
+            scene_path,
+            scene_text,
+            base,
+            factors,
+            design: file.design,
+            cases,
+            metrics,
+            settle_band: file.settle_band,
+            names,
+        })
     }
 
     /// The factors' values in case `case`.
@@ -112,7 +139,8 @@ impl Plan {
     /// values that rename a body or coupling.
     pub fn scene(&self, values: &[Level]) -> Result<Scene, String> {
         let file = self.scene_file(values)?;
-        let scene = tether_scene::build_variant(&self.scene_text, &self.scene_path, file).map_err(|e: SceneError| e.to_string())?;
+        let scene = tether_scene::build_variant(&self.scene_text, &self.scene_path, file)
+            .map_err(|e: SceneError| e.to_string())?;
         if names(&scene) != self.names {
             return Err("the values rename a body or a coupling: a sweep changes values, not names".into());
         }
@@ -134,12 +162,16 @@ impl Plan {
                 // The other factors as the base scene has them.
                 let mut tree = self.base.clone();
                 factor.set(&mut tree, &level);
-                let checked = serde_json::from_value::<SceneFile>(tree)
-                    .map_err(|e| e.to_string())
-                    .and_then(|file| tether_scene::build_variant(&self.scene_text, &self.scene_path, file).map(drop).map_err(|e| e.to_string()));
+                let checked = serde_json::from_value::<SceneFile>(tree).map_err(|e| e.to_string()).and_then(|file| {
+                    tether_scene::build_variant(&self.scene_text, &self.scene_path, file)
+                        .map(drop)
+                        .map_err(|e| e.to_string())
+                });
                 if let Err(message) = checked {
                     let first = factor.paths.first().map_or("", |p| p.text.as_str());
-                    return Err(spec.error_after(first, "values", format!("factor `{}` = {level}: {message}", factor.name)).into());
+                    return Err(spec
+                        .error_after(first, "values", format!("factor `{}` = {level}: {message}", factor.name))
+                        .into());
                 }
             }
         }
@@ -151,10 +183,14 @@ impl Plan {
     /// # Errors
     /// A case the loader refuses, with its values ([`SweepError::Case`]); the run cancelled.
     pub fn check_cases(&self, runner: &Runner, cases: impl Iterator<Item = usize> + Send) -> Result<(), SweepError> {
-        runner.run(cases, |&case, _| self.scene(&self.values(case)).err(), |case, refused| match refused {
-            None => Ok(()),
-            Some(message) => Err(SweepError::Case { case, values: self.describe(case), message }),
-        })?;
+        runner.run(
+            cases,
+            |&case, _| self.scene(&self.values(case)).err(),
+            |case, refused| match refused {
+                None => Ok(()),
+                Some(message) => Err(SweepError::Case { case, values: self.describe(case), message }),
+            },
+        )?;
         if runner.cancelled() { Err(SweepError::Interrupted) } else { Ok(()) }
     }
 
@@ -168,32 +204,61 @@ impl Plan {
     /// The results' columns.
     pub fn columns(&self) -> Columns {
         Columns {
-            factors: self.factors.iter().map(|f| FactorColumn { name: f.name.clone(), kind: f.kind(), log: f.logarithmic() }).collect(),
-            metrics: self.metrics.iter().map(|m| MetricColumn { name: m.name.clone(), unit: m.unit.to_string() }).collect(),
+            factors: self
+                .factors
+                .iter()
+                .map(|f| FactorColumn { name: f.name.clone(), kind: f.kind(), log: f.logarithmic() })
+                .collect(),
+            metrics: self
+                .metrics
+                .iter()
+                .map(|m| MetricColumn { name: m.name.clone(), unit: m.unit.to_string() })
+                .collect(),
         }
     }
 }
 
 /// Body and coupling names of a scene, in order.
 fn names(scene: &Scene) -> Vec<String> {
-    scene.world.bodies().iter().map(|b| b.name.clone()).chain(scene.world.couplings().iter().map(|c| c.name.clone())).collect()
+    scene
+        .world
+        .bodies()
+        .iter()
+        .map(|b| b.name.clone())
+        .chain(scene.world.couplings().iter().map(|c| c.name.clone()))
+        .collect()
 }
 
 /// Every column name once: factors, the outcome's columns, metrics.
-fn check_names(factors: &[Factor], metrics: &[Metric], declared: &[MetricDef], spec: &SpecText<'_>) -> Result<(), SweepError> {
+fn check_names(
+    factors: &[Factor],
+    metrics: &[Metric],
+    declared: &[MetricDef],
+    spec: &SpecText<'_>,
+) -> Result<(), SweepError> {
     let mut seen: Vec<&str> = vec![CASE_COLUMN];
     seen.extend(OUTCOME_COLUMNS);
     for factor in factors {
         if seen.contains(&factor.name.as_str()) {
             let first = factor.paths.first().map_or(factor.name.as_str(), |p| p.text.as_str());
-            return Err(spec.error_at(first, "factors", format!("factor `{}`: the results already have a column of that name", factor.name)).into());
+            return Err(spec
+                .error_at(
+                    first,
+                    "factors",
+                    format!("factor `{}`: the results already have a column of that name", factor.name),
+                )
+                .into());
         }
         seen.push(&factor.name);
     }
     for metric in metrics {
         let is_declared = declared.iter().any(|d| d.name == metric.name);
         if metric.name.is_empty() || seen.contains(&metric.name.as_str()) {
-            let message = if is_declared { format!("metric \"{}\": the results already have a column of that name", metric.name) } else { format!("the standard metric {} has the name of another column", metric.name) };
+            let message = if is_declared {
+                format!("metric \"{}\": the results already have a column of that name", metric.name)
+            } else {
+                format!("the standard metric {} has the name of another column", metric.name)
+            };
             return Err(spec.error_at(&metric.name, "metrics", message).into());
         }
         seen.push(&metric.name);

@@ -68,7 +68,12 @@ pub fn draw(plan: &Plan, rows: &Rows, folder: &Path, runner: &Runner) -> Result<
     std::fs::create_dir_all(folder).map_err(|e| super::store::io(folder, "cannot create", &e))?;
     let columns = plan.columns();
     let axes = axes(plan, rows)?;
-    let mut series: Vec<Series> = columns.metrics.iter().enumerate().map(|(k, m)| Series { name: m.name.clone(), unit: m.unit.clone(), source: Source::Metric(k) }).collect();
+    let mut series: Vec<Series> = columns
+        .metrics
+        .iter()
+        .enumerate()
+        .map(|(k, m)| Series { name: m.name.clone(), unit: m.unit.clone(), source: Source::Metric(k) })
+        .collect();
     series.push(Series { name: "cpu_s".into(), unit: "s".into(), source: Source::Cpu });
     series.push(Series { name: "steps".into(), unit: "–".into(), source: Source::Steps });
     let file_names = file_names(&series, &columns);
@@ -76,13 +81,17 @@ pub fn draw(plan: &Plan, rows: &Rows, folder: &Path, runner: &Runner) -> Result<
     let mut written = Vec::new();
     for chunk in series.chunks(per_pass) {
         let values = values(rows, chunk)?;
-        let charts: Vec<(usize, usize)> = (0..chunk.len()).flat_map(|s| (0..plan.factors.len()).map(move |f| (s, f))).collect();
+        let charts: Vec<(usize, usize)> =
+            (0..chunk.len()).flat_map(|s| (0..plan.factors.len()).map(move |f| (s, f))).collect();
         runner.run(
             charts.into_iter(),
             |&(s, f), _| {
                 let file = &file_names[&(chunk[s].name.clone(), f)];
                 let chart = Chart::new(plan, &axes, f, &chunk[s], &values[s]);
-                chart.render(&folder.join(file)).map(|()| file.clone()).map_err(|message| SweepError::Output { path: folder.join(file).display().to_string(), message })
+                chart
+                    .render(&folder.join(file))
+                    .map(|()| file.clone())
+                    .map_err(|message| SweepError::Output { path: folder.join(file).display().to_string(), message })
             },
             |_, drawn| {
                 written.push(drawn?);
@@ -96,7 +105,9 @@ pub fn draw(plan: &Plan, rows: &Rows, folder: &Path, runner: &Runner) -> Result<
 
 /// `<metric>--<factor>.png` per chart, made safe as file names and unique.
 fn file_names(series: &[Series], columns: &Columns) -> BTreeMap<(String, usize), String> {
-    let safe = |text: &str| text.chars().map(|c| if c.is_alphanumeric() || "-_.".contains(c) { c } else { '_' }).collect::<String>();
+    let safe = |text: &str| {
+        text.chars().map(|c| if c.is_alphanumeric() || "-_.".contains(c) { c } else { '_' }).collect::<String>()
+    };
     let mut names = BTreeMap::new();
     let mut taken = std::collections::BTreeSet::new();
     for s in series {
@@ -120,7 +131,9 @@ fn axes(plan: &Plan, rows: &Rows) -> Result<Axes, SweepError> {
         .factors
         .iter()
         .map(|f| match (&f.values, f.kind()) {
-            (Values::Levels(levels), LevelKind::Text | LevelKind::Flag) => levels.iter().map(ToString::to_string).collect(),
+            (Values::Levels(levels), LevelKind::Text | LevelKind::Flag) => {
+                levels.iter().map(ToString::to_string).collect()
+            }
             _ => Vec::new(),
         })
         .collect();
@@ -182,7 +195,8 @@ impl<'a> Chart<'a> {
     fn new(plan: &Plan, axes: &'a Axes, factor: usize, series: &Series, values: &[Option<f64>]) -> Self {
         let column = &plan.columns().factors[factor];
         let x_log = column.log && column.kind == LevelKind::Number && axes.positions[factor].iter().all(|&x| x > 0.0);
-        let (low, high) = values.iter().flatten().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &y| (l.min(y), h.max(y)));
+        let (low, high) =
+            values.iter().flatten().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &y| (l.min(y), h.max(y)));
         let y_log = low > 0.0 && high / low >= 1e3;
         let (groups, lines) = groups(plan, axes, factor);
         let mut failed = Vec::new();
@@ -218,20 +232,37 @@ impl<'a> Chart<'a> {
     /// Draws the chart to the PNG `path`.
     fn render(&self, path: &Path) -> Result<(), String> {
         let points = || self.curves.iter().flat_map(|(_, p)| p.iter());
-        let (x_low, x_high) = points().map(|p| p.0).chain(self.failed.iter().copied()).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
-        let (y_low, y_high) = points().map(|p| p.1).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| (a.min(y), b.max(y)));
-        let x_range = if self.categories.is_empty() { padded(x_low, x_high, self.x_log) } else { (x_low.min(0.0) - 0.5)..(x_high.max(self.categories.len() as f64 - 1.0) + 0.5) };
+        let (x_low, x_high) = points()
+            .map(|p| p.0)
+            .chain(self.failed.iter().copied())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
+        let (y_low, y_high) =
+            points().map(|p| p.1).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| (a.min(y), b.max(y)));
+        let x_range = if self.categories.is_empty() {
+            padded(x_low, x_high, self.x_log)
+        } else {
+            (x_low.min(0.0) - 0.5)..(x_high.max(self.categories.len() as f64 - 1.0) + 0.5)
+        };
         let y_range = padded(y_low, y_high, self.y_log);
         match (self.x_log, self.y_log) {
             (false, false) => self.render_on(path, x_range.clone(), y_range.clone(), &x_range, &y_range),
             (true, false) => self.render_on(path, x_range.clone().log_scale(), y_range.clone(), &x_range, &y_range),
             (false, true) => self.render_on(path, x_range.clone(), y_range.clone().log_scale(), &x_range, &y_range),
-            (true, true) => self.render_on(path, x_range.clone().log_scale(), y_range.clone().log_scale(), &x_range, &y_range),
+            (true, true) => {
+                self.render_on(path, x_range.clone().log_scale(), y_range.clone().log_scale(), &x_range, &y_range)
+            }
         }
     }
 
     /// Draws the chart on axes `x` and `y` (linear or logarithmic) spanning `x_range`, `y_range`.
-    fn render_on<X, Y>(&self, path: &Path, x: X, y: Y, x_range: &std::ops::Range<f64>, y_range: &std::ops::Range<f64>) -> Result<(), String>
+    fn render_on<X, Y>(
+        &self,
+        path: &Path,
+        x: X,
+        y: Y,
+        x_range: &std::ops::Range<f64>,
+        y_range: &std::ops::Range<f64>,
+    ) -> Result<(), String>
     where
         X: AsRangedCoord<Value = f64>,
         Y: AsRangedCoord<Value = f64>,
@@ -272,7 +303,9 @@ impl<'a> Chart<'a> {
                     labelled = true;
                 }
             }
-            let dots = chart.draw_series(points.iter().map(|&p| Circle::new(p, radius, colour.filled()))).map_err(|e| error(&e))?;
+            let dots = chart
+                .draw_series(points.iter().map(|&p| Circle::new(p, radius, colour.filled())))
+                .map_err(|e| error(&e))?;
             if let (Some(label), false) = (label, as_line) {
                 dots.label(label).legend(move |(x, y)| Circle::new((x + 6, y), radius, colour.filled()));
                 labelled = true;
@@ -280,14 +313,26 @@ impl<'a> Chart<'a> {
         }
         if !self.failed.is_empty() {
             // On the x axis, just above the frame's bottom.
-            let bottom = if self.y_log { y_range.start * (y_range.end / y_range.start).powf(0.03) } else { y_range.start + 0.03 * (y_range.end - y_range.start) };
+            let bottom = if self.y_log {
+                y_range.start * (y_range.end / y_range.start).powf(0.03)
+            } else {
+                y_range.start + 0.03 * (y_range.end - y_range.start)
+            };
             let red = RGBColor(214, 39, 40);
-            let crosses = chart.draw_series(self.failed.iter().map(|&x| Cross::new((x, bottom), 7, red.stroke_width(3)))).map_err(|e| error(&e))?;
-            crosses.label(format!("{} failed (no value)", self.failed.len())).legend(move |(x, y)| Cross::new((x + 6, y), 6, red.stroke_width(3)));
+            let crosses = chart
+                .draw_series(self.failed.iter().map(|&x| Cross::new((x, bottom), 7, red.stroke_width(3))))
+                .map_err(|e| error(&e))?;
+            crosses
+                .label(format!("{} failed (no value)", self.failed.len()))
+                .legend(move |(x, y)| Cross::new((x + 6, y), 6, red.stroke_width(3)));
             labelled = true;
         }
         if labelled {
-            chart_style::legend(&mut chart.configure_series_labels(), 18).position(self.emptiest_corner(x_range, y_range)).margin(15).draw().map_err(|e| error(&e))?;
+            chart_style::legend(&mut chart.configure_series_labels(), 18)
+                .position(self.emptiest_corner(x_range, y_range))
+                .margin(15)
+                .draw()
+                .map_err(|e| error(&e))?;
         }
         root.present().map_err(|e| error(&e))
     }
@@ -295,7 +340,11 @@ impl<'a> Chart<'a> {
     /// The corner of the frame with the fewest points, for the legend.
     fn emptiest_corner(&self, x_range: &std::ops::Range<f64>, y_range: &std::ops::Range<f64>) -> SeriesLabelPosition {
         let place = |value: f64, range: &std::ops::Range<f64>, log: bool| {
-            if log { (value / range.start).ln() / (range.end / range.start).ln() } else { (value - range.start) / (range.end - range.start) }
+            if log {
+                (value / range.start).ln() / (range.end / range.start).ln()
+            } else {
+                (value - range.start) / (range.end - range.start)
+            }
         };
         let mut counts = [0_usize; 4];
         for &(x, y) in self.curves.iter().flat_map(|(_, p)| p.iter()) {
@@ -303,7 +352,12 @@ impl<'a> Chart<'a> {
             let corner = usize::from(u < 0.5) + 2 * usize::from(v < 0.5);
             counts[corner] += 1;
         }
-        let corners = [SeriesLabelPosition::UpperRight, SeriesLabelPosition::UpperLeft, SeriesLabelPosition::LowerRight, SeriesLabelPosition::LowerLeft];
+        let corners = [
+            SeriesLabelPosition::UpperRight,
+            SeriesLabelPosition::UpperLeft,
+            SeriesLabelPosition::LowerRight,
+            SeriesLabelPosition::LowerLeft,
+        ];
         let emptiest = (0..4).min_by_key(|&k| counts[k]).unwrap_or(0);
         corners[emptiest].clone()
     }
@@ -330,7 +384,11 @@ fn padded(low: f64, high: f64, log: bool) -> std::ops::Range<f64> {
 /// The name of the level at tick `x` of a named axis (ticks between levels have none).
 fn category(x: f64, categories: &[String]) -> String {
     let nearest = x.round();
-    if (x - nearest).abs() < 1e-6 && nearest >= 0.0 { categories.get(nearest as usize).cloned().unwrap_or_default() } else { String::new() }
+    if (x - nearest).abs() < 1e-6 && nearest >= 0.0 {
+        categories.get(nearest as usize).cloned().unwrap_or_default()
+    } else {
+        String::new()
+    }
 }
 
 /// The cases of each curve of a chart against factor `factor`, and whether they are lines.
@@ -341,13 +399,17 @@ fn groups(plan: &Plan, axes: &Axes, factor: usize) -> (Vec<Group>, bool) {
         Design::Grid => {
             let mut curves: BTreeMap<Vec<u64>, Vec<usize>> = BTreeMap::new();
             for case in 0..cases {
-                curves.entry(others.iter().map(|&f| axes.positions[f][case].to_bits()).collect()).or_default().push(case);
+                curves
+                    .entry(others.iter().map(|&f| axes.positions[f][case].to_bits()).collect())
+                    .or_default()
+                    .push(case);
             }
             if others.is_empty() {
                 (vec![(None, (0..cases).collect())], true)
             } else if curves.len() <= MAX_CURVES {
                 // Grid cases come in order, so each curve's first case labels it.
-                let mut labelled: Vec<Group> = curves.into_values().map(|cases| (Some(label(plan, axes, &others, cases[0])), cases)).collect();
+                let mut labelled: Vec<Group> =
+                    curves.into_values().map(|cases| (Some(label(plan, axes, &others, cases[0])), cases)).collect();
                 labelled.sort_by_key(|(_, cases)| cases[0]);
                 (labelled, true)
             } else {
@@ -356,7 +418,11 @@ fn groups(plan: &Plan, axes: &Axes, factor: usize) -> (Vec<Group>, bool) {
         }
         // Case 0 is the base: the factor's own cases have every other factor where it has it.
         Design::OneAtATime => {
-            let at_base = (0..cases).filter(|&case| others.iter().all(|&f| axes.positions[f][case].to_bits() == axes.positions[f][0].to_bits())).collect();
+            let at_base = (0..cases)
+                .filter(|&case| {
+                    others.iter().all(|&f| axes.positions[f][case].to_bits() == axes.positions[f][0].to_bits())
+                })
+                .collect();
             (vec![(None, at_base)], true)
         }
         Design::LatinHypercube { .. } => (vec![(None, (0..cases).collect())], false),
@@ -369,7 +435,11 @@ fn label(plan: &Plan, axes: &Axes, others: &[usize], case: usize) -> String {
         .iter()
         .map(|&f| {
             let x = axes.positions[f][case];
-            let value = axes.categories[f].get(x as usize).filter(|_| !axes.categories[f].is_empty()).cloned().unwrap_or_else(|| compact(x));
+            let value = axes.categories[f]
+                .get(x as usize)
+                .filter(|_| !axes.categories[f].is_empty())
+                .cloned()
+                .unwrap_or_else(|| compact(x));
             format!("{} = {value}", plan.factors[f].name)
         })
         .collect();

@@ -4,11 +4,11 @@
 //! this when its last case is done; `tether sweep merge` does it for shards.
 
 use super::SweepError;
+use super::parquet::ParquetTable;
 use super::plan::Plan;
 use super::plots;
 use super::store::{self, Store};
 use super::summary::Summary;
-use super::parquet::ParquetTable;
 use super::table::{Columns, Row};
 use crate::runner::Runner;
 use std::fs::File;
@@ -83,7 +83,11 @@ impl Rows {
                 reader.seek(position.clone()).map_err(|e| read_error(path, &e))?;
             }
             reader.read_record(&mut record).map_err(|e| read_error(path, &e))?;
-            each(self.columns.parse(&record).map_err(|m| SweepError::Directory(format!("{}:{}: {m}", path.display(), position.line())))?)?;
+            each(
+                self.columns
+                    .parse(&record)
+                    .map_err(|m| SweepError::Directory(format!("{}:{}: {m}", path.display(), position.line())))?,
+            )?;
         }
         Ok(())
     }
@@ -112,8 +116,16 @@ pub fn write(plan: &Plan, store: &Store, rows: &Rows, runner: &Runner) -> Result
     let columns = plan.columns();
     let csv_path = store.path("results.csv");
     let parquet_path = store.path("results.parquet");
-    let temporary = |path: &Path| path.with_file_name(format!(".{}.tmp", path.file_name().map_or_else(String::new, |n| n.to_string_lossy().into_owned())));
-    let mut csv = csv::Writer::from_path(temporary(&csv_path)).map_err(|e| SweepError::Io { path: csv_path.display().to_string(), message: format!("cannot write it: {e}") })?;
+    let temporary = |path: &Path| {
+        path.with_file_name(format!(
+            ".{}.tmp",
+            path.file_name().map_or_else(String::new, |n| n.to_string_lossy().into_owned())
+        ))
+    };
+    let mut csv = csv::Writer::from_path(temporary(&csv_path)).map_err(|e| SweepError::Io {
+        path: csv_path.display().to_string(),
+        message: format!("cannot write it: {e}"),
+    })?;
     csv.write_record(columns.header()).map_err(|e| write_error(&csv_path, &e))?;
     let mut parquet = ParquetTable::create(&temporary(&parquet_path), &columns)?;
     let mut summary = Summary::new(&columns);
@@ -132,8 +144,13 @@ pub fn write(plan: &Plan, store: &Store, rows: &Rows, runner: &Runner) -> Result
     let linked: Vec<String> = charts.iter().map(|c| format!("plots/{c}")).collect();
     let summary_path = store.path("summary.md");
     let mut file = File::create(&summary_path).map_err(|e| store::io(&summary_path, "cannot create", &e))?;
-    file.write_all(summary.markdown(plan, &linked).as_bytes()).map_err(|e| store::io(&summary_path, "cannot write", &e))?;
-    Ok(Written { statuses: summary.statuses(), files: vec![csv_path, parquet_path, summary_path, plots::folder(store.dir())], charts: charts.len() })
+    file.write_all(summary.markdown(plan, &linked).as_bytes())
+        .map_err(|e| store::io(&summary_path, "cannot write", &e))?;
+    Ok(Written {
+        statuses: summary.statuses(),
+        files: vec![csv_path, parquet_path, summary_path, plots::folder(store.dir())],
+        charts: charts.len(),
+    })
 }
 
 fn write_error(path: &Path, error: &csv::Error) -> SweepError {

@@ -67,7 +67,11 @@ pub fn parse(text: &str) -> Result<ShardArg, String> {
 /// The shard `index` of `count`, if the index is below the count; `source` says where the
 /// index came from, for the message.
 fn checked(index: u32, count: u32, source: &str) -> Result<Shard, String> {
-    if index < count { Ok(Shard { index, count }) } else { Err(format!("shard index {index}{source} is out of range for {count} shards (0 to {})", count - 1)) }
+    if index < count {
+        Ok(Shard { index, count })
+    } else {
+        Err(format!("shard index {index}{source} is out of range for {count} shards (0 to {})", count - 1))
+    }
 }
 
 /// The shard a run takes: `arg` if given, else the scheduler's if the environment `env` is a
@@ -84,22 +88,30 @@ pub fn resolve(arg: Option<ShardArg>, env: &dyn Fn(&str) -> Option<String>) -> R
         None => return Ok(None),
     };
     let number = |name: &str| -> Result<Option<u32>, String> {
-        env(name).map(|value| value.trim().parse::<u32>().map_err(|_| format!("{name}={value} is not a whole number"))).transpose()
+        env(name)
+            .map(|value| value.trim().parse::<u32>().map_err(|_| format!("{name}={value} is not a whole number")))
+            .transpose()
     };
     if let Some(id) = number("SLURM_ARRAY_TASK_ID")? {
-        let total = number("SLURM_ARRAY_TASK_COUNT")?.ok_or_else(|| format!("SLURM_ARRAY_TASK_ID={id} but no SLURM_ARRAY_TASK_COUNT: not a Slurm job array's task"))?;
+        let total = number("SLURM_ARRAY_TASK_COUNT")?.ok_or_else(|| {
+            format!("SLURM_ARRAY_TASK_ID={id} but no SLURM_ARRAY_TASK_COUNT: not a Slurm job array's task")
+        })?;
         if let Some(given) = count.filter(|&n| n != total) {
             return Err(format!("--shard auto/{given} but the Slurm array has {total} tasks"));
         }
         let first = number("SLURM_ARRAY_TASK_MIN")?.unwrap_or(0);
         let step = number("SLURM_ARRAY_TASK_STEP")?.unwrap_or(1).max(1);
-        let offset = id.checked_sub(first).filter(|o| o % step == 0).ok_or_else(|| format!("SLURM_ARRAY_TASK_ID={id} is not on the array's range (from {first} in steps of {step})"))?;
+        let offset = id.checked_sub(first).filter(|o| o % step == 0).ok_or_else(|| {
+            format!("SLURM_ARRAY_TASK_ID={id} is not on the array's range (from {first} in steps of {step})")
+        })?;
         let source = format!(" (SLURM_ARRAY_TASK_ID={id})");
         return Ok(Some((checked(offset / step, total, &source)?, format!("Slurm array task {id}"))));
     }
     if let Some(index) = number("JOB_COMPLETION_INDEX")? {
         let Some(total) = count else {
-            return Err(format!("JOB_COMPLETION_INDEX={index} gives the shard's index, not the count: pass --shard auto/N with N the indexed job's completions"));
+            return Err(format!(
+                "JOB_COMPLETION_INDEX={index} gives the shard's index, not the count: pass --shard auto/N with N the indexed job's completions"
+            ));
         };
         let source = format!(" (JOB_COMPLETION_INDEX={index})");
         return Ok(Some((checked(index, total, &source)?, format!("Kubernetes completion index {index}"))));
@@ -142,26 +154,57 @@ mod tests {
         assert_eq!(parse("2").unwrap_err(), "expected I/N (e.g. 0/4), auto or auto/N, got `2`");
         let none = env(&[]);
         assert_eq!(resolve(None, &none), Ok(None));
-        let slurm = env(&[("SLURM_JOB_ID", "12"), ("SLURM_ARRAY_TASK_ID", "3"), ("SLURM_ARRAY_TASK_COUNT", "4"), ("SLURM_ARRAY_TASK_MIN", "0")]);
+        let slurm = env(&[
+            ("SLURM_JOB_ID", "12"),
+            ("SLURM_ARRAY_TASK_ID", "3"),
+            ("SLURM_ARRAY_TASK_COUNT", "4"),
+            ("SLURM_ARRAY_TASK_MIN", "0"),
+        ]);
         assert_eq!(resolve(None, &slurm), Ok(Some((shard(3, 4), "Slurm array task 3".into()))));
         // --array=1-7:2 gives ids 1, 3, 5, 7: shard (7 − 1)/2 = 3 of 4.
-        let stepped = env(&[("SLURM_ARRAY_TASK_ID", "7"), ("SLURM_ARRAY_TASK_COUNT", "4"), ("SLURM_ARRAY_TASK_MIN", "1"), ("SLURM_ARRAY_TASK_STEP", "2")]);
-        assert_eq!(resolve(Some(ShardArg::Auto { count: None }), &stepped), Ok(Some((shard(3, 4), "Slurm array task 7".into()))));
+        let stepped = env(&[
+            ("SLURM_ARRAY_TASK_ID", "7"),
+            ("SLURM_ARRAY_TASK_COUNT", "4"),
+            ("SLURM_ARRAY_TASK_MIN", "1"),
+            ("SLURM_ARRAY_TASK_STEP", "2"),
+        ]);
+        assert_eq!(
+            resolve(Some(ShardArg::Auto { count: None }), &stepped),
+            Ok(Some((shard(3, 4), "Slurm array task 7".into())))
+        );
         let given = resolve(Some(ShardArg::Given(shard(0, 2))), &slurm);
         assert_eq!(given, Ok(Some((shard(0, 2), "--shard".into()))), "the flag wins");
         let kubernetes = env(&[("JOB_COMPLETION_INDEX", "5")]);
-        assert_eq!(resolve(Some(ShardArg::Auto { count: Some(8) }), &kubernetes), Ok(Some((shard(5, 8), "Kubernetes completion index 5".into()))));
+        assert_eq!(
+            resolve(Some(ShardArg::Auto { count: Some(8) }), &kubernetes),
+            Ok(Some((shard(5, 8), "Kubernetes completion index 5".into())))
+        );
     }
 
     #[test]
     fn says_what_is_wrong_with_the_environment() {
         let error = |arg: Option<ShardArg>, vars: &[(&str, &str)]| resolve(arg, &env(vars)).unwrap_err();
         let auto = Some(ShardArg::Auto { count: None });
-        assert_eq!(error(auto, &[("SLURM_JOB_ID", "12")]), "--shard auto: Slurm job 12 is not a job array (no SLURM_ARRAY_TASK_ID): submit it with sbatch --array=0-N, or give --shard I/N");
+        assert_eq!(
+            error(auto, &[("SLURM_JOB_ID", "12")]),
+            "--shard auto: Slurm job 12 is not a job array (no SLURM_ARRAY_TASK_ID): submit it with sbatch --array=0-N, or give --shard I/N"
+        );
         assert!(error(auto, &[]).starts_with("--shard auto: neither SLURM_ARRAY_TASK_ID"));
-        assert_eq!(error(None, &[("SLURM_ARRAY_TASK_ID", "2")]), "SLURM_ARRAY_TASK_ID=2 but no SLURM_ARRAY_TASK_COUNT: not a Slurm job array's task");
-        assert_eq!(error(None, &[("SLURM_ARRAY_TASK_ID", "4"), ("SLURM_ARRAY_TASK_COUNT", "4")]), "shard index 4 (SLURM_ARRAY_TASK_ID=4) is out of range for 4 shards (0 to 3)");
-        assert_eq!(error(None, &[("JOB_COMPLETION_INDEX", "1")]), "JOB_COMPLETION_INDEX=1 gives the shard's index, not the count: pass --shard auto/N with N the indexed job's completions");
-        assert_eq!(error(None, &[("SLURM_ARRAY_TASK_ID", "x"), ("SLURM_ARRAY_TASK_COUNT", "4")]), "SLURM_ARRAY_TASK_ID=x is not a whole number");
+        assert_eq!(
+            error(None, &[("SLURM_ARRAY_TASK_ID", "2")]),
+            "SLURM_ARRAY_TASK_ID=2 but no SLURM_ARRAY_TASK_COUNT: not a Slurm job array's task"
+        );
+        assert_eq!(
+            error(None, &[("SLURM_ARRAY_TASK_ID", "4"), ("SLURM_ARRAY_TASK_COUNT", "4")]),
+            "shard index 4 (SLURM_ARRAY_TASK_ID=4) is out of range for 4 shards (0 to 3)"
+        );
+        assert_eq!(
+            error(None, &[("JOB_COMPLETION_INDEX", "1")]),
+            "JOB_COMPLETION_INDEX=1 gives the shard's index, not the count: pass --shard auto/N with N the indexed job's completions"
+        );
+        assert_eq!(
+            error(None, &[("SLURM_ARRAY_TASK_ID", "x"), ("SLURM_ARRAY_TASK_COUNT", "4")]),
+            "SLURM_ARRAY_TASK_ID=x is not a whole number"
+        );
     }
 }

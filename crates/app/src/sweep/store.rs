@@ -52,7 +52,16 @@ impl Manifest {
     /// The manifest of a sweep of `cases` cases from these files and texts.
     pub fn new(name: &str, spec: (&Path, &str), scene: (&Path, &str), cases: usize, columns: Columns) -> Self {
         let absolute = |p: &Path| std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf());
-        Self { format: FORMAT, name: name.to_string(), spec_path: absolute(spec.0), spec_text: spec.1.to_string(), scene_path: absolute(scene.0), scene_text: scene.1.to_string(), cases, columns }
+        Self {
+            format: FORMAT,
+            name: name.to_string(),
+            spec_path: absolute(spec.0),
+            spec_text: spec.1.to_string(),
+            scene_path: absolute(scene.0),
+            scene_text: scene.1.to_string(),
+            cases,
+            columns,
+        }
     }
 
     /// Why `self` (in a directory) is not the sweep `other`, if it is not.
@@ -98,7 +107,9 @@ impl Store {
     pub fn manifest(&self) -> Result<Option<Manifest>, SweepError> {
         let path = self.path(MANIFEST);
         match fs::read_to_string(&path) {
-            Ok(text) => serde_json::from_str(&text).map(Some).map_err(|e| SweepError::Directory(format!("{}: not a sweep manifest: {e}", path.display()))),
+            Ok(text) => serde_json::from_str(&text)
+                .map(Some)
+                .map_err(|e| SweepError::Directory(format!("{}: not a sweep manifest: {e}", path.display()))),
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(None),
             Err(e) => Err(io(&path, "cannot read", &e)),
         }
@@ -114,11 +125,16 @@ impl Store {
         match self.manifest()? {
             Some(found) => {
                 if let Some(why) = found.differs_from(manifest) {
-                    return Err(SweepError::Directory(format!("{dir} holds another sweep's results ({why}; spec {}): choose another directory", found.spec_path.display())));
+                    return Err(SweepError::Directory(format!(
+                        "{dir} holds another sweep's results ({why}; spec {}): choose another directory",
+                        found.spec_path.display()
+                    )));
                 }
                 self.done_cases(manifest)
             }
-            None if self.dir.exists() && !self.is_empty()? => Err(SweepError::Directory(format!("{dir} is not empty and holds no sweep: choose a new or empty directory"))),
+            None if self.dir.exists() && !self.is_empty()? => Err(SweepError::Directory(format!(
+                "{dir} is not empty and holds no sweep: choose a new or empty directory"
+            ))),
             None => Ok(vec![false; manifest.cases]),
         }
     }
@@ -155,7 +171,10 @@ impl Store {
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
             Err(e) => return Err(io(&folder, "cannot list", &e)),
         };
-        let mut files: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.extension().is_some_and(|e| e == "csv")).collect();
+        let mut files: Vec<PathBuf> = entries
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.extension().is_some_and(|e| e == "csv"))
+            .collect();
         files.sort();
         Ok(files)
     }
@@ -184,7 +203,12 @@ impl Store {
     /// The file cannot be opened or written.
     pub fn open_run(&self, name: &str, columns: &Columns) -> Result<RunFile, SweepError> {
         let path = self.path(RUNS).join(name);
-        let mut file = OpenOptions::new().read(true).append(true).create(true).open(&path).map_err(|e| io(&path, "cannot open", &e))?;
+        let mut file = OpenOptions::new()
+            .read(true)
+            .append(true)
+            .create(true)
+            .open(&path)
+            .map_err(|e| io(&path, "cannot open", &e))?;
         let length = file.metadata().map_err(|e| io(&path, "cannot read", &e))?.len();
         if length == 0 {
             file.write_all(&csv_line(&columns.header())).map_err(|e| io(&path, "cannot write", &e))?;
@@ -247,7 +271,11 @@ fn complete_length(file: &mut File) -> std::io::Result<u64> {
 ///
 /// # Errors
 /// A file that cannot be read, a header of other columns, a row that does not read.
-pub fn for_each_row(path: &Path, columns: &Columns, mut each: impl FnMut(Row, csv::Position) -> Result<(), String>) -> Result<(), SweepError> {
+pub fn for_each_row(
+    path: &Path,
+    columns: &Columns,
+    mut each: impl FnMut(Row, csv::Position) -> Result<(), String>,
+) -> Result<(), SweepError> {
     let fail = |line: u64, message: String| SweepError::Directory(format!("{}:{line}: {message}", path.display()));
     let mut file = File::open(path).map_err(|e| io(path, "cannot open", &e))?;
     let complete = complete_length(&mut file).map_err(|e| io(path, "cannot read", &e))?;

@@ -32,7 +32,14 @@ pub struct Summary {
 
 impl Summary {
     pub fn new(columns: &Columns) -> Self {
-        Self { columns: columns.clone(), cases: 0, statuses: [0; Status::ALL.len()], extremes: vec![Extremes::default(); columns.metrics.len()], failures: Vec::new(), cpu_seconds: 0.0 }
+        Self {
+            columns: columns.clone(),
+            cases: 0,
+            statuses: [0; Status::ALL.len()],
+            extremes: vec![Extremes::default(); columns.metrics.len()],
+            failures: Vec::new(),
+            cpu_seconds: 0.0,
+        }
     }
 
     /// Takes one row (rows come in case order, so ties go to the lowest case).
@@ -60,7 +67,12 @@ impl Summary {
 
     /// `38 ok, 2 diverged`.
     pub fn statuses(&self) -> String {
-        let parts: Vec<String> = Status::ALL.iter().zip(self.statuses).filter(|(_, n)| *n > 0).map(|(s, n)| format!("{n} {}", s.name())).collect();
+        let parts: Vec<String> = Status::ALL
+            .iter()
+            .zip(self.statuses)
+            .filter(|(_, n)| *n > 0)
+            .map(|(s, n)| format!("{n} {}", s.name()))
+            .collect();
         parts.join(", ")
     }
 
@@ -70,27 +82,69 @@ impl Summary {
         let mut out = String::new();
         let _ = writeln!(out, "# Sweep {}\n", plan.name);
         let absolute = |p: &std::path::Path| std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf());
-        let _ = writeln!(out, "Spec `{}`, base scene `{}`; design: {}, {} cases.\n", absolute(&plan.spec_path).display(), absolute(&plan.scene_path).display(), plan.design.describe(), plan.cases.len());
+        let _ = writeln!(
+            out,
+            "Spec `{}`, base scene `{}`; design: {}, {} cases.\n",
+            absolute(&plan.spec_path).display(),
+            absolute(&plan.scene_path).display(),
+            plan.design.describe(),
+            plan.cases.len()
+        );
         out.push_str("| factor | sets | values | base scene |\n|---|---|---|---|\n");
         for factor in &plan.factors {
             let base = factor.base.as_ref().map_or_else(|| "(default)".to_string(), ToString::to_string);
-            let _ = writeln!(out, "| `{}` | `{}` | {} | {base} |", factor.name, factor.describe_paths(), factor.describe_values());
+            let _ = writeln!(
+                out,
+                "| `{}` | `{}` | {} | {base} |",
+                factor.name,
+                factor.describe_paths(),
+                factor.describe_values()
+            );
         }
-        let _ = writeln!(out, "\n**Cases:** {} — {}. CPU time of the runs: {:.3} s.\n", self.cases, self.statuses(), self.cpu_seconds);
+        let _ = writeln!(
+            out,
+            "\n**Cases:** {} — {}. CPU time of the runs: {:.3} s.\n",
+            self.cases,
+            self.statuses(),
+            self.cpu_seconds
+        );
         out.push_str("Every value in full precision, with every case's row: `results.csv`, `results.parquet`.\n\n");
         out.push_str("## Metrics\n\nOver the cases that ran to their end (a failed case has no metrics).\n\n");
         out.push_str("| metric | unit | min | at case | max | at case | mean |\n|---|---|---|---|---|---|---|\n");
         for (column, extremes) in self.columns.metrics.iter().zip(&self.extremes) {
-            let cell = |extreme: Option<(f64, usize)>| extreme.map_or_else(|| "– | –".to_string(), |(x, case)| format!("{} | {case}", compact(x)));
+            let cell = |extreme: Option<(f64, usize)>| {
+                extreme.map_or_else(|| "– | –".to_string(), |(x, case)| format!("{} | {case}", compact(x)))
+            };
             let mean = if extremes.count > 0 { compact(extremes.sum / extremes.count as f64) } else { "–".into() };
-            let _ = writeln!(out, "| `{}` | {} | {} | {} | {mean} |", column.name, column.unit, cell(extremes.min), cell(extremes.max));
+            let _ = writeln!(
+                out,
+                "| `{}` | {} | {} | {} | {mean} |",
+                column.name,
+                column.unit,
+                cell(extremes.min),
+                cell(extremes.max)
+            );
         }
         let failed = self.cases - self.statuses[0];
         if failed > 0 {
-            let _ = writeln!(out, "\n## Failures\n\n{failed} cases did not run to their end{}.\n", if failed > self.failures.len() { format!(" (the first {} listed; all are in results.csv)", self.failures.len()) } else { String::new() });
+            let _ = writeln!(
+                out,
+                "\n## Failures\n\n{failed} cases did not run to their end{}.\n",
+                if failed > self.failures.len() {
+                    format!(" (the first {} listed; all are in results.csv)", self.failures.len())
+                } else {
+                    String::new()
+                }
+            );
             out.push_str("| case | values | status | message |\n|---|---|---|---|\n");
             for (case, status, message) in &self.failures {
-                let _ = writeln!(out, "| {case} | {} | {} | {} |", plan.describe(*case), status.name(), message.replace('|', "\\|"));
+                let _ = writeln!(
+                    out,
+                    "| {case} | {} | {} | {} |",
+                    plan.describe(*case),
+                    status.name(),
+                    message.replace('|', "\\|")
+                );
             }
         }
         if !charts.is_empty() {

@@ -59,7 +59,8 @@ pub struct Row {
 impl Row {
     /// The row of case `case`, which took `values` and gave `outcome`.
     pub fn new(case: usize, values: Vec<Level>, outcome: Outcome, metric_count: usize) -> Self {
-        let metrics = outcome.metrics.map_or_else(|| vec![None; metric_count], |values| values.into_iter().map(Some).collect());
+        let metrics =
+            outcome.metrics.map_or_else(|| vec![None; metric_count], |values| values.into_iter().map(Some).collect());
         Self {
             case,
             values,
@@ -88,7 +89,14 @@ impl Columns {
     pub fn record(&self, row: &Row) -> Vec<String> {
         let mut fields = vec![row.case.to_string()];
         fields.extend(row.values.iter().map(ToString::to_string));
-        fields.extend([row.status.name().to_string(), row.message.clone(), number(row.end_time), row.steps.to_string(), row.rejected_steps.to_string(), number(row.cpu_seconds)]);
+        fields.extend([
+            row.status.name().to_string(),
+            row.message.clone(),
+            number(row.end_time),
+            row.steps.to_string(),
+            row.rejected_steps.to_string(),
+            number(row.cpu_seconds),
+        ]);
         fields.extend(row.metrics.iter().map(|m| m.map(number).unwrap_or_default()));
         fields
     }
@@ -103,20 +111,27 @@ impl Columns {
             return Err(format!("{} fields where the sweep has {expected} columns", record.len()));
         }
         let field = |i: usize| &record[i];
-        let real = |i: usize, name: &str| field(i).parse::<f64>().map_err(|_| format!("{name} `{}` is not a number", field(i)));
-        let whole = |i: usize, name: &str| field(i).parse::<u64>().map_err(|_| format!("{name} `{}` is not a whole number", field(i)));
+        let real = |i: usize, name: &str| {
+            field(i).parse::<f64>().map_err(|_| format!("{name} `{}` is not a number", field(i)))
+        };
+        let whole = |i: usize, name: &str| {
+            field(i).parse::<u64>().map_err(|_| format!("{name} `{}` is not a whole number", field(i)))
+        };
         let case = whole(0, CASE_COLUMN)? as usize;
         let mut values = Vec::with_capacity(self.factors.len());
         for (k, factor) in self.factors.iter().enumerate() {
             let text = field(1 + k);
             values.push(match factor.kind {
                 LevelKind::Number => Level::Number(real(1 + k, &factor.name)?),
-                LevelKind::Flag => Level::Flag(text.parse().map_err(|_| format!("{} `{text}` is not true or false", factor.name))?),
+                LevelKind::Flag => {
+                    Level::Flag(text.parse().map_err(|_| format!("{} `{text}` is not true or false", factor.name))?)
+                }
                 LevelKind::Text => Level::Text(text.to_string()),
             });
         }
         let at = 1 + self.factors.len();
-        let status = Status::from_name(field(at)).ok_or_else(|| format!("status `{}` is not one of ok, diverged, refused, timed_out", field(at)))?;
+        let status = Status::from_name(field(at))
+            .ok_or_else(|| format!("status `{}` is not one of ok, diverged, refused, timed_out", field(at)))?;
         let mut metrics = Vec::with_capacity(self.metrics.len());
         for (k, metric) in self.metrics.iter().enumerate() {
             let i = at + OUTCOME_COLUMNS.len() + k;
@@ -162,7 +177,8 @@ pub fn compact(value: f64) -> String {
     let text = format!("{value:.3e}");
     match text.split_once('e') {
         Some((mantissa, exponent)) => {
-            let mantissa = if mantissa.contains('.') { mantissa.trim_end_matches('0').trim_end_matches('.') } else { mantissa };
+            let mantissa =
+                if mantissa.contains('.') { mantissa.trim_end_matches('0').trim_end_matches('.') } else { mantissa };
             format!("{mantissa}e{exponent}")
         }
         None => text,
@@ -176,7 +192,9 @@ mod tests {
     /// Every f64 written reads back bit for bit; the row survives CSV both ways.
     #[test]
     fn numbers_and_rows_read_back_exactly() {
-        for x in [0.1 + 0.2, 1e-12, 6.02214076e23, -3.5e-310, 1.0 / 3.0, 123456.789, 5e6, -0.0, f64::MAX, f64::MIN_POSITIVE] {
+        for x in
+            [0.1 + 0.2, 1e-12, 6.02214076e23, -3.5e-310, 1.0 / 3.0, 123456.789, 5e6, -0.0, f64::MAX, f64::MIN_POSITIVE]
+        {
             let text = number(x);
             assert_eq!(text.parse::<f64>().unwrap().to_bits(), x.to_bits(), "{x:e} written as {text}");
         }
@@ -184,8 +202,14 @@ mod tests {
         let people: Vec<String> = [0.25, 1500.0, 1778279.410038924, -1e-9, 12.34567, 0.0].map(compact).into();
         assert_eq!(people, ["0.25", "1500", "1.778e6", "-1e-9", "12.35", "0"]);
         let columns = Columns {
-            factors: vec![FactorColumn { name: "k".into(), kind: LevelKind::Number, log: true }, FactorColumn { name: "integrator".into(), kind: LevelKind::Text, log: false }],
-            metrics: vec![MetricColumn { name: "m".into(), unit: "N".into() }, MetricColumn { name: "e".into(), unit: "–".into() }],
+            factors: vec![
+                FactorColumn { name: "k".into(), kind: LevelKind::Number, log: true },
+                FactorColumn { name: "integrator".into(), kind: LevelKind::Text, log: false },
+            ],
+            metrics: vec![
+                MetricColumn { name: "m".into(), unit: "N".into() },
+                MetricColumn { name: "e".into(), unit: "–".into() },
+            ],
         };
         let row = Row {
             case: 17,
@@ -203,7 +227,22 @@ mod tests {
         writer.write_record(columns.record(&row)).unwrap();
         let bytes = writer.into_inner().unwrap();
         let mut reader = csv::Reader::from_reader(bytes.as_slice());
-        assert_eq!(reader.headers().unwrap().iter().collect::<Vec<_>>(), ["case", "k", "integrator", "status", "message", "end_time_s", "steps", "rejected_steps", "cpu_s", "m", "e"]);
+        assert_eq!(
+            reader.headers().unwrap().iter().collect::<Vec<_>>(),
+            [
+                "case",
+                "k",
+                "integrator",
+                "status",
+                "message",
+                "end_time_s",
+                "steps",
+                "rejected_steps",
+                "cpu_s",
+                "m",
+                "e"
+            ]
+        );
         let record = reader.records().next().unwrap().unwrap();
         assert_eq!(columns.parse(&record).unwrap(), row);
     }

@@ -70,7 +70,9 @@ impl ValuePath {
                     steps.push(Step::Index(index));
                     Some(&items[index])
                 }
-                Some(leaf) => return Err(format!("`{walked}` is {}: nothing is inside it for `{segment}`", describe(leaf))),
+                Some(leaf) => {
+                    return Err(format!("`{walked}` is {}: nothing is inside it for `{segment}`", describe(leaf)));
+                }
             };
             walked = if walked.is_empty() { segment.to_string() } else { format!("{walked}.{segment}") };
         }
@@ -79,7 +81,10 @@ impl ValuePath {
             Some(Value::Object(map)) if single_variant(map).is_some_and(|(_, inner)| inner.is_number()) => true,
             Some(Value::Object(map)) => {
                 let fields: Vec<&str> = map.keys().map(String::as_str).collect();
-                return Err(format!("`{text}` is not a single value: it holds {}; name one of them", fields.join(", ")));
+                return Err(format!(
+                    "`{text}` is not a single value: it holds {}; name one of them",
+                    fields.join(", ")
+                ));
             }
             Some(Value::Array(items)) => {
                 return Err(format!("`{text}` is a list of {}: name one item, e.g. `{text}.0`", items.len()));
@@ -151,7 +156,11 @@ pub fn number_value(x: f64) -> Option<Value> {
 }
 
 /// Steps for `segment` in a struct or an enum: the field, or the variant stepped through to it.
-fn in_map<'t>(map: &'t Map<String, Value>, segment: &str, walked: &str) -> Result<(Vec<Step>, Option<&'t Value>), String> {
+fn in_map<'t>(
+    map: &'t Map<String, Value>,
+    segment: &str,
+    walked: &str,
+) -> Result<(Vec<Step>, Option<&'t Value>), String> {
     if let Some(next) = map.get(segment) {
         return Ok((vec![Step::Key(segment.to_string())], Some(next)));
     }
@@ -200,7 +209,11 @@ fn in_list(items: &[Value], segment: &str, walked: &str) -> Result<usize, String
         [] => {}
     }
     if let Ok(index) = segment.parse::<usize>() {
-        return if index < items.len() { Ok(index) } else { Err(format!("`{walked}` has {} items: no item {index}", items.len())) };
+        return if index < items.len() {
+            Ok(index)
+        } else {
+            Err(format!("`{walked}` has {} items: no item {index}", items.len()))
+        };
     }
     let known: Vec<&str> = names.iter().flatten().copied().collect();
     if known.is_empty() {
@@ -292,13 +305,25 @@ mod tests {
     fn says_what_is_there_when_a_path_leads_nowhere() {
         let t = tree();
         let error = |path: &str| ValuePath::find(&t, path).unwrap_err();
-        assert_eq!(error("couplings.mooring9.stiffness"), "`couplings` has no item named \"mooring9\" (it has: mooring1, buoyancy, fender)");
-        assert_eq!(error("water.waves.height"), "the scene has no `water` (it has: adaptive, bodies, couplings, dt, gravity, integrator, substeps)");
-        assert_eq!(error("couplings.mooring1"), "`couplings.mooring1` is not a single value: it holds Catenary; name one of them");
+        assert_eq!(
+            error("couplings.mooring9.stiffness"),
+            "`couplings` has no item named \"mooring9\" (it has: mooring1, buoyancy, fender)"
+        );
+        assert_eq!(
+            error("water.waves.height"),
+            "the scene has no `water` (it has: adaptive, bodies, couplings, dt, gravity, integrator, substeps)"
+        );
+        assert_eq!(
+            error("couplings.mooring1"),
+            "`couplings.mooring1` is not a single value: it holds Catenary; name one of them"
+        );
         assert_eq!(error("gravity"), "`gravity` is a list of 3: name one item, e.g. `gravity.0`");
         assert_eq!(error("gravity.3"), "`gravity` has 3 items: no item 3");
         assert_eq!(error("dt.x"), "`dt` is the number 0.002: nothing is inside it for `x`");
         assert_eq!(error("bodies..mass"), "`bodies..mass` has an empty segment");
-        assert_eq!(error("couplings.buoyancy.law.Polynomial"), "`couplings.buoyancy.law` is `Linear(…)`, not `Polynomial(…)`");
+        assert_eq!(
+            error("couplings.buoyancy.law.Polynomial"),
+            "`couplings.buoyancy.law` is `Linear(…)`, not `Polynomial(…)`"
+        );
     }
 }

@@ -39,13 +39,19 @@ impl Xvfb {
         let x = Self { process, display: format!(":{}", line.trim()), _turn: turn };
         // A client must be able to connect before the GUI is started on it (once in a full
         // suite run the GUI could not, right after the previous test's server was stopped).
-        wait_for("the X server to take clients", Duration::from_secs(20), || x.xdotool(&["getdisplaygeometry"]).status.success());
+        wait_for("the X server to take clients", Duration::from_secs(20), || {
+            x.xdotool(&["getdisplaygeometry"]).status.success()
+        });
         x
     }
 
     /// `xdotool` on this display.
     pub fn xdotool(&self, args: &[&str]) -> std::process::Output {
-        Command::new("xdotool").args(args).env("DISPLAY", &self.display).output().expect("xdotool must be installed (apt-get install xdotool)")
+        Command::new("xdotool")
+            .args(args)
+            .env("DISPLAY", &self.display)
+            .output()
+            .expect("xdotool must be installed (apt-get install xdotool)")
     }
 
     /// Waits (at most `limit`) for a visible window whose title matches the regex `name`, and
@@ -63,7 +69,8 @@ impl Drop for Xvfb {
     /// Stops the server with SIGTERM, so that it removes its lock file and socket before the next
     /// test's server looks for a free display; SIGKILL if that fails.
     fn drop(&mut self) {
-        let terminated = Command::new("kill").args(["-TERM", &self.process.id().to_string()]).status().is_ok_and(|s| s.success());
+        let terminated =
+            Command::new("kill").args(["-TERM", &self.process.id().to_string()]).status().is_ok_and(|s| s.success());
         if !terminated {
             self.process.kill().ok();
         }
@@ -120,7 +127,8 @@ impl Gui {
     /// unless it exited cleanly.
     pub fn quit(mut self, x: &Xvfb) {
         x.xdotool(&["key", "ctrl+q"]);
-        let status = wait_exit(&mut self.process, Duration::from_secs(30)).unwrap_or_else(|| panic!("the window did not close on Ctrl+Q"));
+        let status = wait_exit(&mut self.process, Duration::from_secs(30))
+            .unwrap_or_else(|| panic!("the window did not close on Ctrl+Q"));
         assert!(status.success(), "tether gui exited with {status}:\n{}", self.stderr());
     }
 
@@ -202,6 +210,14 @@ pub fn has_entity(path: &Path, entity: &str) -> bool {
 
 /// `rerun rrd verify` passes on the file (it is complete, footer included).
 pub fn assert_verifies(path: &Path) {
-    let verify = Command::new("rerun").args(["rrd", "verify", path.to_str().unwrap()]).output().expect("the `rerun` CLI (pip install rerun-sdk==0.36.3)");
-    assert!(verify.status.success(), "rerun rrd verify {}:\n{}", path.display(), String::from_utf8_lossy(&verify.stderr));
+    let verify = Command::new("rerun")
+        .args(["rrd", "verify", path.to_str().unwrap()])
+        .output()
+        .expect("the `rerun` CLI (pip install rerun-sdk==0.36.3)");
+    assert!(
+        verify.status.success(),
+        "rerun rrd verify {}:\n{}",
+        path.display(),
+        String::from_utf8_lossy(&verify.stderr)
+    );
 }

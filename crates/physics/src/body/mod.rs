@@ -18,8 +18,8 @@ pub mod support;
 
 use crate::mass_properties::MassProperties;
 use crate::math::Vec3;
-use nalgebra::Isometry3;
 pub use load::Load;
+use nalgebra::Isometry3;
 pub use state::{Acceleration, BodyFrame, BodyState};
 pub use support::{PrescribedMotion, Support, VelocityProfile};
 
@@ -65,16 +65,25 @@ impl RigidBody {
         support: Support,
         shape: Shape,
     ) -> Self {
-        let principal_to_world = nalgebra::Isometry3::from_parts(
-            mass_properties.center_of_mass.into(),
-            mass_properties.principal_axes,
-        );
-        let reference_to_world = nalgebra::Isometry3::translation(master_position.x, master_position.y, master_position.z);
+        let principal_to_world =
+            nalgebra::Isometry3::from_parts(mass_properties.center_of_mass.into(), mass_properties.principal_axes);
+        let reference_to_world =
+            nalgebra::Isometry3::translation(master_position.x, master_position.y, master_position.z);
         let reference_in_principal = principal_to_world.inverse() * reference_to_world;
-        let slave_nodes = slave_positions.iter().map(|p| principal_to_world.inverse_transform_point(&(*p).into()).coords).collect();
+        let slave_nodes =
+            slave_positions.iter().map(|p| principal_to_world.inverse_transform_point(&(*p).into()).coords).collect();
         let inverse_principal_moments = mass_properties.principal_moments.map(|m| 1.0 / m);
         let inverse_mass = mass_properties.mass.recip();
-        Self { name, mass_properties, inverse_mass, inverse_principal_moments, reference_in_principal, slave_nodes, support, shape }
+        Self {
+            name,
+            mass_properties,
+            inverse_mass,
+            inverse_principal_moments,
+            reference_in_principal,
+            slave_nodes,
+            support,
+            shape,
+        }
     }
 
     /// `m` [kg].
@@ -117,4 +126,3 @@ impl RigidBody {
         matches!(self.support, Support::Kinematic(_))
     }
 }
-

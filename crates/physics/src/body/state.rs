@@ -31,12 +31,22 @@ impl BodyState {
     /// The kinematics a force evaluation sees at this state (stage *predict*).
     #[inline(always)]
     pub fn frame(&self) -> BodyFrame {
-        BodyFrame { position: self.position, rotation: self.rotation_matrix(), velocity: self.velocity, angular_velocity: self.angular_velocity }
+        BodyFrame {
+            position: self.position,
+            rotation: self.rotation_matrix(),
+            velocity: self.velocity,
+            angular_velocity: self.angular_velocity,
+        }
     }
 
     /// Whether every component is finite.
     pub fn is_finite(&self) -> bool {
-        self.position.iter().chain(self.velocity.iter()).chain(self.angular_velocity.iter()).chain(self.orientation.coords.iter()).all(|x| x.is_finite())
+        self.position
+            .iter()
+            .chain(self.velocity.iter())
+            .chain(self.angular_velocity.iter())
+            .chain(self.orientation.coords.iter())
+            .all(|x| x.is_finite())
     }
 }
 
@@ -55,7 +65,12 @@ pub struct BodyFrame {
 
 impl Default for BodyFrame {
     fn default() -> Self {
-        Self { position: Vec3::zeros(), rotation: Mat3::identity(), velocity: Vec3::zeros(), angular_velocity: Vec3::zeros() }
+        Self {
+            position: Vec3::zeros(),
+            rotation: Mat3::identity(),
+            velocity: Vec3::zeros(),
+            angular_velocity: Vec3::zeros(),
+        }
     }
 }
 

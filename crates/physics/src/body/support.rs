@@ -59,7 +59,10 @@ pub struct PrescribedMotion {
 pub enum Support {
     Free,
     /// Fixed world translation components (x, y, z) and, optionally, fixed rotation.
-    Fixed { translation: [bool; 3], rotation: bool },
+    Fixed {
+        translation: [bool; 3],
+        rotation: bool,
+    },
     Kinematic(PrescribedMotion),
 }
 
@@ -109,8 +112,16 @@ mod tests {
 
     #[test]
     fn prescribed_spin_rotates_about_the_world_axis() {
-        let start = BodyState { position: Vec3::zeros(), orientation: Rotation::identity(), velocity: Vec3::zeros(), angular_velocity: Vec3::zeros() };
-        let motion = PrescribedMotion { velocity: VelocityProfile::Constant(Vec3::new(1.0, 0.0, 0.0)), angular_velocity: Vec3::new(0.0, 0.0, std::f64::consts::PI) };
+        let start = BodyState {
+            position: Vec3::zeros(),
+            orientation: Rotation::identity(),
+            velocity: Vec3::zeros(),
+            angular_velocity: Vec3::zeros(),
+        };
+        let motion = PrescribedMotion {
+            velocity: VelocityProfile::Constant(Vec3::new(1.0, 0.0, 0.0)),
+            angular_velocity: Vec3::new(0.0, 0.0, std::f64::consts::PI),
+        };
         let s = motion.state_at(&start, 0.5);
         assert_relative_eq!(s.position, Vec3::new(0.5, 0.0, 0.0), epsilon = 1e-15);
         assert_relative_eq!(s.point(&Vec3::x()), Vec3::new(0.5, 1.0, 0.0), epsilon = 1e-15);

@@ -73,7 +73,9 @@ impl ElasticLaw {
     #[inline(always)]
     pub fn force_and_potential(&self, x: f64) -> (f64, f64) {
         match self {
-            Self::Linear { stiffness, rest_length } => (stiffness * (x - rest_length), 0.5 * stiffness * (x - rest_length).powi(2)),
+            Self::Linear { stiffness, rest_length } => {
+                (stiffness * (x - rest_length), 0.5 * stiffness * (x - rest_length).powi(2))
+            }
             law => (law.force(x), law.potential(x)),
         }
     }
@@ -95,11 +97,7 @@ impl ElasticLaw {
     pub fn effective_stiffness(&self, x: f64) -> f64 {
         let x0 = self.rest_length();
         let s = x - x0;
-        if s.abs() <= 1e-12 * x0.abs().max(1.0) {
-            self.tangent_stiffness(x0)
-        } else {
-            self.force(x) / s
-        }
+        if s.abs() <= 1e-12 * x0.abs().max(1.0) { self.tangent_stiffness(x0) } else { self.force(x) / s }
     }
 
     /// Elastic potential `V(x)` [J], with `dV/dx = f_e`. It is zero at `x0` (at `x_r` for the
@@ -115,7 +113,8 @@ impl ElasticLaw {
             Self::ForceCurve { curve } => curve.integral(zero_crossing(curve), x),
             Self::StiffnessCurve { stiffness, rest_length } => {
                 let x0 = *rest_length;
-                stiffness.second_antiderivative(x) - stiffness.second_antiderivative(x0)
+                stiffness.second_antiderivative(x)
+                    - stiffness.second_antiderivative(x0)
                     - stiffness.antiderivative(x0) * (x - x0)
             }
             Self::ReferenceForce { stiffness, reference_length, reference_force, .. } => {
@@ -156,7 +155,12 @@ mod tests {
             ElasticLaw::Polynomial { a: 100.0, b: 20.0, c: 4000.0, rest_length: 1.0 },
             ElasticLaw::force_curve(vec![(0.5, -80.0), (1.0, 0.0), (1.2, 50.0), (2.0, 400.0)]).unwrap(),
             ElasticLaw::StiffnessCurve { stiffness: k_table.clone(), rest_length: 1.0 },
-            ElasticLaw::ReferenceForce { stiffness: k_table, reference_length: 1.2, reference_force: 30.0, rest_length: 3.0 },
+            ElasticLaw::ReferenceForce {
+                stiffness: k_table,
+                reference_length: 1.2,
+                reference_force: 30.0,
+                rest_length: 3.0,
+            },
         ]
     }
 
@@ -168,8 +172,16 @@ mod tests {
         let poly = &laws()[1];
         // s = 0.1: f = 100·0.1 + 20·0.01 + 4000·0.001 = 14.2; V = 0.5 + 0.02/3·… by hand:
         assert_relative_eq!(poly.force(1.1), 14.2, epsilon = 1e-12);
-        assert_relative_eq!(poly.potential(1.1), 100.0 * 0.01 / 2.0 + 20.0 * 0.001 / 3.0 + 4000.0 * 1e-4 / 4.0, epsilon = 1e-12);
-        assert_relative_eq!(poly.tangent_stiffness(1.1), 100.0 + 2.0 * 20.0 * 0.1 + 3.0 * 4000.0 * 0.01, epsilon = 1e-12);
+        assert_relative_eq!(
+            poly.potential(1.1),
+            100.0 * 0.01 / 2.0 + 20.0 * 0.001 / 3.0 + 4000.0 * 1e-4 / 4.0,
+            epsilon = 1e-12
+        );
+        assert_relative_eq!(
+            poly.tangent_stiffness(1.1),
+            100.0 + 2.0 * 20.0 * 0.1 + 3.0 * 4000.0 * 0.01,
+            epsilon = 1e-12
+        );
         assert_relative_eq!(poly.effective_stiffness(1.1), 100.0 + 20.0 * 0.1 + 4000.0 * 0.01, epsilon = 1e-9);
     }
 

@@ -69,7 +69,8 @@ impl Coupling {
             CouplingKind::SpringDamper(spring) => [spring.end1, spring.end2],
             CouplingKind::Catenary(line) => [line.end1, line.end2],
             CouplingKind::Contact(contact) => {
-                let other = contact.other_body().map_or(Endpoint::World(Vec3::zeros()), |body| Endpoint::Center { body });
+                let other =
+                    contact.other_body().map_or(Endpoint::World(Vec3::zeros()), |body| Endpoint::Center { body });
                 [Endpoint::Center { body: contact.body }, other]
             }
         }
@@ -97,11 +98,24 @@ impl Coupling {
     /// seabed), adds them to the end bodies' `loads` and writes what the coupling did to `out`. A `cache` of another kind
     /// (never given by the world, which makes each from its coupling) is started afresh.
     #[inline(always)]
-    pub fn apply(&self, cache: &mut CouplingCache, frames: &[BodyFrame], surroundings: &Surroundings, loads: &mut [Load], out: &mut CouplingForces) -> Result<(), CouplingError> {
+    pub fn apply(
+        &self,
+        cache: &mut CouplingCache,
+        frames: &[BodyFrame],
+        surroundings: &Surroundings,
+        loads: &mut [Load],
+        out: &mut CouplingForces,
+    ) -> Result<(), CouplingError> {
         match (&self.kind, cache) {
-            (CouplingKind::SpringDamper(spring), CouplingCache::SpringDamper(memory)) => spring.apply(memory, frames, loads, out),
-            (CouplingKind::Catenary(line), CouplingCache::Catenary(memory)) => line.apply(memory, frames, surroundings, loads, out)?,
-            (CouplingKind::Contact(contact), CouplingCache::Contact(memory)) => contact.apply(memory, frames, loads, out),
+            (CouplingKind::SpringDamper(spring), CouplingCache::SpringDamper(memory)) => {
+                spring.apply(memory, frames, loads, out)
+            }
+            (CouplingKind::Catenary(line), CouplingCache::Catenary(memory)) => {
+                line.apply(memory, frames, surroundings, loads, out)?
+            }
+            (CouplingKind::Contact(contact), CouplingCache::Contact(memory)) => {
+                contact.apply(memory, frames, loads, out)
+            }
             (_, cache) => return self.apply_with_fresh_cache(cache, frames, surroundings, loads, out),
         }
         Ok(())
@@ -111,7 +125,14 @@ impl Coupling {
     /// world never gets here).
     #[cold]
     #[inline(never)]
-    fn apply_with_fresh_cache(&self, cache: &mut CouplingCache, frames: &[BodyFrame], surroundings: &Surroundings, loads: &mut [Load], out: &mut CouplingForces) -> Result<(), CouplingError> {
+    fn apply_with_fresh_cache(
+        &self,
+        cache: &mut CouplingCache,
+        frames: &[BodyFrame],
+        surroundings: &Surroundings,
+        loads: &mut [Load],
+        out: &mut CouplingForces,
+    ) -> Result<(), CouplingError> {
         *cache = self.new_cache();
         self.apply(cache, frames, surroundings, loads, out)
     }

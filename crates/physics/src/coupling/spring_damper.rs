@@ -85,7 +85,8 @@ impl SpringDamper {
         }
         let d = separation / length;
         let along = d * d.transpose();
-        let k = along * self.law.tangent_stiffness(length) + (Mat3::identity() - along) * (self.law.force(length) / length);
+        let k =
+            along * self.law.tangent_stiffness(length) + (Mat3::identity() - along) * (self.law.force(length) / length);
         [[-k, k], [k, -k]]
     }
 }
@@ -96,7 +97,12 @@ mod tests {
     use crate::math::Mat3;
 
     fn frame_at(position: Vec3) -> BodyFrame {
-        BodyFrame { position, rotation: Mat3::identity(), velocity: Vec3::new(0.3, 0.0, 0.0), angular_velocity: Vec3::zeros() }
+        BodyFrame {
+            position,
+            rotation: Mat3::identity(),
+            velocity: Vec3::new(0.3, 0.0, 0.0),
+            angular_velocity: Vec3::zeros(),
+        }
     }
 
     #[test]

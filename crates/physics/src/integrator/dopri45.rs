@@ -19,8 +19,8 @@
 //!   limit, at the price of rejected steps.
 //! - Cost: six force evaluations per attempted step.
 
-use super::runge_kutta::{Stages, Tableau};
 use super::report::{StepFailure, StepReport};
+use super::runge_kutta::{Stages, Tableau};
 use super::settings::Tolerances;
 use crate::body::BodyState;
 use crate::energy::{BodyEnergy, Work};
@@ -43,7 +43,8 @@ const TABLEAU: Tableau = Tableau {
 };
 
 /// Fifth-order minus fourth-order weights: `δ = h Σ e_j k_j` estimates the local error.
-const ERROR: [f64; 7] = [71.0 / 57600.0, 0.0, -71.0 / 16695.0, 71.0 / 1920.0, -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0];
+const ERROR: [f64; 7] =
+    [71.0 / 57600.0, 0.0, -71.0 / 16695.0, 71.0 / 1920.0, -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0];
 
 /// Safety factor and the bounds of the step change per step.
 const SAFETY: f64 = 0.9;
@@ -71,7 +72,13 @@ impl Dopri45 {
     }
 
     /// Evaluates `time`.
-    pub fn start(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64) -> Result<BodyEnergy, EvaluationError> {
+    pub fn start(
+        &mut self,
+        system: &System,
+        states: &mut [BodyState],
+        evaluation: &mut Evaluation,
+        time: f64,
+    ) -> Result<BodyEnergy, EvaluationError> {
         (self.next_step, self.retry) = (0.0, None);
         self.stages.start(system, states, evaluation, time)
     }
@@ -83,7 +90,14 @@ impl Dopri45 {
     /// # Errors
     /// A coupling that cannot give its forces, or a step that had to shrink below round-off of
     /// the time (the scene is too stiff or has blown up).
-    pub fn step(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, remaining: f64) -> Result<StepReport, StepFailure> {
+    pub fn step(
+        &mut self,
+        system: &System,
+        states: &mut [BodyState],
+        evaluation: &mut Evaluation,
+        time: f64,
+        remaining: f64,
+    ) -> Result<StepReport, StepFailure> {
         let (rtol, atol) = (self.tolerances.rtol, self.tolerances.atol);
         let proposal = match self.next_step {
             h if h > 0.0 => h.min(self.max_step),
@@ -100,11 +114,16 @@ impl Dopri45 {
         });
         let last = self.stages.attempt(system, states, evaluation, time, h)?;
         let error = self.stages.error_norm(system, states, &ERROR, h, rtol, atol);
-        let factor = if error == 0.0 { GROW_AT_MOST } else { (SAFETY * error.powf(-0.2)).clamp(SHRINK_AT_MOST, GROW_AT_MOST) };
+        let factor =
+            if error == 0.0 { GROW_AT_MOST } else { (SAFETY * error.powf(-0.2)).clamp(SHRINK_AT_MOST, GROW_AT_MOST) };
         if error <= 1.0 {
             let (work, energy) = self.stages.accept(system, states, h, last);
             // A step shortened to meet the boundary says nothing against the longer proposal.
-            let next = if rejected { h * factor.min(1.0) } else { (h * factor).max(if h < proposal { proposal } else { 0.0 }) };
+            let next = if rejected {
+                h * factor.min(1.0)
+            } else {
+                (h * factor).max(if h < proposal { proposal } else { 0.0 })
+            };
             self.next_step = next.min(self.max_step);
             return Ok(StepReport { advanced: h, accepted: true, reached: h == remaining, work, energy });
         }
@@ -114,6 +133,12 @@ impl Dopri45 {
             return Err(StepFailure::Stalled { step: shorter });
         }
         self.retry = Some(shorter);
-        Ok(StepReport { advanced: 0.0, accepted: false, reached: false, work: Work::default(), energy: BodyEnergy::default() })
+        Ok(StepReport {
+            advanced: 0.0,
+            accepted: false,
+            reached: false,
+            work: Work::default(),
+            energy: BodyEnergy::default(),
+        })
     }
 }

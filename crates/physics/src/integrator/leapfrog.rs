@@ -51,7 +51,14 @@ impl Leapfrog {
     }
 
     /// Evaluates `time` and turns the synchronised velocities into `v(t − ½h) = v(t) − ½h γ(t)`.
-    pub fn start(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, h: f64) -> Result<BodyEnergy, EvaluationError> {
+    pub fn start(
+        &mut self,
+        system: &System,
+        states: &mut [BodyState],
+        evaluation: &mut Evaluation,
+        time: f64,
+        h: f64,
+    ) -> Result<BodyEnergy, EvaluationError> {
         system.prescribe(states, time);
         self.powers = system.evaluate(states, evaluation, time)?;
         // The velocities are synchronised: ω(t) is exact for either variant.
@@ -68,7 +75,14 @@ impl Leapfrog {
 
     /// One step of `h` [s] from `time`.
     #[inline]
-    pub fn step(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, h: f64) -> Result<StepReport, EvaluationError> {
+    pub fn step(
+        &mut self,
+        system: &System,
+        states: &mut [BodyState],
+        evaluation: &mut Evaluation,
+        time: f64,
+        h: f64,
+    ) -> Result<StepReport, EvaluationError> {
         match system.level() {
             // SAFETY: `System::level` only holds a level the processor has; AVX-512 implies AVX2.
             #[cfg(target_arch = "x86_64")]
@@ -79,7 +93,14 @@ impl Leapfrog {
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
-    fn step_avx2(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, h: f64) -> Result<StepReport, EvaluationError> {
+    fn step_avx2(
+        &mut self,
+        system: &System,
+        states: &mut [BodyState],
+        evaluation: &mut Evaluation,
+        time: f64,
+        h: f64,
+    ) -> Result<StepReport, EvaluationError> {
         self.step_built(system, states, evaluation, time, h)
     }
 
@@ -89,9 +110,23 @@ impl Leapfrog {
     /// *couplings*, *water*, *accelerations* and *powers*. Built for AVX2 as well, with the per-body
     /// stages inlined (same results, bit for bit).
     #[inline(always)]
-    fn step_built(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, h: f64) -> Result<StepReport, EvaluationError> {
+    fn step_built(
+        &mut self,
+        system: &System,
+        states: &mut [BodyState],
+        evaluation: &mut Evaluation,
+        time: f64,
+        h: f64,
+    ) -> Result<StepReport, EvaluationError> {
         let time = time + h;
-        let per_body = system.bodies().iter().zip(states.iter_mut()).zip(&self.accelerations).zip(evaluation.frames.iter_mut()).zip(evaluation.loads.iter_mut()).zip(system.initial_states());
+        let per_body = system
+            .bodies()
+            .iter()
+            .zip(states.iter_mut())
+            .zip(&self.accelerations)
+            .zip(evaluation.frames.iter_mut())
+            .zip(evaluation.loads.iter_mut())
+            .zip(system.initial_states());
         for (((((body, state), acceleration), frame), load), initial) in per_body {
             match &body.support {
                 Support::Kinematic(motion) => {
@@ -139,7 +174,14 @@ impl Leapfrog {
     /// velocity; in the same pass, the bodies' energies at t with the velocities synchronised by
     /// `half` [s] of acceleration.
     #[inline(always)]
-    fn accelerate(&mut self, system: &System, states: &[BodyState], evaluation: &Evaluation, gyroscopic: Gyroscopic, half: f64) -> BodyEnergy {
+    fn accelerate(
+        &mut self,
+        system: &System,
+        states: &[BodyState],
+        evaluation: &Evaluation,
+        gyroscopic: Gyroscopic,
+        half: f64,
+    ) -> BodyEnergy {
         let mut energy = BodyEnergy::default();
         let per_body = system.bodies().iter().zip(states).zip(&evaluation.frames).zip(&evaluation.loads);
         for ((((body, state), frame), load), acceleration) in per_body.zip(self.accelerations.iter_mut()) {
@@ -157,7 +199,9 @@ impl Leapfrog {
     /// The bodies' energies with the velocities synchronised by `half` [s].
     fn energy(&self, system: &System, states: &[BodyState], half: f64) -> BodyEnergy {
         let per_body = system.bodies().iter().zip(states).zip(&self.accelerations);
-        per_body.fold(BodyEnergy::default(), |total, ((body, state), acceleration)| total + BodyEnergy::of(body, &synchronized(body, state, acceleration, half), system.gravity()))
+        per_body.fold(BodyEnergy::default(), |total, ((body, state), acceleration)| {
+            total + BodyEnergy::of(body, &synchronized(body, state, acceleration, half), system.gravity())
+        })
     }
 }
 
@@ -168,5 +212,9 @@ fn synchronized(body: &crate::body::RigidBody, state: &BodyState, acceleration: 
     if body.is_kinematic() {
         return *state;
     }
-    BodyState { velocity: state.velocity + acceleration.linear * half, angular_velocity: state.angular_velocity + acceleration.angular * half, ..*state }
+    BodyState {
+        velocity: state.velocity + acceleration.linear * half,
+        angular_velocity: state.angular_velocity + acceleration.angular * half,
+        ..*state
+    }
 }

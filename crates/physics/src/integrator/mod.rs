@@ -73,7 +73,14 @@ impl Scheme {
     ///
     /// # Errors
     /// A coupling that cannot give its forces.
-    pub fn start(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, h: f64) -> Result<BodyEnergy, EvaluationError> {
+    pub fn start(
+        &mut self,
+        system: &System,
+        states: &mut [BodyState],
+        evaluation: &mut Evaluation,
+        time: f64,
+        h: f64,
+    ) -> Result<BodyEnergy, EvaluationError> {
         match self {
             Self::Leapfrog(scheme) | Self::Leapfrog2(scheme) => scheme.start(system, states, evaluation, time, h),
             Self::Splitting(scheme) => scheme.start(system, states, evaluation, time),
@@ -88,7 +95,14 @@ impl Scheme {
     /// # Errors
     /// A coupling that cannot give its forces (the states are then mid-step), or an adaptive
     /// step that stalled.
-    pub fn step(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, h: f64) -> Result<StepReport, StepFailure> {
+    pub fn step(
+        &mut self,
+        system: &System,
+        states: &mut [BodyState],
+        evaluation: &mut Evaluation,
+        time: f64,
+        h: f64,
+    ) -> Result<StepReport, StepFailure> {
         Ok(match self {
             Self::Leapfrog(scheme) => scheme.step(system, states, evaluation, time, h)?,
             Self::Leapfrog2(scheme) => leapfrog2::step(scheme, system, states, evaluation, time, h)?,

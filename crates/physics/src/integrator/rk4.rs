@@ -29,7 +29,14 @@ pub const TABLEAU: Tableau = Tableau {
 };
 
 /// One step of `h` [s] from `time`.
-pub fn step(stages: &mut Stages, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, h: f64) -> Result<StepReport, EvaluationError> {
+pub fn step(
+    stages: &mut Stages,
+    system: &System,
+    states: &mut [BodyState],
+    evaluation: &mut Evaluation,
+    time: f64,
+    h: f64,
+) -> Result<StepReport, EvaluationError> {
     let last = stages.attempt(system, states, evaluation, time, h)?;
     let (work, energy) = stages.accept(system, states, h, last);
     Ok(StepReport::accepted(h, work, energy))

@@ -64,7 +64,12 @@ struct Rate {
     moment: Vec3,
 }
 
-const REST: Rate = Rate { velocity: Vec3::new(0.0, 0.0, 0.0), spin: Quaternion::new(0.0, 0.0, 0.0, 0.0), acceleration: Vec3::new(0.0, 0.0, 0.0), moment: Vec3::new(0.0, 0.0, 0.0) };
+const REST: Rate = Rate {
+    velocity: Vec3::new(0.0, 0.0, 0.0),
+    spin: Quaternion::new(0.0, 0.0, 0.0, 0.0),
+    acceleration: Vec3::new(0.0, 0.0, 0.0),
+    moment: Vec3::new(0.0, 0.0, 0.0),
+};
 
 /// A Runge–Kutta scheme's scratch: its tableau and the buffers of its stages, allocated once.
 #[derive(Debug, Clone)]
@@ -83,11 +88,23 @@ pub struct Stages {
 impl Stages {
     pub fn new(tableau: &'static Tableau, bodies: usize) -> Self {
         let slots = tableau.slots();
-        Self { tableau, start: vec![rest_state(); bodies], momentum: vec![Vec3::zeros(); bodies], rates: vec![vec![REST; bodies]; slots], powers: vec![Powers::default(); slots] }
+        Self {
+            tableau,
+            start: vec![rest_state(); bodies],
+            momentum: vec![Vec3::zeros(); bodies],
+            rates: vec![vec![REST; bodies]; slots],
+            powers: vec![Powers::default(); slots],
+        }
     }
 
     /// Evaluates the rates at `time` [s] into slot 0; returns the bodies' energies.
-    pub fn start(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64) -> Result<BodyEnergy, EvaluationError> {
+    pub fn start(
+        &mut self,
+        system: &System,
+        states: &mut [BodyState],
+        evaluation: &mut Evaluation,
+        time: f64,
+    ) -> Result<BodyEnergy, EvaluationError> {
         self.evaluate(system, states, evaluation, time, 0)?;
         Ok(BodyEnergy::sum(system.bodies(), states.iter(), system.gravity()))
     }
@@ -96,7 +113,14 @@ impl Stages {
     /// new state (synchronised) in `states`, with the forces evaluated there. Returns the slot
     /// that holds the rates at the new state. [`Stages::accept`] or [`Stages::reject`] must
     /// follow.
-    pub fn attempt(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, h: f64) -> Result<usize, EvaluationError> {
+    pub fn attempt(
+        &mut self,
+        system: &System,
+        states: &mut [BodyState],
+        evaluation: &mut Evaluation,
+        time: f64,
+        h: f64,
+    ) -> Result<usize, EvaluationError> {
         self.start.copy_from_slice(states);
         for ((momentum, state), body) in self.momentum.iter_mut().zip(states.iter()).zip(system.bodies()) {
             *momentum = state.orientation * body.principal_moments().component_mul(&state.angular_velocity);
@@ -118,10 +142,18 @@ impl Stages {
     /// Accepts the attempted step of `h` [s] whose new rates are in slot `last`: the new rates
     /// become slot 0. Returns the work over the step, `h Σ b_j P_j`, and the bodies' energies.
     pub fn accept(&mut self, system: &System, states: &[BodyState], h: f64, last: usize) -> (Work, BodyEnergy) {
-        let (dissipated, external) = self.tableau.b.iter().zip(&self.powers).fold((0.0, 0.0), |(d, e), (b, p)| (d + b * p.dissipated, e + b * (p.external + p.water)));
+        let (dissipated, external) = self
+            .tableau
+            .b
+            .iter()
+            .zip(&self.powers)
+            .fold((0.0, 0.0), |(d, e), (b, p)| (d + b * p.dissipated, e + b * (p.external + p.water)));
         self.rates.swap(0, last);
         self.powers.swap(0, last);
-        (Work { dissipated: h * dissipated, external: h * external }, BodyEnergy::sum(system.bodies(), states.iter(), system.gravity()))
+        (
+            Work { dissipated: h * dissipated, external: h * external },
+            BodyEnergy::sum(system.bodies(), states.iter(), system.gravity()),
+        )
     }
 
     /// Puts `states` back at the start of the rejected attempt (slot 0 still holds its rates).
@@ -154,7 +186,10 @@ impl Stages {
                 }
             }
             let (s0, s1) = (&self.start[i], &states[i]);
-            let delta_omega = s1.orientation.inverse_transform_vector(&(delta.moment * h)).component_mul(&body.inverse_principal_moments);
+            let delta_omega = s1
+                .orientation
+                .inverse_transform_vector(&(delta.moment * h))
+                .component_mul(&body.inverse_principal_moments);
             add((delta.velocity * h).as_slice(), s0.position.as_slice(), s1.position.as_slice());
             add((delta.acceleration * h).as_slice(), s0.velocity.as_slice(), s1.velocity.as_slice());
             add((delta.spin * h).coords.as_slice(), s0.orientation.coords.as_slice(), s1.orientation.coords.as_slice());
@@ -171,7 +206,8 @@ impl Stages {
                 continue;
             }
             let start = &self.start[i];
-            let (mut position, mut velocity, mut momentum, mut quaternion) = (start.position, start.velocity, self.momentum[i], start.orientation.into_inner());
+            let (mut position, mut velocity, mut momentum, mut quaternion) =
+                (start.position, start.velocity, self.momentum[i], start.orientation.into_inner());
             for (weight, rates) in a.iter().zip(&self.rates) {
                 if *weight != 0.0 {
                     let (rate, w) = (&rates[i], weight * h);
@@ -186,14 +222,23 @@ impl Stages {
                 position,
                 orientation,
                 velocity,
-                angular_velocity: orientation.inverse_transform_vector(&momentum).component_mul(&body.inverse_principal_moments),
+                angular_velocity: orientation
+                    .inverse_transform_vector(&momentum)
+                    .component_mul(&body.inverse_principal_moments),
             };
         }
     }
 
     /// The rates at `states` and time `time` [s] into slot `slot`: kinematic bodies prescribed,
     /// the force evaluation, then each body's derivative.
-    fn evaluate(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, slot: usize) -> Result<(), EvaluationError> {
+    fn evaluate(
+        &mut self,
+        system: &System,
+        states: &mut [BodyState],
+        evaluation: &mut Evaluation,
+        time: f64,
+        slot: usize,
+    ) -> Result<(), EvaluationError> {
         system.prescribe(states, time);
         self.powers[slot] = system.evaluate(states, evaluation, time)?;
         let per_body = system.bodies().iter().zip(states.iter()).zip(&evaluation.frames).zip(&evaluation.loads);
@@ -206,7 +251,12 @@ impl Stages {
 
 /// A body at rest at the origin (the buffers' contents before the first step).
 fn rest_state() -> BodyState {
-    BodyState { position: Vec3::zeros(), orientation: Rotation::identity(), velocity: Vec3::zeros(), angular_velocity: Vec3::zeros() }
+    BodyState {
+        position: Vec3::zeros(),
+        orientation: Rotation::identity(),
+        velocity: Vec3::zeros(),
+        angular_velocity: Vec3::zeros(),
+    }
 }
 
 /// `(v, ½ q ⊗ (0, ω), F/m, M)` of one body; fixed components and kinematic bodies at rest.
@@ -217,7 +267,8 @@ fn derivative(body: &RigidBody, state: &BodyState, frame: &BodyFrame, load: &Loa
         Support::Free | Support::Fixed { .. } => load.moment,
     };
     // The angular part is not used: the moment integrates into L directly.
-    let linear = accelerations(body, &frame.rotation, &Load { force: load.force, moment: Vec3::zeros() }, &Vec3::zeros()).linear;
+    let linear =
+        accelerations(body, &frame.rotation, &Load { force: load.force, moment: Vec3::zeros() }, &Vec3::zeros()).linear;
     let w = &state.angular_velocity;
     let spin = state.orientation.into_inner() * Quaternion::new(0.0, w.x, w.y, w.z) * 0.5;
     Rate { velocity: state.velocity, spin, acceleration: linear, moment }

@@ -47,16 +47,36 @@ impl Splitting {
 
     /// Evaluates `time`: forces, and the accelerations of the first kick (velocities stay
     /// synchronised).
-    pub fn start(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64) -> Result<BodyEnergy, EvaluationError> {
+    pub fn start(
+        &mut self,
+        system: &System,
+        states: &mut [BodyState],
+        evaluation: &mut Evaluation,
+        time: f64,
+    ) -> Result<BodyEnergy, EvaluationError> {
         system.prescribe(states, time);
         self.powers = system.evaluate(states, evaluation, time)?;
         Ok(self.kick_and_energies(system, states, evaluation, 0.0))
     }
 
     /// One step of `h` [s] from `time`: kick, drift (with the rotation sequence), forces, kick.
-    pub fn step(&mut self, system: &System, states: &mut [BodyState], evaluation: &mut Evaluation, time: f64, h: f64) -> Result<StepReport, EvaluationError> {
+    pub fn step(
+        &mut self,
+        system: &System,
+        states: &mut [BodyState],
+        evaluation: &mut Evaluation,
+        time: f64,
+        h: f64,
+    ) -> Result<StepReport, EvaluationError> {
         let time = time + h;
-        let per_body = system.bodies().iter().zip(states.iter_mut()).zip(&self.accelerations).zip(evaluation.frames.iter_mut()).zip(evaluation.loads.iter_mut()).zip(system.initial_states());
+        let per_body = system
+            .bodies()
+            .iter()
+            .zip(states.iter_mut())
+            .zip(&self.accelerations)
+            .zip(evaluation.frames.iter_mut())
+            .zip(evaluation.loads.iter_mut())
+            .zip(system.initial_states());
         for (((((body, state), acceleration), frame), load), initial) in per_body {
             if let Support::Kinematic(motion) = &body.support {
                 *state = motion.state_at(initial, time);
@@ -91,7 +111,13 @@ impl Splitting {
     /// Accelerations from the loads (the moment's part only: the rotation sequence carries the
     /// gyroscopic term), the closing kick by `half` [s], and the bodies' kinetic and gravity
     /// energies at the now synchronised velocities.
-    fn kick_and_energies(&mut self, system: &System, states: &mut [BodyState], evaluation: &Evaluation, half: f64) -> BodyEnergy {
+    fn kick_and_energies(
+        &mut self,
+        system: &System,
+        states: &mut [BodyState],
+        evaluation: &Evaluation,
+        half: f64,
+    ) -> BodyEnergy {
         let mut energy = BodyEnergy::default();
         let per_body = system.bodies().iter().zip(states.iter_mut()).zip(&evaluation.frames).zip(&evaluation.loads);
         for ((((body, state), frame), load), acceleration) in per_body.zip(self.accelerations.iter_mut()) {

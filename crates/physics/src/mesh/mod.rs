@@ -11,8 +11,8 @@
 
 pub mod primitives;
 
-use crate::math::{Vec3, bounding_box};
 use crate::body::{RigidBody, Shape};
+use crate::math::{Vec3, bounding_box};
 use parry3d_f64::math::Point;
 use parry3d_f64::query::PointQueryWithLocation as _;
 use parry3d_f64::shape::{TriMesh, TriMeshFlags};
@@ -49,7 +49,9 @@ pub enum MeshError {
     TooFar { vertex: usize, distance: f64 },
     #[error("the mesh has zero area: every triangle is degenerate")]
     ZeroArea,
-    #[error("the mesh is {thickness:e} m thick along axis {axis}: below {MIN_THICKNESS:e} m, too thin to tell its sides apart (a flat mesh has thickness 0)")]
+    #[error(
+        "the mesh is {thickness:e} m thick along axis {axis}: below {MIN_THICKNESS:e} m, too thin to tell its sides apart (a flat mesh has thickness 0)"
+    )]
     TooThin { axis: char, thickness: f64 },
     #[error("the mesh cannot be used for distance queries: {0}")]
     Topology(String),
@@ -95,7 +97,9 @@ impl FaceGroup {
     /// Bit i set for each face i of the group with `offset + direction·r_f < limit` [m].
     #[inline]
     pub fn below(&self, offset: f64, direction: &Vec3, limit: f64) -> u32 {
-        let distances: [f64; GROUP_SIZE] = std::array::from_fn(|i| offset + direction.x * self.x[i] + direction.y * self.y[i] + direction.z * self.z[i]);
+        let distances: [f64; GROUP_SIZE] = std::array::from_fn(|i| {
+            offset + direction.x * self.x[i] + direction.y * self.y[i] + direction.z * self.z[i]
+        });
         let bits = distances.iter().enumerate().fold(0, |bits, (i, d)| if *d < limit { bits | 1 << i } else { bits });
         bits & self.lanes
     }
@@ -132,7 +136,9 @@ impl BoundaryMesh {
             return Err(MeshError::TooFar { vertex, distance: vertices[vertex].norm() });
         }
         let (low, high) = bounding_box(vertices.iter().copied());
-        if let Some(axis) = (0..3).find(|&axis| (high[axis] - low[axis]) > 0.0 && high[axis] - low[axis] < MIN_THICKNESS) {
+        if let Some(axis) =
+            (0..3).find(|&axis| (high[axis] - low[axis]) > 0.0 && high[axis] - low[axis] < MIN_THICKNESS)
+        {
             return Err(MeshError::TooThin { axis: ['x', 'y', 'z'][axis], thickness: high[axis] - low[axis] });
         }
         for (triangle, corners) in triangles.iter().enumerate() {
@@ -153,7 +159,11 @@ impl BoundaryMesh {
                 let [a, b, c] = corners(t);
                 let scaled_normal = (b - a).cross(&(c - a));
                 let double_area = scaled_normal.norm();
-                (double_area > 0.0).then(|| Face { centroid: (a + b + c) / 3.0, normal: scaled_normal / double_area, area: 0.5 * double_area })
+                (double_area > 0.0).then(|| Face {
+                    centroid: (a + b + c) / 3.0,
+                    normal: scaled_normal / double_area,
+                    area: 0.5 * double_area,
+                })
             })
             .collect();
         if faces.is_empty() {
@@ -217,7 +227,11 @@ pub fn shape_in_principal_frame(body: &RigidBody) -> (Vec<Vec3>, Vec<[u32; 3]>) 
 /// `Σ a·(b × c)/6` over the triangles (a, b, c) [m³]: the enclosed volume of a closed mesh,
 /// positive when every triangle is wound counter-clockwise seen from outside.
 pub(crate) fn signed_volume(vertices: &[Vec3], triangles: &[[u32; 3]]) -> f64 {
-    triangles.iter().map(|t| vertices[t[0] as usize].dot(&vertices[t[1] as usize].cross(&vertices[t[2] as usize]))).sum::<f64>() / 6.0
+    triangles
+        .iter()
+        .map(|t| vertices[t[0] as usize].dot(&vertices[t[1] as usize].cross(&vertices[t[2] as usize])))
+        .sum::<f64>()
+        / 6.0
 }
 
 /// Splits `faces` (starting at index `first` of the whole list) in place at the median of
@@ -260,7 +274,11 @@ pub struct Surface {
 
 impl std::fmt::Debug for Surface {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Surface").field("triangles", &self.mesh.indices().len()).field("low", &self.low).field("high", &self.high).finish()
+        f.debug_struct("Surface")
+            .field("triangles", &self.mesh.indices().len())
+            .field("low", &self.low)
+            .field("high", &self.high)
+            .finish()
     }
 }
 
@@ -277,8 +295,12 @@ impl Surface {
     /// A mesh parry cannot orient (needed for the inside test).
     pub fn new(boundary: &BoundaryMesh) -> Result<Self, MeshError> {
         let vertices: Vec<Point<f64>> = boundary.vertices.iter().map(|v| Point::from(*v)).collect();
-        let mesh = TriMesh::with_flags(vertices, boundary.triangles.clone(), TriMeshFlags::ORIENTED | TriMeshFlags::MERGE_DUPLICATE_VERTICES)
-            .map_err(|e| MeshError::Topology(format!("{e:?}")))?;
+        let mesh = TriMesh::with_flags(
+            vertices,
+            boundary.triangles.clone(),
+            TriMeshFlags::ORIENTED | TriMeshFlags::MERGE_DUPLICATE_VERTICES,
+        )
+        .map_err(|e| MeshError::Topology(format!("{e:?}")))?;
         let aabb = mesh.local_aabb();
         Ok(Self { mesh, low: aabb.mins.coords, high: aabb.maxs.coords, reach: boundary.bounding_radius() })
     }
@@ -328,7 +350,12 @@ mod tests {
             let mesh = BoundaryMesh::new(vertices.clone(), triangles).expect("a box is a valid mesh");
             assert_relative_eq!(mesh.area(), 2.0 * (2.0 + 6.0 + 3.0), epsilon = 1e-12);
             for face in mesh.faces() {
-                assert!(face.normal.dot(&face.centroid) > 0.0, "normal {:?} at {:?} points inwards", face.normal, face.centroid);
+                assert!(
+                    face.normal.dot(&face.centroid) > 0.0,
+                    "normal {:?} at {:?} points inwards",
+                    face.normal,
+                    face.centroid
+                );
             }
         }
     }

@@ -46,16 +46,43 @@ pub fn cuboid(size: &Vec3, center: &Vec3, divisions: u32) -> (Vec<Vec3>, Vec<[u3
 pub fn icosphere(radius: f64, center: &Vec3, subdivisions: u32) -> (Vec<Vec3>, Vec<[u32; 3]>) {
     let phi = 0.5 * (1.0 + 5.0_f64.sqrt());
     let mut unit: Vec<Vec3> = [
-        (-1.0, phi, 0.0), (1.0, phi, 0.0), (-1.0, -phi, 0.0), (1.0, -phi, 0.0),
-        (0.0, -1.0, phi), (0.0, 1.0, phi), (0.0, -1.0, -phi), (0.0, 1.0, -phi),
-        (phi, 0.0, -1.0), (phi, 0.0, 1.0), (-phi, 0.0, -1.0), (-phi, 0.0, 1.0),
+        (-1.0, phi, 0.0),
+        (1.0, phi, 0.0),
+        (-1.0, -phi, 0.0),
+        (1.0, -phi, 0.0),
+        (0.0, -1.0, phi),
+        (0.0, 1.0, phi),
+        (0.0, -1.0, -phi),
+        (0.0, 1.0, -phi),
+        (phi, 0.0, -1.0),
+        (phi, 0.0, 1.0),
+        (-phi, 0.0, -1.0),
+        (-phi, 0.0, 1.0),
     ]
     .iter()
     .map(|&(x, y, z)| Vec3::new(x, y, z).normalize())
     .collect();
     let mut triangles: Vec<[u32; 3]> = vec![
-        [0, 11, 5], [0, 5, 1], [0, 1, 7], [0, 7, 10], [0, 10, 11], [1, 5, 9], [5, 11, 4], [11, 10, 2], [10, 7, 6], [7, 1, 8],
-        [3, 9, 4], [3, 4, 2], [3, 2, 6], [3, 6, 8], [3, 8, 9], [4, 9, 5], [2, 4, 11], [6, 2, 10], [8, 6, 7], [9, 8, 1],
+        [0, 11, 5],
+        [0, 5, 1],
+        [0, 1, 7],
+        [0, 7, 10],
+        [0, 10, 11],
+        [1, 5, 9],
+        [5, 11, 4],
+        [11, 10, 2],
+        [10, 7, 6],
+        [7, 1, 8],
+        [3, 9, 4],
+        [3, 4, 2],
+        [3, 2, 6],
+        [3, 6, 8],
+        [3, 8, 9],
+        [4, 9, 5],
+        [2, 4, 11],
+        [6, 2, 10],
+        [8, 6, 7],
+        [9, 8, 1],
     ];
     for _ in 0..subdivisions {
         let mut midpoints = std::collections::HashMap::new();
@@ -125,13 +152,21 @@ mod tests {
         assert_relative_eq!(volume(&cuboid(&Vec3::new(1.0, 2.0, 3.0), &c, 3)), 6.0, epsilon = 1e-12);
         // A regular 32-gon prism: ½ n r² sin(2π/n) · L.
         let prism = 0.5 * 32.0 * (std::f64::consts::TAU / 32.0).sin() * 2.0;
-        assert_relative_eq!(volume(&cylinder(1.0, 2.0, &Vec3::new(1.0, 1.0, 0.0).normalize(), &c)), prism, epsilon = 1e-12);
+        assert_relative_eq!(
+            volume(&cylinder(1.0, 2.0, &Vec3::new(1.0, 1.0, 0.0).normalize(), &c)),
+            prism,
+            epsilon = 1e-12
+        );
         // Inscribed icosphere volumes approach 4π/3 from below: 4.0470 m³ (0.966 of it) at
         // two subdivisions.
         let sphere = 4.0 / 3.0 * std::f64::consts::PI;
         let v2 = volume(&icosphere(1.0, &c, 2));
         assert!(v2 < sphere && v2 > 0.96 * sphere, "icosphere volume {v2}");
-        for mesh in [cuboid(&Vec3::repeat(1.0), &Vec3::zeros(), 2), icosphere(1.0, &Vec3::zeros(), 1), cylinder(1.0, 1.0, &Vec3::z(), &Vec3::zeros())] {
+        for mesh in [
+            cuboid(&Vec3::repeat(1.0), &Vec3::zeros(), 2),
+            icosphere(1.0, &Vec3::zeros(), 1),
+            cylinder(1.0, 1.0, &Vec3::z(), &Vec3::zeros()),
+        ] {
             let boundary = BoundaryMesh::new(mesh.0, mesh.1).expect("primitive meshes are valid");
             assert!(boundary.faces().iter().all(|f| f.normal.dot(&f.centroid) > 0.0));
         }

@@ -72,7 +72,10 @@ impl std::str::FromStr for Direction {
     type Err = String;
 
     fn from_str(text: &str) -> Result<Self, Self::Err> {
-        Self::ALL.into_iter().find(|d| d.name() == text).ok_or_else(|| format!("unknown direction {text:?} (x, y, z, roll, pitch, yaw)"))
+        Self::ALL
+            .into_iter()
+            .find(|d| d.name() == text)
+            .ok_or_else(|| format!("unknown direction {text:?} (x, y, z, roll, pitch, yaw)"))
     }
 }
 
@@ -105,7 +108,13 @@ impl Dofs {
             let holds = |direction: Direction| match &rigid.support {
                 Support::Free => false,
                 Support::Kinematic(_) => true,
-                Support::Fixed { translation, rotation } => if direction.is_rotation() { *rotation } else { translation[direction.index()] },
+                Support::Fixed { translation, rotation } => {
+                    if direction.is_rotation() {
+                        *rotation
+                    } else {
+                        translation[direction.index()]
+                    }
+                }
             };
             for direction in Direction::ALL {
                 let dof = Dof { body, direction };

@@ -101,16 +101,25 @@ pub enum EquilibriumError {
 ///
 /// # Errors
 /// A body with no restoring force along a load, a coupling without forces, or no convergence.
-pub fn solve(system: &System, start: &[BodyState], held: &[Dof], settings: &Settings) -> Result<Equilibrium, EquilibriumError> {
+pub fn solve(
+    system: &System,
+    start: &[BodyState],
+    held: &[Dof],
+    settings: &Settings,
+) -> Result<Equilibrium, EquilibriumError> {
     let at_rest = system.at_rest();
     let system: &System = &at_rest;
     let dofs = Dofs::of(system, held);
-    let mut states: Vec<BodyState> = start.iter().map(|s| BodyState { velocity: Vec3::zeros(), angular_velocity: Vec3::zeros(), ..*s }).collect();
+    let mut states: Vec<BodyState> =
+        start.iter().map(|s| BodyState { velocity: Vec3::zeros(), angular_velocity: Vec3::zeros(), ..*s }).collect();
     let mut evaluation = Evaluation::new(states.len(), system.couplings());
     let mut evaluations = 0;
     let mut evaluate = |states: &[BodyState], evaluation: &mut Evaluation| {
         evaluations += 1;
-        system.evaluate(states, evaluation, STATIC_TIME).map(|_| ()).map_err(|e| EquilibriumError::Forces { coupling: system.couplings()[e.coupling].name.clone(), source: e.source })
+        system.evaluate(states, evaluation, STATIC_TIME).map(|_| ()).map_err(|e| EquilibriumError::Forces {
+            coupling: system.couplings()[e.coupling].name.clone(),
+            source: e.source,
+        })
     };
     evaluate(&states, &mut evaluation)?;
     let scale = Scale::of(system, &states, &evaluation);
@@ -147,7 +156,11 @@ pub fn solve(system: &System, start: &[BodyState], held: &[Dof], settings: &Sett
                 evaluation = trial;
                 travelled += &step * 0.5f64.powi(halvings as i32);
                 lambda = if halvings == 0 { 0.25 * lambda } else { lambda };
-                reach = if halvings == 0 && cut { (2.0 * reach).min(2.0 * RUNAWAY) } else { reach * 0.5f64.powi(halvings as i32) };
+                reach = if halvings == 0 && cut {
+                    (2.0 * reach).min(2.0 * RUNAWAY)
+                } else {
+                    reach * 0.5f64.powi(halvings as i32)
+                };
                 break;
             }
             halvings += 1;
@@ -163,7 +176,17 @@ pub fn solve(system: &System, start: &[BodyState], held: &[Dof], settings: &Sett
     let stiffness = stiffness::tangent(system, &evaluation);
     let unstable = least_stable(&restricted(&stiffness, &dofs), &dofs);
     let (residual_force, residual_moment) = largest(&residual, &dofs);
-    Ok(Equilibrium { states, evaluation, stiffness, dofs, iterations, evaluations, residual_force, residual_moment, unstable })
+    Ok(Equilibrium {
+        states,
+        evaluation,
+        stiffness,
+        dofs,
+        iterations,
+        evaluations,
+        residual_force,
+        residual_moment,
+        unstable,
+    })
 }
 
 /// The force and length scales of a scene: the weight of the bodies that move and the largest
@@ -176,7 +199,8 @@ struct Scale {
 
 impl Scale {
     fn of(system: &System, states: &[BodyState], evaluation: &Evaluation) -> Self {
-        let weight: f64 = system.bodies().iter().filter(|b| !b.is_kinematic()).map(|b| b.mass() * system.gravity().norm()).sum();
+        let weight: f64 =
+            system.bodies().iter().filter(|b| !b.is_kinematic()).map(|b| b.mass() * system.gravity().norm()).sum();
         let largest = evaluation.forces().iter().map(|f| f.f1.norm().max(f.f2.norm())).fold(0.0, f64::max);
         let ends = evaluation.forces().iter().flat_map(|f| [f.point1, f.point2]);
         let (low, high) = bounding_box(states.iter().map(|s| s.position).chain(ends));
@@ -200,7 +224,16 @@ impl Scale {
     /// `step` shortened so that no body moves more than `reach` scene sizes or turns more than
     /// `2 reach` radians; and whether it was.
     fn limited(&self, step: DVector<f64>, dofs: &Dofs, reach: f64) -> (DVector<f64>, bool) {
-        let largest = dofs.free().iter().zip(step.iter()).map(|(d, s)| if d.direction.is_rotation() { s.abs() / (2.0 * reach) } else { s.abs() / (reach * self.length) }).fold(0.0, f64::max);
+        let largest = dofs
+            .free()
+            .iter()
+            .zip(step.iter())
+            .map(
+                |(d, s)| {
+                    if d.direction.is_rotation() { s.abs() / (2.0 * reach) } else { s.abs() / (reach * self.length) }
+                },
+            )
+            .fold(0.0, f64::max);
         if largest > 1.0 { (step / largest, true) } else { (step, false) }
     }
 }
@@ -213,7 +246,11 @@ fn free_loads(evaluation: &Evaluation, dofs: &Dofs) -> DVector<f64> {
 
 /// Force and moment on each body, six rows per body.
 fn loads(evaluation: &Evaluation) -> Vec<f64> {
-    evaluation.loads().iter().flat_map(|l| [l.force.x, l.force.y, l.force.z, l.moment.x, l.moment.y, l.moment.z]).collect()
+    evaluation
+        .loads()
+        .iter()
+        .flat_map(|l| [l.force.x, l.force.y, l.force.z, l.moment.x, l.moment.y, l.moment.z])
+        .collect()
 }
 
 /// `K` on the free directions.
@@ -225,11 +262,29 @@ fn restricted(k: &DMatrix<f64>, dofs: &Dofs) -> DMatrix<f64> {
 /// Solves `(K + λ D) δ = r`, raising `λ` from `lambda` until the system can be solved; returns
 /// the step and the `λ` used. `D` is `K`'s diagonal, floored at 1e-6 of its largest entry of
 /// each kind (and at the force scale over the scene size when the scene has no stiffness).
-fn newton_step(k: &DMatrix<f64>, residual: &DVector<f64>, lambda: f64, scale: &Scale, dofs: &Dofs) -> (DVector<f64>, f64) {
-    let largest = |rotation: bool| dofs.free().iter().enumerate().filter(|(_, d)| d.direction.is_rotation() == rotation).map(|(i, _)| k[(i, i)].abs()).fold(0.0, f64::max);
+fn newton_step(
+    k: &DMatrix<f64>,
+    residual: &DVector<f64>,
+    lambda: f64,
+    scale: &Scale,
+    dofs: &Dofs,
+) -> (DVector<f64>, f64) {
+    let largest = |rotation: bool| {
+        dofs.free()
+            .iter()
+            .enumerate()
+            .filter(|(_, d)| d.direction.is_rotation() == rotation)
+            .map(|(i, _)| k[(i, i)].abs())
+            .fold(0.0, f64::max)
+    };
     let floor_translation = (1e-6 * largest(false)).max(1e-6 * scale.force / scale.length);
     let floor_rotation = (1e-6 * largest(true)).max(1e-6 * scale.force * scale.length);
-    let diagonal = DVector::from_iterator(dofs.len(), dofs.free().iter().enumerate().map(|(i, d)| k[(i, i)].abs().max(if d.direction.is_rotation() { floor_rotation } else { floor_translation })));
+    let diagonal = DVector::from_iterator(
+        dofs.len(),
+        dofs.free().iter().enumerate().map(|(i, d)| {
+            k[(i, i)].abs().max(if d.direction.is_rotation() { floor_rotation } else { floor_translation })
+        }),
+    );
     let mut lambda = lambda;
     loop {
         let mut damped = k.clone();
@@ -263,22 +318,61 @@ fn move_bodies(states: &mut [BodyState], dofs: &Dofs, step: &DVector<f64>, fract
 
 /// A body gone beyond [`RUNAWAY`] scene sizes, or turned beyond [`RUNAWAY_TURN`], in the steps
 /// taken (`travelled`, per free direction): the direction it went furthest in.
-fn runaway(system: &System, travelled: &DVector<f64>, dofs: &Dofs, residual: &DVector<f64>, scale: &Scale) -> Option<EquilibriumError> {
-    let beyond = |dof: &Dof, t: f64| if dof.direction.is_rotation() { t.abs() / RUNAWAY_TURN } else { t.abs() / (RUNAWAY * scale.length) };
-    let (position, dof) = dofs.free().iter().enumerate().max_by(|a, b| beyond(a.1, travelled[a.0]).total_cmp(&beyond(b.1, travelled[b.0])))?;
+fn runaway(
+    system: &System,
+    travelled: &DVector<f64>,
+    dofs: &Dofs,
+    residual: &DVector<f64>,
+    scale: &Scale,
+) -> Option<EquilibriumError> {
+    let beyond = |dof: &Dof, t: f64| {
+        if dof.direction.is_rotation() { t.abs() / RUNAWAY_TURN } else { t.abs() / (RUNAWAY * scale.length) }
+    };
+    let (position, dof) = dofs
+        .free()
+        .iter()
+        .enumerate()
+        .max_by(|a, b| beyond(a.1, travelled[a.0]).total_cmp(&beyond(b.1, travelled[b.0])))?;
     let gone = travelled[position];
-    (beyond(dof, gone) > 1.0).then(|| EquilibriumError::Unreachable { body: system.bodies()[dof.body].name.clone(), direction: dof.direction, travel: gone, load: residual[position] })
+    (beyond(dof, gone) > 1.0).then(|| EquilibriumError::Unreachable {
+        body: system.bodies()[dof.body].name.clone(),
+        direction: dof.direction,
+        travel: gone,
+        load: residual[position],
+    })
 }
 
-fn not_converged(system: &System, dofs: &Dofs, residual: &DVector<f64>, scale: &Scale, iterations: u32) -> EquilibriumError {
-    let worst = dofs.free().iter().zip(residual.iter()).max_by(|a, b| scale.relative(*a.1, a.0).abs().total_cmp(&scale.relative(*b.1, b.0).abs()));
+fn not_converged(
+    system: &System,
+    dofs: &Dofs,
+    residual: &DVector<f64>,
+    scale: &Scale,
+    iterations: u32,
+) -> EquilibriumError {
+    let worst = dofs
+        .free()
+        .iter()
+        .zip(residual.iter())
+        .max_by(|a, b| scale.relative(*a.1, a.0).abs().total_cmp(&scale.relative(*b.1, b.0).abs()));
     let (dof, load) = worst.map_or((Dof { body: 0, direction: Direction::X }, 0.0), |(d, r)| (*d, *r));
-    EquilibriumError::NotConverged { iterations, body: system.bodies().get(dof.body).map_or_else(String::new, |b| b.name.clone()), direction: dof.direction, load }
+    EquilibriumError::NotConverged {
+        iterations,
+        body: system.bodies().get(dof.body).map_or_else(String::new, |b| b.name.clone()),
+        direction: dof.direction,
+        load,
+    }
 }
 
 /// The largest load left along a free translation [N] and about a free rotation [N·m].
 fn largest(residual: &DVector<f64>, dofs: &Dofs) -> (f64, f64) {
-    let of = |rotation: bool| dofs.free().iter().zip(residual.iter()).filter(|(d, _)| d.direction.is_rotation() == rotation).map(|(_, r)| r.abs()).fold(0.0, f64::max);
+    let of = |rotation: bool| {
+        dofs.free()
+            .iter()
+            .zip(residual.iter())
+            .filter(|(d, _)| d.direction.is_rotation() == rotation)
+            .map(|(_, r)| r.abs())
+            .fold(0.0, f64::max)
+    };
     (of(false), of(true))
 }
 

@@ -33,7 +33,14 @@ pub struct OffsetCurve {
 ///
 /// # Errors
 /// An offset at which the other directions find no equilibrium.
-pub fn curve(system: &System, equilibrium: &Equilibrium, dof: Dof, to: f64, steps: u32, settings: &Settings) -> Result<OffsetCurve, EquilibriumError> {
+pub fn curve(
+    system: &System,
+    equilibrium: &Equilibrium,
+    dof: Dof,
+    to: f64,
+    steps: u32,
+    settings: &Settings,
+) -> Result<OffsetCurve, EquilibriumError> {
     let steps = steps.max(1);
     let mut states = equilibrium.states.clone();
     let mut points = Vec::with_capacity(steps as usize + 1);
@@ -44,7 +51,12 @@ pub fn curve(system: &System, equilibrium: &Equilibrium, dof: Dof, to: f64, step
         previous = offset;
         let settled = equilibrium::solve(system, &states, &[dof], settings)?;
         states.clone_from(&settled.states);
-        points.push(Offset { offset, load: settled.load(dof), iterations: settled.iterations, evaluation: settled.evaluation });
+        points.push(Offset {
+            offset,
+            load: settled.load(dof),
+            iterations: settled.iterations,
+            evaluation: settled.evaluation,
+        });
     }
     Ok(OffsetCurve { dof, points })
 }

@@ -10,14 +10,14 @@
 //! body (pressure integrated over the hull cut at the waterline, the current's drag). A new
 //! source joins by adding its part in [`tangent`]; the equilibrium solver only calls it.
 
+use super::dofs::Direction;
 use crate::body::{BodyFrame, Load};
 use crate::coupling::ends::Attachment;
 use crate::coupling::{Coupling, CouplingForces, CouplingKind};
 use crate::evaluation::Evaluation;
 use crate::math::{Mat3, Rotation, Vec3};
-use super::dofs::Direction;
-use crate::water::{WaterForces, WaterScratch};
 use crate::system::System;
+use crate::water::{WaterForces, WaterScratch};
 use nalgebra::DMatrix;
 
 /// The time [s] of a static evaluation: nothing in the system at rest
@@ -38,7 +38,9 @@ pub fn tangent(system: &System, evaluation: &Evaluation) -> DMatrix<f64> {
     for (index, coupling) in system.couplings().iter().enumerate() {
         let record = &evaluation.forces()[index];
         match &coupling.kind {
-            CouplingKind::SpringDamper(spring) => add_ends(&mut jacobian, coupling, frames, record, &spring.end_stiffness(frames)),
+            CouplingKind::SpringDamper(spring) => {
+                add_ends(&mut jacobian, coupling, frames, record, &spring.end_stiffness(frames))
+            }
             CouplingKind::Catenary(_) => {
                 if let Some(state) = evaluation.line_state(index) {
                     add_ends(&mut jacobian, coupling, frames, record, &state.end_stiffness());
@@ -68,7 +70,13 @@ pub fn tangent(system: &System, evaluation: &Evaluation) -> DMatrix<f64> {
 
 /// Adds `∂(F, M)/∂(x, θ)` of a two-ended coupling with end forces `record.f1`, `record.f2` and
 /// stiffness blocks `blocks[i][j] = ∂f_i/∂p_j`.
-fn add_ends(jacobian: &mut DMatrix<f64>, coupling: &Coupling, frames: &[BodyFrame], record: &CouplingForces, blocks: &[[Mat3; 2]; 2]) {
+fn add_ends(
+    jacobian: &mut DMatrix<f64>,
+    coupling: &Coupling,
+    frames: &[BodyFrame],
+    record: &CouplingForces,
+    blocks: &[[Mat3; 2]; 2],
+) {
     let [end1, end2] = coupling.ends();
     let attachments = [end1.motion(frames).attachment, end2.motion(frames).attachment];
     let forces = [record.f1, record.f2];
@@ -103,7 +111,13 @@ fn add_block(jacobian: &mut DMatrix<f64>, row: usize, column: usize, block: &Mat
 
 /// Adds central differences of the loads that `loads_at` puts on the bodies as each direction
 /// of each of `bodies` moves (kinematic bodies do not move).
-pub fn add_differences(jacobian: &mut DMatrix<f64>, system: &System, frames: &[BodyFrame], bodies: &[usize], mut loads_at: impl FnMut(&[BodyFrame], &mut [Load])) {
+pub fn add_differences(
+    jacobian: &mut DMatrix<f64>,
+    system: &System,
+    frames: &[BodyFrame],
+    bodies: &[usize],
+    mut loads_at: impl FnMut(&[BodyFrame], &mut [Load]),
+) {
     let n = frames.len();
     let mut moved = frames.to_vec();
     let (mut plus, mut minus) = (vec![Load::default(); n], vec![Load::default(); n]);
@@ -134,7 +148,8 @@ fn shifted(frame: &BodyFrame, direction: Direction, amount: f64) -> BodyFrame {
     let mut moved = BodyFrame { velocity: Vec3::zeros(), angular_velocity: Vec3::zeros(), ..*frame };
     let index = direction.index();
     if direction.is_rotation() {
-        moved.rotation = Rotation::from_scaled_axis(Vec3::ith(index - 3, amount)).to_rotation_matrix().into_inner() * frame.rotation;
+        moved.rotation =
+            Rotation::from_scaled_axis(Vec3::ith(index - 3, amount)).to_rotation_matrix().into_inner() * frame.rotation;
     } else {
         moved.position[index] += amount;
     }

@@ -43,13 +43,21 @@ impl AddedMass {
             Support::Free => ([false; 3], false),
             Support::Fixed { translation, rotation } => (*translation, *rotation),
         };
-        let force = self.translational_reaction(body.mass(), &frame.rotation, load, water_acceleration, fixed_translation);
+        let force =
+            self.translational_reaction(body.mass(), &frame.rotation, load, water_acceleration, fixed_translation);
         let moment = if fixed_rotation { Vec3::zeros() } else { self.rotational_reaction(body, frame, &load.moment) };
         Load { force, moment }
     }
 
     /// `m γ − F` with `(m E + A) γ = F + A u̇`, `A = R M_a Rᵀ`, over the free components.
-    fn translational_reaction(&self, mass: f64, rotation: &Mat3, load: &Load, water_acceleration: &Vec3, fixed: [bool; 3]) -> Vec3 {
+    fn translational_reaction(
+        &self,
+        mass: f64,
+        rotation: &Mat3,
+        load: &Load,
+        water_acceleration: &Vec3,
+        fixed: [bool; 3],
+    ) -> Vec3 {
         let added = rotation * self.translational * rotation.transpose();
         let mut matrix = Mat3::identity() * mass + added;
         let mut right = load.force + added * water_acceleration;
@@ -87,15 +95,23 @@ impl AddedMass {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::body::Shape;
     use crate::dynamics::accelerations;
     use crate::mass_properties::{MassProperties, Node};
-    use crate::body::Shape;
     use approx::assert_relative_eq;
 
     fn body(support: Support) -> RigidBody {
         let inertia = Mat3::from_diagonal(&Vec3::new(2.0, 3.0, 4.0));
-        let properties = MassProperties::from_nodes(&Node { position: Vec3::zeros(), mass: 5.0, inertia }, &[]).expect("a valid body");
-        RigidBody::new("b".into(), properties, Vec3::zeros(), &[], support, Shape::Sphere { radius: 1.0, center: Vec3::zeros(), subdivisions: 1 })
+        let properties = MassProperties::from_nodes(&Node { position: Vec3::zeros(), mass: 5.0, inertia }, &[])
+            .expect("a valid body");
+        RigidBody::new(
+            "b".into(),
+            properties,
+            Vec3::zeros(),
+            &[],
+            support,
+            Shape::Sphere { radius: 1.0, center: Vec3::zeros(), subdivisions: 1 },
+        )
     }
 
     #[test]
@@ -104,7 +120,12 @@ mod tests {
         let axes = nalgebra::Rotation3::from_euler_angles(0.2, 0.5, -0.3).into_inner();
         let added = AddedMass::new(&axes, &Vec3::new(0.5, 1.0, 2.0), &Vec3::new(0.3, 0.7, 1.1), 2.0, 1000.0, 0.6);
         let rotation = nalgebra::Rotation3::from_euler_angles(-0.4, 0.1, 0.9).into_inner();
-        let frame = BodyFrame { position: Vec3::zeros(), rotation, velocity: Vec3::zeros(), angular_velocity: Vec3::new(0.3, -0.2, 0.5) };
+        let frame = BodyFrame {
+            position: Vec3::zeros(),
+            rotation,
+            velocity: Vec3::zeros(),
+            angular_velocity: Vec3::new(0.3, -0.2, 0.5),
+        };
         let load = Load { force: Vec3::new(10.0, -20.0, 30.0), moment: Vec3::new(1.0, 2.0, -3.0) };
         let u_dot = Vec3::new(0.4, 0.0, -0.2);
         let reaction = added.reaction(&body, &frame, &load, &u_dot);
@@ -116,7 +137,11 @@ mod tests {
         // (I + J) α + ω × ((I + J) ω) = Rᵀ M, principal frame.
         let i_total = Mat3::from_diagonal(&body.principal_moments()) + added.rotational;
         let w = frame.angular_velocity;
-        assert_relative_eq!(i_total * a.angular + w.cross(&(i_total * w)), rotation.tr_mul(&load.moment), epsilon = 1e-12);
+        assert_relative_eq!(
+            i_total * a.angular + w.cross(&(i_total * w)),
+            rotation.tr_mul(&load.moment),
+            epsilon = 1e-12
+        );
     }
 
     #[test]

@@ -50,7 +50,14 @@ pub struct WaterSpec {
 
 impl Default for WaterSpec {
     fn default() -> Self {
-        Self { density: 1025.0, level: 0.0, depth: None, current: CurrentSpec::default(), waves: WaveSpec::Calm, ramp: None }
+        Self {
+            density: 1025.0,
+            level: 0.0,
+            depth: None,
+            current: CurrentSpec::default(),
+            waves: WaveSpec::Calm,
+            ramp: None,
+        }
     }
 }
 
@@ -114,7 +121,8 @@ impl Water {
         let components = components(&spec, g)?;
         let ramp = spec.ramp.unwrap_or_else(|| 2.0 * peak_period(&spec.waves).unwrap_or(0.0));
         let sea = Sea::new(components, spec.level, spec.depth);
-        let current = Current::new(spec.current.speed, spec.current.heading, spec.current.profile, spec.level, spec.depth);
+        let current =
+            Current::new(spec.current.speed, spec.current.heading, spec.current.profile, spec.level, spec.depth);
         Ok(Self { spec, gravity: g, sea, current, ramp })
     }
 
@@ -195,14 +203,17 @@ impl Water {
         if ramp == 0.0 {
             return (Vec3::zeros(), Vec3::zeros());
         }
-        let (waves, acceleration) = if self.sea.is_calm() { (Vec3::zeros(), Vec3::zeros()) } else { self.sea.kinematics(point, time) };
+        let (waves, acceleration) =
+            if self.sea.is_calm() { (Vec3::zeros(), Vec3::zeros()) } else { self.sea.kinematics(point, time) };
         ((waves + self.current.velocity(point.z)) * ramp, acceleration * ramp)
     }
 }
 
 /// Every number finite and in its range.
 fn check(spec: &WaterSpec) -> Result<(), WaterError> {
-    let finite = |field: &'static str, value: f64| if value.is_finite() { Ok(()) } else { Err(WaterError::NotFinite { field, value }) };
+    let finite = |field: &'static str, value: f64| {
+        if value.is_finite() { Ok(()) } else { Err(WaterError::NotFinite { field, value }) }
+    };
     let positive = |field: &'static str, unit: &'static str, value: f64| {
         finite(field, value)?;
         if value > 0.0 { Ok(()) } else { Err(WaterError::NotPositive { field, unit, value }) }
@@ -269,7 +280,11 @@ fn components(spec: &WaterSpec, g: f64) -> Result<Vec<WaveComponent>, WaterError
     let steep = |height: f64, period: f64| {
         let wavelength = wavelength(period, spec.depth, g);
         let steepness = height / wavelength;
-        if steepness > BREAKING_STEEPNESS { Err(WaterError::Breaking { height, wavelength, steepness }) } else { Ok(()) }
+        if steepness > BREAKING_STEEPNESS {
+            Err(WaterError::Breaking { height, wavelength, steepness })
+        } else {
+            Ok(())
+        }
     };
     Ok(match spec.waves {
         WaveSpec::Calm => Vec::new(),
@@ -281,7 +296,13 @@ fn components(spec: &WaterSpec, g: f64) -> Result<Vec<WaveComponent>, WaterError
         }
         WaveSpec::Jonswap { significant_height, peak_period, gamma, heading, components, seed } => {
             steep(significant_height, peak_period)?;
-            Jonswap { significant_height, peak_period, gamma }.components(components as usize, heading, seed, spec.depth, g)
+            Jonswap { significant_height, peak_period, gamma }.components(
+                components as usize,
+                heading,
+                seed,
+                spec.depth,
+                g,
+            )
         }
     })
 }
@@ -293,7 +314,10 @@ mod tests {
     const DOWN: Vec3 = Vec3::new(0.0, 0.0, -9.80665);
 
     fn with(edit: impl FnOnce(&mut WaterSpec)) -> Result<Water, WaterError> {
-        let mut spec = WaterSpec { waves: WaveSpec::Regular { height: 2.0, period: 8.0, heading: 0.0, phase: 0.0 }, ..WaterSpec::default() };
+        let mut spec = WaterSpec {
+            waves: WaveSpec::Regular { height: 2.0, period: 8.0, heading: 0.0, phase: 0.0 },
+            ..WaterSpec::default()
+        };
         edit(&mut spec);
         Water::new(spec, &DOWN)
     }
@@ -303,13 +327,29 @@ mod tests {
         assert_eq!(with(|s| s.density = 0.0), Err(WaterError::Density(0.0)));
         assert_eq!(with(|s| s.depth = Some(-1.0)), Err(WaterError::Depth(-1.0)));
         assert!(matches!(with(|s| s.density = f64::NAN), Err(WaterError::NotFinite { field: "density", .. })));
-        assert!(matches!(with(|s| s.waves = WaveSpec::Regular { height: 2.0, period: 0.0, heading: 0.0, phase: 0.0 }), Err(WaterError::NotPositive { field: "wave period", .. })));
+        assert!(matches!(
+            with(|s| s.waves = WaveSpec::Regular { height: 2.0, period: 0.0, heading: 0.0, phase: 0.0 }),
+            Err(WaterError::NotPositive { field: "wave period", .. })
+        ));
         // A 10 m wave of 3 s (λ = 14.05 m deep) breaks.
-        assert!(matches!(with(|s| s.waves = WaveSpec::Regular { height: 10.0, period: 3.0, heading: 0.0, phase: 0.0 }), Err(WaterError::Breaking { .. })));
-        let jonswap = WaveSpec::Jonswap { significant_height: 2.0, peak_period: 8.0, gamma: 0.9, heading: 0.0, components: 10, seed: 1 };
+        assert!(matches!(
+            with(|s| s.waves = WaveSpec::Regular { height: 10.0, period: 3.0, heading: 0.0, phase: 0.0 }),
+            Err(WaterError::Breaking { .. })
+        ));
+        let jonswap = WaveSpec::Jonswap {
+            significant_height: 2.0,
+            peak_period: 8.0,
+            gamma: 0.9,
+            heading: 0.0,
+            components: 10,
+            seed: 1,
+        };
         assert_eq!(with(|s| s.waves = jonswap), Err(WaterError::Gamma(0.9)));
         assert_eq!(with(|s| s.current.profile = Profile::PowerLaw), Err(WaterError::ProfileWithoutDepth));
-        assert_eq!(Water::new(WaterSpec::default(), &Vec3::new(1.0, 0.0, -9.8)), Err(WaterError::Gravity(1.0, 0.0, -9.8)));
+        assert_eq!(
+            Water::new(WaterSpec::default(), &Vec3::new(1.0, 0.0, -9.8)),
+            Err(WaterError::Gravity(1.0, 0.0, -9.8))
+        );
     }
 
     #[test]

@@ -23,11 +23,15 @@ pub enum HullError {
     VertexOutOfRange { triangle: usize, vertex: u32, count: usize },
     #[error("vertex {vertex} is not a finite point")]
     NotFinite { vertex: usize },
-    #[error("the hull is open: its faces' area vectors sum to {gap:.3e} m² (of {area:.3e} m²), not zero; a body in water needs a closed mesh")]
+    #[error(
+        "the hull is open: its faces' area vectors sum to {gap:.3e} m² (of {area:.3e} m²), not zero; a body in water needs a closed mesh"
+    )]
     Open { gap: f64, area: f64 },
     #[error("the hull encloses no volume (a flat or degenerate mesh); a body in water needs a closed mesh")]
     NoVolume,
-    #[error("the hull is inside out (its normals point inwards: signed volume {volume:.6e} m³); a body in water needs an outward-oriented mesh")]
+    #[error(
+        "the hull is inside out (its normals point inwards: signed volume {volume:.6e} m³); a body in water needs an outward-oriented mesh"
+    )]
     InsideOut { volume: f64 },
 }
 
@@ -66,14 +70,20 @@ impl Hull {
             }
         }
         let corner = |t: &[u32; 3], i: usize| vertices[t[i] as usize];
-        let double_area_normals: Vec<Vec3> = triangles.iter().map(|t| (corner(t, 1) - corner(t, 0)).cross(&(corner(t, 2) - corner(t, 0)))).collect();
+        let double_area_normals: Vec<Vec3> =
+            triangles.iter().map(|t| (corner(t, 1) - corner(t, 0)).cross(&(corner(t, 2) - corner(t, 0)))).collect();
         let area = 0.5 * double_area_normals.iter().map(Vec3::norm).sum::<f64>();
         let gap = 0.5 * double_area_normals.iter().sum::<Vec3>().norm();
         if !(gap <= OPEN_TOLERANCE * area) {
             return Err(HullError::Open { gap, area });
         }
         // (1/3) Σ A n·x_c = (1/6) Σ (2 A n)·(a + b + c)/3.
-        let volume = triangles.iter().zip(&double_area_normals).map(|(t, n)| n.dot(&(corner(t, 0) + corner(t, 1) + corner(t, 2)))).sum::<f64>() / 18.0;
+        let volume = triangles
+            .iter()
+            .zip(&double_area_normals)
+            .map(|(t, n)| n.dot(&(corner(t, 0) + corner(t, 1) + corner(t, 2))))
+            .sum::<f64>()
+            / 18.0;
         if volume == 0.0 || !(area > 0.0) {
             return Err(HullError::NoVolume);
         }

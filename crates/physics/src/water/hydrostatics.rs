@@ -67,16 +67,29 @@ impl Hydrostatics {
                 area -= a;
                 for axis in 0..2 {
                     first[axis] -= a * sum_y[axis] / 3.0;
-                    second[axis] -= a / 12.0 * (y[0][axis].powi(2) + y[1][axis].powi(2) + y[2][axis].powi(2) + sum_y[axis].powi(2));
+                    second[axis] -=
+                        a / 12.0 * (y[0][axis].powi(2) + y[1][axis].powi(2) + y[2][axis].powi(2) + sum_y[axis].powi(2));
                 }
             });
         }
         let draft = heads.iter().copied().fold(f64::NEG_INFINITY, f64::max).max(0.0);
-        let center = if volume > 0.0 { Vec3::new(moment.x / volume, moment.y / volume, level + height_moment / volume) } else { *position };
+        let center = if volume > 0.0 {
+            Vec3::new(moment.x / volume, moment.y / volume, level + height_moment / volume)
+        } else {
+            *position
+        };
         let waterplane_center = if area > 0.0 { [first[0] / area, first[1] / area] } else { [position.x, position.y] };
         // About the axes through the centroid: I_T = ∫y² − A y_f², I_L = ∫x² − A x_f².
-        let waterplane_moments = [second[1] - area * waterplane_center[1].powi(2), second[0] - area * waterplane_center[0].powi(2)];
-        Self { displaced_volume: volume.max(0.0), draft, center_of_buoyancy: center, waterplane_area: area.max(0.0), waterplane_center, waterplane_moments }
+        let waterplane_moments =
+            [second[1] - area * waterplane_center[1].powi(2), second[0] - area * waterplane_center[0].powi(2)];
+        Self {
+            displaced_volume: volume.max(0.0),
+            draft,
+            center_of_buoyancy: center,
+            waterplane_area: area.max(0.0),
+            waterplane_center,
+            waterplane_moments,
+        }
     }
 
     /// `GM_T`, `GM_L` [m] for the centre of mass at height `z_g` [m] (0 when nothing floats).
@@ -109,7 +122,11 @@ pub fn equilibrium_height(hull: &Hull, rotation: &Mat3, level: f64, x: f64, y: f
             return Some(z);
         }
         // Too much volume under water: the body must rise.
-        if excess > 0.0 { low = z } else { high = z }
+        if excess > 0.0 {
+            low = z
+        } else {
+            high = z
+        }
         let newton = z + excess / state.waterplane_area;
         z = if newton > low && newton < high { newton } else { 0.5 * (low + high) };
         if high - low <= 4.0 * f64::EPSILON * (level.abs() + reach) {
@@ -137,20 +154,36 @@ pub struct FloatingEquilibrium {
 /// and a vertical pull `pull` [N] (the couplings' at t = 0, positive up): heave only, the
 /// orientation and horizontal position kept. `None` if it sinks (its hull cannot displace
 /// enough) or is pulled out of the water.
-pub fn floating_equilibrium(body: &RigidBody, floating: &FloatingBody, water: &Water, state: &BodyState, pull: f64) -> Option<FloatingEquilibrium> {
+pub fn floating_equilibrium(
+    body: &RigidBody,
+    floating: &FloatingBody,
+    water: &Water,
+    state: &BodyState,
+    pull: f64,
+) -> Option<FloatingEquilibrium> {
     let hull = &floating.hull;
     let rotation = state.rotation_matrix();
     let volume = (body.mass() * water.gravity() - pull) / water.specific_weight();
     let height = equilibrium_height(hull, &rotation, water.level(), state.position.x, state.position.y, volume)?;
-    let statics = Hydrostatics::at(hull, &Vec3::new(state.position.x, state.position.y, height), &rotation, water.level());
+    let statics =
+        Hydrostatics::at(hull, &Vec3::new(state.position.x, state.position.y, height), &rotation, water.level());
     let metacentric_heights = statics.metacentric_heights(height);
     let hydro = &floating.hydro;
     let wetted = (statics.displaced_volume / hull.volume()).min(1.0);
-    let added = AddedMass::new(&hydro.axes, &hydro.spec.added_mass, &hydro.spec.added_inertia, hull.volume(), water.density(), wetted);
+    let added = AddedMass::new(
+        &hydro.axes,
+        &hydro.spec.added_mass,
+        &hydro.spec.added_inertia,
+        hull.volume(),
+        water.density(),
+        wetted,
+    );
     let world = |principal: &Mat3| rotation * principal * rotation.transpose();
-    let (mass, inertia) = (world(&added.translational), world(&(Mat3::from_diagonal(&body.principal_moments()) + added.rotational)));
+    let (mass, inertia) =
+        (world(&added.translational), world(&(Mat3::from_diagonal(&body.principal_moments()) + added.rotational)));
     let rho_g = water.specific_weight();
-    let period = |inertia: f64, stiffness: f64| (stiffness > 0.0).then(|| std::f64::consts::TAU * (inertia / stiffness).sqrt());
+    let period =
+        |inertia: f64, stiffness: f64| (stiffness > 0.0).then(|| std::f64::consts::TAU * (inertia / stiffness).sqrt());
     let periods = [
         period(body.mass() + mass[(2, 2)], rho_g * statics.waterplane_area),
         period(inertia[(0, 0)], rho_g * statics.displaced_volume * metacentric_heights[0]),

@@ -109,9 +109,12 @@ impl Hydro {
         let relative = frame.rotation.tr_mul(&(flow - frame.velocity - omega_world.cross(&arm)));
         let along = self.axes.tr_mul(&relative);
         let s = &self.spec;
-        let drag = Vec3::from_fn(|j, _| wetted * (0.5 * density * s.drag[j] * self.drag_areas[j] * along[j].abs() + s.linear_damping[j]) * along[j]);
+        let drag = Vec3::from_fn(|j, _| {
+            wetted * (0.5 * density * s.drag[j] * self.drag_areas[j] * along[j].abs() + s.linear_damping[j]) * along[j]
+        });
         let spin = self.axes.tr_mul(&frame.angular_velocity);
-        let turning = Vec3::from_fn(|j, _| -wetted * (s.rotational_drag[j] * spin[j].abs() + s.rotational_damping[j]) * spin[j]);
+        let turning =
+            Vec3::from_fn(|j, _| -wetted * (s.rotational_drag[j] * spin[j].abs() + s.rotational_damping[j]) * spin[j]);
         let force = frame.rotation * (self.axes * drag);
         Load { force, moment: arm.cross(&force) + frame.rotation * (self.axes * turning) }
     }

@@ -106,7 +106,8 @@ pub fn integrate(hull: &Hull, pressures: &[f64], heads: &[f64]) -> PressureInteg
             let y = corners.map(|c| c.of(&r));
             let sum_q = q[0] + q[1] + q[2];
             mean_p += fraction * sum_q / 3.0;
-            first_moment += ((y[0] + y[1] + y[2]) * sum_q + y[0] * q[0] + y[1] * q[1] + y[2] * q[2]) * (fraction / 12.0);
+            first_moment +=
+                ((y[0] + y[1] + y[2]) * sum_q + y[0] * q[0] + y[1] * q[1] + y[2] * q[2]) * (fraction / 12.0);
             mean_h += fraction * corners.iter().map(|c| c.of(&h)).sum::<f64>() / 3.0;
             wet += fraction;
         });
@@ -155,7 +156,8 @@ mod tests {
         // Buoyancy ρ g V_sub straight up, to round-off of sums over 96 faces.
         assert_relative_eq!(result.force, up * (rho_g * submerged), epsilon = 1e-9 * rho_g * submerged);
         // Through the centre of buoyancy, which the hydrostatics find by other integrals.
-        let statics = crate::water::hydrostatics::Hydrostatics::at(&hull, &Vec3::new(0.0, 0.0, -0.5), rotation.matrix(), 0.0);
+        let statics =
+            crate::water::hydrostatics::Hydrostatics::at(&hull, &Vec3::new(0.0, 0.0, -0.5), rotation.matrix(), 0.0);
         assert_relative_eq!(submerged, statics.displaced_volume, max_relative = 1e-12);
         let arm = rotation.transpose() * (statics.center_of_buoyancy - Vec3::new(0.0, 0.0, -0.5));
         assert_relative_eq!(result.moment, arm.cross(&result.force), epsilon = 1e-9 * rho_g * submerged);

@@ -45,7 +45,14 @@ impl Jonswap {
 
     /// `count` components heading `heading` [rad] from `seed`, over water of depth `depth` [m]
     /// (`None`: deep).
-    pub fn components(&self, count: usize, heading: f64, seed: u64, depth: Option<f64>, gravity: f64) -> Vec<WaveComponent> {
+    pub fn components(
+        &self,
+        count: usize,
+        heading: f64,
+        seed: u64,
+        depth: Option<f64>,
+        gravity: f64,
+    ) -> Vec<WaveComponent> {
         let peak = std::f64::consts::TAU / self.peak_period;
         let (low, high) = (wave_number(BAND.0 * peak, depth, gravity), wave_number(BAND.1 * peak, depth, gravity));
         // The grid's first multiple m_0 ≥ 1 nearest the band's low end, its last at the high end.
@@ -62,7 +69,13 @@ impl Jonswap {
                 let omega = frequency(m * base);
                 let width = frequency((m + 0.5) * base) - frequency((m - 0.5) * base);
                 let amplitude = (2.0 * self.shape(omega, gravity) * width).sqrt();
-                WaveComponent { amplitude, frequency: omega, wave_number: m * base, heading, phase: std::f64::consts::TAU * uniform() }
+                WaveComponent {
+                    amplitude,
+                    frequency: omega,
+                    wave_number: m * base,
+                    heading,
+                    phase: std::f64::consts::TAU * uniform(),
+                }
             })
             .collect();
         let m0: f64 = components.iter().map(|c| 0.5 * c.amplitude * c.amplitude).sum();
@@ -89,7 +102,8 @@ mod tests {
         assert_relative_eq!(4.0 * m0.sqrt(), 3.0, max_relative = 1e-14);
         // The spectral density a²/(2Δω) peaks at ω_p, within the bin width there (Δω ≈ ω_p/90 at
         // 200 components).
-        let density = |i: usize| components[i].amplitude.powi(2) / (components[i + 1].frequency - components[i - 1].frequency);
+        let density =
+            |i: usize| components[i].amplitude.powi(2) / (components[i + 1].frequency - components[i - 1].frequency);
         let peak = (1..199).max_by(|&a, &b| density(a).total_cmp(&density(b))).expect("200 components");
         let omega_p = std::f64::consts::TAU / 9.0;
         assert!((components[peak].frequency - omega_p).abs() < omega_p / 60.0, "{:?}", components[peak]);

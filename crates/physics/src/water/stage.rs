@@ -84,7 +84,16 @@ impl WaterStage {
     /// arithmetic: the same results, bit for bit): the four chains of complex powers of the
     /// waves' sums run in one vector instruction each.
     #[allow(clippy::too_many_arguments)]
-    pub fn apply(&self, level: Level, bodies: &[RigidBody], frames: &[BodyFrame], loads: &mut [Load], out: &mut [WaterForces], scratch: &mut WaterScratch, time: f64) -> f64 {
+    pub fn apply(
+        &self,
+        level: Level,
+        bodies: &[RigidBody],
+        frames: &[BodyFrame],
+        loads: &mut [Load],
+        out: &mut [WaterForces],
+        scratch: &mut WaterScratch,
+        time: f64,
+    ) -> f64 {
         match level {
             // SAFETY: `System::level` only holds a level the processor has; AVX-512 implies AVX2.
             #[cfg(target_arch = "x86_64")]
@@ -95,12 +104,28 @@ impl WaterStage {
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    fn apply_avx2(&self, bodies: &[RigidBody], frames: &[BodyFrame], loads: &mut [Load], out: &mut [WaterForces], scratch: &mut WaterScratch, time: f64) -> f64 {
+    fn apply_avx2(
+        &self,
+        bodies: &[RigidBody],
+        frames: &[BodyFrame],
+        loads: &mut [Load],
+        out: &mut [WaterForces],
+        scratch: &mut WaterScratch,
+        time: f64,
+    ) -> f64 {
         self.apply_built(bodies, frames, loads, out, scratch, time)
     }
 
     #[inline(always)]
-    fn apply_built(&self, bodies: &[RigidBody], frames: &[BodyFrame], loads: &mut [Load], out: &mut [WaterForces], scratch: &mut WaterScratch, time: f64) -> f64 {
+    fn apply_built(
+        &self,
+        bodies: &[RigidBody],
+        frames: &[BodyFrame],
+        loads: &mut [Load],
+        out: &mut [WaterForces],
+        scratch: &mut WaterScratch,
+        time: f64,
+    ) -> f64 {
         let water = &self.water;
         let ramp = water.ramp(time);
         let waves = ramp > 0.0 && !water.sea().is_calm();
@@ -127,7 +152,17 @@ impl WaterStage {
     /// The water's forces on one body, whose load from every other force is `load`.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    fn body_forces(&self, floating: &FloatingBody, body: &RigidBody, frame: &BodyFrame, load: &Load, scratch: &mut WaterScratch, time: f64, ramp: f64, waves: bool) -> WaterForces {
+    fn body_forces(
+        &self,
+        floating: &FloatingBody,
+        body: &RigidBody,
+        frame: &BodyFrame,
+        load: &Load,
+        scratch: &mut WaterScratch,
+        time: f64,
+        ramp: f64,
+        waves: bool,
+    ) -> WaterForces {
         let water = &self.water;
         let hull = &floating.hull;
         let mut record = WaterForces { body: floating.body, ..WaterForces::default() };
@@ -148,8 +183,18 @@ impl WaterStage {
         if record.wetted_fraction > 0.0 {
             record.drag = hydro.load(frame, &flow, water.density(), record.wetted_fraction);
             if hydro.has_added_mass() {
-                let added = AddedMass::new(&hydro.axes, &hydro.spec.added_mass, &hydro.spec.added_inertia, hull.volume(), water.density(), record.wetted_fraction);
-                let before = Load { force: load.force + record.pressure.force + record.drag.force, moment: load.moment + record.pressure.moment + record.drag.moment };
+                let added = AddedMass::new(
+                    &hydro.axes,
+                    &hydro.spec.added_mass,
+                    &hydro.spec.added_inertia,
+                    hull.volume(),
+                    water.density(),
+                    record.wetted_fraction,
+                );
+                let before = Load {
+                    force: load.force + record.pressure.force + record.drag.force,
+                    moment: load.moment + record.pressure.moment + record.drag.moment,
+                };
                 record.added_mass = added.reaction(body, frame, &before, &acceleration);
             }
         }

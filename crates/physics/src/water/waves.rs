@@ -86,7 +86,8 @@ impl Sea {
     /// The sea of `components` on water at level `level` [m] with depth `depth` [m] (`None`:
     /// deep). The components' wave numbers must satisfy the dispersion relation at that depth.
     pub fn new(components: Vec<WaveComponent>, level: f64, depth: Option<f64>) -> Self {
-        let harmonic = harmonic_layout(&components).map(|h| Harmonic { epsilon: depth.map_or(0.0, |d| (-2.0 * h.base * d).exp()), ..h });
+        let harmonic = harmonic_layout(&components)
+            .map(|h| Harmonic { epsilon: depth.map_or(0.0, |d| (-2.0 * h.base * d).exp()), ..h });
         Self { components, harmonic, level, depth }
     }
 
@@ -224,8 +225,19 @@ fn harmonic_layout(components: &[WaveComponent]) -> Option<Harmonic> {
         None => first.wave_number,
     };
     let m0 = (first.wave_number / base).round();
-    let on_grid = base > 0.0 && m0 >= 1.0 && m0 < 1e6 && components.iter().enumerate().all(|(i, c)| ((m0 + i as f64) * base - c.wave_number).abs() <= 1e-12 * c.wave_number);
-    on_grid.then(|| Harmonic { base: first.wave_number / m0, heading: [first.heading.cos(), first.heading.sin()], first: m0 as u32, epsilon: 0.0 })
+    let on_grid = base > 0.0
+        && m0 >= 1.0
+        && m0 < 1e6
+        && components
+            .iter()
+            .enumerate()
+            .all(|(i, c)| ((m0 + i as f64) * base - c.wave_number).abs() <= 1e-12 * c.wave_number);
+    on_grid.then(|| Harmonic {
+        base: first.wave_number / m0,
+        heading: [first.heading.cos(), first.heading.sin()],
+        first: m0 as u32,
+        epsilon: 0.0,
+    })
 }
 
 /// `Re Σ_i b_i z^{first + i}` over the components of `instant`, four chains of powers side by
@@ -316,7 +328,8 @@ mod tests {
     fn pressure_head_by_component_matches_the_closed_form() {
         for depth in [None, Some(20.0), Some(3.0)] {
             // Six components: one full vector and a part-filled one.
-            let components: Vec<_> = (0..6).map(|i| component(4.0 + f64::from(i), depth, 0.3 * f64::from(i), 1.1 * f64::from(i))).collect();
+            let components: Vec<_> =
+                (0..6).map(|i| component(4.0 + f64::from(i), depth, 0.3 * f64::from(i), 1.1 * f64::from(i))).collect();
             let sea = Sea::new(components.clone(), 0.0, depth);
             assert!(!sea.is_harmonic());
             let time = 1234.567;

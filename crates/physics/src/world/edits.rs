@@ -4,8 +4,8 @@
 //! velocities do not move), keeping the energy ledger, so the motion goes on under what changed;
 //! a refused edit leaves the world as it was.
 
-use super::error::{EditError, StepError, TimingError, WaterEditError};
 use super::World;
+use super::error::{EditError, StepError, TimingError, WaterEditError};
 use crate::body::BodyState;
 use crate::coupling::{Coupling, CouplingError};
 use crate::energy::Work;
@@ -36,14 +36,22 @@ impl World {
     /// or `index` is out of range; the world is then unchanged.
     pub fn replace_coupling(&mut self, index: usize, coupling: Coupling) -> Result<(), StepError> {
         if index >= self.system.couplings().len() {
-            return Err(StepError::Coupling { coupling: coupling.name, time: self.clock.time, source: CouplingError::NoSuchCoupling(index) });
+            return Err(StepError::Coupling {
+                coupling: coupling.name,
+                time: self.clock.time,
+                source: CouplingError::NoSuchCoupling(index),
+            });
         }
         let before = self.clone();
         let name = coupling.name.clone();
         self.states = self.synchronized_states();
         if self.system.replace_coupling(index, coupling).is_err() {
             *self = before;
-            return Err(StepError::Coupling { coupling: name, time: self.clock.time, source: CouplingError::NoSuchCoupling(index) });
+            return Err(StepError::Coupling {
+                coupling: name,
+                time: self.clock.time,
+                source: CouplingError::NoSuchCoupling(index),
+            });
         }
         self.evaluation.forget(index, &self.system.couplings()[index]);
         self.restart_after_edit(before)
@@ -108,7 +116,10 @@ impl World {
 
     /// Applies `edit` to the system and restarts the integrator from the synchronised state;
     /// on any error, the world as it was.
-    fn edit_water(&mut self, edit: impl FnOnce(&mut crate::system::System) -> Result<(), SystemError>) -> Result<(), WaterEditError> {
+    fn edit_water(
+        &mut self,
+        edit: impl FnOnce(&mut crate::system::System) -> Result<(), SystemError>,
+    ) -> Result<(), WaterEditError> {
         let before = self.clone();
         self.states = self.synchronized_states();
         if let Err(error) = edit(&mut self.system) {

@@ -48,7 +48,11 @@ impl Health {
     /// finite).
     pub fn drift(&self, energy: &EnergyReport) -> Option<Drift> {
         let start = &self.initial_energy;
-        let budget = start.kinetic.abs() + start.gravity.abs() + start.elastic.abs() + self.fall_energy + energy.external_work.abs();
+        let budget = start.kinetic.abs()
+            + start.gravity.abs()
+            + start.elastic.abs()
+            + self.fall_energy
+            + energy.external_work.abs();
         let drift = (energy.total() - energy.external_work - start.total()).abs();
         if drift <= DIVERGENCE_FACTOR * budget.max(f64::MIN_POSITIVE) { None } else { Some(Drift { drift, budget }) }
     }
@@ -63,7 +67,10 @@ impl Health {
             None => self.stopped(
                 system,
                 most_energetic_body(system, states),
-                format!("carries the most kinetic energy as the energy drifts by {:.3e} J (budget {:.3e} J)", drift.drift, drift.budget),
+                format!(
+                    "carries the most kinetic energy as the energy drifts by {:.3e} J (budget {:.3e} J)",
+                    drift.drift, drift.budget
+                ),
                 time,
                 step,
             ),
@@ -72,24 +79,38 @@ impl Health {
 
     /// An adaptive step that shrank to `shrunk` [s], below round-off of the time.
     pub fn stalled(&self, system: &System, states: &[BodyState], shrunk: f64, time: f64, step: f64) -> StepError {
-        let cause = format!("carries the most kinetic energy as the adaptive step shrinks to {shrunk:.3e} s (too stiff, or blown up)");
+        let cause = format!(
+            "carries the most kinetic energy as the adaptive step shrinks to {shrunk:.3e} s (too stiff, or blown up)"
+        );
         self.stopped(system, most_energetic_body(system, states), cause, time, step)
     }
 
     /// [`StepError::Diverged`] naming body `body` and the binding stable time step.
     fn stopped(&self, system: &System, body: usize, cause: String, time: f64, step: f64) -> StepError {
         let advice = match self.limit {
-            Some(limit) => format!("the stable time step is {:.3e} s, set by {} (step {step:.3e} s)", limit.dt, limit.describe(system)),
+            Some(limit) => format!(
+                "the stable time step is {:.3e} s, set by {} (step {step:.3e} s)",
+                limit.dt,
+                limit.describe(system)
+            ),
             None => format!("no coupling limits the time step (step {step:.3e} s)"),
         };
-        StepError::Diverged { time, body: system.bodies().get(body).map_or_else(String::new, |b| b.name.clone()), cause, advice }
+        StepError::Diverged {
+            time,
+            body: system.bodies().get(body).map_or_else(String::new, |b| b.name.clone()),
+            cause,
+            advice,
+        }
     }
 }
 
 /// The body that responds to forces with the most kinetic energy (0 if none does).
 fn most_energetic_body(system: &System, states: &[BodyState]) -> usize {
     let kinetic = |i: usize| system.bodies()[i].kinetic_energy(&states[i].velocity, &states[i].angular_velocity);
-    (0..system.bodies().len()).filter(|&i| !system.bodies()[i].is_kinematic()).max_by(|&a, &b| kinetic(a).total_cmp(&kinetic(b))).unwrap_or(0)
+    (0..system.bodies().len())
+        .filter(|&i| !system.bodies()[i].is_kinematic())
+        .max_by(|&a, &b| kinetic(a).total_cmp(&kinetic(b)))
+        .unwrap_or(0)
 }
 
 /// `Σ m |g| ℓ` [J], ℓ the diagonal of the box around the bodies' centres of mass and the

@@ -106,7 +106,10 @@ impl World {
         let h = self.step_size();
         self.scheme = Scheme::new(self.timing.integrator, self.timing.tolerances, h, self.system.bodies().len());
         let time = self.clock.time;
-        self.body_energy = self.scheme.start(&self.system, &mut self.states, &mut self.evaluation, time, h).map_err(|e| self.coupling_error(e))?;
+        self.body_energy = self
+            .scheme
+            .start(&self.system, &mut self.states, &mut self.evaluation, time, h)
+            .map_err(|e| self.coupling_error(e))?;
         Ok(())
     }
 
@@ -121,7 +124,10 @@ impl World {
             if self.timing.integrator.is_adaptive() {
                 self.adaptive_span(h)?;
             } else {
-                let report = self.scheme.step(&self.system, &mut self.states, &mut self.evaluation, self.clock.time, h).map_err(|e| self.failure(e))?;
+                let report = self
+                    .scheme
+                    .step(&self.system, &mut self.states, &mut self.evaluation, self.clock.time, h)
+                    .map_err(|e| self.failure(e))?;
                 self.clock.time += h;
                 self.book(&report);
                 self.check_health()?;
@@ -136,7 +142,10 @@ impl World {
     fn adaptive_span(&mut self, h: f64) -> Result<(), StepError> {
         let end = self.clock.time + h;
         loop {
-            let report = self.scheme.step(&self.system, &mut self.states, &mut self.evaluation, self.clock.time, end - self.clock.time).map_err(|e| self.failure(e))?;
+            let report = self
+                .scheme
+                .step(&self.system, &mut self.states, &mut self.evaluation, self.clock.time, end - self.clock.time)
+                .map_err(|e| self.failure(e))?;
             if !report.accepted {
                 self.clock.rejected_steps += 1;
                 continue;
@@ -161,7 +170,13 @@ impl World {
     fn check_health(&self) -> Result<(), StepError> {
         match self.health.drift(&self.energy()) {
             None => Ok(()),
-            Some(drift) => Err(self.health.diverged(&self.system, &self.synchronized_states(), drift, self.clock.time, self.step_size())),
+            Some(drift) => Err(self.health.diverged(
+                &self.system,
+                &self.synchronized_states(),
+                drift,
+                self.clock.time,
+                self.step_size(),
+            )),
         }
     }
 
@@ -169,12 +184,18 @@ impl World {
     fn failure(&self, failure: StepFailure) -> StepError {
         match failure {
             StepFailure::Evaluation(error) => self.coupling_error(error),
-            StepFailure::Stalled { step } => self.health.stalled(&self.system, &self.synchronized_states(), step, self.clock.time, self.step_size()),
+            StepFailure::Stalled { step } => {
+                self.health.stalled(&self.system, &self.synchronized_states(), step, self.clock.time, self.step_size())
+            }
         }
     }
 
     fn coupling_error(&self, error: EvaluationError) -> StepError {
-        StepError::Coupling { coupling: self.system.couplings()[error.coupling].name.clone(), time: self.clock.time, source: error.source }
+        StepError::Coupling {
+            coupling: self.system.couplings()[error.coupling].name.clone(),
+            time: self.clock.time,
+            source: error.source,
+        }
     }
 
     /// Integrator steps per world step that `Substeps::Auto` asks for at the current state:
@@ -186,7 +207,9 @@ impl World {
             return 1;
         }
         let limits = [self.limits(), self.impact_limits()].concat();
-        stability::binding(&limits).map_or(1, |limit| (self.timing.dt / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil().clamp(1.0, f64::from(MAX_AUTO_SUBSTEPS)) as u32)
+        stability::binding(&limits).map_or(1, |limit| {
+            (self.timing.dt / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil().clamp(1.0, f64::from(MAX_AUTO_SUBSTEPS)) as u32
+        })
     }
 
     // ----- what a world shows -----
@@ -313,7 +336,10 @@ impl World {
     /// Every finite stable time step of the integrator at the current state.
     pub fn limits(&self) -> Vec<Limit> {
         let states = self.synchronized_states();
-        stability::limits(&Situation { system: &self.system, evaluation: &self.evaluation, states: &states }, self.timing.integrator)
+        stability::limits(
+            &Situation { system: &self.system, evaluation: &self.evaluation, states: &states },
+            self.timing.integrator,
+        )
     }
 
     /// The step that resolves each contact's impact, `τ/10`, at the current state.

@@ -52,8 +52,16 @@ impl Track for Bodies {
         for (index, path) in self.paths.iter().enumerate() {
             let one_each = || std::iter::repeat_n(1, frames.len());
             let pose = vec![
-                column(rerun::Transform3D::descriptor_translation(), floats(of_entity(&self.translations, index, stride)), one_each()),
-                column(rerun::Transform3D::descriptor_quaternion(), floats(of_entity(&self.rotations, index, stride)), one_each()),
+                column(
+                    rerun::Transform3D::descriptor_translation(),
+                    floats(of_entity(&self.translations, index, stride)),
+                    one_each(),
+                ),
+                column(
+                    rerun::Transform3D::descriptor_quaternion(),
+                    floats(of_entity(&self.rotations, index, stride)),
+                    one_each(),
+                ),
             ];
             send_chunk(stream, path, frames.columns(), pose, sent)?;
         }
@@ -72,18 +80,33 @@ fn log_static_body(stream: &RecordingStream, body: &RigidBody) -> Result<(), Rec
         Shape::Mesh { .. } => (Vec3::zeros(), Rotation::identity()),
         Shape::Cylinder { center, axis, .. } => {
             // Rerun's cylinders lie along z: turn z onto the axis.
-            (*center, Rotation::rotation_between(&Vec3::z(), axis).unwrap_or_else(|| Rotation::from_axis_angle(&Vec3::x_axis(), std::f64::consts::PI)))
+            (
+                *center,
+                Rotation::rotation_between(&Vec3::z(), axis)
+                    .unwrap_or_else(|| Rotation::from_axis_angle(&Vec3::x_axis(), std::f64::consts::PI)),
+            )
         }
     };
     let placement = body.reference_in_principal * nalgebra::Isometry3::from_parts(center.into(), axis_rotation);
-    let transform = rerun::Transform3D::from_translation_rotation(f32x3(&placement.translation.vector), rerun::Quaternion::from_xyzw(xyzw(&placement.rotation)));
+    let transform = rerun::Transform3D::from_translation_rotation(
+        f32x3(&placement.translation.vector),
+        rerun::Quaternion::from_xyzw(xyzw(&placement.rotation)),
+    );
     let solid = rerun::components::FillMode::Solid;
     let [r, g, b] = SHAPE_RGB;
     let color = rerun::Color::from_rgb(r, g, b);
     let shape: Box<dyn rerun::AsComponents> = match &body.shape {
-        Shape::Box { size, .. } => Box::new(rerun::Boxes3D::from_half_sizes([f32x3(&(size * 0.5))]).with_colors([color]).with_fill_mode(solid)),
-        Shape::Sphere { radius, .. } => Box::new(rerun::Ellipsoids3D::from_radii([*radius as f32]).with_colors([color]).with_fill_mode(solid)),
-        Shape::Cylinder { radius, length, .. } => Box::new(rerun::Cylinders3D::from_lengths_and_radii([*length as f32], [*radius as f32]).with_colors([color]).with_fill_mode(solid)),
+        Shape::Box { size, .. } => {
+            Box::new(rerun::Boxes3D::from_half_sizes([f32x3(&(size * 0.5))]).with_colors([color]).with_fill_mode(solid))
+        }
+        Shape::Sphere { radius, .. } => {
+            Box::new(rerun::Ellipsoids3D::from_radii([*radius as f32]).with_colors([color]).with_fill_mode(solid))
+        }
+        Shape::Cylinder { radius, length, .. } => Box::new(
+            rerun::Cylinders3D::from_lengths_and_radii([*length as f32], [*radius as f32])
+                .with_colors([color])
+                .with_fill_mode(solid),
+        ),
         Shape::Mesh { vertices, triangles } => Box::new(
             rerun::Mesh3D::new(vertices.iter().map(f32x3))
                 .with_triangle_indices(triangles.iter().map(|&[a, b, c]| rerun::datatypes::UVec3D::new(a, b, c)))

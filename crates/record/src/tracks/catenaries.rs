@@ -51,7 +51,14 @@ impl Catenaries {
             .iter()
             .enumerate()
             .filter(|(_, coupling)| matches!(coupling.kind, CouplingKind::Catenary(_)))
-            .map(|(index, coupling)| Line { index, path: paths::coupling(coupling), points: Vec::new(), points_per_strip: Vec::new(), colors: Vec::new(), strips_per_frame: Vec::new() })
+            .map(|(index, coupling)| Line {
+                index,
+                path: paths::coupling(coupling),
+                points: Vec::new(),
+                points_per_strip: Vec::new(),
+                colors: Vec::new(),
+                strips_per_frame: Vec::new(),
+            })
             .collect();
         (!lines.is_empty()).then_some(Self { lines, end_tensions: Vec::new() })
     }
@@ -100,8 +107,16 @@ impl Track for Catenaries {
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
         for line in &mut self.lines {
             let shape = vec![
-                column(rerun::LineStrips3D::descriptor_strips(), strips(line.points.drain(..), line.points_per_strip.drain(..)), line.strips_per_frame.iter().copied()),
-                column(rerun::LineStrips3D::descriptor_colors(), colors(line.colors.drain(..)), line.strips_per_frame.iter().copied()),
+                column(
+                    rerun::LineStrips3D::descriptor_strips(),
+                    strips(line.points.drain(..), line.points_per_strip.drain(..)),
+                    line.strips_per_frame.iter().copied(),
+                ),
+                column(
+                    rerun::LineStrips3D::descriptor_colors(),
+                    colors(line.colors.drain(..)),
+                    line.strips_per_frame.iter().copied(),
+                ),
             ];
             send_chunk(stream, &line.path, frames.columns(), shape, sent)?;
             line.strips_per_frame.clear();

@@ -22,7 +22,13 @@ pub(super) struct ContactPlot {
 impl ContactPlot {
     /// The world's contacts (`None` when it has none).
     pub(super) fn new(world: &World) -> Option<Self> {
-        let contacts: Vec<usize> = world.couplings().iter().enumerate().filter(|(_, coupling)| matches!(coupling.kind, CouplingKind::Contact(_))).map(|(index, _)| index).collect();
+        let contacts: Vec<usize> = world
+            .couplings()
+            .iter()
+            .enumerate()
+            .filter(|(_, coupling)| matches!(coupling.kind, CouplingKind::Contact(_)))
+            .map(|(index, _)| index)
+            .collect();
         (!contacts.is_empty()).then_some(Self { contacts, forces: Vec::new() })
     }
 }
@@ -47,6 +53,12 @@ impl Track for ContactPlot {
 
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
         let series = 2 * self.contacts.len();
-        send_chunk(stream, paths::CONTACT_PLOT, frames.columns(), vec![plot(std::mem::take(&mut self.forces), series)], sent)
+        send_chunk(
+            stream,
+            paths::CONTACT_PLOT,
+            frames.columns(),
+            vec![plot(std::mem::take(&mut self.forces), series)],
+            sent,
+        )
     }
 }

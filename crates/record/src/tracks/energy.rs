@@ -26,7 +26,15 @@ impl Track for EnergyPlot {
 
     fn capture(&mut self, world: &World, _frame: usize, _settings: &Settings) -> usize {
         let energy = world.energy();
-        self.energies.extend([energy.kinetic, energy.gravity, energy.elastic, energy.dissipated, energy.external_work, energy.total(), energy.balance()]);
+        self.energies.extend([
+            energy.kinetic,
+            energy.gravity,
+            energy.elastic,
+            energy.dissipated,
+            energy.external_work,
+            energy.total(),
+            energy.balance(),
+        ]);
         SERIES.len() * 8
     }
 

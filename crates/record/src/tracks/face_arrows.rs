@@ -65,14 +65,24 @@ impl FaceArrows {
             ArrowedContacts::None => vec![false; couplings.len()],
             ArrowedContacts::All => couplings.iter().map(|c| is_contact(&c.kind)).collect(),
             ArrowedContacts::Named(names) => {
-                if let Some(unknown) = names.iter().find(|name| !couplings.iter().any(|c| &c.name == *name && is_contact(&c.kind))) {
-                    let known: Vec<&str> = couplings.iter().filter(|c| is_contact(&c.kind)).map(|c| c.name.as_str()).collect();
-                    return Err(RecordError::UnknownContact { name: unknown.clone(), known: if known.is_empty() { "none".into() } else { known.join(", ") } });
+                if let Some(unknown) =
+                    names.iter().find(|name| !couplings.iter().any(|c| &c.name == *name && is_contact(&c.kind)))
+                {
+                    let known: Vec<&str> =
+                        couplings.iter().filter(|c| is_contact(&c.kind)).map(|c| c.name.as_str()).collect();
+                    return Err(RecordError::UnknownContact {
+                        name: unknown.clone(),
+                        known: if known.is_empty() { "none".into() } else { known.join(", ") },
+                    });
                 }
                 couplings.iter().map(|c| names.contains(&c.name) && is_contact(&c.kind)).collect()
             }
         };
-        Ok(DrawnFaces { contacts, from: self.from.unwrap_or(f64::NEG_INFINITY), until: self.until.unwrap_or(f64::INFINITY) })
+        Ok(DrawnFaces {
+            contacts,
+            from: self.from.unwrap_or(f64::NEG_INFINITY),
+            until: self.until.unwrap_or(f64::INFINITY),
+        })
     }
 }
 
@@ -122,7 +132,16 @@ impl FaceArrowTrack {
             .iter()
             .enumerate()
             .filter(|(_, coupling)| matches!(coupling.kind, CouplingKind::Contact(_)))
-            .map(|(index, coupling)| ContactArrows { index, path: paths::coupling(coupling), frames: Vec::new(), counts: Vec::new(), origins: Vec::new(), vectors: Vec::new(), showing: false, coloured: false })
+            .map(|(index, coupling)| ContactArrows {
+                index,
+                path: paths::coupling(coupling),
+                frames: Vec::new(),
+                counts: Vec::new(),
+                origins: Vec::new(),
+                vectors: Vec::new(),
+                showing: false,
+                coloured: false,
+            })
             .collect();
         (!contacts.is_empty()).then_some(Self { contacts })
     }
@@ -141,7 +160,9 @@ impl Track for FaceArrowTrack {
                 continue;
             }
             let count = match (&world.couplings()[arrows.index].kind, drawn) {
-                (CouplingKind::Contact(contact), true) => face_arrows(world, contact, &mut arrows.origins, &mut arrows.vectors),
+                (CouplingKind::Contact(contact), true) => {
+                    face_arrows(world, contact, &mut arrows.origins, &mut arrows.vectors)
+                }
                 _ => 0,
             };
             arrows.frames.push(frame);
@@ -156,12 +177,23 @@ impl Track for FaceArrowTrack {
         for arrows in self.contacts.iter_mut().filter(|arrows| !arrows.frames.is_empty()) {
             if !arrows.coloured {
                 let [r, g, b] = ARROW_RGB;
-                stream.log_static(arrows.path.as_str(), &rerun::Arrows3D::update_fields().with_colors([rerun::Color::from_rgb(r, g, b)]))?;
+                stream.log_static(
+                    arrows.path.as_str(),
+                    &rerun::Arrows3D::update_fields().with_colors([rerun::Color::from_rgb(r, g, b)]),
+                )?;
                 arrows.coloured = true;
             }
             let drawn = vec![
-                column(rerun::Arrows3D::descriptor_vectors(), floats(arrows.vectors.drain(..)), arrows.counts.iter().copied()),
-                column(rerun::Arrows3D::descriptor_origins(), floats(arrows.origins.drain(..)), arrows.counts.iter().copied()),
+                column(
+                    rerun::Arrows3D::descriptor_vectors(),
+                    floats(arrows.vectors.drain(..)),
+                    arrows.counts.iter().copied(),
+                ),
+                column(
+                    rerun::Arrows3D::descriptor_origins(),
+                    floats(arrows.origins.drain(..)),
+                    arrows.counts.iter().copied(),
+                ),
             ];
             let times = frames.columns_of(arrows.frames.iter().copied());
             send_chunk(stream, &arrows.path, times, drawn, sent)?;
@@ -177,7 +209,11 @@ impl Track for FaceArrowTrack {
 fn face_arrows(world: &World, contact: &Contact, origins: &mut Vec<[f32; 3]>, vectors: &mut Vec<[f32; 3]>) -> usize {
     let body = &world.bodies()[contact.body];
     let weight = body.mass() * world.gravity().norm().max(1.0);
-    let faces: Vec<_> = contact.active_faces(world.frames()).into_iter().filter(|face| face.force.norm() > ARROW_THRESHOLD * weight).collect();
+    let faces: Vec<_> = contact
+        .active_faces(world.frames())
+        .into_iter()
+        .filter(|face| face.force.norm() > ARROW_THRESHOLD * weight)
+        .collect();
     let largest = faces.iter().map(|face| face.force.norm()).fold(0.0, f64::max);
     let scale = contact.boundary.bounding_radius() / largest.max(f64::MIN_POSITIVE);
     let frame = &world.frames()[contact.body];

@@ -18,8 +18,8 @@
 mod bodies;
 mod catenaries;
 mod contacts;
-pub mod face_arrows;
 mod energy;
+pub mod face_arrows;
 mod seabed;
 mod springs;
 mod tension;
@@ -62,7 +62,9 @@ pub(crate) trait Track {
 /// has.
 pub(crate) fn for_world(world: &World) -> Vec<(Box<dyn Track>, KindStats)> {
     let mut tracks = Vec::new();
-    let mut add = |kind: &'static str, entities: usize, track: Box<dyn Track>| tracks.push((track, KindStats { kind, entities, ..KindStats::default() }));
+    let mut add = |kind: &'static str, entities: usize, track: Box<dyn Track>| {
+        tracks.push((track, KindStats { kind, entities, ..KindStats::default() }))
+    };
     add("bodies", world.bodies().len(), Box::new(bodies::Bodies::new(world)));
     if let Some(springs) = springs::Springs::new(world) {
         add("springs", 1, Box::new(springs));
@@ -91,9 +93,24 @@ pub(crate) fn for_world(world: &World) -> Vec<(Box<dyn Track>, KindStats)> {
 
 /// Sends `columns` to entity `path` at the instants `times` (a row each) as one chunk, and adds
 /// its rows and Arrow bytes to `sent`.
-pub(crate) fn send_chunk(stream: &RecordingStream, path: &str, times: [TimeColumn; 2], columns: Vec<SerializedComponentColumn>, sent: &mut KindStats) -> Result<(), RecordError> {
+pub(crate) fn send_chunk(
+    stream: &RecordingStream,
+    path: &str,
+    times: [TimeColumn; 2],
+    columns: Vec<SerializedComponentColumn>,
+    sent: &mut KindStats,
+) -> Result<(), RecordError> {
     let rows = times[0].num_rows() as u64;
-    let data: usize = columns.iter().map(|column| column.list_array.to_data().get_slice_memory_size().unwrap_or_else(|_| column.list_array.get_array_memory_size())).sum();
+    let data: usize = columns
+        .iter()
+        .map(|column| {
+            column
+                .list_array
+                .to_data()
+                .get_slice_memory_size()
+                .unwrap_or_else(|_| column.list_array.get_array_memory_size())
+        })
+        .sum();
     sent.rows += rows;
     sent.bytes += data as u64 + rows * ROW_INDEX_BYTES;
     crate::columns::send(stream, path, times, columns)

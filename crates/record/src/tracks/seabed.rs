@@ -81,9 +81,13 @@ impl Track for SeabedTrack {
             log_plane(stream, world, seabed.elevation)?;
         }
         let [r, g, b] = SAND_RGB;
-        let sand = rerun::LineStrips3D::update_fields().with_colors([rerun::Color::from_rgb(r, g, b)]).with_radii([rerun::Radius::new_ui_points(5.0)]);
+        let sand = rerun::LineStrips3D::update_fields()
+            .with_colors([rerun::Color::from_rgb(r, g, b)])
+            .with_radii([rerun::Radius::new_ui_points(5.0)]);
         let [r, g, b] = TOUCHDOWN_RGB;
-        let marks = rerun::Points3D::update_fields().with_colors([rerun::Color::from_rgb(r, g, b)]).with_radii([rerun::Radius::new_ui_points(7.0)]);
+        let marks = rerun::Points3D::update_fields()
+            .with_colors([rerun::Color::from_rgb(r, g, b)])
+            .with_radii([rerun::Radius::new_ui_points(7.0)]);
         for line in &self.lines {
             stream.log_static(line.grounded_path.as_str(), &sand)?;
             stream.log_static(line.touchdowns_path.as_str(), &marks)?;
@@ -115,9 +119,14 @@ impl Track for SeabedTrack {
         for line in &mut self.lines {
             let segments = line.grounded.len();
             let grounded = strips(line.grounded.drain(..).flatten(), std::iter::repeat_n(2, segments));
-            let grounded = column(rerun::LineStrips3D::descriptor_strips(), grounded, line.grounded_per_frame.iter().copied());
+            let grounded =
+                column(rerun::LineStrips3D::descriptor_strips(), grounded, line.grounded_per_frame.iter().copied());
             send_chunk(stream, &line.grounded_path, frames.columns(), vec![grounded], sent)?;
-            let touchdowns = column(rerun::Points3D::descriptor_positions(), floats(line.touchdowns.drain(..)), line.touchdowns_per_frame.iter().copied());
+            let touchdowns = column(
+                rerun::Points3D::descriptor_positions(),
+                floats(line.touchdowns.drain(..)),
+                line.touchdowns_per_frame.iter().copied(),
+            );
             send_chunk(stream, &line.touchdowns_path, frames.columns(), vec![touchdowns], sent)?;
             line.grounded_per_frame.clear();
             line.touchdowns_per_frame.clear();
@@ -153,14 +162,25 @@ fn grounded_part(state: &LineState, touchdowns: &[Vec3]) -> Option<[Vec3; 2]> {
 
 /// A square of the bottom under every coupling end and body, 20 % wider (at least 20 m).
 fn log_plane(stream: &RecordingStream, world: &World, elevation: f64) -> Result<(), RecordError> {
-    let points = world.coupling_forces().iter().flat_map(|f| [f.point1, f.point2]).chain((0..world.bodies().len()).map(|i| world.state(i).position));
+    let points = world
+        .coupling_forces()
+        .iter()
+        .flat_map(|f| [f.point1, f.point2])
+        .chain((0..world.bodies().len()).map(|i| world.state(i).position));
     let (low, high) = tether_physics::math::bounding_box(points);
-    let (center, half) = if low.x.is_finite() { ([(low.x + high.x) / 2.0, (low.y + high.y) / 2.0], (0.6 * (high.x - low.x).max(high.y - low.y)).max(10.0)) } else { ([0.0, 0.0], 10.0) };
-    let corners = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]].map(|[a, b]| [(center[0] + a * half) as f32, (center[1] + b * half) as f32, elevation as f32]);
+    let (center, half) = if low.x.is_finite() {
+        ([(low.x + high.x) / 2.0, (low.y + high.y) / 2.0], (0.6 * (high.x - low.x).max(high.y - low.y)).max(10.0))
+    } else {
+        ([0.0, 0.0], 10.0)
+    };
+    let corners = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]]
+        .map(|[a, b]| [(center[0] + a * half) as f32, (center[1] + b * half) as f32, elevation as f32]);
     let [r, g, b] = PLANE_RGB;
     stream.log_static(
         paths::SEABED_PLANE,
-        &rerun::Mesh3D::new(corners).with_triangle_indices([rerun::datatypes::UVec3D::new(0, 1, 2), rerun::datatypes::UVec3D::new(0, 2, 3)]).with_albedo_factor(rerun::datatypes::Rgba32::from_rgb(r, g, b)),
+        &rerun::Mesh3D::new(corners)
+            .with_triangle_indices([rerun::datatypes::UVec3D::new(0, 1, 2), rerun::datatypes::UVec3D::new(0, 2, 3)])
+            .with_albedo_factor(rerun::datatypes::Rgba32::from_rgb(r, g, b)),
     )?;
     Ok(())
 }

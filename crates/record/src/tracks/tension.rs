@@ -25,7 +25,10 @@ impl TensionPlot {
 
 impl Track for TensionPlot {
     fn log_static(&self, stream: &RecordingStream, world: &World) -> Result<(), RecordError> {
-        stream.log_static(paths::TENSION, &rerun::SeriesLines::new().with_names(world.couplings().iter().map(|c| c.name.as_str())))?;
+        stream.log_static(
+            paths::TENSION,
+            &rerun::SeriesLines::new().with_names(world.couplings().iter().map(|c| c.name.as_str())),
+        )?;
         Ok(())
     }
 
@@ -35,6 +38,12 @@ impl Track for TensionPlot {
     }
 
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
-        send_chunk(stream, paths::TENSION, frames.columns(), vec![plot(std::mem::take(&mut self.tensions), self.couplings)], sent)
+        send_chunk(
+            stream,
+            paths::TENSION,
+            frames.columns(),
+            vec![plot(std::mem::take(&mut self.tensions), self.couplings)],
+            sent,
+        )
     }
 }

@@ -122,7 +122,13 @@ impl WaterTrack {
     /// Buffers the surface at `frame` (simulated time `time`) if it moved and
     /// [`SURFACE_PERIOD`] has passed since the last row (`elevation`: the waves' at `(x, y)`
     /// [m]); returns the bytes.
-    fn capture_surface(&mut self, level: f64, calm: bool, (time, frame): (f64, usize), elevation: impl Fn(f64, f64) -> f64) -> usize {
+    fn capture_surface(
+        &mut self,
+        level: f64,
+        calm: bool,
+        (time, frame): (f64, usize),
+        elevation: impl Fn(f64, f64) -> f64,
+    ) -> usize {
         let unchanged = if calm { self.calm_level == Some(level) } else { time - self.surface_time < SURFACE_PERIOD };
         if unchanged {
             return 0;
@@ -149,17 +155,31 @@ impl Track for WaterTrack {
         )?;
         if let Some(seabed) = world.system().water().and_then(|stage| stage.water.seabed()) {
             let [r, g, b] = SEABED_RGB;
-            let corners = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]].map(|[a, b]| [(self.center[0] + a * self.half) as f32, (self.center[1] + b * self.half) as f32, seabed as f32]);
+            let corners = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]].map(|[a, b]| {
+                [(self.center[0] + a * self.half) as f32, (self.center[1] + b * self.half) as f32, seabed as f32]
+            });
             stream.log_static(
                 paths::SEABED,
-                &rerun::Mesh3D::new(corners).with_triangle_indices([rerun::datatypes::UVec3D::new(0, 1, 2), rerun::datatypes::UVec3D::new(0, 2, 3)]).with_albedo_factor(rerun::datatypes::Rgba32::from_rgb(r, g, b)),
+                &rerun::Mesh3D::new(corners)
+                    .with_triangle_indices([
+                        rerun::datatypes::UVec3D::new(0, 1, 2),
+                        rerun::datatypes::UVec3D::new(0, 2, 3),
+                    ])
+                    .with_albedo_factor(rerun::datatypes::Rgba32::from_rgb(r, g, b)),
             )?;
         }
         let [r, g, b] = ARROW_RGB;
         for floating in &self.floating {
-            stream.log_static(floating.force_path.as_str(), &rerun::Arrows3D::update_fields().with_colors([rerun::Color::from_rgb(r, g, b)]))?;
-            stream.log_static(floating.motion_path.as_str(), &rerun::SeriesLines::new().with_names(["elevation", "heave"]))?;
-            stream.log_static(floating.angles_path.as_str(), &rerun::SeriesLines::new().with_names(["roll", "pitch"]))?;
+            stream.log_static(
+                floating.force_path.as_str(),
+                &rerun::Arrows3D::update_fields().with_colors([rerun::Color::from_rgb(r, g, b)]),
+            )?;
+            stream.log_static(
+                floating.motion_path.as_str(),
+                &rerun::SeriesLines::new().with_names(["elevation", "heave"]),
+            )?;
+            stream
+                .log_static(floating.angles_path.as_str(), &rerun::SeriesLines::new().with_names(["roll", "pitch"]))?;
         }
         Ok(())
     }
@@ -175,14 +195,19 @@ impl Track for WaterTrack {
             water.sea().instant(time, &mut sea);
         }
         let ramp = water.ramp(time);
-        let elevation = |x: f64, y: f64| if calm { 0.0 } else { ramp * water.sea().pressure_head(&sea, x, y, water.level()) };
+        let elevation =
+            |x: f64, y: f64| if calm { 0.0 } else { ramp * water.sea().pressure_head(&sea, x, y, water.level()) };
         let mut bytes = self.capture_surface(water.level(), calm, (time, frame), elevation);
         for (floating, stage_body) in self.floating.iter().zip(&stage.floating) {
             let body = &world.bodies()[floating.body];
             let state = world.state(floating.body);
             let weight = body.mass() * world.gravity().norm().max(1.0);
             // A body the stage has no record of (none evaluated yet) bears no water force.
-            let force = world.water_forces().iter().find(|r| r.body == floating.body).map_or_else(Vec3::zeros, |r| r.total().force);
+            let force = world
+                .water_forces()
+                .iter()
+                .find(|r| r.body == floating.body)
+                .map_or_else(Vec3::zeros, |r| r.total().force);
             self.arrows.push((f32x3(&state.position), f32x3(&(force * (stage_body.hull.bounding_radius() / weight)))));
             self.motion.push([elevation(state.position.x, state.position.y), state.position.z - floating.start_height]);
             let (roll, pitch, _) = (state.orientation * floating.start_turn.inverse()).euler_angles();
@@ -195,7 +220,11 @@ impl Track for WaterTrack {
 
     fn send(&mut self, stream: &RecordingStream, frames: &Frames, sent: &mut KindStats) -> Result<(), RecordError> {
         if !self.surface_frames.is_empty() {
-            let surface = column(rerun::Mesh3D::descriptor_vertex_positions(), floats(self.surface.drain(..)), std::iter::repeat_n(GRID * GRID, self.surface_frames.len()));
+            let surface = column(
+                rerun::Mesh3D::descriptor_vertex_positions(),
+                floats(self.surface.drain(..)),
+                std::iter::repeat_n(GRID * GRID, self.surface_frames.len()),
+            );
             let times = frames.columns_of(self.surface_frames.iter().copied());
             send_chunk(stream, paths::WATER_SURFACE, times, vec![surface], sent)?;
             self.surface_frames.clear();
@@ -206,12 +235,22 @@ impl Track for WaterTrack {
             let arrows = of_entity(&self.arrows, index, bodies);
             let one_each = || std::iter::repeat_n(1, rows);
             let force = vec![
-                column(rerun::Arrows3D::descriptor_vectors(), floats(arrows.clone().map(|(_, vector)| vector)), one_each()),
+                column(
+                    rerun::Arrows3D::descriptor_vectors(),
+                    floats(arrows.clone().map(|(_, vector)| vector)),
+                    one_each(),
+                ),
                 column(rerun::Arrows3D::descriptor_origins(), floats(arrows.map(|(origin, _)| origin)), one_each()),
             ];
             send_chunk(stream, &floating.force_path, frames.columns(), force, sent)?;
             for (path, values) in [(&floating.motion_path, &self.motion), (&floating.angles_path, &self.angles)] {
-                send_chunk(stream, path, frames.columns(), vec![plot(of_entity(values, index, bodies).flatten().collect(), 2)], sent)?;
+                send_chunk(
+                    stream,
+                    path,
+                    frames.columns(),
+                    vec![plot(of_entity(values, index, bodies).flatten().collect(), 2)],
+                    sent,
+                )?;
             }
         }
         self.arrows.clear();
@@ -224,17 +263,27 @@ impl Track for WaterTrack {
 /// The square the surface covers: centred on the floating bodies at t = 0, wide enough for them
 /// and their couplings' ends and for two of the longest waves (at least 20 m across).
 fn square(world: &World, stage: &WaterStage) -> ([f64; 2], f64) {
-    let points: Vec<Vec3> = stage.floating.iter().map(|f| world.state(f.body).position).chain(world.coupling_forces().iter().flat_map(|f| [f.point1, f.point2])).collect();
+    let points: Vec<Vec3> = stage
+        .floating
+        .iter()
+        .map(|f| world.state(f.body).position)
+        .chain(world.coupling_forces().iter().flat_map(|f| [f.point1, f.point2]))
+        .collect();
     let (low, high) = tether_physics::math::bounding_box(points.iter().copied());
     let center = if low.x.is_finite() { [(low.x + high.x) / 2.0, (low.y + high.y) / 2.0] } else { [0.0, 0.0] };
     let extent = if low.x.is_finite() { 0.5 * (high.x - low.x).max(high.y - low.y) } else { 0.0 };
     let reach = stage.floating.iter().map(|f| f.hull.bounding_radius()).fold(0.0, f64::max);
-    let longest = stage.water.sea().components().iter().map(|c| std::f64::consts::TAU / c.wave_number).fold(0.0, f64::max);
+    let longest =
+        stage.water.sea().components().iter().map(|c| std::f64::consts::TAU / c.wave_number).fold(0.0, f64::max);
     (center, (extent + 3.0 * reach).max(longest).max(10.0))
 }
 
 /// Two triangles per grid square, counter-clockwise seen from above.
 fn grid_triangles() -> impl Iterator<Item = [u32; 3]> {
     let index = |i: usize, j: usize| (j * GRID + i) as u32;
-    (0..GRID - 1).flat_map(move |j| (0..GRID - 1).flat_map(move |i| [[index(i, j), index(i + 1, j), index(i + 1, j + 1)], [index(i, j), index(i + 1, j + 1), index(i, j + 1)]]))
+    (0..GRID - 1).flat_map(move |j| {
+        (0..GRID - 1).flat_map(move |i| {
+            [[index(i, j), index(i + 1, j), index(i + 1, j + 1)], [index(i, j), index(i + 1, j + 1), index(i, j + 1)]]
+        })
+    })
 }

@@ -6,8 +6,8 @@ use crate::file::SceneFile;
 use crate::source::ItemKind;
 use crate::water::WaterDef;
 use tether_physics::body::RigidBody;
-use tether_physics::system::{System, SystemError};
 use tether_physics::math::Vec3;
+use tether_physics::system::{System, SystemError};
 use tether_physics::water::morison::HydroSpec;
 use tether_physics::water::stage::FloatingError;
 use tether_physics::water::{Hull, Hydro, Water, WaterSpec};
@@ -15,7 +15,12 @@ use tether_physics::water::{Hull, Hydro, Water, WaterSpec};
 /// `system` with the water of `file` and its bodies that declare `hydro` in it (unchanged
 /// without water); warns of a body under the surface that declares no `hydro`, and of `hydro`
 /// without water.
-pub fn add_water(system: System, file: &SceneFile, bodies: &[RigidBody], warnings: &mut Vec<String>) -> Result<System, Problem> {
+pub fn add_water(
+    system: System,
+    file: &SceneFile,
+    bodies: &[RigidBody],
+    warnings: &mut Vec<String>,
+) -> Result<System, Problem> {
     let Some(def) = &file.water else {
         for body in file.bodies.iter().filter(|b| b.hydro.is_some()) {
             warnings.push(format!("body \"{}\" declares hydro but the scene has no water: it feels none", body.name));
@@ -25,10 +30,14 @@ pub fn add_water(system: System, file: &SceneFile, bodies: &[RigidBody], warning
     let spec = def.spec();
     for (body_def, body) in file.bodies.iter().zip(bodies) {
         if body_def.hydro.is_none() && body.mass_properties.center_of_mass.z < def.level {
-            warnings.push(format!("body \"{}\" starts under the water surface but declares no hydro: the water does not act on it", body_def.name));
+            warnings.push(format!(
+                "body \"{}\" starts under the water surface but declares no hydro: the water does not act on it",
+                body_def.name
+            ));
         }
     }
-    let floating: Vec<_> = file.bodies.iter().enumerate().filter_map(|(index, b)| b.hydro.as_ref().map(|h| (index, h.spec()))).collect();
+    let floating: Vec<_> =
+        file.bodies.iter().enumerate().filter_map(|(index, b)| b.hydro.as_ref().map(|h| (index, h.spec()))).collect();
     system.with_water(spec, floating).map_err(placed)
 }
 
@@ -37,7 +46,11 @@ fn placed(error: SystemError) -> Problem {
     match error {
         SystemError::Water(water) => {
             let field = WaterDef::field_of(&water);
-            let place = if field == "water" { Place::Top("water") } else { Place::Section { section: "water", field: Some(field), literal: None } };
+            let place = if field == "water" {
+                Place::Top("water")
+            } else {
+                Place::Section { section: "water", field: Some(field), literal: None }
+            };
             Problem { place, message: format!("water: {water}") }
         }
         SystemError::Hydro { body, source } => {
@@ -47,10 +60,13 @@ fn placed(error: SystemError) -> Problem {
                 FloatingError::Hull(_) => "shape",
                 FloatingError::Hydro(_) => "hydro",
             };
-            at.at_field(field, match source {
-                FloatingError::Hull(e) => format!("its shape as a hull in water: {e}"),
-                FloatingError::Hydro(e) => format!("hydro: {e}"),
-            })
+            at.at_field(
+                field,
+                match source {
+                    FloatingError::Hull(e) => format!("its shape as a hull in water: {e}"),
+                    FloatingError::Hydro(e) => format!("hydro: {e}"),
+                },
+            )
         }
         other => Problem { place: Place::Top("water"), message: other.to_string() },
     }
@@ -59,7 +75,9 @@ fn placed(error: SystemError) -> Problem {
 /// The water of `file`, checked as loading checks it (live tuning checks an edited water this
 /// way before it reaches a running world).
 pub fn water_spec(file: &SceneFile) -> Result<WaterSpec, Problem> {
-    let Some(def) = &file.water else { return Err(Problem { place: Place::Top("water"), message: "the scene has no water".into() }) };
+    let Some(def) = &file.water else {
+        return Err(Problem { place: Place::Top("water"), message: "the scene has no water".into() });
+    };
     let spec = def.spec();
     let gravity = Vec3::new(file.gravity[0], file.gravity[1], file.gravity[2]);
     Water::new(spec, &gravity).map_err(|error| placed(SystemError::Water(error)))?;
@@ -72,9 +90,13 @@ pub fn hydro_spec(file: &SceneFile, index: usize, bodies: &Bodies) -> Result<Hyd
     let (Some(def), Some(body)) = (file.bodies.get(index), bodies.bodies().get(index)) else {
         return Err(Problem { place: Place::Top("bodies"), message: format!("the scene has no body {index}") });
     };
-    let Some(hydro) = &def.hydro else { return Err(ItemAt::new(ItemKind::Body, &def.name, 0).at_name("declares no hydro".into())) };
+    let Some(hydro) = &def.hydro else {
+        return Err(ItemAt::new(ItemKind::Body, &def.name, 0).at_name("declares no hydro".into()));
+    };
     let spec = hydro.spec();
-    let hull = Hull::of_body(body).map_err(|e| placed(SystemError::Hydro { body: def.name.clone(), source: FloatingError::Hull(e) }))?;
-    Hydro::new(spec, body, &hull).map_err(|e| placed(SystemError::Hydro { body: def.name.clone(), source: FloatingError::Hydro(e) }))?;
+    let hull = Hull::of_body(body)
+        .map_err(|e| placed(SystemError::Hydro { body: def.name.clone(), source: FloatingError::Hull(e) }))?;
+    Hydro::new(spec, body, &hull)
+        .map_err(|e| placed(SystemError::Hydro { body: def.name.clone(), source: FloatingError::Hydro(e) }))?;
     Ok(spec)
 }

@@ -13,10 +13,10 @@ mod recording;
 mod runner;
 pub mod status;
 
+use super::stream::Sinks;
 pub use protocol::{Command, OffsetCurve, Report, Run, Speed};
 pub use runner::TICK;
 pub use status::{BodyStatus, ContactStatus, Status};
-use super::stream::Sinks;
 use std::sync::Arc;
 use std::sync::mpsc::{self, Receiver, Sender};
 use std::thread::JoinHandle;
@@ -39,7 +39,9 @@ impl Simulation {
     pub fn spawn(sinks: Sinks, wake: Wake) -> std::io::Result<Self> {
         let (commands, inbox) = mpsc::channel();
         let (outbox, reports) = mpsc::channel();
-        let thread = std::thread::Builder::new().name("simulation".into()).spawn(move || runner::run(sinks, outbox, wake, &inbox))?;
+        let thread = std::thread::Builder::new()
+            .name("simulation".into())
+            .spawn(move || runner::run(sinks, outbox, wake, &inbox))?;
         Ok(Self { commands: Some(commands), reports, thread: Some(thread) })
     }
 
@@ -80,4 +82,3 @@ impl Drop for Simulation {
         self.stop();
     }
 }
-

@@ -39,13 +39,20 @@ pub enum Command {
     SetTiming(Timing),
     /// Coupling `index` replaced by `coupling` (already checked by the scene builder) without a
     /// restart; `sent` dates the request, to measure how long it took to apply.
-    SetCoupling { index: usize, coupling: Coupling, sent: Instant },
+    SetCoupling {
+        index: usize,
+        coupling: Coupling,
+        sent: Instant,
+    },
     /// Draw every contact's face forces as arrows in the recording (or not), from now on.
     SetFaceArrows(bool),
     /// The water replaced by `spec` (checked by the scene builder), without a restart.
     SetWater(WaterSpec),
     /// Body `body`'s coefficients in the water replaced by `spec` (checked), without a restart.
-    SetHydro { body: usize, spec: HydroSpec },
+    SetHydro {
+        body: usize,
+        spec: HydroSpec,
+    },
     /// The seabed's line friction `C_B` set to this (checked), without a restart.
     SetSeabedFriction(f64),
     /// Every free body placed at the static equilibrium found from where the bodies are, at
@@ -53,7 +60,12 @@ pub enum Command {
     Equilibrium,
     /// The offset curve of body `body` in `direction`, `steps` offsets up to `to` [m or rad]
     /// from its static equilibrium (`tether offsets`); the world is not changed.
-    OffsetCurve { body: usize, direction: Direction, to: f64, steps: u32 },
+    OffsetCurve {
+        body: usize,
+        direction: Direction,
+        to: f64,
+        steps: u32,
+    },
     /// A new scene, paused at t = 0.
     Load(Box<Run>),
     /// A copy of the running world, for inspection (tests, tools).
@@ -80,4 +92,3 @@ pub struct OffsetCurve {
     /// `(offset [m or rad], restoring force [N or N·m])`, from the equilibrium outward.
     pub points: Vec<(f64, f64)>,
 }
-

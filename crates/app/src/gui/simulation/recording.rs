@@ -41,7 +41,14 @@ pub(super) struct Recording {
 
 impl Recording {
     pub(super) fn new(sinks: Sinks) -> Self {
-        Self { sinks, recorder: None, last_logged: f64::NEG_INFINITY, period: 1.0 / LOG_HZ, face_arrows: false, last_flush: Instant::now() }
+        Self {
+            sinks,
+            recorder: None,
+            last_logged: f64::NEG_INFINITY,
+            period: 1.0 / LOG_HZ,
+            face_arrows: false,
+            last_flush: Instant::now(),
+        }
     }
 
     /// Ends the current recording and starts one for the run `label` of `world`, with the
@@ -60,7 +67,9 @@ impl Recording {
         self.face_arrows = on;
         let arrows = self.arrows();
         match (&mut self.recorder, world) {
-            (Some(recorder), Some(world)) => recorder.set_face_arrows(world, &arrows).map_err(|e| format!("recording: {e}")),
+            (Some(recorder), Some(world)) => {
+                recorder.set_face_arrows(world, &arrows).map_err(|e| format!("recording: {e}"))
+            }
             _ => Ok(()),
         }
     }

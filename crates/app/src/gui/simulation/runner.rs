@@ -78,7 +78,9 @@ impl Runner {
             // Running: wait out the tick (not at all as fast as possible); paused: sleep until told.
             let first = match (self.running, self.speed) {
                 (true, Speed::Max) => inbox.try_recv().map_err(|e| e == TryRecvError::Disconnected),
-                (true, Speed::Factor(_)) => inbox.recv_timeout(TICK.saturating_sub(self.last_advance.elapsed())).map_err(|e| e == RecvTimeoutError::Disconnected),
+                (true, Speed::Factor(_)) => inbox
+                    .recv_timeout(TICK.saturating_sub(self.last_advance.elapsed()))
+                    .map_err(|e| e == RecvTimeoutError::Disconnected),
                 (false, _) => inbox.recv().map_err(|_| true),
             };
             match first {
@@ -117,10 +119,14 @@ impl Runner {
             Command::SetCoupling { index, coupling, sent } => self.set_coupling(index, coupling, sent),
             Command::SetFaceArrows(on) => self.set_face_arrows(on),
             Command::SetWater(spec) => self.edit_water("the water", |world| world.replace_water(spec)),
-            Command::SetHydro { body, spec } => self.edit_water("the body's coefficients in the water", |world| world.replace_hydro(body, spec)),
+            Command::SetHydro { body, spec } => {
+                self.edit_water("the body's coefficients in the water", |world| world.replace_hydro(body, spec))
+            }
             Command::SetSeabedFriction(friction) => self.set_seabed_friction(friction),
             Command::Equilibrium => self.equilibrium(),
-            Command::OffsetCurve { body, direction, to, steps } => self.offset_curve(Dof { body, direction }, to, steps),
+            Command::OffsetCurve { body, direction, to, steps } => {
+                self.offset_curve(Dof { body, direction }, to, steps)
+            }
             Command::Load(run) => self.load(*run),
             Command::Snapshot(reply) => {
                 reply.send(self.run.as_ref().map(|run| run.world.clone())).ok();
@@ -271,7 +277,9 @@ impl Runner {
             Ok(()) => {
                 let (time, latency) = (run.world.time(), sent.elapsed().as_secs_f64() * 1e3);
                 self.log_frame();
-                self.report(Report::Message(format!("coupling \"{name}\" applied at t = {time:.4} s, {latency:.2} ms after the edit")));
+                self.report(Report::Message(format!(
+                    "coupling \"{name}\" applied at t = {time:.4} s, {latency:.2} ms after the edit"
+                )));
             }
             Err(error) => self.report(Report::Error(error.to_string())),
         }
@@ -284,7 +292,11 @@ impl Runner {
     }
 
     /// A live edit of the water (`what` names it in the report).
-    fn edit_water(&mut self, what: &str, edit: impl FnOnce(&mut World) -> Result<(), tether_physics::world::WaterEditError>) {
+    fn edit_water(
+        &mut self,
+        what: &str,
+        edit: impl FnOnce(&mut World) -> Result<(), tether_physics::world::WaterEditError>,
+    ) {
         let Some(run) = &mut self.run else { return };
         match edit(&mut run.world) {
             Ok(()) => {
@@ -303,12 +315,16 @@ impl Runner {
             self.report(Report::Error("the scene has no seabed".into()));
             return;
         };
-        let applied = Seabed::new(seabed.elevation, friction).map_err(|e| e.to_string()).and_then(|seabed| run.world.set_seabed(seabed).map_err(|e| e.to_string()));
+        let applied = Seabed::new(seabed.elevation, friction)
+            .map_err(|e| e.to_string())
+            .and_then(|seabed| run.world.set_seabed(seabed).map_err(|e| e.to_string()));
         match applied {
             Ok(()) => {
                 let time = run.world.time();
                 self.log_frame();
-                self.report(Report::Message(format!("seabed line friction C_B = {friction} applied at t = {time:.4} s")));
+                self.report(Report::Message(format!(
+                    "seabed line friction C_B = {friction} applied at t = {time:.4} s"
+                )));
             }
             Err(error) => self.report(Report::Error(error)),
         }
@@ -318,8 +334,11 @@ impl Runner {
     fn equilibrium(&mut self) {
         let Some(run) = &mut self.run else { return };
         let clock = Instant::now();
-        let solved = equilibrium::solve(run.world.system(), &run.world.synchronized_states(), &[], &Settings::default());
-        let placed = solved.map_err(|e| e.to_string()).and_then(|eq| run.world.place(&eq.states).map(|()| eq.iterations).map_err(|e| e.to_string()));
+        let solved =
+            equilibrium::solve(run.world.system(), &run.world.synchronized_states(), &[], &Settings::default());
+        let placed = solved
+            .map_err(|e| e.to_string())
+            .and_then(|eq| run.world.place(&eq.states).map(|()| eq.iterations).map_err(|e| e.to_string()));
         match placed {
             Ok(iterations) => {
                 self.running = false;
@@ -336,21 +355,36 @@ impl Runner {
         let Some(run) = &self.run else { return };
         let system = run.world.system();
         let settings = Settings::default();
-        let curve = equilibrium::solve(system, &run.world.synchronized_states(), &[], &settings).and_then(|eq| offsets::curve(system, &eq, dof, to, steps, &settings));
+        let curve = equilibrium::solve(system, &run.world.synchronized_states(), &[], &settings)
+            .and_then(|eq| offsets::curve(system, &eq, dof, to, steps, &settings));
         let name = system.bodies().get(dof.body).map_or_else(String::new, |b| b.name.clone());
         match curve {
             Ok(curve) => {
                 let points = curve.points.iter().map(|p| (p.offset, -p.load)).collect();
-                self.report(Report::OffsetCurve(super::protocol::OffsetCurve { body: name, direction: dof.direction, points }));
+                self.report(Report::OffsetCurve(super::protocol::OffsetCurve {
+                    body: name,
+                    direction: dof.direction,
+                    points,
+                }));
             }
-            Err(error) => self.report(Report::Error(format!("offset curve of body \"{name}\" in {}: {error}", dof.direction))),
+            Err(error) => {
+                self.report(Report::Error(format!("offset curve of body \"{name}\" in {}: {error}", dof.direction)))
+            }
         }
     }
 
     fn send_status(&self) {
         let Some(run) = &self.run else { return };
         let (advanced, steps, wall) = self.last_tick;
-        let state = RunState { label: run.label.clone(), running: self.running, failure: self.failure.clone(), initial_balance: self.initial_balance, advanced, steps, wall: wall.as_secs_f64() };
+        let state = RunState {
+            label: run.label.clone(),
+            running: self.running,
+            failure: self.failure.clone(),
+            initial_balance: self.initial_balance,
+            advanced,
+            steps,
+            wall: wall.as_secs_f64(),
+        };
         self.report(Report::Status(Box::new(status::status(&run.world, &state))));
     }
 }

@@ -112,7 +112,12 @@ pub fn status(world: &World, run: &RunState) -> Status {
         timing: Some(world.timing()),
         step_size: world.step_size(),
         substeps: world.substeps(),
-        coupling_limits: world.couplings().iter().enumerate().map(|(i, c)| (c.name.clone(), coupling_limit(i))).collect(),
+        coupling_limits: world
+            .couplings()
+            .iter()
+            .enumerate()
+            .map(|(i, c)| (c.name.clone(), coupling_limit(i)))
+            .collect(),
         rotation_limit,
         water_limits,
         impact_limits: world.impact_limits().iter().map(|l| (l.describe(world.system()), l.dt)).collect(),
@@ -143,5 +148,10 @@ fn contacts(world: &World) -> Vec<ContactStatus> {
 
 fn body_status(world: &World, index: usize) -> BodyStatus {
     let BodyState { position, orientation, velocity, angular_velocity } = world.state(index);
-    BodyStatus { name: world.bodies()[index].name.clone(), position, velocity, angular_velocity: orientation * angular_velocity }
+    BodyStatus {
+        name: world.bodies()[index].name.clone(),
+        position,
+        velocity,
+        angular_velocity: orientation * angular_velocity,
+    }
 }

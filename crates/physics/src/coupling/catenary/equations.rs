@@ -78,7 +78,10 @@ impl Closure {
     /// `X(h, v)`, `Y(h, v)`.
     pub fn ends(&self, h: f64, v: f64) -> [f64; 2] {
         let (r1, r2) = (radius(h, v), radius(h, v + 1.0));
-        [span_with_radii(h, v, v + 1.0, r1, r2) + self.epsilon * h, rise_with_radii(v, v + 1.0, r1, r2) + self.epsilon * (v + 0.5)]
+        [
+            span_with_radii(h, v, v + 1.0, r1, r2) + self.epsilon * h,
+            rise_with_radii(v, v + 1.0, r1, r2) + self.epsilon * (v + 0.5),
+        ]
     }
 
     /// Residual and Jacobian at `(h, v)`, `h > 0`:
@@ -87,11 +90,15 @@ impl Closure {
     pub fn evaluate(&self, h: f64, v: f64) -> Evaluation {
         let (r1, r2) = (radius(h, v), radius(h, v + 1.0));
         let extent = span_with_radii(h, v, v + 1.0, r1, r2);
-        let residual = [extent + self.epsilon * h - self.x, rise_with_radii(v, v + 1.0, r1, r2) + self.epsilon * (v + 0.5) - self.y];
+        let residual = [
+            extent + self.epsilon * h - self.x,
+            rise_with_radii(v, v + 1.0, r1, r2) + self.epsilon * (v + 0.5) - self.y,
+        ];
         let (inverse1, inverse2) = (r1.recip(), r2.recip());
         let cross = h * (inverse2 - inverse1);
         let slope_difference = (v + 1.0) * inverse2 - v * inverse1;
-        let jacobian = [[extent / h - slope_difference + self.epsilon, cross], [cross, slope_difference + self.epsilon]];
+        let jacobian =
+            [[extent / h - slope_difference + self.epsilon, cross], [cross, slope_difference + self.epsilon]];
         Evaluation { residual, jacobian }
     }
 }
@@ -128,8 +135,18 @@ mod tests {
             let (xp, xm) = (closure.ends(h + d, v), closure.ends(h - d, v));
             let (yp, ym) = (closure.ends(h, v + d), closure.ends(h, v - d));
             for row in 0..2 {
-                assert_relative_eq!(e.jacobian[row][0], (xp[row] - xm[row]) / (2.0 * d), max_relative = 1e-6, epsilon = 1e-9);
-                assert_relative_eq!(e.jacobian[row][1], (yp[row] - ym[row]) / (2.0 * d), max_relative = 1e-6, epsilon = 1e-9);
+                assert_relative_eq!(
+                    e.jacobian[row][0],
+                    (xp[row] - xm[row]) / (2.0 * d),
+                    max_relative = 1e-6,
+                    epsilon = 1e-9
+                );
+                assert_relative_eq!(
+                    e.jacobian[row][1],
+                    (yp[row] - ym[row]) / (2.0 * d),
+                    max_relative = 1e-6,
+                    epsilon = 1e-9
+                );
             }
         }
     }

@@ -88,7 +88,10 @@ impl LineState {
     /// Tensions at end 1 and end 2 [N].
     pub fn end_tensions(&self) -> (f64, f64) {
         if self.ground.is_none() {
-            return (self.horizontal_tension.hypot(self.vertical1), self.horizontal_tension.hypot(self.vertical1 + self.weight));
+            return (
+                self.horizontal_tension.hypot(self.vertical1),
+                self.horizontal_tension.hypot(self.vertical1 + self.weight),
+            );
         }
         let (f1, f2) = self.end_forces();
         (f1.norm(), f2.norm())
@@ -142,13 +145,16 @@ impl LineState {
     /// `L_eq`) above the seabed.
     fn on_ground(&self, ground: &Ground, along: f64, up: f64) -> Vec3 {
         let anchor = self.anchor_position(ground);
-        anchor + self.anchor_direction(ground) * (along * self.length) + self.e_y * (ground.seabed + up * self.length - anchor.dot(&self.e_y))
+        anchor
+            + self.anchor_direction(ground) * (along * self.length)
+            + self.e_y * (ground.seabed + up * self.length - anchor.dot(&self.e_y))
     }
 
     /// Dimensionless unknowns of this state (`h = H/W`, `v = V1/W`), the warm start of a free
     /// solve.
     pub(super) fn unknowns(&self) -> Option<Unknowns> {
-        (self.weight > 0.0).then(|| Unknowns { h: self.horizontal_tension / self.weight, v: self.vertical1 / self.weight })
+        (self.weight > 0.0)
+            .then(|| Unknowns { h: self.horizontal_tension / self.weight, v: self.vertical1 / self.weight })
     }
 
     /// `count + 1` points evenly spaced along the unstretched line from end 1 to end 2, with
@@ -162,7 +168,9 @@ impl LineState {
         let count = count.max(1);
         if self.weight <= 0.0 {
             let tension = self.horizontal_tension;
-            return (0..=count).map(|i| (self.origin + self.e_x * (self.span * i as f64 / count as f64), tension)).collect();
+            return (0..=count)
+                .map(|i| (self.origin + self.e_x * (self.span * i as f64 / count as f64), tension))
+                .collect();
         }
         let eps = self.weight / self.axial_stiffness;
         if let Some(ground) = &self.ground {
@@ -283,10 +291,15 @@ impl LineState {
         let by_other = |d: [f64; 3]| (along * d[0] + self.e_y * d[2]) / l;
         let [(anchor_h, _), (other_h, _)] = ground.profile.end_forces();
         let anchor_force = |by: &dyn Fn([f64; 3]) -> Vec3, sign: f64| {
-            (along * by(sensitivity.anchor).transpose() - self.e_y * by(sensitivity.first).transpose() + turn * (sign * anchor_h)) * w
+            (along * by(sensitivity.anchor).transpose() - self.e_y * by(sensitivity.first).transpose()
+                + turn * (sign * anchor_h))
+                * w
         };
         let other_force = |by: &dyn Fn([f64; 3]) -> Vec3, sign: f64| {
-            -(along * by(sensitivity.h).transpose() + self.e_y * by(sensitivity.second).transpose() + turn * (sign * other_h)) * w
+            -(along * by(sensitivity.h).transpose()
+                + self.e_y * by(sensitivity.second).transpose()
+                + turn * (sign * other_h))
+                * w
         };
         let (aa, ao) = (anchor_force(&by_anchor, -1.0), anchor_force(&by_other, 1.0));
         let (oa, oo) = (other_force(&by_anchor, -1.0), other_force(&by_other, 1.0));

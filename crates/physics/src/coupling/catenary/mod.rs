@@ -94,7 +94,13 @@ impl Catenary {
     /// With a seabed and a sinking line: a line grounded at the last solve is solved grounded
     /// first; otherwise (or if it has lifted off) the free line is solved, and laid on the
     /// seabed if its lowest point is below it.
-    pub fn solve(&self, p1: &Vec3, p2: &Vec3, surroundings: &Surroundings, last: Option<&LineState>) -> Result<LineState, CatenaryError> {
+    pub fn solve(
+        &self,
+        p1: &Vec3,
+        p2: &Vec3,
+        surroundings: &Surroundings,
+        last: Option<&LineState>,
+    ) -> Result<LineState, CatenaryError> {
         let gravity = &surroundings.gravity;
         let chord = p2 - p1;
         let g = gravity.norm();
@@ -103,7 +109,21 @@ impl Catenary {
         let axial_stiffness = self.stiffness * self.length;
         let straight = |e_x: Vec3, e_y: Vec3, x: f64| {
             let tension = self.stiffness * (x - self.length).max(0.0);
-            LineState { origin: *p1, e_x, e_y, span: x, rise: 0.0, horizontal_tension: tension, vertical1: 0.0, weight: 0.0, length: self.length, axial_stiffness, iterations: 0, residual: 0.0, ground: None }
+            LineState {
+                origin: *p1,
+                e_x,
+                e_y,
+                span: x,
+                rise: 0.0,
+                horizontal_tension: tension,
+                vertical1: 0.0,
+                weight: 0.0,
+                length: self.length,
+                axial_stiffness,
+                iterations: 0,
+                residual: 0.0,
+                ground: None,
+            }
         };
         if !(weight > 0.0) {
             let x = chord.norm();
@@ -116,7 +136,21 @@ impl Catenary {
         let span = horizontal.norm();
         let vertical = span <= 1e-14 * self.length;
         let e_x = if vertical { last.map_or_else(|| any_perpendicular(&e_y), |s| s.e_x) } else { horizontal / span };
-        let free = LineState { origin: *p1, e_x, e_y, span, rise, horizontal_tension: 0.0, vertical1: 0.0, weight, length: self.length, axial_stiffness, iterations: 0, residual: 0.0, ground: None };
+        let free = LineState {
+            origin: *p1,
+            e_x,
+            e_y,
+            span,
+            rise,
+            horizontal_tension: 0.0,
+            vertical1: 0.0,
+            weight,
+            length: self.length,
+            axial_stiffness,
+            iterations: 0,
+            residual: 0.0,
+            ground: None,
+        };
         match surroundings.seabed {
             Some(seabed) if sinking > 0.0 => self.solve_on_seabed(free, &seabed, vertical, last),
             _ => self.solve_free(free, vertical, last),
@@ -124,9 +158,18 @@ impl Catenary {
     }
 
     /// The free line (PHYSICS.md §3) in the frame of `frame` (its tensions are filled in).
-    fn solve_free(&self, frame: LineState, vertical: bool, last: Option<&LineState>) -> Result<LineState, CatenaryError> {
+    fn solve_free(
+        &self,
+        frame: LineState,
+        vertical: bool,
+        last: Option<&LineState>,
+    ) -> Result<LineState, CatenaryError> {
         let LineState { span, rise, weight, axial_stiffness, .. } = frame;
-        let closure = Closure { x: if vertical { 0.0 } else { span / self.length }, y: rise / self.length, epsilon: weight / axial_stiffness };
+        let closure = Closure {
+            x: if vertical { 0.0 } else { span / self.length },
+            y: rise / self.length,
+            epsilon: weight / axial_stiffness,
+        };
         let solved = solver::solve(&closure, last.and_then(LineState::unknowns)).ok_or(CatenaryError { span, rise })?;
         Ok(LineState {
             horizontal_tension: solved.unknowns.h * weight,
@@ -139,7 +182,13 @@ impl Catenary {
 
     /// The line above `seabed`: grounded where it reaches the bottom (PHYSICS.md §7), free
     /// elsewhere.
-    fn solve_on_seabed(&self, frame: LineState, seabed: &Seabed, vertical: bool, last: Option<&LineState>) -> Result<LineState, CatenaryError> {
+    fn solve_on_seabed(
+        &self,
+        frame: LineState,
+        seabed: &Seabed,
+        vertical: bool,
+        last: Option<&LineState>,
+    ) -> Result<LineState, CatenaryError> {
         if let Some(ground) = last.and_then(|s| s.ground.as_ref()) {
             if let Some(state) = self.solve_grounded(&frame, seabed, Warm::Grounded(ground)) {
                 return Ok(state);
@@ -162,8 +211,15 @@ impl Catenary {
         };
         let y1 = frame.origin.dot(&frame.e_y);
         let (z1, z2) = (height(y1), height(y1 + frame.rise));
-        let (anchor, z_anchor, z_other) = if z1 == 0.0 || z2 > 0.0 { (LineEnd::First, z1, z2) } else { (LineEnd::Second, z2, z1) };
-        let grounding = Grounding { x: frame.span / self.length, z1: z_anchor, z2: z_other, epsilon: frame.weight / frame.axial_stiffness, friction: seabed.line_friction };
+        let (anchor, z_anchor, z_other) =
+            if z1 == 0.0 || z2 > 0.0 { (LineEnd::First, z1, z2) } else { (LineEnd::Second, z2, z1) };
+        let grounding = Grounding {
+            x: frame.span / self.length,
+            z1: z_anchor,
+            z2: z_other,
+            epsilon: frame.weight / frame.axial_stiffness,
+            friction: seabed.line_friction,
+        };
         let start = match warm {
             Warm::Tension(h) => h,
             Warm::Grounded(last) if last.anchor == anchor => last.profile.predict(&last.grounding, &grounding),
@@ -172,7 +228,13 @@ impl Catenary {
         let Outcome::Grounded(solved) = grounded::solver::solve(&grounding, Some(start))? else { return None };
         let profile = solved.profile;
         let ground = Ground { anchor, grounding, profile, seabed: seabed.elevation };
-        let mut state = LineState { horizontal_tension: profile.h * frame.weight, iterations: solved.iterations, residual: solved.residual, ground: Some(ground), ..*frame };
+        let mut state = LineState {
+            horizontal_tension: profile.h * frame.weight,
+            iterations: solved.iterations,
+            residual: solved.residual,
+            ground: Some(ground),
+            ..*frame
+        };
         state.vertical1 = state.end_forces().0.dot(&frame.e_y);
         Some(state)
     }
@@ -180,7 +242,14 @@ impl Catenary {
     /// Forces at the kinematics `frames` in `surroundings` (the line is quasi-static: end
     /// velocities do not enter), added to the end bodies' `loads` and written to `out`; the
     /// solution is kept in `cache` as the next warm start.
-    pub fn apply(&self, cache: &mut CatenaryCache, frames: &[BodyFrame], surroundings: &Surroundings, loads: &mut [Load], out: &mut CouplingForces) -> Result<(), CatenaryError> {
+    pub fn apply(
+        &self,
+        cache: &mut CatenaryCache,
+        frames: &[BodyFrame],
+        surroundings: &Surroundings,
+        loads: &mut [Load],
+        out: &mut CouplingForces,
+    ) -> Result<(), CatenaryError> {
         let (end1, end2) = (self.end1.motion(frames), self.end2.motion(frames));
         let state = self.solve(&end1.position, &end2.position, surroundings, cache.last.as_ref())?;
         let (f1, f2) = state.end_forces();

@@ -191,7 +191,11 @@ fn monotone_root(f: impl Fn(f64) -> f64, guess: f64) -> f64 {
         let secant = lo - f_lo * (hi - lo) / (f_hi - f_lo);
         let mid = 0.5 * (lo + hi);
         // Secant where it stays well inside the bracket, else bisection.
-        let x = if secant.is_finite() && secant > lo + 0.1 * (hi - lo) && secant < hi - 0.1 * (hi - lo) { secant } else { mid };
+        let x = if secant.is_finite() && secant > lo + 0.1 * (hi - lo) && secant < hi - 0.1 * (hi - lo) {
+            secant
+        } else {
+            mid
+        };
         if x <= lo || x >= hi {
             break;
         }

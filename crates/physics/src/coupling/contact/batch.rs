@@ -233,7 +233,12 @@ mod tests {
             for (lane, &index) in chunk.iter().enumerate() {
                 let face = &faces[index];
                 let distance = plane.height + plane.normal.dot(&face.centroid);
-                let one = law.face_force(face.area, distance, &plane.normal, &(plane.velocity + plane.spin.cross(&face.centroid)));
+                let one = law.face_force(
+                    face.area,
+                    distance,
+                    &plane.normal,
+                    &(plane.velocity + plane.spin.cross(&face.centroid)),
+                );
                 assert_eq!(lanes & (1 << lane) != 0, distance < law.range);
                 if distance < law.range {
                     assert_eq!(contacts[lane], one, "face {index}: the same arithmetic, bit for bit");
@@ -250,7 +255,11 @@ mod tests {
         assert_relative_eq!(sums.force, expected.force, max_relative = 1e-14);
         // Σ f_t from Σ f_f − n Σ|f_n|: a difference of sums as large as the normal force, so its
         // round-off is relative to that force (1e-14: a few ulp of each of the ~20 faces' terms).
-        assert!(expected.friction.norm() > 1e-3 * expected.normal, "the sphere slides: friction {}", expected.friction.norm());
+        assert!(
+            expected.friction.norm() > 1e-3 * expected.normal,
+            "the sphere slides: friction {}",
+            expected.friction.norm()
+        );
         assert_relative_eq!(sums.friction, expected.friction, epsilon = 1e-14 * expected.normal);
         assert_relative_eq!(sums.moment, expected.moment, max_relative = 1e-14);
         assert_relative_eq!(sums.normal, expected.normal, max_relative = 1e-14);

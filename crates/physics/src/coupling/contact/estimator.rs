@@ -79,7 +79,9 @@ pub fn substeps_for(dt: f64, recommended_dt: f64) -> u32 {
 /// # Errors
 /// A non-positive mass, area or speed, a negative damping ratio, or `d_min ≥ d0`.
 pub fn estimate(impact: &Impact) -> Result<ContactEstimate, EstimateError> {
-    let positive = |name: &'static str, value: f64| if value > 0.0 && value.is_finite() { Ok(value) } else { Err(EstimateError::NotPositive { name, value }) };
+    let positive = |name: &'static str, value: f64| {
+        if value > 0.0 && value.is_finite() { Ok(value) } else { Err(EstimateError::NotPositive { name, value }) }
+    };
     let mass = positive("mass", impact.mass)?;
     let other_mass = impact.other_mass.map(|m| positive("mass2", m)).transpose()?;
     let area = positive("area", impact.area)?;
@@ -111,14 +113,26 @@ mod tests {
     #[test]
     fn the_estimate_follows_the_formulas() {
         // 2 kg on 1 kg: m_e = 2/3 kg; A = 0.01 m², v = 3 m/s, d0 − d_min = 0.005 m.
-        let impact = Impact { mass: 2.0, other_mass: Some(1.0), area: 0.01, speed: 3.0, range: 0.004, min_distance: -0.001, damping_ratio: 0.1 };
+        let impact = Impact {
+            mass: 2.0,
+            other_mass: Some(1.0),
+            area: 0.01,
+            speed: 3.0,
+            range: 0.004,
+            min_distance: -0.001,
+            damping_ratio: 0.1,
+        };
         let e = estimate(&impact).expect("valid impact");
         let me = 2.0 / 3.0;
         assert_relative_eq!(e.effective_mass, me, epsilon = 1e-15);
         let k1 = me * 9.0 / (0.01 * 0.005 * 0.005);
         assert_relative_eq!(e.stiffness, k1, max_relative = 1e-14);
         assert_relative_eq!(e.damping, 0.2 * (me * k1 / 0.01).sqrt(), max_relative = 1e-14);
-        assert_relative_eq!(e.stopping_time, std::f64::consts::FRAC_PI_2 * (me / (0.01 * k1)).sqrt(), max_relative = 1e-14);
+        assert_relative_eq!(
+            e.stopping_time,
+            std::f64::consts::FRAC_PI_2 * (me / (0.01 * k1)).sqrt(),
+            max_relative = 1e-14
+        );
         // τ = (π/2)(d0 − d_min)/v whatever the masses: the penetration is crossed at ~v.
         assert_relative_eq!(e.stopping_time, std::f64::consts::FRAC_PI_2 * 0.005 / 3.0, max_relative = 1e-14);
         assert_eq!(substeps_for(1e-3, e.recommended_dt), (1e-3 / e.recommended_dt).ceil() as u32);
@@ -132,12 +146,29 @@ mod tests {
 
     #[test]
     fn impossible_impacts_are_refused() {
-        let good = Impact { mass: 1.0, other_mass: None, area: 0.01, speed: 1.0, range: 0.01, min_distance: 0.0, damping_ratio: 0.1 };
+        let good = Impact {
+            mass: 1.0,
+            other_mass: None,
+            area: 0.01,
+            speed: 1.0,
+            range: 0.01,
+            min_distance: 0.0,
+            damping_ratio: 0.1,
+        };
         assert!(estimate(&good).is_ok());
-        assert_eq!(estimate(&Impact { mass: 0.0, ..good }), Err(EstimateError::NotPositive { name: "mass", value: 0.0 }));
-        assert!(matches!(estimate(&Impact { other_mass: Some(-1.0), ..good }), Err(EstimateError::NotPositive { name: "mass2", .. })));
+        assert_eq!(
+            estimate(&Impact { mass: 0.0, ..good }),
+            Err(EstimateError::NotPositive { name: "mass", value: 0.0 })
+        );
+        assert!(matches!(
+            estimate(&Impact { other_mass: Some(-1.0), ..good }),
+            Err(EstimateError::NotPositive { name: "mass2", .. })
+        ));
         assert!(matches!(estimate(&Impact { min_distance: 0.01, ..good }), Err(EstimateError::NoPenetration { .. })));
         assert!(matches!(estimate(&Impact { damping_ratio: -0.1, ..good }), Err(EstimateError::NegativeDamping(_))));
-        assert!(matches!(estimate(&Impact { speed: f64::NAN, ..good }), Err(EstimateError::NotPositive { name: "speed", .. })));
+        assert!(matches!(
+            estimate(&Impact { speed: f64::NAN, ..good }),
+            Err(EstimateError::NotPositive { name: "speed", .. })
+        ));
     }
 }

@@ -134,7 +134,8 @@ mod tests {
     use super::*;
     use approx::assert_relative_eq;
 
-    const LAW: ContactLaw = ContactLaw { stiffness: 1e6, damping: 2e3, range: 0.01, friction: 0.4, friction_sharpness: 50.0 };
+    const LAW: ContactLaw =
+        ContactLaw { stiffness: 1e6, damping: 2e3, range: 0.01, friction: 0.4, friction_sharpness: 50.0 };
 
     #[test]
     fn force_potential_and_dissipation_follow_the_formulas() {
@@ -163,7 +164,12 @@ mod tests {
         // 10⁵ points spread evenly in log x over [1e-12, 50], and the ends.
         let sweep = (0..100_000).map(|i| 1e-12 * (50e12_f64).powf(f64::from(i) / 99_999.0));
         for x in sweep.chain([0.0, 19.1, 40.0, 1e300]) {
-            assert!((tanh_over(x, 1.0) - x.tanh()).abs() <= 5e-16, "tanh {x}: {} against {}", tanh_over(x, 1.0), x.tanh());
+            assert!(
+                (tanh_over(x, 1.0) - x.tanh()).abs() <= 5e-16,
+                "tanh {x}: {} against {}",
+                tanh_over(x, 1.0),
+                x.tanh()
+            );
             for y in [1e-9, 0.37, 2e4] {
                 assert_relative_eq!(tanh_over(x, y) * y, tanh_over(x, 1.0), max_relative = 3e-16);
             }

@@ -22,8 +22,8 @@ use super::forces::CouplingForces;
 use crate::body::{BodyFrame, Load};
 use crate::math::{Mat3, Vec3};
 use crate::mesh::{BoundaryMesh, Face, Surface};
-pub use law::{ContactLaw, FaceContact};
 use batch::{Accumulated, FaceBatch, LaneSums, PlaneView};
+pub use law::{ContactLaw, FaceContact};
 use shortlist::Shortlist;
 use std::sync::Arc;
 
@@ -40,7 +40,14 @@ impl Plane {
     /// computational domain.
     pub fn domain_box(low: &Vec3, high: &Vec3) -> [Self; 6] {
         let wall = |point: &Vec3, axis: usize, sign: f64| Self { point: *point, normal: Vec3::ith(axis, sign) };
-        [wall(low, 0, 1.0), wall(low, 1, 1.0), wall(low, 2, 1.0), wall(high, 0, -1.0), wall(high, 1, -1.0), wall(high, 2, -1.0)]
+        [
+            wall(low, 0, 1.0),
+            wall(low, 1, 1.0),
+            wall(low, 2, 1.0),
+            wall(high, 0, -1.0),
+            wall(high, 1, -1.0),
+            wall(high, 2, -1.0),
+        ]
     }
 }
 
@@ -109,7 +116,13 @@ pub struct ContactCache {
 }
 
 impl Contact {
-    pub fn new(body: usize, boundary: Arc<BoundaryMesh>, against: Opposing, law: ContactLaw, expected_area: f64) -> Self {
+    pub fn new(
+        body: usize,
+        boundary: Arc<BoundaryMesh>,
+        against: Opposing,
+        law: ContactLaw,
+        expected_area: f64,
+    ) -> Self {
         Self { body, boundary, against, law, expected_area }
     }
 
@@ -126,7 +139,9 @@ impl Contact {
     /// [`Contact::apply`] again, for display (the step itself keeps only the sums it needs).
     pub fn active_faces(&self, frames: &[BodyFrame]) -> Vec<ActiveFace> {
         let mut active = Vec::new();
-        self.evaluate(frames, |face, contact| active.push(ActiveFace { centroid: face.centroid, force: contact.force }));
+        self.evaluate(frames, |face, contact| {
+            active.push(ActiveFace { centroid: face.centroid, force: contact.force })
+        });
         active
     }
 
@@ -153,7 +168,9 @@ impl Contact {
                 for plane in planes {
                     let mut shortlist = Shortlist::new();
                     let shortlist = &mut shortlist;
-                    let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else { continue };
+                    let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else {
+                        continue;
+                    };
                     for batch in batches {
                         let (contacts, mut in_range) = batch.contacts(&self.law, &view);
                         while in_range != 0 {
@@ -165,7 +182,15 @@ impl Contact {
                 }
             }
             Opposing::Body { body, surface } => {
-                against_body(&self.boundary, &self.law, surface, frame, &frames[*body], &mut Accumulated::default(), on_face);
+                against_body(
+                    &self.boundary,
+                    &self.law,
+                    surface,
+                    frame,
+                    &frames[*body],
+                    &mut Accumulated::default(),
+                    on_face,
+                );
             }
         }
     }
@@ -185,7 +210,9 @@ impl Contact {
                 // the lanes per plane).
                 let (mut normal_along, mut normal_so_far) = (Vec3::zeros(), 0.0);
                 for (plane, shortlist) in planes.iter().zip(shortlists) {
-                    let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else { continue };
+                    let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else {
+                        continue;
+                    };
                     batch::accumulate(batches, &self.law, &view, &mut lanes);
                     let normal = lanes.normal();
                     normal_along += view.normal * (normal - normal_so_far);
@@ -210,7 +237,11 @@ impl Contact {
     /// Stopping time `τ` [s] of an impact on an area `area` [m²] for the effective mass
     /// `1/inverse_mass` (PHYSICS.md §4); infinite when neither side responds to forces.
     pub fn stopping_time(&self, area: f64, inverse_mass: f64) -> f64 {
-        if inverse_mass > 0.0 { estimator::stopping_time(inverse_mass.recip(), area, self.law.stiffness) } else { f64::INFINITY }
+        if inverse_mass > 0.0 {
+            estimator::stopping_time(inverse_mass.recip(), area, self.law.stiffness)
+        } else {
+            f64::INFINITY
+        }
     }
 
     /// The other body, if the opposing boundary is one.
@@ -264,7 +295,13 @@ impl Contact {
 /// batches of faces on its `shortlist`; `None` when the plane is out of range of the boundary's
 /// bounding ball.
 #[inline(always)]
-fn plane_view<'a>(boundary: &BoundaryMesh, law: &ContactLaw, plane: &Plane, shortlist: &'a mut Shortlist, frame: &BodyFrame) -> Option<(PlaneView, &'a [FaceBatch])> {
+fn plane_view<'a>(
+    boundary: &BoundaryMesh,
+    law: &ContactLaw,
+    plane: &Plane,
+    shortlist: &'a mut Shortlist,
+    frame: &BodyFrame,
+) -> Option<(PlaneView, &'a [FaceBatch])> {
     let height = plane.normal.dot(&(frame.position - plane.point));
     if height - boundary.bounding_radius() >= law.range {
         return None;
@@ -279,7 +316,15 @@ fn plane_view<'a>(boundary: &BoundaryMesh, law: &ContactLaw, plane: &Plane, shor
 /// frame (where the surface is) and returned in A's; a group of faces whose ball is out of range
 /// of B's bounding box is skipped whole. The faces in contact are added to `sums`; returns
 /// whether the bodies' bounding balls are in range.
-fn against_body(boundary: &BoundaryMesh, law: &ContactLaw, surface: &Surface, a: &BodyFrame, b: &BodyFrame, sums: &mut Accumulated, mut on_face: impl FnMut(&Face, &FaceContact)) -> bool {
+fn against_body(
+    boundary: &BoundaryMesh,
+    law: &ContactLaw,
+    surface: &Surface,
+    a: &BodyFrame,
+    b: &BodyFrame,
+    sums: &mut Accumulated,
+    mut on_face: impl FnMut(&Face, &FaceContact),
+) -> bool {
     if (a.position - b.position).norm() >= boundary.bounding_radius() + surface.bounding_radius() + law.range {
         return false;
     }
@@ -289,7 +334,10 @@ fn against_body(boundary: &BoundaryMesh, law: &ContactLaw, surface: &Surface, a:
     let velocity_a = b.rotation.tr_mul(&(a.velocity - b.velocity));
     let spin_a = a_to_b * a.angular_velocity;
     let faces = boundary.faces();
-    let groups = boundary.groups().iter().filter(|group| surface.near_bounds(&(offset + a_to_b * group.center), law.range + group.radius));
+    let groups = boundary
+        .groups()
+        .iter()
+        .filter(|group| surface.near_bounds(&(offset + a_to_b * group.center), law.range + group.radius));
     for face in groups.flat_map(|group| &faces[group.faces()]) {
         let arm = a_to_b * face.centroid;
         let point = offset + arm;
@@ -300,7 +348,8 @@ fn against_body(boundary: &BoundaryMesh, law: &ContactLaw, surface: &Surface, a:
         let relative_velocity = velocity_a + spin_a.cross(&arm) - b.angular_velocity.cross(&point);
         let contact = law.face_force(face.area, nearest.distance, &nearest.normal, &relative_velocity);
         // Back into A's principal frame.
-        let in_a = FaceContact { force: a_to_b.tr_mul(&contact.force), friction: a_to_b.tr_mul(&contact.friction), ..contact };
+        let in_a =
+            FaceContact { force: a_to_b.tr_mul(&contact.force), friction: a_to_b.tr_mul(&contact.friction), ..contact };
         sums.add(&face.centroid, &in_a);
         on_face(face, &in_a);
     }

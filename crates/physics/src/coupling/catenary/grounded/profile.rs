@@ -157,7 +157,8 @@ impl Grounding {
         let lb = grounded.max(0.0);
         let (anchor, stretch, stretch_h) = if friction > 0.0 {
             let anchor = (h - friction * lb).max(0.0);
-            let stretch = if anchor > 0.0 { eps * lb * (h - 0.5 * friction * lb) } else { eps * h * h / (2.0 * friction) };
+            let stretch =
+                if anchor > 0.0 { eps * lb * (h - 0.5 * friction * lb) } else { eps * h * h / (2.0 * friction) };
             (anchor, stretch, eps * lb.min(h / friction))
         } else {
             (h, eps * h * lb, eps * lb)
@@ -165,7 +166,8 @@ impl Grounding {
         // ∂X/∂ℓ_i at fixed h: the part's extent grows, the grounded part shrinks (with its stretch).
         let slope = |part: &Suspended| part.extent_length - 1.0 - eps * anchor;
         let closure = first.extent + second.extent + lb + stretch;
-        let along = |part: &Suspended| if part.length > 0.0 { part.extent_h + slope(part) * part.length_h } else { 0.0 };
+        let along =
+            |part: &Suspended| if part.length > 0.0 { part.extent_h + slope(part) * part.length_h } else { 0.0 };
         Profile {
             h,
             first,
@@ -215,10 +217,22 @@ impl Profile {
         } else {
             [1.0 / self.closure_h, -self.closure_z1 / self.closure_h, -self.closure_z2 / self.closure_h]
         };
-        let first = [self.first.length_h * dh[0], self.first.length_h * dh[1] + self.first.length_z, self.first.length_h * dh[2]];
-        let second = [self.second.length_h * dh[0], self.second.length_h * dh[1], self.second.length_h * dh[2] + self.second.length_z];
+        let first = [
+            self.first.length_h * dh[0],
+            self.first.length_h * dh[1] + self.first.length_z,
+            self.first.length_h * dh[2],
+        ];
+        let second = [
+            self.second.length_h * dh[0],
+            self.second.length_h * dh[1],
+            self.second.length_h * dh[2] + self.second.length_z,
+        ];
         let anchor = if self.friction > 0.0 {
-            if self.anchor > 0.0 { std::array::from_fn(|i| dh[i] + self.friction * (first[i] + second[i])) } else { [0.0; 3] }
+            if self.anchor > 0.0 {
+                std::array::from_fn(|i| dh[i] + self.friction * (first[i] + second[i]))
+            } else {
+                [0.0; 3]
+            }
         } else {
             dh
         };
@@ -286,7 +300,8 @@ mod tests {
 
     #[test]
     fn a_part_reaches_its_height() {
-        for &(h, z, eps) in &[(0.3, 0.4, 1e-3), (0.0, 0.2, 0.1), (5.0, 0.01, 1e-9), (1e-6, 0.5, 1e-5), (40.0, 0.9, 0.3)] {
+        for &(h, z, eps) in &[(0.3, 0.4, 1e-3), (0.0, 0.2, 0.1), (5.0, 0.01, 1e-9), (1e-6, 0.5, 1e-5), (40.0, 0.9, 0.3)]
+        {
             let part = Suspended::new(h, z, eps);
             let l = part.length;
             let reached = (h * h + l * l).sqrt() - h + 0.5 * eps * l * l;
@@ -298,7 +313,9 @@ mod tests {
 
     #[test]
     fn closure_derivatives_match_finite_differences() {
-        for &(z1, z2, eps, friction) in &[(0.0, 0.4, 1e-3, 0.0), (0.0, 0.3, 0.05, 2.0), (0.1, 0.2, 1e-4, 0.0), (0.0, 0.05, 0.2, 0.5)] {
+        for &(z1, z2, eps, friction) in
+            &[(0.0, 0.4, 1e-3, 0.0), (0.0, 0.3, 0.05, 2.0), (0.1, 0.2, 1e-4, 0.0), (0.0, 0.05, 0.2, 0.5)]
+        {
             for h in [0.05, 0.3, 1.7] {
                 let g = Grounding { x: 0.0, z1, z2, epsilon: eps, friction };
                 let p = g.profile(h);
@@ -310,7 +327,11 @@ mod tests {
                 assert_relative_eq!(p.closure_h, fd_h, max_relative = 1e-6);
                 let moved = |dz1: f64, dz2: f64| Grounding { z1: z1 + dz1, z2: z2 + dz2, ..g }.profile(h).closure;
                 if z1 > 0.0 {
-                    assert_relative_eq!(p.closure_z1, (moved(d, 0.0) - moved(-d, 0.0)) / (2.0 * d), max_relative = 1e-6);
+                    assert_relative_eq!(
+                        p.closure_z1,
+                        (moved(d, 0.0) - moved(-d, 0.0)) / (2.0 * d),
+                        max_relative = 1e-6
+                    );
                 }
                 assert_relative_eq!(p.closure_z2, (moved(0.0, d) - moved(0.0, -d)) / (2.0 * d), max_relative = 1e-6);
             }

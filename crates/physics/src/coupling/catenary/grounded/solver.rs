@@ -166,8 +166,14 @@ mod tests {
         // Ends 0.3 apart, the anchor on the bottom, the other end 0.2 up: 0.8 hangs or lies.
         let heap = grounded(solve(&Grounding { x: 0.3, z1: 0.0, z2: 0.2, epsilon: 1e-4, friction: 1.0 }, None));
         assert_eq!(heap.profile.h, 0.0);
-        assert!(matches!(solve(&Grounding { x: 0.95, z1: 0.0, z2: 0.4, epsilon: 1e-4, friction: 0.0 }, None), Some(Outcome::Lifted)));
-        assert!(matches!(solve(&Grounding { x: 0.1, z1: 0.5, z2: 0.6, epsilon: 1e-4, friction: 0.0 }, None), Some(Outcome::Lifted)));
+        assert!(matches!(
+            solve(&Grounding { x: 0.95, z1: 0.0, z2: 0.4, epsilon: 1e-4, friction: 0.0 }, None),
+            Some(Outcome::Lifted)
+        ));
+        assert!(matches!(
+            solve(&Grounding { x: 0.1, z1: 0.5, z2: 0.6, epsilon: 1e-4, friction: 0.0 }, None),
+            Some(Outcome::Lifted)
+        ));
         assert!(solve(&Grounding { x: f64::NAN, z1: 0.0, z2: 0.1, epsilon: 1e-4, friction: 0.0 }, None).is_none());
     }
 }

@@ -8,7 +8,7 @@ use tether_scene::{self as scene, Scene};
 
 /// Path of a file under the repository root.
 pub fn repo(path: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(path)
+    Path::new(env!("CARGO_MANIFEST_DIR")).join(path)
 }
 
 /// Path of a file under this crate's `tests/`.

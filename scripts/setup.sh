@@ -1,0 +1,51 @@
+# What README's two commands need on a fresh Debian 12 / Ubuntu 24.04 with rustup, installed only
+# when missing. Sourced by scripts/run and scripts/test; every function is idempotent and quiet
+# when there is nothing to do.
+
+# apt-get as root, or through sudo for a user.
+as_root() {
+    if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi
+}
+
+# Installs the Debian packages named that are not installed yet (one apt-get for all of them).
+ensure_packages() {
+    local missing=()
+    for package in "$@"; do
+        dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "ok installed" || missing+=("$package")
+    done
+    [ ${#missing[@]} -eq 0 ] && return 0
+    echo "installing ${missing[*]}" >&2
+    export DEBIAN_FRONTEND=noninteractive
+    as_root apt-get update -qq
+    as_root apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+# The build: a C toolchain for rustc's linker and -sys crates; libudev-dev and pkg-config for the
+# embedded Rerun viewer's gamepad support.
+ensure_build_packages() {
+    ensure_packages gcc libc6-dev pkg-config libudev-dev
+}
+
+# The tests: mesa-vulkan-drivers (lavapipe) and libgl1-mesa-dri render the GUI on the CPU;
+# libxkbcommon-x11-0, xvfb and xdotool run the whole window as a user would under a virtual X
+# server; zenity is the file dialog without a desktop portal; python3-venv holds the `rerun` CLI;
+# munge and slurm-wlm give the sweep's test a real one-node Slurm (their services are not started
+# by the packages in a container: that test starts and stops its own daemons).
+ensure_test_packages() {
+    ensure_packages mesa-vulkan-drivers libgl1-mesa-dri libxkbcommon-x11-0 xvfb xdotool zenity python3-venv \
+        munge slurm-wlm
+}
+
+# The `rerun` CLI of the Rust crate's version (Python package rerun-sdk), in a virtual environment
+# (Debian 12 and Ubuntu 24.04 refuse a system-wide pip install), put first on PATH.
+RERUN_VERSION=0.36.3
+ensure_rerun_cli() {
+    local venv="${TETHER_VENV:-${XDG_CACHE_HOME:-$HOME/.cache}/tether/rerun-venv}"
+    if ! "$venv/bin/rerun" --version 2>/dev/null | grep -q "${RERUN_VERSION//./\\.}"; then
+        echo "installing rerun-sdk==$RERUN_VERSION into $venv" >&2
+        python3 -m venv "$venv"
+        "$venv/bin/pip" install --quiet "rerun-sdk==$RERUN_VERSION"
+    fi
+    export PATH="$venv/bin:$PATH"
+    rerun analytics disable >/dev/null 2>&1 || true
+}

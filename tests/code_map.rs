@@ -1,0 +1,57 @@
+//! The code map in `docs/architecture.md` lists every module of the four crates, and nothing that
+//! is not there: a module added, moved or removed without its line in the map fails here.
+//!
+//! The map has one section per crate, headed ``### `DIR/` — name``, whose table rows start with
+//! the module's path inside `DIR` in backticks: `water/stage.rs` for a file, `water/` for a
+//! folder's `mod.rs`.
+
+use std::collections::BTreeSet;
+use std::path::Path;
+
+const SOURCE_DIRS: [&str; 4] = ["crates/physics/src", "crates/scene/src", "crates/record/src", "src"];
+
+/// Every module under `dir`, named as the map names it.
+fn modules(dir: &Path, prefix: &str, found: &mut BTreeSet<String>) {
+    let entries = std::fs::read_dir(dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display()));
+    for entry in entries {
+        let path = entry.expect("a directory entry").path();
+        let name = path.file_name().and_then(|n| n.to_str()).expect("a UTF-8 file name").to_string();
+        if path.is_dir() {
+            modules(&path, &format!("{prefix}{name}/"), found);
+        } else if name == "mod.rs" {
+            found.insert(prefix.to_string());
+        } else if name.ends_with(".rs") {
+            found.insert(format!("{prefix}{name}"));
+        }
+    }
+}
+
+/// The modules the map lists for `dir`: the first backticked word of each table row in its
+/// section.
+fn mapped(map: &str, dir: &str) -> BTreeSet<String> {
+    let heading = format!("### `{dir}/`");
+    let start = map.find(&heading).unwrap_or_else(|| panic!("docs/architecture.md has no section {heading}"));
+    let section = &map[start + heading.len()..];
+    let section = &section[..section.find("\n#").unwrap_or(section.len())];
+    section
+        .lines()
+        .filter_map(|line| line.strip_prefix("| `"))
+        .filter_map(|row| row.split_once('`').map(|(module, _)| module.to_string()))
+        .collect()
+}
+
+#[test]
+fn the_code_map_lists_every_module_and_only_those() {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let map = std::fs::read_to_string(repo.join("docs/architecture.md")).expect("docs/architecture.md");
+    let mut problems = Vec::new();
+    for dir in SOURCE_DIRS {
+        let mut actual = BTreeSet::new();
+        modules(&repo.join(dir), "", &mut actual);
+        let listed = mapped(&map, dir);
+        assert!(actual.len() > 5, "{dir}: the sources were read ({} modules)", actual.len());
+        problems.extend(actual.difference(&listed).map(|m| format!("{dir}/{m}: not in the code map")));
+        problems.extend(listed.difference(&actual).map(|m| format!("{dir}/{m}: in the code map, not in the code")));
+    }
+    assert!(problems.is_empty(), "docs/architecture.md's code map is out of date:\n{}", problems.join("\n"));
+}

@@ -83,9 +83,7 @@ impl Evaluation {
     /// step summed them (`None` for another kind).
     pub fn contact_forces(&self, index: usize) -> Option<ContactForces> {
         match self.caches.get(index) {
-            Some(CouplingCache::Contact(cache)) => {
-                Some(ContactForces { normal: self.forces[index].tension, friction: cache.friction.norm() })
-            }
+            Some(CouplingCache::Contact(cache)) => Some(cache.forces(&self.forces[index])),
             _ => None,
         }
     }

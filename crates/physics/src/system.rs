@@ -312,7 +312,7 @@ impl System {
     /// # Errors
     /// The first coupling that cannot give its forces.
     pub fn apply_couplings(&self, evaluation: &mut Evaluation) -> Result<f64, EvaluationError> {
-        let Evaluation { frames, loads, forces, caches, .. } = evaluation;
+        let Evaluation { frames, loads, forces, caches, elastic, .. } = evaluation;
         let stage = CouplingsStage {
             couplings: &self.couplings,
             surroundings: &self.surroundings,
@@ -321,12 +321,15 @@ impl System {
             forces,
             loads,
         };
-        self.level
+        let (dissipated, potential) = self
+            .level
             .run(
                 #[inline(always)]
                 || stage.run(),
             )
-            .map_err(|(coupling, source)| EvaluationError { coupling, source })
+            .map_err(|(coupling, source)| EvaluationError { coupling, source })?;
+        *elastic = potential;
+        Ok(dissipated)
     }
 
     /// Stage *water* at time `time` [s] (after the couplings: the added mass reacts to every
@@ -415,7 +418,9 @@ struct CouplingsStage<'a> {
 }
 
 impl CouplingsStage<'_> {
-    /// Each coupling in turn; the error names the index of the one that failed.
+    /// Each coupling in turn; returns the power the couplings dissipate [W] and their elastic
+    /// energy [J] (the sums of their records' `dissipated_power` and `potential`), or the index of
+    /// the one that failed.
     ///
     /// Built for AVX-512 and AVX2 as well as the portable build ([`SupportedLevel::run`]): the
     /// couplings' forces are inlined here, so the contact faces run four to a vector instruction
@@ -424,13 +429,14 @@ impl CouplingsStage<'_> {
     /// constants and sums that AVX2's 16 cannot (about 160 instructions per batch instead of
     /// about 190, by the disassembly of the bench binary).
     #[inline(always)]
-    fn run(self) -> Result<f64, (usize, CouplingError)> {
-        let mut dissipated = 0.0;
+    fn run(self) -> Result<(f64, f64), (usize, CouplingError)> {
+        let (mut dissipated, mut potential) = (0.0, 0.0);
         let each = self.couplings.iter().zip(self.caches.iter_mut()).zip(self.forces.iter_mut());
         for (index, ((coupling, cache), out)) in each.enumerate() {
             coupling.apply(cache, self.frames, self.surroundings, self.loads, out).map_err(|source| (index, source))?;
             dissipated += out.dissipated_power;
+            potential += out.potential;
         }
-        Ok(dissipated)
+        Ok((dissipated, potential))
     }
 }

@@ -17,6 +17,8 @@ pub struct Evaluation {
     pub(crate) loads: Vec<Load>,
     /// What each coupling did.
     pub(crate) forces: Vec<CouplingForces>,
+    /// `Σ` of the couplings' `potential` [J], summed by the couplings stage as it wrote them.
+    pub(crate) elastic: f64,
     /// What each coupling remembers (warm starts, face lists).
     pub(crate) caches: Vec<CouplingCache>,
     /// What the water did to each floating body (empty without water).
@@ -32,6 +34,7 @@ impl Evaluation {
             frames: vec![BodyFrame::default(); bodies],
             loads: vec![Load::default(); bodies],
             forces: vec![CouplingForces::default(); couplings.len()],
+            elastic: 0.0,
             caches: couplings.iter().map(Coupling::new_cache).collect(),
             water: Vec::new(),
             water_scratch: WaterScratch::default(),
@@ -59,6 +62,12 @@ impl Evaluation {
         &self.forces
     }
 
+    /// The couplings' elastic energy [J] at the last evaluation: the sum of their records'
+    /// `potential`.
+    pub fn elastic_energy(&self) -> f64 {
+        self.elastic
+    }
+
     /// What the water did to each floating body at the last evaluation, in the order of the
     /// system's floating bodies (empty without water).
     pub fn water(&self) -> &[WaterForces] {
@@ -83,9 +92,7 @@ impl Evaluation {
     /// step summed them (`None` for another kind).
     pub fn contact_forces(&self, index: usize) -> Option<ContactForces> {
         match self.caches.get(index) {
-            Some(CouplingCache::Contact(cache)) => {
-                Some(ContactForces { normal: self.forces[index].tension, friction: cache.friction.norm() })
-            }
+            Some(CouplingCache::Contact(cache)) => Some(cache.forces(&self.forces[index])),
             _ => None,
         }
     }

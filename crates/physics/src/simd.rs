@@ -1,11 +1,21 @@
-//! Which vector instructions the processor has, for the stages built more than once.
+//! Which vector instructions the processor has, and the one dispatch of the stages built more
+//! than once.
 //!
-//! The couplings stage ([`crate::system`]) and the leapfrog step ([`crate::integrator::leapfrog`])
-//! are compiled three times: for AVX-512 (with AVX2 and FMA: the Ice Lake / Zen 4 feature set),
-//! for AVX2 with FMA, and for the SSE2 every x86-64 has; [`Level::best`] picks one at run time.
-//! The arithmetic is the same IEEE arithmetic in every build (no fused multiply–add is
-//! introduced: Rust never contracts `a * b + c`), so the results are too, bit for bit; a test
-//! runs every build the processor has on the same states and compares.
+//! The couplings stage ([`crate::system`]), the water stage ([`crate::water::stage`]) and the
+//! leapfrog step ([`crate::integrator::leapfrog`]) are compiled three times: for AVX-512 (with
+//! AVX2 and FMA: the Ice Lake / Zen 4 feature set), for AVX2 with FMA, and for the SSE2 every
+//! x86-64 has; [`Level::best`] picks one at run time. The arithmetic is the same IEEE arithmetic
+//! in every build (no fused multiply–add is introduced: Rust never contracts `a * b + c`), so the
+//! results are too, bit for bit; a test runs every build the processor has on the same states
+//! and compares.
+//!
+//! Each stage goes through [`SupportedLevel::run`], which calls it inside a function compiled
+//! for the level's instructions: the stage, an `#[inline(always)]` closure over
+//! `#[inline(always)]` functions, is compiled into each of them. This is hand-written rather than
+//! the `multiversion` crate's dispatch, which picks the build by itself from the processor's
+//! features: here the system holds the level it runs, so that a test can run every build the
+//! processor has on the same states (`System::use_level`), and a [`SupportedLevel`] can only be
+//! made for a level the processor has, which is what makes the dispatch safe.
 
 /// A set of vector instructions a stage is built for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -20,7 +30,6 @@ pub enum Level {
 
 impl Level {
     /// The widest level this processor has (the detection is cached by the standard library).
-    #[inline]
     pub fn best() -> Self {
         #[cfg(target_arch = "x86_64")]
         {
@@ -49,4 +58,58 @@ impl Level {
             Self::Avx512 => Self::best() == Self::Avx512,
         }
     }
+}
+
+/// A [`Level`] this processor has: the only way to run a build of a stage.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SupportedLevel(Level);
+
+impl SupportedLevel {
+    /// The widest level this processor has.
+    pub fn best() -> Self {
+        Self(Level::best())
+    }
+
+    /// `level`, if this processor has it.
+    pub fn new(level: Level) -> Option<Self> {
+        level.supported().then_some(Self(level))
+    }
+
+    pub fn level(self) -> Level {
+        self.0
+    }
+
+    /// `stage()` compiled for this level. `stage` must be an `#[inline(always)]` closure (over
+    /// `#[inline(always)]` functions, down to the arithmetic that is to use the level's
+    /// instructions): what is not inlined into the build is compiled for the portable level.
+    #[inline(always)]
+    pub fn run<R>(self, stage: impl FnOnce() -> R) -> R {
+        match self.0 {
+            // SAFETY (both): a `SupportedLevel` is only made for a level the processor has
+            // (`SupportedLevel::new` checks; `Level::best` is one), whose features these builds
+            // enable.
+            #[cfg(target_arch = "x86_64")]
+            Level::Avx512 => unsafe { avx512(stage) },
+            #[cfg(target_arch = "x86_64")]
+            Level::Avx2 => unsafe { avx2(stage) },
+            // Never made off x86-64, where `Level::best` is the portable level.
+            #[cfg(not(target_arch = "x86_64"))]
+            Level::Avx512 | Level::Avx2 => stage(),
+            Level::Portable => stage(),
+        }
+    }
+}
+
+/// `stage()` built for AVX-512 (with AVX2 and FMA).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+fn avx512<R>(stage: impl FnOnce() -> R) -> R {
+    stage()
+}
+
+/// `stage()` built for AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn avx2<R>(stage: impl FnOnce() -> R) -> R {
+    stage()
 }

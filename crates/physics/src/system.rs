@@ -25,11 +25,11 @@ use crate::energy::Powers;
 use crate::evaluation::Evaluation;
 use crate::math::Vec3;
 use crate::seabed::Seabed;
-use crate::simd::Level;
+use crate::simd::{Level, SupportedLevel};
 use crate::surroundings::Surroundings;
 use crate::water::environment::WaterError;
 use crate::water::morison::HydroSpec;
-use crate::water::stage::{FloatingBody, FloatingError};
+use crate::water::stage::{FloatingBody, FloatingError, WaterStageInputs};
 use crate::water::{WaterSpec, WaterStage};
 
 /// Bodies, couplings and gravity: what a run does not change (live edits aside).
@@ -43,8 +43,8 @@ pub struct System {
     initial_states: Vec<BodyState>,
     /// Indices of the kinematic bodies.
     kinematic_bodies: Vec<usize>,
-    /// The build of the couplings stage this processor runs.
-    level: Level,
+    /// The build of the hot stages (couplings, water, the leapfrog step) this processor runs.
+    level: SupportedLevel,
     /// The water and the bodies in it, if the scene has water.
     water: Option<WaterStage>,
 }
@@ -102,7 +102,7 @@ impl System {
             couplings,
             initial_states,
             kinematic_bodies,
-            level: Level::best(),
+            level: SupportedLevel::best(),
             water: None,
         })
     }
@@ -248,17 +248,20 @@ impl System {
 
     /// The build of the hot stages this system runs.
     pub fn level(&self) -> Level {
+        self.level.level()
+    }
+
+    /// The same build, as the dispatch of [`SupportedLevel::run`] takes it.
+    pub(crate) fn supported_level(&self) -> SupportedLevel {
         self.level
     }
 
-    /// Runs the couplings stage built for `level` from now on, if the processor has it (tests
+    /// Runs the hot stages built for `level` from now on, if the processor has it (tests
     /// compare the builds); returns whether it does.
     pub fn use_level(&mut self, level: Level) -> bool {
-        let supported = level.supported();
-        if supported {
-            self.level = level;
-        }
-        supported
+        let Some(supported) = SupportedLevel::new(level) else { return false };
+        self.level = supported;
+        true
     }
 
     /// Stage *prescribe*: kinematic bodies to their pose and velocity at time `time` [s].
@@ -309,7 +312,7 @@ impl System {
     /// # Errors
     /// The first coupling that cannot give its forces.
     pub fn apply_couplings(&self, evaluation: &mut Evaluation) -> Result<f64, EvaluationError> {
-        let Evaluation { frames, loads, forces, caches, .. } = evaluation;
+        let Evaluation { frames, loads, forces, caches, elastic, .. } = evaluation;
         let stage = CouplingsStage {
             couplings: &self.couplings,
             surroundings: &self.surroundings,
@@ -318,7 +321,15 @@ impl System {
             forces,
             loads,
         };
-        stage.run(self.level).map_err(|(coupling, source)| EvaluationError { coupling, source })
+        let (dissipated, potential) = self
+            .level
+            .run(
+                #[inline(always)]
+                || stage.run(),
+            )
+            .map_err(|(coupling, source)| EvaluationError { coupling, source })?;
+        *elastic = potential;
+        Ok(dissipated)
     }
 
     /// Stage *water* at time `time` [s] (after the couplings: the added mass reacts to every
@@ -331,7 +342,8 @@ impl System {
         if water.len() != stage.floating.len() {
             water.resize(stage.floating.len(), crate::water::WaterForces::default());
         }
-        stage.apply(self.level, &self.bodies, frames, loads, water, water_scratch, time)
+        let on = WaterStageInputs { bodies: &self.bodies, frames, loads, records: water, scratch: water_scratch };
+        stage.apply(self.level, on, time)
     }
 
     /// `Σ F·v + M·ω` [W] of the water's forces still in `evaluation` (those of the previous
@@ -395,7 +407,7 @@ fn check_anchors(couplings: &[Coupling], seabed: &Seabed, gravity: &Vec3) -> Res
     Ok(())
 }
 
-/// The couplings stage's arguments, borrowed apart so that each build takes them as one.
+/// The couplings stage's arguments, borrowed apart from the system and the evaluation.
 struct CouplingsStage<'a> {
     couplings: &'a [Coupling],
     surroundings: &'a Surroundings,
@@ -406,48 +418,25 @@ struct CouplingsStage<'a> {
 }
 
 impl CouplingsStage<'_> {
-    /// The stage built for `level` (which [`System`] only holds when the processor has it).
+    /// Each coupling in turn; returns the power the couplings dissipate [W] and their elastic
+    /// energy [J] (the sums of their records' `dissipated_power` and `potential`), or the index of
+    /// the one that failed.
     ///
-    /// Built for AVX-512 and AVX2 as well as the portable build: the couplings' forces are
-    /// inlined here, so the contact faces run four to a vector instruction
+    /// Built for AVX-512 and AVX2 as well as the portable build ([`SupportedLevel::run`]): the
+    /// couplings' forces are inlined here, so the contact faces run four to a vector instruction
     /// ([`crate::coupling::contact`]) and what each coupling computes stays in registers from one
     /// stage of its evaluation to the next. AVX-512's 32 vector registers hold the face batch's
     /// constants and sums that AVX2's 16 cannot (about 160 instructions per batch instead of
     /// about 190, by the disassembly of the bench binary).
-    #[inline]
-    fn run(self, level: Level) -> Result<f64, (usize, CouplingError)> {
-        match level {
-            // SAFETY (both): `System::level` is `Level::best()` or a level `use_level` found
-            // supported, so the processor has the features these builds enable.
-            #[cfg(target_arch = "x86_64")]
-            Level::Avx512 => unsafe { self.run_avx512() },
-            #[cfg(target_arch = "x86_64")]
-            Level::Avx2 => unsafe { self.run_avx2() },
-            _ => self.run_each(),
-        }
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
-    fn run_avx512(self) -> Result<f64, (usize, CouplingError)> {
-        self.run_each()
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,fma")]
-    fn run_avx2(self) -> Result<f64, (usize, CouplingError)> {
-        self.run_each()
-    }
-
-    /// Each coupling in turn; the error names the index of the one that failed.
     #[inline(always)]
-    fn run_each(self) -> Result<f64, (usize, CouplingError)> {
-        let mut dissipated = 0.0;
+    fn run(self) -> Result<(f64, f64), (usize, CouplingError)> {
+        let (mut dissipated, mut potential) = (0.0, 0.0);
         let each = self.couplings.iter().zip(self.caches.iter_mut()).zip(self.forces.iter_mut());
         for (index, ((coupling, cache), out)) in each.enumerate() {
             coupling.apply(cache, self.frames, self.surroundings, self.loads, out).map_err(|source| (index, source))?;
             dissipated += out.dissipated_power;
+            potential += out.potential;
         }
-        Ok(dissipated)
+        Ok((dissipated, potential))
     }
 }

@@ -1,8 +1,9 @@
-//! The couplings stage and the leapfrog step are built for AVX-512, AVX2 and the portable
-//! instruction set ([`tether_physics::simd`]). Every build this processor runs gives the forces
-//! of the portable build, to 1e-12 relative, on a fixed set of states that covers every path:
-//! plane contacts with friction (faces in range and out of it, one plane or the six walls of a
-//! domain box), a body–body contact, linear and progressive springs with dampers, and a catenary.
+//! The couplings stage, the water stage and the leapfrog step are built for AVX-512, AVX2 and the
+//! portable instruction set ([`tether_physics::simd`]). Every build this processor runs gives the
+//! forces of the portable build, to 1e-12 relative, on a fixed set of states that covers every
+//! path: plane contacts with friction (faces in range and out of it, one plane or the six walls
+//! of a domain box), a body–body contact, linear and progressive springs with dampers, and a
+//! catenary; and on a barge in an irregular sea, the water's forces.
 //! On a processor without AVX2 there is only the portable build, and nothing to compare.
 
 mod common;
@@ -200,6 +201,52 @@ fn every_build_runs_the_portable_motion() {
                 && close_vectors(&a.velocity, &b.velocity)
                 && close_vectors(&a.angular_velocity, &b.angular_velocity);
             assert!(same && a.orientation.angle_to(&b.orientation) <= 1e-12, "{level:?}, body {i}: {a:?} vs {b:?}");
+        }
+    }
+}
+
+/// The water stage is built per level too: on the barge in its JONSWAP sea with a current
+/// (`scenes/barge_in_waves.ron`: 50 wave components, 1152 hull panels), heaved, rolled and
+/// moving in twelve ways at twelve times after the ramp, every build gives the portable water
+/// forces, wetted volume and power, to 1e-12 relative.
+#[test]
+fn every_build_of_the_water_stage_gives_the_portable_forces() {
+    let system = tether_scene::load(&common::repo("scenes/barge_in_waves.ron")).expect("a shipped scene").world;
+    let system = system.system().clone();
+    let mut numbers = Numbers(3);
+    let cases: Vec<(f64, Vec<BodyState>)> = (0..12)
+        .map(|k| {
+            let mut states = system.initial_states().to_vec();
+            states[0].position += Vec3::new(5.0 * numbers.next(), 5.0 * numbers.next(), numbers.next());
+            states[0].orientation = Rotation::from_scaled_axis(numbers.vector(0.05)) * states[0].orientation;
+            states[0].velocity = numbers.vector(1.0);
+            states[0].angular_velocity = numbers.vector(0.05);
+            (20.0 + 7.5 * f64::from(k), states)
+        })
+        .collect();
+    let water_forces = |level: Level| {
+        let mut system = system.clone();
+        assert!(system.use_level(level), "{level:?} is listed as available");
+        let mut evaluation = Evaluation::new(system.bodies().len(), system.couplings());
+        cases
+            .iter()
+            .map(|(time, states)| {
+                system.evaluate(states, &mut evaluation, *time).expect("no coupling to fail");
+                evaluation.water()[0]
+            })
+            .collect::<Vec<_>>()
+    };
+    let portable = water_forces(Level::Portable);
+    assert!(portable.iter().all(|w| w.submerged_volume > 100.0 && w.drag.force.norm() > 0.0), "{portable:?}");
+    for level in Level::available().into_iter().filter(|&l| l != Level::Portable) {
+        for (k, (a, b)) in water_forces(level).iter().zip(&portable).enumerate() {
+            let (total_a, total_b) = (a.total(), b.total());
+            let same = close_vectors(&total_a.force, &total_b.force)
+                && close_vectors(&total_a.moment, &total_b.moment)
+                && close_vectors(&a.pressure.force, &b.pressure.force)
+                && close(a.submerged_volume, b.submerged_volume)
+                && close(a.power, b.power);
+            assert!(same, "{level:?}, case {k}: {a:?} vs {b:?}");
         }
     }
 }

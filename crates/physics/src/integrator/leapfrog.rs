@@ -24,7 +24,6 @@ use crate::body::{Acceleration, BodyState, Support};
 use crate::dynamics::accelerations;
 use crate::energy::{BodyEnergy, Powers, Work};
 use crate::evaluation::Evaluation;
-use crate::simd::Level;
 use crate::system::{EvaluationError, System};
 
 /// At which angular velocity the gyroscopic term `ω × Iω` is evaluated.
@@ -83,32 +82,18 @@ impl Leapfrog {
         time: f64,
         h: f64,
     ) -> Result<StepReport, EvaluationError> {
-        match system.level() {
-            // SAFETY: `System::level` only holds a level the processor has; AVX-512 implies AVX2.
-            #[cfg(target_arch = "x86_64")]
-            Level::Avx512 | Level::Avx2 => unsafe { self.step_avx2(system, states, evaluation, time, h) },
-            _ => self.step_built(system, states, evaluation, time, h),
-        }
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,fma")]
-    fn step_avx2(
-        &mut self,
-        system: &System,
-        states: &mut [BodyState],
-        evaluation: &mut Evaluation,
-        time: f64,
-        h: f64,
-    ) -> Result<StepReport, EvaluationError> {
-        self.step_built(system, states, evaluation, time, h)
+        system.supported_level().run(
+            #[inline(always)]
+            || self.step_built(system, states, evaluation, time, h),
+        )
     }
 
     /// One step. Stages *advance*, *prescribe*, *predict*, *clear* and *gravity* run in two
     /// passes over the bodies, translation first and rotation second (a short loop, in which
     /// the processor overlaps one body's chain of rotation arithmetic with the next's); then
-    /// *couplings*, *water*, *accelerations* and *powers*. Built for AVX2 as well, with the per-body
-    /// stages inlined (same results, bit for bit).
+    /// *couplings*, *water*, *accelerations* and *powers*. Built for AVX-512 and AVX2 as well
+    /// ([`crate::simd::SupportedLevel::run`]), with the per-body stages inlined (same results,
+    /// bit for bit).
     #[inline(always)]
     fn step_built(
         &mut self,

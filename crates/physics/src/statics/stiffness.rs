@@ -17,7 +17,7 @@ use crate::coupling::{Coupling, CouplingForces, CouplingKind};
 use crate::evaluation::Evaluation;
 use crate::math::{Mat3, Rotation, Vec3};
 use crate::system::System;
-use crate::water::{WaterForces, WaterScratch};
+use crate::water::{WaterForces, WaterScratch, WaterStageInputs};
 use nalgebra::DMatrix;
 
 /// The time [s] of a static evaluation: nothing in the system at rest
@@ -62,7 +62,14 @@ pub fn tangent(system: &System, evaluation: &Evaluation) -> DMatrix<f64> {
         let mut records = vec![WaterForces::default(); bodies.len()];
         let mut scratch = WaterScratch::default();
         add_differences(&mut jacobian, system, frames, &bodies, |moved, loads| {
-            stage.apply(system.level(), system.bodies(), moved, loads, &mut records, &mut scratch, STATIC_TIME);
+            let on = WaterStageInputs {
+                bodies: system.bodies(),
+                frames: moved,
+                loads,
+                records: &mut records,
+                scratch: &mut scratch,
+            };
+            stage.apply(system.supported_level(), on, STATIC_TIME);
         });
     }
     -jacobian

@@ -47,4 +47,4 @@ pub use environment::{CurrentProfile, CurrentSpec, Water, WaterError, WaterSpec,
 pub use forces::WaterForces;
 pub use hull::{Hull, HullError};
 pub use morison::Hydro;
-pub use stage::{FloatingBody, WaterScratch, WaterStage};
+pub use stage::{FloatingBody, WaterScratch, WaterStage, WaterStageInputs};

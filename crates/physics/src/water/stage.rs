@@ -11,7 +11,7 @@ use super::pressure::integrate;
 use super::waves::SeaInstant;
 use crate::body::{BodyFrame, Load, RigidBody};
 use crate::math::Vec3;
-use crate::simd::Level;
+use crate::simd::SupportedLevel;
 use std::sync::Arc;
 
 /// A body in the water: its index, hull and coefficients.
@@ -51,6 +51,25 @@ pub struct WaterStage {
     pub floating: Vec<FloatingBody>,
 }
 
+/// What the water stage works on at one evaluation: the bodies, their kinematics and loads, the
+/// records it writes (one per floating body) and its buffers.
+pub struct WaterStageInputs<'a> {
+    pub bodies: &'a [RigidBody],
+    pub frames: &'a [BodyFrame],
+    pub loads: &'a mut [Load],
+    pub records: &'a mut [WaterForces],
+    pub scratch: &'a mut WaterScratch,
+}
+
+/// The water at an evaluation's time `time` [s]: the ramp `r` (0 to 1) of its waves and
+/// current (PHYSICS.md §6), and whether there are waves to sum.
+#[derive(Debug, Clone, Copy)]
+struct Instant {
+    time: f64,
+    ramp: f64,
+    waves: bool,
+}
+
 /// The stage's buffers, kept with the evaluation (sized on first use, then reused).
 #[derive(Debug, Clone, Default)]
 pub struct WaterScratch {
@@ -75,72 +94,40 @@ impl WaterStage {
         self.floating.iter().find(|f| f.body == body)
     }
 
-    /// Stage *water* at `time` [s] and the kinematics `frames`: each floating body's water
-    /// forces into `out` (one per floating body) and added to `loads` (which must hold every
-    /// other force of the evaluation: the added mass reacts to the total); returns their power
-    /// `Σ F·v + M·ω` [W].
+    /// Stage *water* at `time` [s] and the kinematics `on.frames`: each floating body's water
+    /// forces into `on.records` (one per floating body) and added to `on.loads` (which must hold
+    /// every other force of the evaluation: the added mass reacts to the total); returns their
+    /// power `Σ F·v + M·ω` [W].
     ///
-    /// Built for AVX2 as well as the portable build, chosen by `level` (the same IEEE
-    /// arithmetic: the same results, bit for bit): the four chains of complex powers of the
-    /// waves' sums run in one vector instruction each.
-    #[allow(clippy::too_many_arguments)]
-    pub fn apply(
-        &self,
-        level: Level,
-        bodies: &[RigidBody],
-        frames: &[BodyFrame],
-        loads: &mut [Load],
-        out: &mut [WaterForces],
-        scratch: &mut WaterScratch,
-        time: f64,
-    ) -> f64 {
-        match level {
-            // SAFETY: `System::level` only holds a level the processor has; AVX-512 implies AVX2.
-            #[cfg(target_arch = "x86_64")]
-            Level::Avx512 | Level::Avx2 => unsafe { self.apply_avx2(bodies, frames, loads, out, scratch, time) },
-            _ => self.apply_built(bodies, frames, loads, out, scratch, time),
-        }
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    fn apply_avx2(
-        &self,
-        bodies: &[RigidBody],
-        frames: &[BodyFrame],
-        loads: &mut [Load],
-        out: &mut [WaterForces],
-        scratch: &mut WaterScratch,
-        time: f64,
-    ) -> f64 {
-        self.apply_built(bodies, frames, loads, out, scratch, time)
+    /// Built for AVX-512 and AVX2 as well as the portable build, chosen by `level`
+    /// ([`SupportedLevel::run`]; the same IEEE arithmetic: the same results, bit for bit): the
+    /// four chains of complex powers of the waves' sums run in one vector instruction each.
+    pub fn apply(&self, level: SupportedLevel, on: WaterStageInputs<'_>, time: f64) -> f64 {
+        level.run(
+            #[inline(always)]
+            || self.apply_built(on, time),
+        )
     }
 
     #[inline(always)]
-    fn apply_built(
-        &self,
-        bodies: &[RigidBody],
-        frames: &[BodyFrame],
-        loads: &mut [Load],
-        out: &mut [WaterForces],
-        scratch: &mut WaterScratch,
-        time: f64,
-    ) -> f64 {
+    fn apply_built(&self, on: WaterStageInputs<'_>, time: f64) -> f64 {
+        let WaterStageInputs { bodies, frames, loads, records, scratch } = on;
         let water = &self.water;
         let ramp = water.ramp(time);
         let waves = ramp > 0.0 && !water.sea().is_calm();
         if waves {
             water.sea().instant(time, &mut scratch.sea);
         }
+        let instant = Instant { time, ramp, waves };
         let mut power = 0.0;
-        for (floating, record) in self.floating.iter().zip(out.iter_mut()) {
+        for (floating, record) in self.floating.iter().zip(records.iter_mut()) {
             let (body, frame) = (&bodies[floating.body], &frames[floating.body]);
             // A prescribed motion is not moved by forces: the water does nothing to it.
             if body.is_kinematic() {
                 *record = WaterForces { body: floating.body, ..WaterForces::default() };
                 continue;
             }
-            *record = self.body_forces(floating, body, frame, &loads[floating.body], scratch, time, ramp, waves);
+            *record = self.body_forces(floating, body, frame, &loads[floating.body], scratch, &instant);
             let total = record.total();
             loads[floating.body].force += total.force;
             loads[floating.body].moment += total.moment;
@@ -150,7 +137,6 @@ impl WaterStage {
     }
 
     /// The water's forces on one body, whose load from every other force is `load`.
-    #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn body_forces(
         &self,
@@ -159,10 +145,9 @@ impl WaterStage {
         frame: &BodyFrame,
         load: &Load,
         scratch: &mut WaterScratch,
-        time: f64,
-        ramp: f64,
-        waves: bool,
+        instant: &Instant,
     ) -> WaterForces {
+        let Instant { time, ramp, waves } = *instant;
         let water = &self.water;
         let hull = &floating.hull;
         let mut record = WaterForces { body: floating.body, ..WaterForces::default() };

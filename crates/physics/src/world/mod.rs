@@ -327,7 +327,7 @@ impl World {
         EnergyReport {
             kinetic: self.body_energy.kinetic,
             gravity: self.body_energy.gravity,
-            elastic: self.evaluation.forces().iter().map(|f| f.potential).sum(),
+            elastic: self.evaluation.elastic_energy(),
             dissipated: self.ledger.dissipated,
             external_work: self.ledger.external_work,
         }

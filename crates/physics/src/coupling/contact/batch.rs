@@ -43,8 +43,8 @@ pub struct Accumulated {
     pub moment: Vec3,
     /// `Σ |f_n|` [N].
     pub normal: f64,
-    /// `Σ f_t` [N]: against planes, found from the other sums rather than summed face by face
-    /// (see [`Accumulated::friction_against_planes`]).
+    /// `Σ f_t` [N], summed face by face against a body (against planes, the step leaves it to
+    /// [`super::normals::NormalForces`]).
     pub friction: Vec3,
     pub potential: f64,
     pub dissipated_power: f64,
@@ -60,17 +60,6 @@ impl Accumulated {
         self.friction += contact.friction;
         self.potential += contact.potential;
         self.dissipated_power += contact.dissipated_power;
-    }
-
-    /// Sets `Σ f_t` of faces against planes from `Σ f_f` and `normal_along = Σ_p n_p N_p`, the
-    /// planes' normals `n_p` weighted by the normal force `N_p` each plane took: every face's
-    /// force is `n_p |f_n| + f_t`, so `Σ f_t = Σ f_f − Σ_p n_p N_p` (PHYSICS.md §4), with no
-    /// sum over the faces added to the step's face loop (its round-off is that of `Σ f_f`,
-    /// about 1e-16 of the normal force).
-    #[inline(always)]
-    pub fn friction_against_planes(mut self, normal_along: &Vec3) -> Self {
-        self.friction = self.force - normal_along;
-        self
     }
 }
 
@@ -177,8 +166,7 @@ impl LaneSums {
         lane_sum(&self.normal)
     }
 
-    /// The sums across the lanes (`friction` left at zero: see
-    /// [`Accumulated::friction_against_planes`]).
+    /// The sums across the lanes (`friction` left at zero: see [`Accumulated::friction`]).
     #[inline(always)]
     pub fn total(&self) -> Accumulated {
         Accumulated {
@@ -251,16 +239,18 @@ mod tests {
         assert!(in_range > 5, "{in_range} faces in range");
         let mut lanes = LaneSums::default();
         accumulate(&batches, &law, &plane, &mut lanes);
-        let sums = lanes.total().friction_against_planes(&(plane.normal * lanes.normal()));
+        let sums = lanes.total();
         assert_relative_eq!(sums.force, expected.force, max_relative = 1e-14);
-        // Σ f_t from Σ f_f − n Σ|f_n|: a difference of sums as large as the normal force, so its
-        // round-off is relative to that force (1e-14: a few ulp of each of the ~20 faces' terms).
+        // Σ f_t = Σ f_f − n Σ|f_n| (PHYSICS.md §4, as the contact's friction is found): a
+        // difference of sums as large as the normal force, so its round-off is relative to that
+        // force (1e-14: a few ulp of each of the ~20 faces' terms).
+        let friction = sums.force - plane.normal * lanes.normal();
         assert!(
             expected.friction.norm() > 1e-3 * expected.normal,
             "the sphere slides: friction {}",
             expected.friction.norm()
         );
-        assert_relative_eq!(sums.friction, expected.friction, epsilon = 1e-14 * expected.normal);
+        assert_relative_eq!(friction, expected.friction, epsilon = 1e-14 * expected.normal);
         assert_relative_eq!(sums.moment, expected.moment, max_relative = 1e-14);
         assert_relative_eq!(sums.normal, expected.normal, max_relative = 1e-14);
         assert_relative_eq!(sums.potential, expected.potential, max_relative = 1e-14);

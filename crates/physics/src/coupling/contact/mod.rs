@@ -16,6 +16,7 @@
 mod batch;
 pub mod estimator;
 pub mod law;
+mod normals;
 mod shortlist;
 
 use super::forces::CouplingForces;
@@ -24,6 +25,7 @@ use crate::math::{Mat3, Vec3};
 use crate::mesh::{BoundaryMesh, Face, Surface};
 use batch::{Accumulated, FaceBatch, LaneSums, PlaneView};
 pub use law::{ContactLaw, FaceContact};
+use normals::NormalForces;
 use shortlist::Shortlist;
 use std::sync::Arc;
 
@@ -104,15 +106,22 @@ pub struct ContactForces {
 }
 
 /// What a contact remembers between evaluations of one run: for each plane of
-/// [`Opposing::Planes`], the faces that may be in its range, and the friction at the last
-/// evaluation (for plots, recordings and the time step limit, which so need not evaluate the
-/// faces again).
+/// [`Opposing::Planes`], the faces that may be in its range, and what the friction at the last
+/// evaluation is found from (for plots and recordings, which so need not evaluate the faces
+/// again).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ContactCache {
     shortlists: Vec<Shortlist>,
-    /// `Σ f_t` [N] in the body's principal axes at the last [`Contact::apply`] (its norm is the
-    /// friction of [`ContactForces`]; `Σ |f_n|` is the coupling record's `tension`).
-    pub friction: Vec3,
+    /// `Σ_f n_f |f_n|` at the last [`Contact::apply`].
+    normals: NormalForces,
+}
+
+impl ContactCache {
+    /// The normal force and friction of the contact whose last evaluation this cache kept, and
+    /// that wrote `record`.
+    pub fn forces(&self, record: &CouplingForces) -> ContactForces {
+        ContactForces { normal: record.tension, friction: self.normals.friction(&record.f1, record.tension) }
+    }
 }
 
 impl Contact {
@@ -132,7 +141,7 @@ impl Contact {
             Opposing::Planes(planes) => planes.len(),
             Opposing::Body { .. } => 0,
         };
-        ContactCache { shortlists: vec![Shortlist::new(); planes], friction: Vec3::zeros() }
+        ContactCache { shortlists: vec![Shortlist::new(); planes], normals: NormalForces::default() }
     }
 
     /// The faces in contact at the kinematics `frames`, with their forces: the evaluation of
@@ -195,37 +204,36 @@ impl Contact {
         }
     }
 
-    /// Whether the opposing boundary is in range of the body's bounding ball at the kinematics
-    /// `frames`, and the sums over the faces in contact, in the body's principal frame (against
-    /// planes, batch by batch), bringing the shortlists up to date. (Not an `Option` of the
-    /// sums: that went through memory, where the processor stalled reading back parts of what it
-    /// had just written.)
+    /// Whether any of `planes` is in range of the body's bounding ball at its kinematics `frame`,
+    /// and the sums over the faces in contact in the body's principal frame, batch by batch,
+    /// bringing the `shortlists` up to date; `normals` keeps each plane's share of the normal
+    /// force for the friction (only a corner, two planes in range at once, adds a reduction of
+    /// the lane sums). (Not an `Option` of the sums: that went through memory, where the
+    /// processor stalled reading back parts of what it had just written.)
     #[inline(always)]
-    fn summed(&self, shortlists: &mut [Shortlist], frames: &[BodyFrame]) -> (bool, Accumulated) {
-        let frame = &frames[self.body];
-        match &self.against {
-            Opposing::Planes(planes) => {
-                let (mut in_range, mut lanes) = (false, LaneSums::default());
-                // Σ_p n_p N_p, for the friction, from Σ|f_n| after each plane (one reduction of
-                // the lanes per plane).
-                let (mut normal_along, mut normal_so_far) = (Vec3::zeros(), 0.0);
-                for (plane, shortlist) in planes.iter().zip(shortlists) {
-                    let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else {
-                        continue;
-                    };
-                    batch::accumulate(batches, &self.law, &view, &mut lanes);
-                    let normal = lanes.normal();
-                    normal_along += view.normal * (normal - normal_so_far);
-                    normal_so_far = normal;
-                    in_range = true;
-                }
-                (in_range, lanes.total().friction_against_planes(&normal_along))
+    fn against_planes(
+        &self,
+        planes: &[Plane],
+        shortlists: &mut [Shortlist],
+        normals: &mut NormalForces,
+        frame: &BodyFrame,
+    ) -> (bool, Accumulated) {
+        let (mut last_in_range, mut lanes) = (None::<&Plane>, LaneSums::default());
+        normals.start();
+        for (plane, shortlist) in planes.iter().zip(shortlists) {
+            let Some((view, batches)) = plane_view(&self.boundary, &self.law, plane, shortlist, frame) else {
+                continue;
+            };
+            if let Some(previous) = last_in_range {
+                normals.close(&previous.normal, lanes.normal());
             }
-            Opposing::Body { body, surface } => {
-                let mut sums = Accumulated::default();
-                (against_body(&self.boundary, &self.law, surface, frame, &frames[*body], &mut sums, |_, _| {}), sums)
-            }
+            batch::accumulate(batches, &self.law, &view, &mut lanes);
+            last_in_range = Some(plane);
         }
+        if let Some(last) = last_in_range {
+            normals.last_plane(&last.normal);
+        }
+        (last_in_range.is_some(), lanes.total())
     }
 
     /// The area behind the time step limit [m²]: the larger of the expected contact area and
@@ -259,22 +267,46 @@ impl Contact {
     #[inline(always)]
     pub fn apply(&self, cache: &mut ContactCache, frames: &[BodyFrame], loads: &mut [Load], out: &mut CouplingForces) {
         let frame = &frames[self.body];
-        let point2 = self.other_body().map_or(frame.position, |body| frames[body].position);
-        let (in_range, sums) = self.summed(&mut cache.shortlists, frames);
+        let ContactCache { shortlists, normals } = cache;
+        match &self.against {
+            Opposing::Planes(planes) => {
+                let (in_range, sums) = self.against_planes(planes, shortlists, normals, frame);
+                self.add_sums(in_range, &sums, frame, frame.position, loads, out);
+            }
+            Opposing::Body { body, surface } => {
+                let (other, mut sums) = (&frames[*body], Accumulated::default());
+                let in_range = against_body(&self.boundary, &self.law, surface, frame, other, &mut sums, |_, _| {});
+                let (force, moment) = self.add_sums(in_range, &sums, frame, other.position, loads, out);
+                *normals = NormalForces::summed(frame.rotation * (sums.force - sums.friction), sums.normal);
+                if in_range {
+                    // The reaction −f_f at the same points: moment (r_f − x_B) × (−f_f).
+                    let lever = frame.position - other.position;
+                    loads[*body].force -= force;
+                    loads[*body].moment -= lever.cross(&force) + moment;
+                }
+            }
+        }
+    }
+
+    /// The `sums` over the faces (in the principal frame of the body moving as `frame`) in
+    /// world axes, added to the body's load and written to `out` with the opposing side's point
+    /// `point2`; no force, and nothing added, unless `in_range`. Returns the force and moment
+    /// [N, N·m].
+    #[inline(always)]
+    fn add_sums(
+        &self,
+        in_range: bool,
+        sums: &Accumulated,
+        frame: &BodyFrame,
+        point2: Vec3,
+        loads: &mut [Load],
+        out: &mut CouplingForces,
+    ) -> (Vec3, Vec3) {
         if !in_range {
-            // No force, and nothing to add to the loads.
             *out = CouplingForces { point1: frame.position, point2, ..CouplingForces::default() };
-            cache.friction = Vec3::zeros();
-            return;
+            return (Vec3::zeros(), Vec3::zeros());
         }
-        // The sums in world axes.
         let (force, moment) = (frame.rotation * sums.force, frame.rotation * sums.moment);
-        if let Opposing::Body { body, .. } = self.against {
-            // The reaction −f_f at the same points: moment (r_f − x_B) × (−f_f).
-            let lever = frame.position - frames[body].position;
-            loads[body].force -= force;
-            loads[body].moment -= lever.cross(&force) + moment;
-        }
         loads[self.body].force += force;
         loads[self.body].moment += moment;
         *out = CouplingForces {
@@ -286,7 +318,7 @@ impl Contact {
             dissipated_power: sums.dissipated_power,
             potential: sums.potential,
         };
-        cache.friction = sums.friction;
+        (force, moment)
     }
 }
 

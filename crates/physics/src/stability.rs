@@ -269,7 +269,8 @@ pub fn impact_limits(situation: &Situation) -> Vec<Limit> {
                         / STEPS_PER_STOPPING_TIME,
                 })
             }
-            _ => None,
+            // Their forces grow with the stretch, not at an impact: no stopping time to resolve.
+            CouplingKind::SpringDamper(_) | CouplingKind::Catenary(_) => None,
         })
         .filter(|limit| limit.dt.is_finite())
         .collect()

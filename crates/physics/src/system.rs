@@ -361,13 +361,10 @@ impl System {
     }
 }
 
-/// Every body coupling `coupling` refers to must be one of the `count` bodies.
+/// Every body coupling `coupling` refers to (its [`Coupling::ends`], a contact's opposing body
+/// among them) must be one of the `count` bodies.
 fn check_bodies(coupling: &Coupling, count: usize) -> Result<(), SystemError> {
-    let mut bodies: Vec<usize> = coupling.ends().iter().filter_map(|end| end.body()).collect();
-    if let CouplingKind::Contact(contact) = &coupling.kind {
-        bodies.extend(contact.other_body());
-    }
-    match bodies.into_iter().find(|&body| body >= count) {
+    match coupling.ends().iter().filter_map(|end| end.body()).find(|&body| body >= count) {
         Some(body) => Err(SystemError::UnknownBody { coupling: coupling.name.clone(), body, count }),
         None => Ok(()),
     }
@@ -378,7 +375,12 @@ fn check_bodies(coupling: &Coupling, count: usize) -> Result<(), SystemError> {
 fn check_anchors(couplings: &[Coupling], seabed: &Seabed, gravity: &Vec3) -> Result<(), SystemError> {
     let up = -gravity.try_normalize(0.0).unwrap_or_else(|| -Vec3::z());
     for coupling in couplings {
-        let CouplingKind::Catenary(line) = &coupling.kind else { continue };
+        let line = match &coupling.kind {
+            CouplingKind::Catenary(line) => line,
+            // Only a line lies on the seabed; a spring's world end may be anywhere, and a
+            // contact against the seabed is made for it.
+            CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => continue,
+        };
         for (end, endpoint) in [(1, &line.end1), (2, &line.end2)] {
             let Endpoint::World(point) = endpoint else { continue };
             let height = seabed.height(point, &up);

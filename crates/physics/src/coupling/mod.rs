@@ -116,7 +116,11 @@ impl Coupling {
             (CouplingKind::Contact(contact), CouplingCache::Contact(memory)) => {
                 contact.apply(memory, frames, loads, out)
             }
-            (_, cache) => return self.apply_with_fresh_cache(cache, frames, surroundings, loads, out),
+            // A cache of another kind, every kind listed: a kind missing here would fall through to
+            // a fresh cache of its own kind and back, for ever.
+            (CouplingKind::SpringDamper(_) | CouplingKind::Catenary(_) | CouplingKind::Contact(_), cache) => {
+                return self.apply_with_fresh_cache(cache, frames, surroundings, loads, out);
+            }
         }
         Ok(())
     }

@@ -5,7 +5,7 @@
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Integrator {
-    /// The seed's central-difference scheme ([`super::leapfrog`]).
+    /// The central-difference scheme of PHYSICS.md §1 "Time integration" ([`super::leapfrog`]).
     #[default]
     Leapfrog,
     /// The leapfrog with the gyroscopic term at a predicted ω(t) ([`super::leapfrog2`]).
@@ -41,12 +41,18 @@ impl Integrator {
 
     /// Whether the scheme chooses its own steps (and so has no stability limit to respect).
     pub fn is_adaptive(self) -> bool {
-        self == Self::Dopri45
+        match self {
+            Self::Dopri45 => true,
+            Self::Leapfrog | Self::Leapfrog2 | Self::Splitting | Self::Rk4 => false,
+        }
     }
 
     /// Whether the scheme's stored velocities are at `t − ½dt` (the leapfrogs) rather than at `t`.
     pub fn is_staggered(self) -> bool {
-        matches!(self, Self::Leapfrog | Self::Leapfrog2)
+        match self {
+            Self::Leapfrog | Self::Leapfrog2 => true,
+            Self::Splitting | Self::Rk4 | Self::Dopri45 => false,
+        }
     }
 }
 

@@ -16,6 +16,16 @@ pub enum Profile {
     PowerLaw,
 }
 
+impl Profile {
+    /// Whether the profile is defined only over a finite depth (the water refuses it in deep water).
+    pub fn needs_depth(self) -> bool {
+        match self {
+            Self::Uniform => false,
+            Self::PowerLaw => true,
+        }
+    }
+}
+
 /// A current over water of a given level and depth.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Current {
@@ -45,7 +55,8 @@ impl Current {
                 let above_seabed = (z.min(self.level) - (self.level - h)).max(0.0);
                 self.surface * (above_seabed / h).powf(1.0 / 7.0)
             }
-            _ => self.surface,
+            // Deep water has the uniform profile only (the water refuses a power law without a depth).
+            (Profile::Uniform, _) | (Profile::PowerLaw, None) => self.surface,
         }
     }
 }

@@ -235,7 +235,7 @@ fn check(spec: &WaterSpec) -> Result<(), WaterError> {
     }
     non_negative("current speed", "m/s", spec.current.speed)?;
     finite("current heading", spec.current.heading)?;
-    if spec.current.profile == Profile::PowerLaw && spec.depth.is_none() {
+    if spec.current.profile.needs_depth() && spec.depth.is_none() {
         return Err(WaterError::ProfileWithoutDepth);
     }
     if let Some(ramp) = spec.ramp {

@@ -247,6 +247,7 @@ fn harmonic_sum(instant: &SeaInstant, z: [f64; 2], first: u32) -> f64 {
     let multiply = |a: [f64; 2], b: [f64; 2]| [a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0]];
     // z^first by squaring, then the chains z^first, z^{first+1}, … and the stride z^4.
     let (mut power, mut base, mut exponent) = ([1.0, 0.0], z, first);
+    // Ends: `exponent` loses a bit each pass.
     while exponent > 0 {
         if exponent & 1 == 1 {
             power = multiply(power, base);

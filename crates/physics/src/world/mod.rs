@@ -141,6 +141,9 @@ impl World {
     /// checked; the clock ends exactly at the span's end.
     fn adaptive_span(&mut self, h: f64) -> Result<(), StepError> {
         let end = self.clock.time + h;
+        // Ends: a rejected attempt makes the next one shorter by the scheme's safety factor at
+        // least, until `Dopri45::step` refuses one below round-off of the time (`Stalled`); an
+        // accepted one moves the clock toward `end`, which the last one meets exactly.
         loop {
             let report = self
                 .scheme

@@ -1,4 +1,4 @@
-//! Face-based penalty contact with tanh friction (PHYSICS.md §4, seed [4956]–[4965]).
+//! Face-based penalty contact with tanh friction (PHYSICS.md §4 [4956]–[4965]).
 //!
 //! A contact coupling pushes the faces of one body's [`BoundaryMesh`] away from an opposing
 //! boundary: half-spaces of the environment (a ground plane, quay walls, the walls of a domain
@@ -173,6 +173,7 @@ impl Contact {
                     };
                     for batch in batches {
                         let (contacts, mut in_range) = batch.contacts(&self.law, &view);
+                        // Ends: each pass clears the lowest set bit.
                         while in_range != 0 {
                             let lane = in_range.trailing_zeros() as usize;
                             in_range &= in_range - 1;

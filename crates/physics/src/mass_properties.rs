@@ -1,5 +1,5 @@
-//! Mass properties of a rigid body built from a master node and slave nodes (PHYSICS.md §1,
-//! seed 003 [1]–[10]).
+//! Mass properties of a rigid body built from a master node and slave nodes (PHYSICS.md §1
+//! [1]–[10]).
 //!
 //! `m = m_M + Σ m_i` [kg]; `x_G = (m_M x_M + Σ m_i x_i)/m` [m];
 //! `I = J^M + m_M(|r_M|² E − r_M r_Mᵀ) + Σ [I^i + m_i(|r_i|² E − r_i r_iᵀ)]` [kg·m²] about G with
@@ -57,7 +57,7 @@ pub struct MassProperties {
 }
 
 impl MassProperties {
-    /// Mass properties of master node `master` and slave nodes `slaves` (seed 003 [1]–[10]).
+    /// Mass properties of master node `master` and slave nodes `slaves` (PHYSICS.md §1 [1]–[10]).
     pub fn from_nodes(master: &Node, slaves: &[Node]) -> Result<Self, MassError> {
         let nodes = || std::iter::once(master).chain(slaves.iter());
         if let Some((index, node)) = nodes().enumerate().find(|(_, n)| n.mass < 0.0) {

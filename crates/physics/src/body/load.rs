@@ -1,4 +1,4 @@
-//! The load on a body: what its forces add up to (seed 003 [11]–[12]).
+//! The load on a body: what its forces add up to (PHYSICS.md §1 [11]–[12]).
 
 use crate::math::Vec3;
 

@@ -17,7 +17,7 @@ pub struct BodyState {
 }
 
 impl BodyState {
-    /// World position of a point fixed in the principal frame, `x_G + R r` [m] (seed 003 [19]).
+    /// World position of a point fixed in the principal frame, `x_G + R r` [m] (PHYSICS.md §1 [19]).
     pub fn point(&self, principal_point: &Vec3) -> Vec3 {
         self.position + self.orientation * principal_point
     }

@@ -1,4 +1,4 @@
-//! Boundary conditions of a body's master node (seed 003, BC section; slave nodes carry none):
+//! Boundary conditions of a body's master node (PHYSICS.md §1 [BC section]; slave nodes carry none):
 //! fixed components, or a prescribed (kinematic) motion that forces do not change.
 
 use super::state::BodyState;
@@ -54,7 +54,7 @@ pub struct PrescribedMotion {
     pub angular_velocity: Vec3,
 }
 
-/// Boundary conditions of the master node (seed 003, BC section; slave nodes carry none).
+/// Boundary conditions of the master node (PHYSICS.md §1 [BC section]; slave nodes carry none).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Support {
     Free,

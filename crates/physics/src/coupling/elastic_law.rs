@@ -1,10 +1,10 @@
-//! Elastic laws of the spring-damper coupling (PHYSICS.md §2, seed [4946]–[4951]).
+//! Elastic laws of the spring-damper coupling (PHYSICS.md §2 [4946]–[4951]).
 //!
 //! Every law gives, at the distance `x` [m] between the ends, the elastic force on end 1
 //! `f_e(x) = k_eff(x)(x − x0)` [N] (positive = tension, pulling the ends together), the tangent
 //! stiffness `k(x) = df_e/dx` [N/m] and the potential `V(x)` [J] with `dV/dx = f_e`. The force is
 //! computed directly, never as `k_eff · (x − x0)`, so there is no 0/0 at `x = x0`; `k_eff` is
-//! offered for display, and at `x0` it is the tangent stiffness, as the seed prescribes.
+//! offered for display, and at `x0` it is the tangent stiffness, as PHYSICS.md §2 prescribes.
 
 use crate::table::{Extrapolation, Table, TableError};
 

@@ -39,7 +39,7 @@ impl Endpoint {
         }
     }
 
-    /// Where the end is and how fast it moves (seed 003 [19]: `v_i = v_G + ω × (x_i − x_G)`).
+    /// Where the end is and how fast it moves (PHYSICS.md §1 [19]: `v_i = v_G + ω × (x_i − x_G)`).
     #[inline(always)]
     pub fn motion(&self, frames: &[BodyFrame]) -> EndMotion {
         match *self {

@@ -1,4 +1,4 @@
-//! Elastic quasi-static catenary coupling (PHYSICS.md §3, seed 000 [4952]–[4955]), lying on
+//! Elastic quasi-static catenary coupling (PHYSICS.md §3 [4952]–[4955]), lying on
 //! the seabed where it reaches it (PHYSICS.md §7).
 //!
 //! A line of mass per length `λ0` [kg/m], displaced volume per length `A_d` [m²], unstretched

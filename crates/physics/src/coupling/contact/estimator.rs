@@ -1,4 +1,4 @@
-//! Contact parameters from the impact they must stop (PHYSICS.md §4, seed [4959]–[4964]).
+//! Contact parameters from the impact they must stop (PHYSICS.md §4 [4959]–[4964]).
 //!
 //! With `A` the expected contact area [m²], `v` the normal impact speed [m/s] and `m_e` the
 //! effective mass [kg] (`m1` against the environment, `m1 m2/(m1 + m2)` between bodies), a face

@@ -1,4 +1,4 @@
-//! The contact law of one face (PHYSICS.md §4, seed [4958] and [4965]).
+//! The contact law of one face (PHYSICS.md §4 [4958] and [4965]).
 //!
 //! Within the range `d < d0` of the opposing boundary, with penetration `x = d0 − d` [m] and
 //! its rate `ẋ = −ḋ` [m/s]:

@@ -30,8 +30,8 @@ pub fn accelerations(body: &RigidBody, rotation: &Mat3, load: &Load, omega: &Vec
             } else {
                 free_accelerations(body, rotation, load, omega)
             };
-            for axis in 0..3 {
-                if translation[axis] {
+            for (axis, &held) in translation.iter().enumerate() {
+                if held {
                     acceleration.linear[axis] = 0.0;
                 }
             }

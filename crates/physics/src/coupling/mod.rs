@@ -55,6 +55,10 @@ pub struct Coupling {
 /// What one coupling remembers between evaluations of one run: nothing that changes its forces,
 /// only how fast they are found (and, for a spring whose ends meet, the last direction).
 #[derive(Debug, Clone, PartialEq)]
+#[allow(
+    clippy::large_enum_variant,
+    reason = "one per coupling, made once per run; a line's last solve is read at every evaluation, where a box would add an indirection"
+)]
 pub enum CouplingCache {
     SpringDamper(SpringCache),
     Catenary(CatenaryCache),

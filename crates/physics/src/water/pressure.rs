@@ -4,8 +4,8 @@
 //! Each triangle (outward `n`, area `A`) with vertex pressures `p1, p2, p3` [Pa] is clipped at
 //! the zero line of the linear interpolant of p: one wet vertex leaves a triangle, two a
 //! quadrilateral (two triangles), three the whole. On each wet triangle, exactly for linear p:
-//! `F = −n A (p1 + p2 + p3)/3` [N] and `∫ p r dA = (A/12) [(p1 + p2 + p3)(r1 + r2 + r3) + p1 r1
-//! + p2 r2 + p3 r3]` [N·m], `r` from G, so that the moment about G is `M = n × ∫ p r dA`.
+//! `F = −n A (p1 + p2 + p3)/3` [N] and `∫ p r dA = (A/12) [(p1 + p2 + p3)(r1 + r2 + r3) +
+//! p1 r1 + p2 r2 + p3 r3]` [N·m], `r` from G, so that the moment about G is `M = n × ∫ p r dA`.
 //! In still water p is linear in z, so this is exact for any closed mesh: `F = ρ g V_sub ẑ`
 //! through the centre of buoyancy.
 //!

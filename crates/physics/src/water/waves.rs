@@ -226,8 +226,7 @@ fn harmonic_layout(components: &[WaveComponent]) -> Option<Harmonic> {
     };
     let m0 = (first.wave_number / base).round();
     let on_grid = base > 0.0
-        && m0 >= 1.0
-        && m0 < 1e6
+        && (1.0..1e6).contains(&m0)
         && components
             .iter()
             .enumerate()

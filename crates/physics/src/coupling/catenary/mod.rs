@@ -189,10 +189,10 @@ impl Catenary {
         vertical: bool,
         last: Option<&LineState>,
     ) -> Result<LineState, CatenaryError> {
-        if let Some(ground) = last.and_then(|s| s.ground.as_ref()) {
-            if let Some(state) = self.solve_grounded(&frame, seabed, Warm::Grounded(ground)) {
-                return Ok(state);
-            }
+        if let Some(ground) = last.and_then(|s| s.ground.as_ref())
+            && let Some(state) = self.solve_grounded(&frame, seabed, Warm::Grounded(ground))
+        {
+            return Ok(state);
         }
         let free = self.solve_free(frame, vertical, last)?;
         if free.lowest_height() >= seabed.elevation {

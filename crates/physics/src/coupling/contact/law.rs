@@ -92,7 +92,7 @@ const EXP_FLOOR: f64 = -40.0;
 /// instead of thirteen in sequence), and `2ᵏ` written into the exponent bits.
 #[inline(always)]
 fn exp_of_non_positive(x: f64) -> f64 {
-    const LN2_HIGH: f64 = 0.693_147_180_369_123_816_49; // 0x3fe62e42fee00000: 32 bits
+    const LN2_HIGH: f64 = f64::from_bits(0x3fe6_2e42_fee0_0000); // 0.693 147 180 369 123 816 49: 32 bits
     const LN2_LOW: f64 = 1.908_214_929_270_587_7e-10; // ln 2 − LN2_HIGH
     // Adding 1.5·2⁵² rounds to an integer, which lands in the low bits of the sum (|k| ≤ 58).
     const ROUNDING: f64 = 6_755_399_441_055_744.0;

@@ -261,7 +261,7 @@ impl System {
         supported
     }
 
-    /// Stage *prescribe*: kinematic bodies to their pose and velocity at time `time` [s].
+    /// Stage *prescribe*: kinematic bodies to their pose and velocity at time `time` \[s].
     pub fn prescribe(&self, states: &mut [BodyState], time: f64) {
         for &index in &self.kinematic_bodies {
             if let Support::Kinematic(motion) = &self.bodies[index].support {
@@ -271,7 +271,7 @@ impl System {
     }
 
     /// Stages *predict*, *clear*, *gravity*, *couplings*, *water* and *powers* at the
-    /// (prescribed) `states` and time `time` [s], into `evaluation`.
+    /// (prescribed) `states` and time `time` \[s], into `evaluation`.
     ///
     /// # Errors
     /// A coupling that cannot give its forces (only non-finite states make one).
@@ -304,7 +304,7 @@ impl System {
     }
 
     /// Stage *couplings* at the kinematics `evaluation.frames`: each coupling's forces, kept per
-    /// coupling and added to the loads; returns the power dissipated [W].
+    /// coupling and added to the loads; returns the power dissipated \[W].
     ///
     /// # Errors
     /// The first coupling that cannot give its forces.
@@ -321,9 +321,9 @@ impl System {
         stage.run(self.level).map_err(|(coupling, source)| EvaluationError { coupling, source })
     }
 
-    /// Stage *water* at time `time` [s] (after the couplings: the added mass reacts to every
+    /// Stage *water* at time `time` \[s] (after the couplings: the added mass reacts to every
     /// other force): each floating body's water forces, kept per body and added to the loads;
-    /// returns their power `Σ F·v + M·ω` [W], external work. Nothing without water.
+    /// returns their power `Σ F·v + M·ω` \[W], external work. Nothing without water.
     #[inline]
     pub fn apply_water(&self, evaluation: &mut Evaluation, time: f64) -> f64 {
         let Some(stage) = &self.water else { return 0.0 };
@@ -334,7 +334,7 @@ impl System {
         stage.apply(self.level, &self.bodies, frames, loads, water, water_scratch, time)
     }
 
-    /// `Σ F·v + M·ω` [W] of the water's forces still in `evaluation` (those of the previous
+    /// `Σ F·v + M·ω` \[W] of the water's forces still in `evaluation` (those of the previous
     /// evaluation) at the kinematics now in its frames: the left end of the staggered schemes'
     /// water work (see [`crate::integrator::leapfrog`]).
     pub fn water_power(&self, evaluation: &Evaluation) -> f64 {
@@ -348,7 +348,7 @@ impl System {
             .sum()
     }
 
-    /// Stage *powers*: what the prescribed motions put in, `−Σ (F_k·v_k + M_k·ω_k)` [W] (of
+    /// Stage *powers*: what the prescribed motions put in, `−Σ (F_k·v_k + M_k·ω_k)` \[W] (of
     /// the loads on them less the water's, whose power [`System::apply_water`] gives).
     pub fn external_power(&self, evaluation: &Evaluation) -> f64 {
         self.kinematic_bodies

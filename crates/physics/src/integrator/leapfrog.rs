@@ -1,4 +1,4 @@
-//! The leapfrog (central difference) scheme, as Radioss does it (PHYSICS.md §1 "Time integration", [17]–[18]).
+//! The leapfrog (central difference) scheme, as Radioss does it (PHYSICS.md §1 "Time integration", \[17]–\[18]).
 //!
 //! `v(t+½dt) = v(t−½dt) + γ(t) dt`, `ω(t+½dt) = ω(t−½dt) + α(t) dt` (ω in the principal frame),
 //! `x_G(t+dt) = x_G(t) + v(t+½dt) dt`, `q(t+dt) = q(t) ⊗ exp(ω(t+½dt) dt)` (exact rotation by
@@ -73,7 +73,7 @@ impl Leapfrog {
         Ok(self.energy(system, states, half))
     }
 
-    /// One step of `h` [s] from `time`.
+    /// One step of `h` \[s] from `time`.
     #[inline]
     pub fn step(
         &mut self,

@@ -80,7 +80,7 @@ impl Default for Substeps {
 }
 
 /// Settings of the adaptive [`Integrator::Dopri45`]: a step is accepted when its estimated
-/// error is below `atol + rtol·|y|` for every component (position [m], velocity [m/s],
+/// error is below `atol + rtol·|y|` for every component (position \[m], velocity [m/s],
 /// orientation quaternion [–], angular velocity [rad/s]), in the root-mean-square sense.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Tolerances {
@@ -88,7 +88,7 @@ pub struct Tolerances {
     pub rtol: f64,
     /// Absolute tolerance [SI unit of each component] > 0.
     pub atol: f64,
-    /// Largest step [s] > 0, if any; the integrator step `dt / substeps` bounds it anyway, as
+    /// Largest step \[s] > 0, if any; the integrator step `dt / substeps` bounds it anyway, as
     /// every world step ends exactly on its boundary.
     pub max_step: Option<f64>,
 }
@@ -102,7 +102,7 @@ impl Default for Tolerances {
 /// The time step settings of a world.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Timing {
-    /// World step [s] > 0.
+    /// World step \[s] > 0.
     pub dt: f64,
     pub integrator: Integrator,
     pub substeps: Substeps,

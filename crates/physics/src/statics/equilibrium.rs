@@ -65,14 +65,14 @@ pub struct Equilibrium {
     pub states: Vec<BodyState>,
     /// The evaluation at those states: loads, coupling records, solved lines.
     pub evaluation: Evaluation,
-    /// `K` [SI] of every body's six directions there ([`stiffness::tangent`]).
+    /// `K` \[SI] of every body's six directions there ([`stiffness::tangent`]).
     pub stiffness: DMatrix<f64>,
     /// The directions solved for.
     pub dofs: Dofs,
     /// Newton iterations and force evaluations taken.
     pub iterations: u32,
     pub evaluations: u32,
-    /// The largest load left along a free direction [N] and about one [N·m].
+    /// The largest load left along a free direction \[N] and about one [N·m].
     pub residual_force: f64,
     pub residual_moment: f64,
     /// A free direction along which the equilibrium is unstable (a negative stiffness), if any.

@@ -1,7 +1,7 @@
 //! Current: a horizontal flow, uniform or sheared (PHYSICS.md §6, Water).
 //!
 //! `U(z) = U_s e` [m/s] (uniform), or the 1/7 power law `U(z) = U_s ((z' − z_b)/h)^(1/7) e`
-//! with `z' = min(z, z_w)` clamped to the seabed `z_b = z_w − h`, `h` the depth [m];
+//! with `z' = min(z, z_w)` clamped to the seabed `z_b = z_w − h`, `h` the depth \[m];
 //! `U_s` the surface speed [m/s], `e` the horizontal heading unit vector.
 
 use crate::math::Vec3;
@@ -48,7 +48,7 @@ impl Current {
         self.surface == Vec3::zeros()
     }
 
-    /// `U(z)` [m/s] at height `z` [m] (unramped).
+    /// `U(z)` [m/s] at height `z` \[m] (unramped).
     pub fn velocity(&self, z: f64) -> Vec3 {
         match (self.profile, self.depth) {
             (Profile::PowerLaw, Some(h)) => {

@@ -75,10 +75,10 @@ impl WaterStage {
         self.floating.iter().find(|f| f.body == body)
     }
 
-    /// Stage *water* at `time` [s] and the kinematics `frames`: each floating body's water
+    /// Stage *water* at `time` \[s] and the kinematics `frames`: each floating body's water
     /// forces into `out` (one per floating body) and added to `loads` (which must hold every
     /// other force of the evaluation: the added mass reacts to the total); returns their power
-    /// `Σ F·v + M·ω` [W].
+    /// `Σ F·v + M·ω` \[W].
     ///
     /// Built for AVX2 as well as the portable build, chosen by `level` (the same IEEE
     /// arithmetic: the same results, bit for bit): the four chains of complex powers of the
@@ -221,7 +221,7 @@ impl WaterStage {
     }
 }
 
-/// `F·v + M·ω` [W] of `load` on a body moving as `frame`.
+/// `F·v + M·ω` \[W] of `load` on a body moving as `frame`.
 #[inline(always)]
 pub fn power(load: &Load, frame: &BodyFrame) -> f64 {
     load.force.dot(&frame.velocity) + load.moment.dot(&(frame.rotation * frame.angular_velocity))

@@ -62,7 +62,7 @@ pub struct World {
 
 impl World {
     /// A world at t = 0 from the system's initial states, with time step settings `timing`
-    /// (`dt` [s] > 0). Forces and accelerations at t = 0 are evaluated here.
+    /// (`dt` \[s] > 0). Forces and accelerations at t = 0 are evaluated here.
     ///
     /// # Errors
     /// A coupling that cannot give its forces at t = 0.
@@ -248,7 +248,7 @@ impl World {
         self.timing.tolerances
     }
 
-    /// Simulated time [s].
+    /// Simulated time \[s].
     pub fn time(&self) -> f64 {
         self.clock.time
     }
@@ -258,7 +258,7 @@ impl World {
         self.clock.steps
     }
 
-    /// World step [s]: what one [`World::step`] advances.
+    /// World step \[s]: what one [`World::step`] advances.
     pub fn dt(&self) -> f64 {
         self.timing.dt
     }
@@ -278,7 +278,7 @@ impl World {
         self.substeps
     }
 
-    /// The integrator's step `dt / substeps` [s], the one the stable time step bounds.
+    /// The integrator's step `dt / substeps` \[s], the one the stable time step bounds.
     pub fn step_size(&self) -> f64 {
         self.timing.dt / f64::from(self.substeps)
     }

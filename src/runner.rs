@@ -120,6 +120,7 @@ impl Runner {
                 let (cases, failed, work) = (&cases, &failed, &work);
                 scope.spawn(move || {
                     let flags = [self.cancel.as_ref(), failed];
+                    // Ends: when the cases run out, a flag is set, or the results' receiver is gone.
                     loop {
                         if flags.iter().any(|flag| flag.load(Ordering::Relaxed)) {
                             return;

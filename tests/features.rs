@@ -1,5 +1,5 @@
 //! `cargo build` and `cargo test` build each dependency with the same features, so README's two
-//! commands build the viewer stack once (issue 14): every package the tests share with the
+//! commands build the viewer stack once: every package the tests share with the
 //! application has the same feature list in both builds (`cargo tree` resolves them as cargo
 //! does; dev-dependencies turn features on only when tests are built).
 

@@ -1,4 +1,4 @@
-//! Bad input, divergence and interrupted recordings (issue 6).
+//! Bad input, divergence and interrupted recordings (README "When things go wrong"; PHYSICS.md §5 "Health check").
 
 mod common;
 

@@ -1,4 +1,4 @@
-//! `tether equilibrium` and `tether offsets` (issue 16), run as a user runs them.
+//! `tether equilibrium` and `tether offsets` (PHYSICS.md §7), run as a user runs them.
 
 mod common;
 

@@ -1,5 +1,5 @@
 //! `tether equilibrium SCENE [--write OUT.ron]`: the static equilibrium of every body that
-//! responds to forces (PHYSICS.md §7, issue 16): poses, tensions, grounded lengths and
+//! responds to forces (PHYSICS.md §7): poses, tensions, grounded lengths and
 //! touchdowns, each body's 6 × 6 stiffness; optionally the scene starting there.
 
 use anyhow::Context as _;

@@ -1,4 +1,4 @@
-//! The statics panel (PHYSICS.md §7, issue 16): the seabed's line friction `C_B`, live; an
+//! The statics panel (PHYSICS.md §7): the seabed's line friction `C_B`, live; an
 //! "equilibrium" button that puts the scene at its static pose; the offset curve of a body (the
 //! one selected in the viewer, or chosen here) drawn as the restoring force against the offset.
 //! A line's displaced area `A_d` is tuned with its other knobs ([`super::tuning`]).

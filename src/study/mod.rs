@@ -369,6 +369,7 @@ fn sample(world: &mut World, interval: f64, samples: usize) -> Result<Samples, S
     let start = thread_cpu_seconds();
     for k in 1..=samples {
         let target = k as f64 * interval;
+        // Ends: each step moves the clock on by dt > 0 (the world refuses any other).
         while world.time() < target - 0.5 * dt {
             world.step()?;
         }

@@ -1,6 +1,6 @@
-//! Catenary solve time (issue 3's targets: median ≤ 1 µs warm-started with the end points moved
+//! Catenary solve time (targets: median ≤ 1 µs warm-started with the end points moved
 //! by about 1 % of the span, ≤ 5 µs cold), for free lines and for lines lying on the seabed
-//! (issue 16): the grounded solve alone, and the whole line solve a step pays (the free solve
+//! (PHYSICS.md §7): the grounded solve alone, and the whole line solve a step pays (the free solve
 //! that finds the line grounded, or the grounded solve from the last step). Before timing,
 //! prints the mean and maximum Newton iterations over the same cases.
 

@@ -1,4 +1,4 @@
-//! Accelerations of a rigid body from its load (PHYSICS.md §1, seed 003 [13]–[16]).
+//! Accelerations of a rigid body from its load (PHYSICS.md §1 \[13]–\[16]).
 //!
 //! `γ = F/m` [m/s²]; Euler's equations in the principal frame
 //! `I1 α1 = M1 − (I3 − I2) ω2 ω3`, `I2 α2 = M2 − (I1 − I3) ω3 ω1`, `I3 α3 = M3 − (I2 − I1) ω1 ω2`
@@ -30,8 +30,8 @@ pub fn accelerations(body: &RigidBody, rotation: &Mat3, load: &Load, omega: &Vec
             } else {
                 free_accelerations(body, rotation, load, omega)
             };
-            for axis in 0..3 {
-                if translation[axis] {
+            for (axis, &held) in translation.iter().enumerate() {
+                if held {
                     acceleration.linear[axis] = 0.0;
                 }
             }

@@ -1,6 +1,6 @@
 //! Energy accounting (PHYSICS.md §5).
 //!
-//! `total = kinetic + gravity + elastic` [J]. Dampers dissipate `dissipated = ∫ P_d dt` ≥ 0 and
+//! `total = kinetic + gravity + elastic` \[J]. Dampers dissipate `dissipated = ∫ P_d dt` ≥ 0 and
 //! kinematic (prescribed) bodies inject `−∫ Σ (F_k·v_k + M_k·ω_k) dt`, the work the drivers do
 //! against the couplings, and the water (§6) `∫ Σ (F_w·v + M_w·ω) dt` on the floating bodies:
 //! together the `external_work`. The balance `total + dissipated − external_work` is
@@ -11,7 +11,7 @@
 use crate::body::{BodyState, RigidBody};
 use crate::math::Vec3;
 
-/// Energies of a world at one instant [J].
+/// Energies of a world at one instant \[J].
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
 pub struct EnergyReport {
     /// `Σ ½ m |v|² + ½ ωᵀ I ω` of the bodies that respond to forces.
@@ -38,7 +38,7 @@ impl EnergyReport {
     }
 }
 
-/// Power [W] at one force evaluation: dissipated by dampers (≥ 0), put in by prescribed
+/// Power \[W] at one force evaluation: dissipated by dampers (≥ 0), put in by prescribed
 /// motions, and put in by the water (kept apart: the staggered schemes integrate it with their
 /// half-step velocities, see [`crate::integrator::leapfrog`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -48,7 +48,7 @@ pub struct Powers {
     pub water: f64,
 }
 
-/// Work [J] over a span of time: dissipated by dampers, and put in by prescribed motions and the
+/// Work \[J] over a span of time: dissipated by dampers, and put in by prescribed motions and the
 /// water.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Work {
@@ -57,14 +57,14 @@ pub struct Work {
 }
 
 impl Work {
-    /// `½ h (P_a + P_b)`: the trapezoid rule over a step `h` [s] between two evaluations, of the
+    /// `½ h (P_a + P_b)`: the trapezoid rule over a step `h` \[s] between two evaluations, of the
     /// dissipated and the external power (the water's is the caller's).
     pub fn trapezoid(h: f64, a: &Powers, b: &Powers) -> Self {
         Self { dissipated: 0.5 * h * (a.dissipated + b.dissipated), external: 0.5 * h * (a.external + b.external) }
     }
 }
 
-/// Kinetic and gravity energy of the bodies [J].
+/// Kinetic and gravity energy of the bodies \[J].
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct BodyEnergy {
     /// `Σ ½ m |v|² + ½ ωᵀ I ω`.
@@ -101,7 +101,7 @@ impl std::ops::Add for BodyEnergy {
     }
 }
 
-/// Running totals of the work dissipated and put in since t = 0 [J].
+/// Running totals of the work dissipated and put in since t = 0 \[J].
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct EnergyLedger {
     pub dissipated: f64,

@@ -8,7 +8,7 @@ use crate::coupling::contact::ContactForces;
 use crate::coupling::{Coupling, CouplingCache, CouplingForces};
 use crate::water::{WaterForces, WaterScratch};
 
-/// The buffers of the force evaluation, one entry per body or coupling of a [`System`].
+/// The buffers of the force evaluation, one entry per body or coupling of a [`System`](crate::system::System).
 #[derive(Debug, Clone)]
 pub struct Evaluation {
     /// Body kinematics at the last evaluation, world axes.

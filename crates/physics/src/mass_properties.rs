@@ -1,7 +1,7 @@
-//! Mass properties of a rigid body built from a master node and slave nodes (PHYSICS.md §1,
-//! seed 003 [1]–[10]).
+//! Mass properties of a rigid body built from a master node and slave nodes (PHYSICS.md §1
+//! \[1]–\[10]).
 //!
-//! `m = m_M + Σ m_i` [kg]; `x_G = (m_M x_M + Σ m_i x_i)/m` [m];
+//! `m = m_M + Σ m_i` \[kg]; `x_G = (m_M x_M + Σ m_i x_i)/m` \[m];
 //! `I = J^M + m_M(|r_M|² E − r_M r_Mᵀ) + Σ [I^i + m_i(|r_i|² E − r_i r_iᵀ)]` [kg·m²] about G with
 //! `r = x − x_G`, in the tensor convention (`I_xy = −Σ m x y`). The principal moments and axes
 //! come from nalgebra's symmetric eigen-decomposition.
@@ -12,9 +12,9 @@ use thiserror::Error;
 /// A point mass with an optional own inertia tensor about itself (tensor convention).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Node {
-    /// Position in the world at t = 0 [m].
+    /// Position in the world at t = 0 \[m].
     pub position: Vec3,
-    /// Mass [kg], ≥ 0.
+    /// Mass \[kg], ≥ 0.
     pub mass: f64,
     /// Inertia tensor about the node [kg·m²].
     pub inertia: Mat3,
@@ -44,9 +44,9 @@ fn node_label(index: usize) -> String {
 /// Mass, centre of mass and principal inertia of a rigid body.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MassProperties {
-    /// `m` [kg].
+    /// `m` \[kg].
     pub mass: f64,
-    /// `x_G` at t = 0 [m].
+    /// `x_G` at t = 0 \[m].
     pub center_of_mass: Vec3,
     /// Inertia tensor about G in world axes at t = 0 [kg·m²].
     pub inertia_about_g: Mat3,
@@ -57,7 +57,7 @@ pub struct MassProperties {
 }
 
 impl MassProperties {
-    /// Mass properties of master node `master` and slave nodes `slaves` (seed 003 [1]–[10]).
+    /// Mass properties of master node `master` and slave nodes `slaves` (PHYSICS.md §1 \[1]–\[10]).
     pub fn from_nodes(master: &Node, slaves: &[Node]) -> Result<Self, MassError> {
         let nodes = || std::iter::once(master).chain(slaves.iter());
         if let Some((index, node)) = nodes().enumerate().find(|(_, n)| n.mass < 0.0) {

@@ -1,4 +1,4 @@
-//! The seabed (PHYSICS.md §7): a flat, level bottom at elevation `z_b` [m], measured along the
+//! The seabed (PHYSICS.md §7): a flat, level bottom at elevation `z_b` \[m], measured along the
 //! upward vertical `−ĝ` (with the default gravity, the plane `z = z_b`).
 //!
 //! It does two things, both through couplings: a catenary whose end lies on it lays its
@@ -11,7 +11,7 @@ use crate::math::Vec3;
 /// A flat seabed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Seabed {
-    /// `z_b` [m]: the height of the bottom along the upward vertical.
+    /// `z_b` \[m]: the height of the bottom along the upward vertical.
     pub elevation: f64,
     /// `C_B` [–] ≥ 0: friction of a line lying on the bottom, as a fraction of its submerged
     /// weight per length (the anchor tension is `H_A = max(H − C_B W L_B, 0)`).
@@ -28,7 +28,7 @@ pub enum SeabedError {
 }
 
 impl Seabed {
-    /// A seabed at `elevation` [m] with line friction `line_friction` [–].
+    /// A seabed at `elevation` \[m] with line friction `line_friction` [–].
     ///
     /// # Errors
     /// A non-finite elevation, or a negative or non-finite friction coefficient.
@@ -42,13 +42,13 @@ impl Seabed {
         Ok(Self { elevation, line_friction })
     }
 
-    /// Height [m] of `point` above the bottom, along the unit upward vertical `up`.
+    /// Height \[m] of `point` above the bottom, along the unit upward vertical `up`.
     #[inline]
     pub fn height(&self, point: &Vec3, up: &Vec3) -> f64 {
         point.dot(up) - self.elevation
     }
 
-    /// The point of the bottom below `point` [m].
+    /// The point of the bottom below `point` \[m].
     pub fn below(&self, point: &Vec3, up: &Vec3) -> Vec3 {
         point - up * self.height(point, up)
     }

@@ -58,7 +58,7 @@ pub enum Limiter {
     Water(usize),
 }
 
-/// A stable time step [s] and what sets it.
+/// A stable time step \[s] and what sets it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Limit {
     pub limiter: Limiter,
@@ -86,7 +86,7 @@ pub struct Situation<'a> {
     pub states: &'a [BodyState],
 }
 
-/// The stable step [s] of `integrator` for an oscillator of stiffness `k` [N/m], damping
+/// The stable step \[s] of `integrator` for an oscillator of stiffness `k` [N/m], damping
 /// `damping` [N·s/m] and inverse effective mass `inverse_mass` [1/kg]; infinite when nothing
 /// oscillates.
 pub fn oscillator_limit(integrator: Integrator, k: f64, damping: f64, inverse_mass: f64) -> f64 {
@@ -252,7 +252,7 @@ fn water_limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
     limits
 }
 
-/// The time step that resolves an impact of each contact, `τ/10` [s] (PHYSICS.md §4).
+/// The time step that resolves an impact of each contact, `τ/10` \[s] (PHYSICS.md §4).
 pub fn impact_limits(situation: &Situation) -> Vec<Limit> {
     let system = situation.system;
     let inverse_mass = |i: usize| translational_inverse_mass(system, i);
@@ -269,7 +269,8 @@ pub fn impact_limits(situation: &Situation) -> Vec<Limit> {
                         / STEPS_PER_STOPPING_TIME,
                 })
             }
-            _ => None,
+            // Their forces grow with the stretch, not at an impact: no stopping time to resolve.
+            CouplingKind::SpringDamper(_) | CouplingKind::Catenary(_) => None,
         })
         .filter(|limit| limit.dt.is_finite())
         .collect()

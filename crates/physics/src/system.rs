@@ -264,7 +264,7 @@ impl System {
         true
     }
 
-    /// Stage *prescribe*: kinematic bodies to their pose and velocity at time `time` [s].
+    /// Stage *prescribe*: kinematic bodies to their pose and velocity at time `time` \[s].
     pub fn prescribe(&self, states: &mut [BodyState], time: f64) {
         for &index in &self.kinematic_bodies {
             if let Support::Kinematic(motion) = &self.bodies[index].support {
@@ -274,7 +274,7 @@ impl System {
     }
 
     /// Stages *predict*, *clear*, *gravity*, *couplings*, *water* and *powers* at the
-    /// (prescribed) `states` and time `time` [s], into `evaluation`.
+    /// (prescribed) `states` and time `time` \[s], into `evaluation`.
     ///
     /// # Errors
     /// A coupling that cannot give its forces (only non-finite states make one).
@@ -307,7 +307,7 @@ impl System {
     }
 
     /// Stage *couplings* at the kinematics `evaluation.frames`: each coupling's forces, kept per
-    /// coupling and added to the loads; returns the power dissipated [W].
+    /// coupling and added to the loads; returns the power dissipated \[W].
     ///
     /// # Errors
     /// The first coupling that cannot give its forces.
@@ -332,9 +332,9 @@ impl System {
         Ok(dissipated)
     }
 
-    /// Stage *water* at time `time` [s] (after the couplings: the added mass reacts to every
+    /// Stage *water* at time `time` \[s] (after the couplings: the added mass reacts to every
     /// other force): each floating body's water forces, kept per body and added to the loads;
-    /// returns their power `Σ F·v + M·ω` [W], external work. Nothing without water.
+    /// returns their power `Σ F·v + M·ω` \[W], external work. Nothing without water.
     #[inline]
     pub fn apply_water(&self, evaluation: &mut Evaluation, time: f64) -> f64 {
         let Some(stage) = &self.water else { return 0.0 };
@@ -346,7 +346,7 @@ impl System {
         stage.apply(self.level, on, time)
     }
 
-    /// `Σ F·v + M·ω` [W] of the water's forces still in `evaluation` (those of the previous
+    /// `Σ F·v + M·ω` \[W] of the water's forces still in `evaluation` (those of the previous
     /// evaluation) at the kinematics now in its frames: the left end of the staggered schemes'
     /// water work (see [`crate::integrator::leapfrog`]).
     pub fn water_power(&self, evaluation: &Evaluation) -> f64 {
@@ -360,7 +360,7 @@ impl System {
             .sum()
     }
 
-    /// Stage *powers*: what the prescribed motions put in, `−Σ (F_k·v_k + M_k·ω_k)` [W] (of
+    /// Stage *powers*: what the prescribed motions put in, `−Σ (F_k·v_k + M_k·ω_k)` \[W] (of
     /// the loads on them less the water's, whose power [`System::apply_water`] gives).
     pub fn external_power(&self, evaluation: &Evaluation) -> f64 {
         self.kinematic_bodies
@@ -373,13 +373,10 @@ impl System {
     }
 }
 
-/// Every body coupling `coupling` refers to must be one of the `count` bodies.
+/// Every body coupling `coupling` refers to (its [`Coupling::ends`], a contact's opposing body
+/// among them) must be one of the `count` bodies.
 fn check_bodies(coupling: &Coupling, count: usize) -> Result<(), SystemError> {
-    let mut bodies: Vec<usize> = coupling.ends().iter().filter_map(|end| end.body()).collect();
-    if let CouplingKind::Contact(contact) = &coupling.kind {
-        bodies.extend(contact.other_body());
-    }
-    match bodies.into_iter().find(|&body| body >= count) {
+    match coupling.ends().iter().filter_map(|end| end.body()).find(|&body| body >= count) {
         Some(body) => Err(SystemError::UnknownBody { coupling: coupling.name.clone(), body, count }),
         None => Ok(()),
     }
@@ -390,7 +387,12 @@ fn check_bodies(coupling: &Coupling, count: usize) -> Result<(), SystemError> {
 fn check_anchors(couplings: &[Coupling], seabed: &Seabed, gravity: &Vec3) -> Result<(), SystemError> {
     let up = -gravity.try_normalize(0.0).unwrap_or_else(|| -Vec3::z());
     for coupling in couplings {
-        let CouplingKind::Catenary(line) = &coupling.kind else { continue };
+        let line = match &coupling.kind {
+            CouplingKind::Catenary(line) => line,
+            // Only a line lies on the seabed; a spring's world end may be anywhere, and a
+            // contact against the seabed is made for it.
+            CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => continue,
+        };
         for (end, endpoint) in [(1, &line.end1), (2, &line.end2)] {
             let Endpoint::World(point) = endpoint else { continue };
             let height = seabed.height(point, &up);

@@ -1,5 +1,5 @@
 //! The catenary coupling against closed forms, an independent reference, finite differences
-//! and a generated sweep of every regime (issue 3).
+//! and a generated sweep of every regime (PHYSICS.md §3).
 
 use approx::assert_relative_eq;
 use nalgebra::Vector3;

@@ -1,4 +1,4 @@
-//! Closed-form and invariant checks of the leapfrog world (issue 2's real numbers).
+//! Closed-form and invariant checks of the leapfrog world (PHYSICS.md §5).
 
 mod common;
 
@@ -31,7 +31,7 @@ fn assert_convergence(damping: f64, exact: &dyn Fn(f64) -> f64, tolerance: f64, 
 }
 
 /// `x(t)` of the spring-mass-damper m = 1, k = 100, ζ = 0.05 released at rest from 0.01 m.
-/// The seed's leapfrog (as Radioss) feeds the damper `v(t−½dt)`, so the damping force — and the
+/// The leapfrog of PHYSICS.md §1 (as Radioss) feeds the damper `v(t−½dt)`, so the damping force — and the
 /// solution — is first-order accurate: halving dt halves the error. Tolerance at dt = 1e-3:
 /// 2e-5 m (measured 9.3e-6 m).
 #[test]
@@ -41,7 +41,7 @@ fn spring_mass_damper_matches_the_closed_form_at_first_order() {
     let exact = |t: f64| {
         (-zeta * omega0 * t).exp() * (x0 * (omega_d * t).cos() + zeta * omega0 * x0 / omega_d * (omega_d * t).sin())
     };
-    // The issue's reference values, checked against the formula first.
+    // Reference values of the closed form, checked against the formula first.
     assert_relative_eq!(exact(0.5), 1.787858062988e-3, max_relative = 1e-11);
     assert_relative_eq!(exact(1.0), -5.292088189070e-3, max_relative = 1e-11);
     assert_convergence(2.0 * zeta * omega0, &exact, 2e-5, 1.0);
@@ -62,7 +62,9 @@ fn duffing_period() {
     let mut world = oscillator("Polynomial(a: 1.0, b: 0.0, c: 1.0, rest_length: 2.0)", 0.0, 3.0, 0.0, dt).world;
     let mut crossings = Vec::new();
     let mut previous = world.state(0).position.x - 2.0;
+    // Four crossings take under four periods: an oscillator that stops fails.
     while crossings.len() < 4 {
+        assert!(world.time() < 60.0, "{} crossings by t = 60 s", crossings.len());
         world.step().unwrap();
         let s = world.state(0).position.x - 2.0;
         if previous < 0.0 && s >= 0.0 {

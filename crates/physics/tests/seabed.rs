@@ -1,4 +1,4 @@
-//! A catenary lying on the seabed (PHYSICS.md §7, issue 16) against MoorPy's reference values,
+//! A catenary lying on the seabed (PHYSICS.md §7) against MoorPy's reference values,
 //! an independent nested 1-D reference over a sweep of every regime, the energy gradient, the
 //! tangent stiffness, continuity across the lift-off and the heap, and a swinging body whose
 //! energy stays put.

@@ -1,4 +1,4 @@
-//! Statics (issue 16): the assembled tangent stiffness against finite differences of the
+//! Statics (PHYSICS.md §7 "Static equilibrium"): the assembled tangent stiffness against finite differences of the
 //! system's loads, static equilibria against closed forms and against a damped run that settles,
 //! unreachable equilibria named, offset curves against the stiffness.
 
@@ -133,6 +133,25 @@ fn a_body_on_a_spring_rests_where_the_spring_carries_its_weight() {
     // A linear problem: Newton's step (0.7 m) is cut to the first trust radius (a quarter of the
     // 1 m scene), then taken whole.
     assert!(eq.iterations <= 2, "{} iterations", eq.iterations);
+}
+
+/// A start that no damping can take a step from (a pose that is not a number makes the
+/// stiffness and the loads NaN) ends in one iteration with the error that says so, instead of
+/// raising the damping λ for ever.
+#[test]
+fn a_start_without_a_finite_stiffness_ends_with_no_step() {
+    let system = world(
+        "Scene(dt: 0.001, bodies: [Body(name: \"bob\", master: Node(position: (0.0, 0.0, -1.0), mass: 100.0, inertia: Inertia(xx: 1.0, yy: 1.0, zz: 1.0)),
+            support: Fixed(translation: (true, true, false), rotation: true), shape: Sphere(radius: 0.1))],
+         couplings: [SpringDamper(name: \"s\", end1: World((0.0, 0.0, 0.0)), end2: Body(body: \"bob\"), law: Linear(stiffness: 5000.0, rest_length: 1.5))])",
+    )
+    .system()
+    .clone();
+    let mut start = system.initial_states().to_vec();
+    start[0].position.z = f64::NAN;
+    let error = equilibrium::solve(&system, &start, &[], &Settings::default()).unwrap_err();
+    assert_eq!(error, EquilibriumError::NoStep { iteration: 1 });
+    assert!(error.to_string().contains("not finite"), "{error}");
 }
 
 /// The moored buoy at equilibrium carries no load, its stiffness is symmetric without

@@ -1,4 +1,4 @@
-//! Water (PHYSICS.md §6, issue 15): the closed forms of floating and sinking bodies, waves and
+//! Water (PHYSICS.md §6): the closed forms of floating and sinking bodies, waves and
 //! their convergence, added mass under every integrator, the energy balance with water.
 
 mod common;

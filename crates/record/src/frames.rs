@@ -5,7 +5,7 @@ use rerun::log::TimeColumn;
 use std::cell::OnceCell;
 use tether_physics::world::World;
 
-/// The recording's timeline of simulated time [s].
+/// The recording's timeline of simulated time \[s].
 pub const SIM_TIME: &str = "sim_time";
 /// The recording's timeline of world steps.
 pub const STEP: &str = "step";
@@ -74,7 +74,7 @@ pub struct FrameSchedule {
 }
 
 impl FrameSchedule {
-    /// `log_hz` frames per simulated second [1/s] over a run of `last_step` steps of `dt` [s].
+    /// `log_hz` frames per simulated second [1/s] over a run of `last_step` steps of `dt` \[s].
     pub fn new(log_hz: f64, dt: f64, last_step: u64) -> Self {
         Self { frames_per_step: log_hz * dt, last_step }
     }

@@ -21,13 +21,22 @@ pub fn layout(world: &World) -> Blueprint {
     if !couplings.is_empty() {
         plots.push(TimeSeriesView::new("tension [N]").with_origin(paths::TENSION).into());
     }
-    if couplings.iter().any(|c| matches!(c.kind, CouplingKind::Catenary(_))) {
+    let (mut lines, mut contacts) = (false, false);
+    for coupling in couplings {
+        match coupling.kind {
+            // A spring's tension is in the tension plot.
+            CouplingKind::SpringDamper(_) => {}
+            CouplingKind::Catenary(_) => lines = true,
+            CouplingKind::Contact(_) => contacts = true,
+        }
+    }
+    if lines {
         plots.push(TimeSeriesView::new("catenary end tensions [N]").with_origin(paths::CATENARY_PLOT).into());
     }
-    if world.system().seabed().is_some() && couplings.iter().any(|c| matches!(c.kind, CouplingKind::Catenary(_))) {
+    if lines && world.system().seabed().is_some() {
         plots.push(TimeSeriesView::new("grounded length L_B [m]").with_origin(paths::SEABED_PLOT).into());
     }
-    if couplings.iter().any(|c| matches!(c.kind, CouplingKind::Contact(_))) {
+    if contacts {
         plots.push(TimeSeriesView::new("contact forces [N]").with_origin(paths::CONTACT_PLOT).into());
     }
     if let Some(stage) = world.system().water() {

@@ -2,7 +2,7 @@
 //! about it. The entity paths are in [`paths`]; the viewer's layout of a run in [`layout`]; each
 //! kind of entity in its own module of `tracks`.
 //!
-//! Recording layout (timelines `sim_time` [s] and `step`; view coordinates z-up):
+//! Recording layout (timelines `sim_time` \[s] and `step`; view coordinates z-up):
 //! - `world/bodies/<name>`: temporal `Transform3D` (G and the principal axes);
 //!   `…/shape`: static display shape, with a static transform from the principal frame to the
 //!   shape; `…/nodes`: static slave nodes (principal frame);
@@ -10,12 +10,12 @@
 //!   along its solved shape in 32 segments, 8 bands coloured by tension (blue: the lowest
 //!   tension along the line, red: the highest);
 //! - `plots/energy`: one series each for kinetic, gravity, elastic, dissipated, external_work,
-//!   total and balance [J], in one plot;
-//! - `plots/tension`: one series per coupling, named after it [N], in one plot (a catenary's
+//!   total and balance \[J], in one plot;
+//! - `plots/tension`: one series per coupling, named after it \[N], in one plot (a catenary's
 //!   series is its larger end tension, a contact's its normal force);
-//! - `plots/catenary`: every catenary's end tensions, series `<name> end1` and `<name> end2` [N];
+//! - `plots/catenary`: every catenary's end tensions, series `<name> end1` and `<name> end2` \[N];
 //! - `plots/contact`: every contact's total normal force `Σ|f_n|` and friction `|Σ f_t|`, series
-//!   `<name> normal` and `<name> friction` [N];
+//!   `<name> normal` and `<name> friction` \[N];
 //! - `world/contacts/<name>`: a contact's face forces as arrows from the face centroids, for the
 //!   contacts and times asked for ([`FaceArrows`]; none by default);
 //! - the water, when the scene has some: `world/water/…` and `plots/water/<body>/…` (the

@@ -430,7 +430,7 @@ fn build_body(def: &BodyDef, directory: &Path, at: &ItemAt, in_water: bool) -> R
     let mass_properties = MassProperties::from_nodes(&node(&def.master), &slaves).map_err(|e| {
         let field = match e {
             MassError::NotPositiveDefinite(_) | MassError::NotFinite { .. } => "inertia",
-            _ => "mass",
+            MassError::NonPositiveMass(_) | MassError::NegativeNodeMass { .. } => "mass",
         };
         at.at_field(field, e.to_string())
     })?;

@@ -19,10 +19,10 @@ pub struct SceneFile {
     /// Gravity [m/s²].
     #[serde(default = "default_gravity", deserialize_with = "finite3")]
     pub gravity: Triple,
-    /// Time step [s] > 0.
+    /// Time step \[s] > 0.
     #[serde(deserialize_with = "finite")]
     pub dt: f64,
-    /// Default duration of a run [s] > 0.
+    /// Default duration of a run \[s] > 0.
     #[serde(default = "default_duration", deserialize_with = "finite")]
     pub duration: f64,
     /// `leapfrog` (default), `leapfrog2`, `splitting`, `rk4` or `dopri45`.
@@ -50,7 +50,7 @@ pub struct SceneFile {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename = "Seabed", deny_unknown_fields)]
 pub struct SeabedDef {
-    /// `z_b` [m]: the bottom's height along the upward vertical (`z` with the default gravity).
+    /// `z_b` \[m]: the bottom's height along the upward vertical (`z` with the default gravity).
     #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "finite_option")]
     pub elevation: Option<f64>,
     /// `C_B` [–] ≥ 0: friction of a line lying on the bottom, per unit of its submerged weight
@@ -64,7 +64,7 @@ pub struct SeabedDef {
 
 /// Penalty contact of bodies with the seabed (PHYSICS.md §4), with the parameters of a
 /// [`CouplingDef::Contact`]: `stiffness` k1 [N/m³] > 0, `damping` k2 [N·s/m³] ≥ 0, `range` d0
-/// [m] ≥ 0, `friction` μ ≥ 0, `friction_sharpness` k_t [s/m] > 0 (default 100).
+/// \[m] ≥ 0, `friction` μ ≥ 0, `friction_sharpness` k_t [s/m] > 0 (default 100).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename = "SeabedContact", deny_unknown_fields)]
 pub struct SeabedContactDef {
@@ -92,7 +92,7 @@ pub struct AdaptiveDef {
     /// Absolute tolerance [SI unit of each component] > 0 (default 1e-9).
     #[serde(default = "default_atol", deserialize_with = "finite")]
     pub atol: f64,
-    /// Largest adaptive step [s] > 0 (default: the integrator step `dt / substeps`).
+    /// Largest adaptive step \[s] > 0 (default: the integrator step `dt / substeps`).
     #[serde(default, deserialize_with = "finite_option")]
     pub max_step: Option<f64>,
 }
@@ -127,7 +127,7 @@ pub struct BodyDef {
     /// Initial angular velocity [rad/s], world.
     #[serde(default, deserialize_with = "finite3")]
     pub angular_velocity: Triple,
-    /// Rotation vector [rad] (axis × angle, world) turning the body about its master node at
+    /// Rotation vector \[rad] (axis × angle, world) turning the body about its master node at
     /// t = 0: its nodes, shape and coupling points are given unturned (default none).
     #[serde(default, skip_serializing_if = "is_zero3", deserialize_with = "finite3")]
     pub rotation: Triple,
@@ -140,7 +140,7 @@ pub struct BodyDef {
     pub hydro: Option<HydroDef>,
 }
 
-/// A node: position at t = 0 [m], mass [kg], and inertia about itself [kg·m²].
+/// A node: position at t = 0 \[m], mass \[kg], and inertia about itself [kg·m²].
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename = "Node", deny_unknown_fields)]
 pub struct NodeDef {
@@ -199,7 +199,7 @@ pub enum VelocityDef {
     Table(#[serde(deserialize_with = "finite_velocity_table")] Vec<(f64, Triple)>),
 }
 
-/// Display shape in the body's reference frame [m].
+/// Display shape in the body's reference frame \[m].
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub enum ShapeDef {
@@ -272,9 +272,9 @@ fn z_axis() -> Triple {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub enum EndDef {
-    /// A fixed world point [m].
+    /// A fixed world point \[m].
     World(#[serde(deserialize_with = "finite3")] Triple),
-    /// A point on body `body`, in its reference frame [m].
+    /// A point on body `body`, in its reference frame \[m].
     Body {
         body: String,
         #[serde(default, deserialize_with = "finite3")]
@@ -296,8 +296,8 @@ pub enum CouplingDef {
         damping: f64,
     },
     /// Elastic catenary line (PHYSICS.md §3, on the seabed §7): `mass_per_length` λ0 [kg/m]
-    /// ≥ 0, unstretched `length` L_eq [m] > 0, `stiffness` D [N/m] > 0 of the whole line
-    /// (EA = D L_eq), `displaced_area` A_d [m²] ≥ 0, its displaced volume per length: in water
+    /// ≥ 0, unstretched `length` L_eq \[m] > 0, `stiffness` D [N/m] > 0 of the whole line
+    /// (EA = D L_eq), `displaced_area` A_d \[m²] ≥ 0, its displaced volume per length: in water
     /// it weighs `(λ0 − ρ A_d) g` per metre (default 0).
     Catenary {
         name: String,
@@ -314,8 +314,8 @@ pub enum CouplingDef {
     },
     /// Penalty contact with tanh friction (PHYSICS.md §4) between the faces of body `body`'s
     /// shape and `against`. Per unit face area: `stiffness` k1 [N/m³] > 0, `damping` k2
-    /// [N·s/m³] ≥ 0; `range` d0 [m] ≥ 0 where pushing starts; `friction` μ ≥ 0;
-    /// `friction_sharpness` k_t [s/m] > 0 of the tanh law (default 100); `expected_area` A [m²]
+    /// [N·s/m³] ≥ 0; `range` d0 \[m] ≥ 0 where pushing starts; `friction` μ ≥ 0;
+    /// `friction_sharpness` k_t [s/m] > 0 of the tanh law (default 100); `expected_area` A \[m²]
     /// > 0 behind the time step limit (default: a sixth of the body's boundary area).
     Contact {
         name: String,
@@ -344,14 +344,14 @@ fn default_friction_sharpness() -> f64 {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub enum AgainstDef {
-    /// The half-space above the plane through `point` [m] with `normal` (towards the bodies).
+    /// The half-space above the plane through `point` \[m] with `normal` (towards the bodies).
     Plane {
         #[serde(deserialize_with = "finite3")]
         point: Triple,
         #[serde(deserialize_with = "finite3")]
         normal: Triple,
     },
-    /// The inside of the axis-aligned box `[min, max]` [m]: the computational domain's walls.
+    /// The inside of the axis-aligned box `[min, max]` \[m]: the computational domain's walls.
     DomainBox {
         #[serde(deserialize_with = "finite3")]
         min: Triple,
@@ -371,7 +371,7 @@ impl CouplingDef {
     }
 }
 
-/// Elastic law of a spring (PHYSICS.md §2). Lengths [m], forces [N], stiffnesses [N/m].
+/// Elastic law of a spring (PHYSICS.md §2). Lengths \[m], forces \[N], stiffnesses [N/m].
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub enum LawDef {

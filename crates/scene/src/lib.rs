@@ -98,6 +98,7 @@ pub fn world_with_timing(scene: &Scene, file: &SceneFile) -> Result<World, Scene
 pub fn list(dir: &Path) -> Vec<PathBuf> {
     let mut files = Vec::new();
     let mut folders = vec![(dir.to_path_buf(), 0)];
+    // Ends: only the top folder's subfolders are pushed (depth 0), never theirs.
     while let Some((folder, depth)) = folders.pop() {
         let Ok(entries) = std::fs::read_dir(&folder) else { continue };
         for path in entries.filter_map(|e| e.ok().map(|e| e.path())) {

@@ -58,6 +58,7 @@ impl<'a> Source<'a> {
         let literal = format!("\"{name}\"");
         let mut found = 0;
         let mut from = list_start;
+        // Ends: each pass moves `from` past the literal it found.
         while let Some(at) = self.text[from..].find(&literal).map(|i| i + from) {
             if self.is_name_field(at) {
                 if found == occurrence {
@@ -78,6 +79,7 @@ impl<'a> Source<'a> {
     /// Offset of the first `field:` at or after `from` (a whole identifier followed by a colon).
     pub fn field(&self, from: usize, field: &str) -> Option<usize> {
         let mut search = from;
+        // Ends: each pass moves `search` past the word it found.
         while let Some(at) = self.text[search..].find(field).map(|i| i + search) {
             let end = at + field.len();
             let starts_word = at == 0 || !is_ident(self.text[..at].chars().next_back());
@@ -99,6 +101,7 @@ impl<'a> Source<'a> {
     pub fn enclosing_item(&self, offset: usize) -> Option<(ItemKind, String)> {
         let before = &self.text[..offset.min(self.text.len())];
         let mut search_end = before.len();
+        // Ends: each pass ends the search before the `name` it found.
         while let Some(at) = before[..search_end].rfind("name") {
             search_end = at;
             let rest = before[at + 4..].trim_start();

@@ -28,17 +28,17 @@ pub struct WaterDef {
     /// ρ [kg/m³] > 0 (default 1025).
     #[serde(default = "default_density", deserialize_with = "finite")]
     pub density: f64,
-    /// Still-water level `z_w` [m] (default 0).
+    /// Still-water level `z_w` \[m] (default 0).
     #[serde(default, deserialize_with = "finite")]
     pub level: f64,
-    /// Depth [m] > 0; absent for deep water.
+    /// Depth \[m] > 0; absent for deep water.
     #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "finite_option")]
     pub depth: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub current: Option<CurrentDef>,
     #[serde(default)]
     pub waves: WavesDef,
-    /// Ramp time [s] ≥ 0 of waves and current; absent for two wave periods.
+    /// Ramp time \[s] ≥ 0 of waves and current; absent for two wave periods.
     #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "finite_option")]
     pub ramp: Option<f64>,
 }
@@ -67,7 +67,7 @@ pub enum WavesDef {
     /// Still water (the default).
     #[default]
     Calm,
-    /// An Airy wave: `height` [m] crest to trough, `period` [s], heading and phase [deg].
+    /// An Airy wave: `height` \[m] crest to trough, `period` \[s], heading and phase \[deg].
     Regular {
         #[serde(deserialize_with = "finite")]
         height: f64,
@@ -78,7 +78,7 @@ pub enum WavesDef {
         #[serde(default, deserialize_with = "finite")]
         phase_deg: f64,
     },
-    /// A JONSWAP sea: `hs` [m], `tp` [s], `gamma` ≥ 1 (default 3.3), heading [deg],
+    /// A JONSWAP sea: `hs` \[m], `tp` \[s], `gamma` ≥ 1 (default 3.3), heading \[deg],
     /// `components` (default 50) with phases drawn from `seed` (default 1).
     Jonswap {
         #[serde(deserialize_with = "finite")]
@@ -116,7 +116,7 @@ pub struct HydroDef {
     /// Drag coefficients `C_d` [–] ≥ 0.
     #[serde(default, deserialize_with = "finite3")]
     pub drag: Triple,
-    /// Drag areas [m²] > 0; absent: the hull's projected areas.
+    /// Drag areas \[m²] > 0; absent: the hull's projected areas.
     #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "finite3_option")]
     pub drag_areas: Option<Triple>,
     /// Rotational drag `C_r` [N·m·s²] ≥ 0.
@@ -134,7 +134,7 @@ pub struct HydroDef {
     /// Added inertia [kg·m²] ≥ 0 about each axis, when fully wet.
     #[serde(default, deserialize_with = "finite3")]
     pub added_inertia: Triple,
-    /// Drag centre in the reference frame [m]; absent: G.
+    /// Drag centre in the reference frame \[m]; absent: G.
     #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "finite3_option")]
     pub drag_center: Option<Triple>,
 }

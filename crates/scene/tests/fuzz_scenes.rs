@@ -1,6 +1,6 @@
 //! Generated and mutated scene text fed to the loader, the builder and the stepper: nothing
 //! panics, every error is one `path:line:col: message` line, and no accepted world produces a
-//! non-finite state without reporting it (issue 6). Bounded: a fixed number of cases per run.
+//! non-finite state without reporting it (PHYSICS.md §5 "Health check"). Bounded: a fixed number of cases per run.
 //! Inputs that once broke something are kept in `tests/regressions/`.
 
 mod common;

@@ -1,4 +1,4 @@
-//! The `seabed` section, a line's displaced area and a body's initial rotation (issue 16): what
+//! The `seabed` section, a line's displaced area and a body's initial rotation (PHYSICS.md §7): what
 //! they build, and a one-line `path:line:col` error naming the item for each bad value.
 
 mod common;

@@ -74,6 +74,7 @@ impl Runner {
 
     /// The loop: commands, steps, status, until the GUI's handle drops.
     fn run(mut self, inbox: &Receiver<Command>) {
+        // Ends: when the GUI's handle drops, the channel disconnects and `first` says so.
         loop {
             // Running: wait out the tick (not at all as fast as possible); paused: sleep until told.
             let first = match (self.running, self.speed) {
@@ -88,6 +89,7 @@ impl Runner {
                 Err(true) => break,
                 Err(false) => {}
             }
+            // Ends: the commands already queued (the GUI sends one per user action).
             while let Ok(command) = inbox.try_recv() {
                 self.handle(command);
             }
@@ -174,6 +176,7 @@ impl Runner {
             Speed::Factor(factor) => self.anchor.sim + factor * start.duration_since(self.anchor.wall).as_secs_f64(),
             Speed::Max => f64::INFINITY,
         };
+        // Ends: within BUDGET of wall time.
         while self.running && self.world_time() < target && start.elapsed() < BUDGET {
             self.step_once();
         }

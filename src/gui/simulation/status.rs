@@ -97,7 +97,7 @@ pub fn status(world: &World, run: &RunState) -> Status {
         .iter()
         .filter_map(|l| match l.limiter {
             Limiter::Water(body) => Some((world.bodies()[body].name.clone(), l.dt)),
-            _ => None,
+            Limiter::Coupling(_) | Limiter::Impact(_) | Limiter::Rotation(_) => None,
         })
         .collect();
     let wall = run.wall.max(1e-6);

@@ -18,7 +18,7 @@ pub fn kick(state: &mut BodyState, acceleration: &Acceleration, support: &Suppor
     (state.velocity, state.angular_velocity) = (velocity, angular_velocity);
 }
 
-/// `x += v h` [m].
+/// `x += v h` \[m].
 #[inline(always)]
 pub fn drift(state: &mut BodyState, h: f64) {
     state.position += state.velocity * h;
@@ -36,7 +36,7 @@ pub fn turn(state: &mut BodyState, h: f64) -> bool {
     turned
 }
 
-/// `q ⊗ exp(φ)` for a rotation vector `φ` in the body frame [rad], renormalised.
+/// `q ⊗ exp(φ)` for a rotation vector `φ` in the body frame \[rad], renormalised.
 ///
 /// `exp(φ) = (cos(θ/2), sin(θ/2)/θ · φ)`, θ = |φ|. Below θ = 0.05 rad (the usual case: stable
 /// steps keep ω dt well under 1) both factors are taken from their Taylor series to θ⁶, whose

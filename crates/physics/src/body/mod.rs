@@ -23,7 +23,7 @@ use nalgebra::Isometry3;
 pub use state::{Acceleration, BodyFrame, BodyState};
 pub use support::{PrescribedMotion, Support, VelocityProfile};
 
-/// Display and contact shape in the body's reference frame [m].
+/// Display and contact shape in the body's reference frame \[m].
 #[derive(Debug, Clone, PartialEq)]
 pub enum Shape {
     /// Box with full edge lengths `size` along the reference axes, centred at `center`; as a
@@ -34,7 +34,7 @@ pub enum Shape {
     Sphere { radius: f64, center: Vec3, subdivisions: u32 },
     /// Cylinder of `radius` and `length` along the unit `axis`, centred at `center`.
     Cylinder { radius: f64, length: f64, axis: Vec3, center: Vec3 },
-    /// A closed triangle mesh: vertices [m] and counter-clockwise triangles.
+    /// A closed triangle mesh: vertices \[m] and counter-clockwise triangles.
     Mesh { vertices: Vec<Vec3>, triangles: Vec<[u32; 3]> },
 }
 
@@ -49,14 +49,14 @@ pub struct RigidBody {
     pub inverse_principal_moments: Vec3,
     /// Pose of the reference frame in the principal frame (constant: the body is rigid).
     pub reference_in_principal: Isometry3<f64>,
-    /// Slave node positions in the principal frame [m] (rebuilt into the world from the pose).
+    /// Slave node positions in the principal frame \[m] (rebuilt into the world from the pose).
     pub slave_nodes: Vec<Vec3>,
     pub support: Support,
     pub shape: Shape,
 }
 
 impl RigidBody {
-    /// Builds a body whose master node was declared at `master_position` [m].
+    /// Builds a body whose master node was declared at `master_position` \[m].
     pub fn new(
         name: String,
         mass_properties: MassProperties,
@@ -86,7 +86,7 @@ impl RigidBody {
         }
     }
 
-    /// `m` [kg].
+    /// `m` \[kg].
     pub fn mass(&self) -> f64 {
         self.mass_properties.mass
     }
@@ -96,7 +96,7 @@ impl RigidBody {
         self.mass_properties.principal_moments
     }
 
-    /// A point given in the reference frame, expressed in the principal frame [m].
+    /// A point given in the reference frame, expressed in the principal frame \[m].
     pub fn principal_point(&self, reference_point: &Vec3) -> Vec3 {
         self.reference_in_principal.transform_point(&(*reference_point).into()).coords
     }
@@ -115,7 +115,7 @@ impl RigidBody {
         }
     }
 
-    /// Kinetic energy `½ m |v|² + ½ ωᵀ I ω` [J] for velocity `velocity` (any axes) and angular
+    /// Kinetic energy `½ m |v|² + ½ ωᵀ I ω` \[J] for velocity `velocity` (any axes) and angular
     /// velocity `spin` (principal frame).
     pub fn kinetic_energy(&self, velocity: &Vec3, spin: &Vec3) -> f64 {
         0.5 * (self.mass() * velocity.norm_squared() + spin.dot(&self.principal_moments().component_mul(spin)))

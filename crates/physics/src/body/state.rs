@@ -6,7 +6,7 @@ use crate::math::{Mat3, Rotation, Vec3};
 /// The state of a body at one instant.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BodyState {
-    /// `x_G`, world [m].
+    /// `x_G`, world \[m].
     pub position: Vec3,
     /// Principal frame → world.
     pub orientation: Rotation,
@@ -17,7 +17,7 @@ pub struct BodyState {
 }
 
 impl BodyState {
-    /// World position of a point fixed in the principal frame, `x_G + R r` [m] (seed 003 [19]).
+    /// World position of a point fixed in the principal frame, `x_G + R r` \[m] (PHYSICS.md §1 \[19]).
     pub fn point(&self, principal_point: &Vec3) -> Vec3 {
         self.position + self.orientation * principal_point
     }
@@ -53,7 +53,7 @@ impl BodyState {
 /// A body's kinematics at the instant the forces are evaluated, in world axes.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BodyFrame {
-    /// `x_G` [m].
+    /// `x_G` \[m].
     pub position: Vec3,
     /// Principal frame → world rotation matrix.
     pub rotation: Mat3,

@@ -1,4 +1,4 @@
-//! Boundary conditions of a body's master node (seed 003, BC section; slave nodes carry none):
+//! Boundary conditions of a body's master node (PHYSICS.md §1 [BC section]; slave nodes carry none):
 //! fixed components, or a prescribed (kinematic) motion that forces do not change.
 
 use super::state::BodyState;
@@ -31,7 +31,7 @@ impl VelocityProfile {
         }
     }
 
-    /// Displacement `∫_0^t v dt'` [m], exact for the piecewise-linear profile.
+    /// Displacement `∫_0^t v dt'` \[m], exact for the piecewise-linear profile.
     pub fn displacement(&self, t: f64) -> Vec3 {
         match self {
             Self::Constant(v) => v * t,
@@ -54,7 +54,7 @@ pub struct PrescribedMotion {
     pub angular_velocity: Vec3,
 }
 
-/// Boundary conditions of the master node (seed 003, BC section; slave nodes carry none).
+/// Boundary conditions of the master node (PHYSICS.md §1 [BC section]; slave nodes carry none).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Support {
     Free,
@@ -83,7 +83,7 @@ impl Support {
 }
 
 impl PrescribedMotion {
-    /// Pose and velocity at time `t` [s] of a body that started from `start` at t = 0.
+    /// Pose and velocity at time `t` \[s] of a body that started from `start` at t = 0.
     pub fn state_at(&self, start: &BodyState, t: f64) -> BodyState {
         let spin = Rotation::from_scaled_axis(self.angular_velocity * t);
         let orientation = spin * start.orientation;

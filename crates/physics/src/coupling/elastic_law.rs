@@ -1,10 +1,10 @@
-//! Elastic laws of the spring-damper coupling (PHYSICS.md §2, seed [4946]–[4951]).
+//! Elastic laws of the spring-damper coupling (PHYSICS.md §2 \[4946]–\[4951]).
 //!
-//! Every law gives, at the distance `x` [m] between the ends, the elastic force on end 1
-//! `f_e(x) = k_eff(x)(x − x0)` [N] (positive = tension, pulling the ends together), the tangent
-//! stiffness `k(x) = df_e/dx` [N/m] and the potential `V(x)` [J] with `dV/dx = f_e`. The force is
+//! Every law gives, at the distance `x` \[m] between the ends, the elastic force on end 1
+//! `f_e(x) = k_eff(x)(x − x0)` \[N] (positive = tension, pulling the ends together), the tangent
+//! stiffness `k(x) = df_e/dx` [N/m] and the potential `V(x)` \[J] with `dV/dx = f_e`. The force is
 //! computed directly, never as `k_eff · (x − x0)`, so there is no 0/0 at `x = x0`; `k_eff` is
-//! offered for display, and at `x0` it is the tangent stiffness, as the seed prescribes.
+//! offered for display, and at `x0` it is the tangent stiffness, as PHYSICS.md §2 prescribes.
 
 use crate::table::{Extrapolation, Table, TableError};
 
@@ -13,17 +13,17 @@ use crate::table::{Extrapolation, Table, TableError};
 pub enum ElasticLaw {
     /// `f_e = k (x − x0)`.
     Linear { stiffness: f64, rest_length: f64 },
-    /// `k_eff = a + b s + c s²`, `s = x − x0`, so `f_e = a s + b s² + c s³` [4950]–[4951].
+    /// `k_eff = a + b s + c s²`, `s = x − x0`, so `f_e = a s + b s² + c s³` \[4950]–\[4951].
     /// Units: a [N/m], b [N/m²], c [N/m³].
     Polynomial { a: f64, b: f64, c: f64, rest_length: f64 },
-    /// `f_e(x)` read from a table of (x [m], f [N]) [4947]; beyond the table the end
+    /// `f_e(x)` read from a table of (x \[m], f \[N]) \[4947]; beyond the table the end
     /// segment's stiffness holds. The rest length is where the curve crosses zero.
     ForceCurve { curve: Table },
-    /// `f_e(x) = ∫_{x0}^{x} k(ξ) dξ` with `k(ξ)` a table of (ξ [m], k [N/m]) [4948]; beyond the
+    /// `f_e(x) = ∫_{x0}^{x} k(ξ) dξ` with `k(ξ)` a table of (ξ \[m], k [N/m]) \[4948]; beyond the
     /// table the end stiffness holds.
     StiffnessCurve { stiffness: Table, rest_length: f64 },
-    /// `f_e(x) = f_r + ∫_{x_r}^{x} k(ξ) dξ` [4949], for springs whose rest length lies outside
-    /// the operating range: `f_r` [N] is the force measured at the reference length `x_r` [m].
+    /// `f_e(x) = f_r + ∫_{x_r}^{x} k(ξ) dξ` \[4949], for springs whose rest length lies outside
+    /// the operating range: `f_r` \[N] is the force measured at the reference length `x_r` \[m].
     /// `rest_length` only serves `k_eff`.
     ReferenceForce { stiffness: Table, reference_length: f64, reference_force: f64, rest_length: f64 },
 }
@@ -39,7 +39,7 @@ impl ElasticLaw {
         Table::new(points, Extrapolation::Constant)
     }
 
-    /// `x0` [m], the length at which the elastic force vanishes (for a force curve: its first
+    /// `x0` \[m], the length at which the elastic force vanishes (for a force curve: its first
     /// zero crossing, or its first point if it has none).
     pub fn rest_length(&self) -> f64 {
         match self {
@@ -51,7 +51,7 @@ impl ElasticLaw {
         }
     }
 
-    /// Elastic force on end 1, `f_e(x)` [N].
+    /// Elastic force on end 1, `f_e(x)` \[N].
     #[inline(always)]
     pub fn force(&self, x: f64) -> f64 {
         match self {
@@ -100,7 +100,7 @@ impl ElasticLaw {
         if s.abs() <= 1e-12 * x0.abs().max(1.0) { self.tangent_stiffness(x0) } else { self.force(x) / s }
     }
 
-    /// Elastic potential `V(x)` [J], with `dV/dx = f_e`. It is zero at `x0` (at `x_r` for the
+    /// Elastic potential `V(x)` \[J], with `dV/dx = f_e`. It is zero at `x0` (at `x_r` for the
     /// reference-force form, at the first point for a force curve without a zero crossing).
     #[inline(always)]
     pub fn potential(&self, x: f64) -> f64 {

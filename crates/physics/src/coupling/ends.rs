@@ -8,9 +8,9 @@ use crate::math::Vec3;
 /// Where a coupling's end is attached.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Endpoint {
-    /// A point fixed in the world [m].
+    /// A point fixed in the world \[m].
     World(Vec3),
-    /// A point fixed on body `body` (index in the world), in its principal frame [m].
+    /// A point fixed on body `body` (index in the world), in its principal frame \[m].
     Body { body: usize, point: Vec3 },
     /// The centre of mass G of body `body`: no lever arm, so no moment and no rotation to
     /// evaluate (a chain of point-like bodies pays for none).
@@ -23,7 +23,7 @@ impl Endpoint {
         if point == Vec3::zeros() { Self::Center { body } } else { Self::Body { body, point } }
     }
 
-    /// The end's point in the body's principal frame [m], or in the world for a world end.
+    /// The end's point in the body's principal frame \[m], or in the world for a world end.
     pub fn point(&self) -> Vec3 {
         match *self {
             Self::World(point) | Self::Body { point, .. } => point,
@@ -39,7 +39,7 @@ impl Endpoint {
         }
     }
 
-    /// Where the end is and how fast it moves (seed 003 [19]: `v_i = v_G + ω × (x_i − x_G)`).
+    /// Where the end is and how fast it moves (PHYSICS.md §1 \[19]: `v_i = v_G + ω × (x_i − x_G)`).
     #[inline(always)]
     pub fn motion(&self, frames: &[BodyFrame]) -> EndMotion {
         match *self {
@@ -66,11 +66,11 @@ impl Endpoint {
 pub enum Attachment {
     World,
     Center(usize),
-    /// Body index and lever arm `x_end − x_G` [m], world axes.
+    /// Body index and lever arm `x_end − x_G` \[m], world axes.
     Arm(usize, Vec3),
 }
 
-/// Position [m] and velocity [m/s] of an end, world frame, and how it is attached.
+/// Position \[m] and velocity [m/s] of an end, world frame, and how it is attached.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EndMotion {
     pub position: Vec3,
@@ -79,7 +79,7 @@ pub struct EndMotion {
 }
 
 impl EndMotion {
-    /// Adds force `force` [N] at this end to its body's load: `F += f`, `M += arm × f`.
+    /// Adds force `force` \[N] at this end to its body's load: `F += f`, `M += arm × f`.
     #[inline(always)]
     pub fn apply(&self, force: &Vec3, loads: &mut [Load]) {
         match self.attachment {

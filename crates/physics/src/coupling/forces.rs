@@ -7,16 +7,16 @@ use crate::math::Vec3;
 /// What one coupling did at the last evaluation.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct CouplingForces {
-    /// End positions, world [m].
+    /// End positions, world \[m].
     pub point1: Vec3,
     pub point2: Vec3,
-    /// Force exerted by the coupling on end 1 and on end 2, world [N].
+    /// Force exerted by the coupling on end 1 and on end 2, world \[N].
     pub f1: Vec3,
     pub f2: Vec3,
-    /// Scalar force of the coupling [N] (a spring's `f1 = f_e + k_d ẋ`, positive in tension).
+    /// Scalar force of the coupling \[N] (a spring's `f1 = f_e + k_d ẋ`, positive in tension).
     pub tension: f64,
-    /// Power dissipated by damping [W] ≥ 0.
+    /// Power dissipated by damping \[W] ≥ 0.
     pub dissipated_power: f64,
-    /// Potential energy stored in the coupling [J].
+    /// Potential energy stored in the coupling \[J].
     pub potential: f64,
 }

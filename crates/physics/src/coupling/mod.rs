@@ -55,6 +55,10 @@ pub struct Coupling {
 /// What one coupling remembers between evaluations of one run: nothing that changes its forces,
 /// only how fast they are found (and, for a spring whose ends meet, the last direction).
 #[derive(Debug, Clone, PartialEq)]
+#[allow(
+    clippy::large_enum_variant,
+    reason = "one per coupling, made once per run; a line's last solve is read at every evaluation, where a box would add an indirection"
+)]
 pub enum CouplingCache {
     SpringDamper(SpringCache),
     Catenary(CatenaryCache),
@@ -116,7 +120,11 @@ impl Coupling {
             (CouplingKind::Contact(contact), CouplingCache::Contact(memory)) => {
                 contact.apply(memory, frames, loads, out)
             }
-            (_, cache) => return self.apply_with_fresh_cache(cache, frames, surroundings, loads, out),
+            // A cache of another kind, every kind listed: a kind missing here would fall through to
+            // a fresh cache of its own kind and back, for ever.
+            (CouplingKind::SpringDamper(_) | CouplingKind::Catenary(_) | CouplingKind::Contact(_), cache) => {
+                return self.apply_with_fresh_cache(cache, frames, surroundings, loads, out);
+            }
         }
         Ok(())
     }

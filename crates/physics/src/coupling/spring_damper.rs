@@ -1,9 +1,9 @@
-//! Spring-damper coupling (PHYSICS.md §2, seed 000 [4944]–[4946]).
+//! Spring-damper coupling (PHYSICS.md §2 \[4944]–\[4946]).
 //!
-//! `x = |x2 − x1|` [m], `d = (x2 − x1)/x`, `ẋ = (v2 − v1)·d` [m/s] (positive when the ends
-//! separate). Scalar force `f1 = f_e(x) + k_d ẋ` [N] with the [`ElasticLaw`] `f_e`; the vector
+//! `x = |x2 − x1|` \[m], `d = (x2 − x1)/x`, `ẋ = (v2 − v1)·d` [m/s] (positive when the ends
+//! separate). Scalar force `f1 = f_e(x) + k_d ẋ` \[N] with the [`ElasticLaw`] `f_e`; the vector
 //! `f1 d` acts on end 1 and `−f1 d` on end 2, so a stretched spring pulls the ends together.
-//! Dissipated power `k_d ẋ²` [W]; stored energy `V(x)` [J].
+//! Dissipated power `k_d ẋ²` \[W]; stored energy `V(x)` \[J].
 
 use super::elastic_law::ElasticLaw;
 use super::ends::Endpoint;
@@ -50,7 +50,7 @@ impl SpringDamper {
         Self { end1, end2, law, damping }
     }
 
-    /// Forces at the kinematics `frames` (seed [4944]–[4945]), added to the end bodies' `loads`
+    /// Forces at the kinematics `frames` (PHYSICS.md §2 \[4944]–\[4945]), added to the end bodies' `loads`
     /// and written to `out`; `cache` keeps the direction for when the ends meet.
     #[inline(always)]
     pub fn apply(&self, cache: &mut SpringCache, frames: &[BodyFrame], loads: &mut [Load], out: &mut CouplingForces) {

@@ -65,7 +65,7 @@ pub struct Dopri45 {
 }
 
 impl Dopri45 {
-    /// The scheme with `tolerances`, for integrator steps of `step` [s] and `bodies` bodies.
+    /// The scheme with `tolerances`, for integrator steps of `step` \[s] and `bodies` bodies.
     pub fn new(tolerances: Tolerances, step: f64, bodies: usize) -> Self {
         let max_step = tolerances.max_step.map_or(step, |m| m.min(step));
         Self { stages: Stages::new(&TABLEAU, bodies), tolerances, max_step, next_step: 0.0, retry: None }
@@ -83,7 +83,7 @@ impl Dopri45 {
         self.stages.start(system, states, evaluation, time)
     }
 
-    /// One attempt from `time` [s] toward the end of the span `remaining` [s]: accepted (the
+    /// One attempt from `time` \[s] toward the end of the span `remaining` \[s]: accepted (the
     /// report says whether it reached the end, which it meets exactly) or rejected (the states
     /// are back at `time`, and the next attempt is shorter).
     ///

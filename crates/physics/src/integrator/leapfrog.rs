@@ -1,4 +1,4 @@
-//! The seed's leapfrog (central difference) scheme, as Radioss does it (PHYSICS.md §1 [17]–[18]).
+//! The leapfrog (central difference) scheme, as Radioss does it (PHYSICS.md §1 "Time integration", \[17]–\[18]).
 //!
 //! `v(t+½dt) = v(t−½dt) + γ(t) dt`, `ω(t+½dt) = ω(t−½dt) + α(t) dt` (ω in the principal frame),
 //! `x_G(t+dt) = x_G(t) + v(t+½dt) dt`, `q(t+dt) = q(t) ⊗ exp(ω(t+½dt) dt)` (exact rotation by
@@ -29,7 +29,7 @@ use crate::system::{EvaluationError, System};
 /// At which angular velocity the gyroscopic term `ω × Iω` is evaluated.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Gyroscopic {
-    /// `ω(t−½dt)`, the seed's (first order in rotation).
+    /// `ω(t−½dt)`, as PHYSICS.md §1 has it (first order in rotation).
     Lagged,
     /// `ω(t) ≈ ω(t−½dt) + ½dt α(t−dt)` ([`super::leapfrog2`], second order).
     Predicted,
@@ -72,7 +72,7 @@ impl Leapfrog {
         Ok(self.energy(system, states, half))
     }
 
-    /// One step of `h` [s] from `time`.
+    /// One step of `h` \[s] from `time`.
     #[inline]
     pub fn step(
         &mut self,

@@ -19,7 +19,7 @@ use crate::body::BodyState;
 use crate::evaluation::Evaluation;
 use crate::system::{EvaluationError, System};
 
-/// One step of `h` [s] from `time`: the leapfrog's, built with [`super::leapfrog::Gyroscopic::Predicted`].
+/// One step of `h` \[s] from `time`: the leapfrog's, built with [`super::leapfrog::Gyroscopic::Predicted`].
 pub fn step(
     scheme: &mut Leapfrog,
     system: &System,

@@ -45,7 +45,7 @@ pub enum Scheme {
 }
 
 impl Scheme {
-    /// `integrator` for `bodies` bodies, stepping by `step` [s] (the adaptive scheme's largest
+    /// `integrator` for `bodies` bodies, stepping by `step` \[s] (the adaptive scheme's largest
     /// step, with `tolerances`).
     pub fn new(integrator: Integrator, tolerances: Tolerances, step: f64, bodies: usize) -> Self {
         match integrator {
@@ -67,8 +67,8 @@ impl Scheme {
         }
     }
 
-    /// Starts at `time` [s] from synchronised `states` (the staggered schemes move their
-    /// velocities half a step `h` [s] back): evaluates the forces and returns the bodies'
+    /// Starts at `time` \[s] from synchronised `states` (the staggered schemes move their
+    /// velocities half a step `h` \[s] back): evaluates the forces and returns the bodies'
     /// energies.
     ///
     /// # Errors
@@ -89,7 +89,7 @@ impl Scheme {
         }
     }
 
-    /// One step from `time` [s]: of `h` [s] for the fixed-step schemes; for `dopri45` one
+    /// One step from `time` \[s]: of `h` \[s] for the fixed-step schemes; for `dopri45` one
     /// attempt toward the end of the span `h` (accepted or not, and perhaps short of it).
     ///
     /// # Errors
@@ -113,7 +113,7 @@ impl Scheme {
     }
 
     /// State of body `index` at the current time, velocities synchronised (the leapfrogs add
-    /// the half step `h` [s] of acceleration they hold back).
+    /// the half step `h` \[s] of acceleration they hold back).
     pub fn synchronized(&self, system: &System, states: &[BodyState], index: usize, h: f64) -> BodyState {
         match self {
             Self::Leapfrog(scheme) | Self::Leapfrog2(scheme) => scheme.synchronized(system, states, index, h),

@@ -28,7 +28,7 @@ pub const TABLEAU: Tableau = Tableau {
     b: &[1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0],
 };
 
-/// One step of `h` [s] from `time`.
+/// One step of `h` \[s] from `time`.
 pub fn step(
     stages: &mut Stages,
     system: &System,

@@ -1,6 +1,6 @@
 //! Explicit Runge–Kutta machinery shared by [`super::rk4`] and [`super::dopri45`].
 //!
-//! The integrated variables of each body are position `x_G` [m], orientation quaternion `q`,
+//! The integrated variables of each body are position `x_G` \[m], orientation quaternion `q`,
 //! velocity `v_G` [m/s] and angular momentum in the world `L = R I ω` [kg·m²/s] (PHYSICS.md §1):
 //!
 //! `ẋ = v`, `q̇ = ½ q ⊗ (0, ω)`, `v̇ = F/m`, `L̇ = M` (world moment about G), with
@@ -97,7 +97,7 @@ impl Stages {
         }
     }
 
-    /// Evaluates the rates at `time` [s] into slot 0; returns the bodies' energies.
+    /// Evaluates the rates at `time` \[s] into slot 0; returns the bodies' energies.
     pub fn start(
         &mut self,
         system: &System,
@@ -109,7 +109,7 @@ impl Stages {
         Ok(BodyEnergy::sum(system.bodies(), states.iter(), system.gravity()))
     }
 
-    /// Attempts a step of `h` [s] from the states at `time`: evaluates the stages and leaves the
+    /// Attempts a step of `h` \[s] from the states at `time`: evaluates the stages and leaves the
     /// new state (synchronised) in `states`, with the forces evaluated there. Returns the slot
     /// that holds the rates at the new state. [`Stages::accept`] or [`Stages::reject`] must
     /// follow.
@@ -139,7 +139,7 @@ impl Stages {
         Ok(last)
     }
 
-    /// Accepts the attempted step of `h` [s] whose new rates are in slot `last`: the new rates
+    /// Accepts the attempted step of `h` \[s] whose new rates are in slot `last`: the new rates
     /// become slot 0. Returns the work over the step, `h Σ b_j P_j`, and the bodies' energies.
     pub fn accept(&mut self, system: &System, states: &[BodyState], h: f64, last: usize) -> (Work, BodyEnergy) {
         let (dissipated, external) = self

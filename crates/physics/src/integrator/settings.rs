@@ -5,7 +5,7 @@
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Integrator {
-    /// The seed's central-difference scheme ([`super::leapfrog`]).
+    /// The central-difference scheme of PHYSICS.md §1 "Time integration" ([`super::leapfrog`]).
     #[default]
     Leapfrog,
     /// The leapfrog with the gyroscopic term at a predicted ω(t) ([`super::leapfrog2`]).
@@ -41,12 +41,18 @@ impl Integrator {
 
     /// Whether the scheme chooses its own steps (and so has no stability limit to respect).
     pub fn is_adaptive(self) -> bool {
-        self == Self::Dopri45
+        match self {
+            Self::Dopri45 => true,
+            Self::Leapfrog | Self::Leapfrog2 | Self::Splitting | Self::Rk4 => false,
+        }
     }
 
     /// Whether the scheme's stored velocities are at `t − ½dt` (the leapfrogs) rather than at `t`.
     pub fn is_staggered(self) -> bool {
-        matches!(self, Self::Leapfrog | Self::Leapfrog2)
+        match self {
+            Self::Leapfrog | Self::Leapfrog2 => true,
+            Self::Splitting | Self::Rk4 | Self::Dopri45 => false,
+        }
     }
 }
 
@@ -74,7 +80,7 @@ impl Default for Substeps {
 }
 
 /// Settings of the adaptive [`Integrator::Dopri45`]: a step is accepted when its estimated
-/// error is below `atol + rtol·|y|` for every component (position [m], velocity [m/s],
+/// error is below `atol + rtol·|y|` for every component (position \[m], velocity [m/s],
 /// orientation quaternion [–], angular velocity [rad/s]), in the root-mean-square sense.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Tolerances {
@@ -82,7 +88,7 @@ pub struct Tolerances {
     pub rtol: f64,
     /// Absolute tolerance [SI unit of each component] > 0.
     pub atol: f64,
-    /// Largest step [s] > 0, if any; the integrator step `dt / substeps` bounds it anyway, as
+    /// Largest step \[s] > 0, if any; the integrator step `dt / substeps` bounds it anyway, as
     /// every world step ends exactly on its boundary.
     pub max_step: Option<f64>,
 }
@@ -96,7 +102,7 @@ impl Default for Tolerances {
 /// The time step settings of a world.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Timing {
-    /// World step [s] > 0.
+    /// World step \[s] > 0.
     pub dt: f64,
     pub integrator: Integrator,
     pub substeps: Substeps,

@@ -59,7 +59,7 @@ impl Splitting {
         Ok(self.kick_and_energies(system, states, evaluation, 0.0))
     }
 
-    /// One step of `h` [s] from `time`: kick, drift (with the rotation sequence), forces, kick.
+    /// One step of `h` \[s] from `time`: kick, drift (with the rotation sequence), forces, kick.
     pub fn step(
         &mut self,
         system: &System,

@@ -1,7 +1,7 @@
 //! Boundary meshes: the closed triangle mesh a contact sees of a body (PHYSICS.md §4).
 //!
-//! A [`BoundaryMesh`] is fixed in the body's principal frame (origin G) [m]. Each face keeps
-//! what the contact force needs, computed once: area `a_f` [m²], centroid `r_f` [m] and unit
+//! A [`BoundaryMesh`] is fixed in the body's principal frame (origin G) \[m]. Each face keeps
+//! what the contact force needs, computed once: area `a_f` \[m²], centroid `r_f` \[m] and unit
 //! outward normal. The mesh is oriented so that its normals point out of the body (a file wound
 //! the other way is turned over, judged by the sign of its enclosed volume).
 //!
@@ -20,18 +20,18 @@ use parry3d_f64::shape::{TriMesh, TriMeshFlags};
 /// One face of a boundary mesh, principal frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Face {
-    /// `r_f` [m].
+    /// `r_f` \[m].
     pub centroid: Vec3,
     /// Unit outward normal.
     pub normal: Vec3,
-    /// `a_f` [m²].
+    /// `a_f` \[m²].
     pub area: f64,
 }
 
-/// Farthest a vertex may be from the origin [m]: distances squared must not overflow.
+/// Farthest a vertex may be from the origin \[m]: distances squared must not overflow.
 pub const MAX_EXTENT: f64 = 1e12;
 
-/// A boundary thinner than this along an axis [m] (but not flat) is refused: the distance
+/// A boundary thinner than this along an axis \[m] (but not flat) is refused: the distance
 /// queries' bounding-volume hierarchy divides by the thickness, which for a subnormal one
 /// overflows (a box of size 1e-320 made parry's tree build index out of bounds).
 pub const MIN_THICKNESS: f64 = 1e-9;
@@ -67,9 +67,9 @@ pub const GROUP_SIZE: usize = 8;
 /// turns its loop into vector instructions).
 #[derive(Debug, Clone, PartialEq)]
 pub struct FaceGroup {
-    /// Centre of the ball [m].
+    /// Centre of the ball \[m].
     pub center: Vec3,
-    /// Radius of the ball [m].
+    /// Radius of the ball \[m].
     pub radius: f64,
     /// Index of the group's first face in [`BoundaryMesh::faces`].
     pub first: usize,
@@ -94,7 +94,7 @@ impl FaceGroup {
         self.first..self.first + self.lanes.count_ones() as usize
     }
 
-    /// Bit i set for each face i of the group with `offset + direction·r_f < limit` [m].
+    /// Bit i set for each face i of the group with `offset + direction·r_f < limit` \[m].
     #[inline]
     pub fn below(&self, offset: f64, direction: &Vec3, limit: f64) -> u32 {
         let distances: [f64; GROUP_SIZE] = std::array::from_fn(|i| {
@@ -108,7 +108,7 @@ impl FaceGroup {
 /// A body's boundary as faces, principal frame.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BoundaryMesh {
-    /// Vertices [m].
+    /// Vertices \[m].
     pub vertices: Vec<Vec3>,
     /// Counter-clockwise seen from outside.
     pub triangles: Vec<[u32; 3]>,
@@ -120,7 +120,7 @@ pub struct BoundaryMesh {
 }
 
 impl BoundaryMesh {
-    /// A boundary from vertices [m] and triangles (vertex indices). Degenerate triangles are
+    /// A boundary from vertices \[m] and triangles (vertex indices). Degenerate triangles are
     /// kept for display but give no face; an inward-wound mesh is turned over.
     ///
     /// # Errors
@@ -186,17 +186,17 @@ impl BoundaryMesh {
         &self.groups
     }
 
-    /// Radius of the ball about G that holds the boundary [m].
+    /// Radius of the ball about G that holds the boundary \[m].
     pub fn bounding_radius(&self) -> f64 {
         self.bounding_radius
     }
 
-    /// The volume the boundary encloses [m³] (the body's, for a closed mesh).
+    /// The volume the boundary encloses \[m³] (the body's, for a closed mesh).
     pub fn volume(&self) -> f64 {
         signed_volume(&self.vertices, &self.triangles)
     }
 
-    /// `Σ a_f` [m²].
+    /// `Σ a_f` \[m²].
     pub fn area(&self) -> f64 {
         self.faces.iter().map(|f| f.area).sum()
     }
@@ -212,7 +212,7 @@ impl BoundaryMesh {
 }
 
 /// The triangles of `body`'s shape (a primitive meshed, or its mesh) with their vertices in the
-/// body's principal frame [m]: what its contact boundary and its hull are built from.
+/// body's principal frame \[m]: what its contact boundary and its hull are built from.
 pub fn shape_in_principal_frame(body: &RigidBody) -> (Vec<Vec3>, Vec<[u32; 3]>) {
     let (vertices, triangles) = match &body.shape {
         Shape::Box { size, center, subdivisions } => primitives::cuboid(size, center, *subdivisions),
@@ -255,7 +255,7 @@ fn split_into_groups(faces: &mut [Face], first: usize, groups: &mut Vec<FaceGrou
 /// Where a point is relative to a [`Surface`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SurfacePoint {
-    /// Signed distance to the boundary [m]: positive outside, negative inside.
+    /// Signed distance to the boundary \[m]: positive outside, negative inside.
     pub distance: f64,
     /// Unit outward normal of the boundary at the nearest point.
     pub normal: Vec3,
@@ -305,19 +305,19 @@ impl Surface {
         Ok(Self { mesh, low: aabb.mins.coords, high: aabb.maxs.coords, reach: boundary.bounding_radius() })
     }
 
-    /// Radius of the ball about the frame's origin that holds the surface [m].
+    /// Radius of the ball about the frame's origin that holds the surface \[m].
     pub fn bounding_radius(&self) -> f64 {
         self.reach
     }
 
-    /// Whether `point` [m] is within `margin` [m] of the surface's bounding box; never for a
+    /// Whether `point` \[m] is within `margin` \[m] of the surface's bounding box; never for a
     /// non-finite point (whose NaN the componentwise maximum would drop).
     pub fn near_bounds(&self, point: &Vec3, margin: f64) -> bool {
         let outside_box = (self.low - point).sup(&(point - self.high)).sup(&Vec3::zeros());
         point.iter().all(|x| x.is_finite()) && outside_box.norm_squared() <= margin * margin
     }
 
-    /// The boundary's point nearest to `point` (surface frame) [m], if `point` is within `range`
+    /// The boundary's point nearest to `point` (surface frame) \[m], if `point` is within `range`
     /// of the boundary's bounding box; `None` means farther than `range` from the boundary.
     pub fn nearest(&self, point: &Vec3, range: f64) -> Option<SurfacePoint> {
         if !self.near_bounds(point, range) {

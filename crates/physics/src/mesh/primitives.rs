@@ -1,4 +1,4 @@
-//! Triangle meshes of the primitive shapes, wound counter-clockwise seen from outside [m].
+//! Triangle meshes of the primitive shapes, wound counter-clockwise seen from outside \[m].
 //!
 //! Each returns `(vertices, triangles)` in the frame the shape is declared in.
 

@@ -1,8 +1,9 @@
-//! Static equilibrium (MoorPy's `solveEquilibrium`, issue 16): the poses at which every free
-//! direction of every body ([`super::dofs`]) carries no load, the bodies at rest, under every
-//! force source of the system's evaluation (gravity, springs, catenaries, contacts, the water's
-//! hydrostatics and its current's drag; any source the evaluation gains later), as the system
-//! at rest sees them ([`System::at_rest`]: still water, no added mass), at [`STATIC_TIME`].
+//! Static equilibrium (PHYSICS.md §7 "Static equilibrium"; MoorPy's `solveEquilibrium`): the
+//! poses at which every free direction of every body ([`super::dofs`]) carries no load, the
+//! bodies at rest, under every force source of the system's evaluation (gravity, springs,
+//! catenaries, contacts, the water's hydrostatics and its current's drag; any source the
+//! evaluation gains later), as the system at rest sees them ([`System::at_rest`]: still water,
+//! no added mass), at [`STATIC_TIME`].
 //!
 //! Newton's method on the loads `r(q)` with the tangent stiffness `K = −∂r/∂q`
 //! ([`super::stiffness`]): `(K + λ D) δ = r`, where `D` is the diagonal of `K` (floored, so that
@@ -16,6 +17,8 @@
 //!
 //! A body that travels beyond [`RUNAWAY`] scene sizes, or turns more than two turns, in the
 //! solve's steps has no equilibrium in that direction: the error names it, the direction and the load along it.
+//! A system that no `λ` up to [`MAX_DAMPING`] makes solvable has a non-finite stiffness or load:
+//! the solve stops with [`EquilibriumError::NoStep`] rather than raise `λ` for ever.
 
 use super::dofs::{Direction, Dof, Dofs, displace_by};
 use super::stiffness::{self, STATIC_TIME};
@@ -34,6 +37,10 @@ const RUNAWAY_TURN: f64 = 4.0 * std::f64::consts::PI;
 const FIRST_REACH: f64 = 0.25;
 /// Halvings of a step before it is refused.
 const MAX_HALVINGS: u32 = 12;
+/// The largest damping `λ` tried. `D` is floored at 1e-6 of `K`'s largest diagonal entry of
+/// its kind, so at `λ = 1e16` the added `λ D` is ten orders above that entry and the damped
+/// matrix of a finite `K` can be solved: a system still unsolvable there has a non-finite entry.
+pub const MAX_DAMPING: f64 = 1e16;
 
 /// How the solve stops.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -58,14 +65,14 @@ pub struct Equilibrium {
     pub states: Vec<BodyState>,
     /// The evaluation at those states: loads, coupling records, solved lines.
     pub evaluation: Evaluation,
-    /// `K` [SI] of every body's six directions there ([`stiffness::tangent`]).
+    /// `K` \[SI] of every body's six directions there ([`stiffness::tangent`]).
     pub stiffness: DMatrix<f64>,
     /// The directions solved for.
     pub dofs: Dofs,
     /// Newton iterations and force evaluations taken.
     pub iterations: u32,
     pub evaluations: u32,
-    /// The largest load left along a free direction [N] and about one [N·m].
+    /// The largest load left along a free direction \[N] and about one [N·m].
     pub residual_force: f64,
     pub residual_moment: f64,
     /// A free direction along which the equilibrium is unstable (a negative stiffness), if any.
@@ -94,6 +101,10 @@ pub enum EquilibriumError {
     Forces { coupling: String, source: CouplingError },
     #[error("the static solve did not converge in {iterations} iterations: body \"{body}\" still carries {load:.4e} {load_unit} in {direction}", load_unit = direction.load_unit())]
     NotConverged { iterations: u32, body: String, direction: Direction, load: f64 },
+    #[error(
+        "the static solve found no step at iteration {iteration}: the tangent stiffness or the loads are not finite (no damping λ up to {MAX_DAMPING:e} makes (K + λD) δ = r solvable)"
+    )]
+    NoStep { iteration: u32 },
 }
 
 /// The static equilibrium of `system` from the poses of `start` (velocities are ignored), with
@@ -128,16 +139,20 @@ pub fn solve(
     let mut iterations = 0;
     let mut travelled = DVector::zeros(dofs.len());
     let mut reach = FIRST_REACH;
+    // Ends: at most `settings.max_iterations` passes.
     while !scale.converged(&residual, &dofs, settings.tolerance) {
         if iterations == settings.max_iterations {
             return Err(not_converged(system, &dofs, &residual, &scale, iterations));
         }
         iterations += 1;
         let k = restricted(&stiffness::tangent(system, &evaluation), &dofs);
-        let (step, used) = newton_step(&k, &residual, lambda, &scale, &dofs);
+        let Some((step, used)) = newton_step(&k, &residual, lambda, &scale, &dofs) else {
+            return Err(EquilibriumError::NoStep { iteration: iterations });
+        };
         lambda = used;
         let (step, cut) = scale.limited(step, &dofs, reach);
         let mut halvings = 0;
+        // Ends: each pass is accepted or halves the step, and past MAX_HALVINGS it is refused.
         loop {
             let mut trial_states = states.clone();
             move_bodies(&mut trial_states, &dofs, &step, 0.5f64.powi(halvings as i32));
@@ -165,7 +180,7 @@ pub fn solve(
             }
             halvings += 1;
             if halvings > MAX_HALVINGS {
-                lambda = (10.0 * lambda).max(1e-6);
+                lambda = (10.0 * lambda).clamp(1e-6, MAX_DAMPING);
                 break;
             }
         }
@@ -259,16 +274,18 @@ fn restricted(k: &DMatrix<f64>, dofs: &Dofs) -> DMatrix<f64> {
     DMatrix::from_fn(rows.len(), rows.len(), |i, j| k[(rows[i], rows[j])])
 }
 
-/// Solves `(K + λ D) δ = r`, raising `λ` from `lambda` until the system can be solved; returns
-/// the step and the `λ` used. `D` is `K`'s diagonal, floored at 1e-6 of its largest entry of
-/// each kind (and at the force scale over the scene size when the scene has no stiffness).
+/// Solves `(K + λ D) δ = r`, raising `λ` tenfold from `lambda` (from 1e-6 when it is 0) until
+/// the system can be solved; returns the step and the `λ` used, or `None` when it cannot be
+/// solved at [`MAX_DAMPING`] either (`K` or `r` not finite). `D` is `K`'s diagonal, floored at
+/// 1e-6 of its largest entry of each kind (and at the force scale over the scene size when the
+/// scene has no stiffness).
 fn newton_step(
     k: &DMatrix<f64>,
     residual: &DVector<f64>,
     lambda: f64,
     scale: &Scale,
     dofs: &Dofs,
-) -> (DVector<f64>, f64) {
+) -> Option<(DVector<f64>, f64)> {
     let largest = |rotation: bool| {
         dofs.free()
             .iter()
@@ -286,13 +303,17 @@ fn newton_step(
         }),
     );
     let mut lambda = lambda;
+    // Ends: λ grows tenfold each pass (at least to 1e-6), and past MAX_DAMPING there is no step.
     loop {
         let mut damped = k.clone();
         for i in 0..dofs.len() {
             damped[(i, i)] += lambda * diagonal[i];
         }
         if let Some(step) = damped.lu().solve(residual).filter(|s| s.iter().all(|x| x.is_finite())) {
-            return (step, lambda);
+            return Some((step, lambda));
+        }
+        if lambda >= MAX_DAMPING {
+            return None;
         }
         lambda = (10.0 * lambda).max(1e-6);
     }

@@ -1,4 +1,4 @@
-//! Statics (issue 16): what a system does at rest. Its degrees of freedom ([`dofs`]), its
+//! Statics (PHYSICS.md §7 "Static equilibrium"): what a system does at rest. Its degrees of freedom ([`dofs`]), its
 //! tangent stiffness from every force source ([`stiffness`]), its static equilibrium
 //! ([`equilibrium`], MoorPy's `solveEquilibrium`) and a body's restoring force as it is held
 //! at offsets from there ([`offsets`], the mooring engineer's offset curve).

@@ -20,7 +20,7 @@ use crate::system::System;
 use crate::water::{WaterForces, WaterScratch, WaterStageInputs};
 use nalgebra::DMatrix;
 
-/// The time [s] of a static evaluation: nothing in the system at rest
+/// The time \[s] of a static evaluation: nothing in the system at rest
 /// ([`System::at_rest`]) depends on it.
 pub const STATIC_TIME: f64 = 0.0;
 
@@ -29,7 +29,7 @@ pub const STATIC_TIME: f64 = 0.0;
 const TRANSLATION_STEP: f64 = 1e-7;
 const ROTATION_STEP: f64 = 1e-7;
 
-/// `K` [SI] at the kinematics and coupling records of `evaluation` (its last evaluation, with
+/// `K` \[SI] at the kinematics and coupling records of `evaluation` (its last evaluation, with
 /// the bodies at rest, at [`STATIC_TIME`]).
 pub fn tangent(system: &System, evaluation: &Evaluation) -> DMatrix<f64> {
     let n = system.bodies().len();

@@ -1,7 +1,7 @@
 //! Added mass: the water a body must set moving as it accelerates (PHYSICS.md §6, Morison loads
 //! per body).
 //!
-//! In the body axes `b_j`, `M_a = w ρ V diag(C_aj)` [kg] and `J_a = w diag(J_j)` [kg·m²]; in the
+//! In the body axes `b_j`, `M_a = w ρ V diag(C_aj)` \[kg] and `J_a = w diag(J_j)` [kg·m²]; in the
 //! principal frame `Q M_a Qᵀ` with `Q = [b_1 b_2 b_3]`. The equations of motion become
 //! - `(m E + R M_a Rᵀ) γ = F + R M_a Rᵀ u̇` (world; `u̇` the water's acceleration at the drag
 //!   centre: the diffraction part of the fluid inertia, the Froude–Krylov part being in the
@@ -19,7 +19,7 @@
 use crate::body::{BodyFrame, Load, RigidBody, Support};
 use crate::math::{Mat3, Vec3};
 
-/// Added mass [kg] and inertia [kg·m²], principal frame.
+/// Added mass \[kg] and inertia [kg·m²], principal frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AddedMass {
     pub translational: Mat3,
@@ -29,7 +29,7 @@ pub struct AddedMass {
 impl AddedMass {
     /// `Q w ρ V diag(C_a) Qᵀ` and `Q w diag(J) Qᵀ` for the body axes `axes` (`Q`), the
     /// coefficients `coefficients`, the added inertias `inertias` [kg·m²], the displaced volume
-    /// `volume` [m³] of the whole hull, density `density` [kg/m³], wetted fraction `wetted`.
+    /// `volume` \[m³] of the whole hull, density `density` [kg/m³], wetted fraction `wetted`.
     pub fn new(axes: &Mat3, coefficients: &Vec3, inertias: &Vec3, volume: f64, density: f64, wetted: f64) -> Self {
         let along = |diagonal: Vec3| axes * Mat3::from_diagonal(&diagonal) * axes.transpose();
         Self { translational: along(coefficients * (wetted * density * volume)), rotational: along(inertias * wetted) }

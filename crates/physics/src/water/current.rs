@@ -1,7 +1,7 @@
 //! Current: a horizontal flow, uniform or sheared (PHYSICS.md §6, Water).
 //!
 //! `U(z) = U_s e` [m/s] (uniform), or the 1/7 power law `U(z) = U_s ((z' − z_b)/h)^(1/7) e`
-//! with `z' = min(z, z_w)` clamped to the seabed `z_b = z_w − h`, `h` the depth [m];
+//! with `z' = min(z, z_w)` clamped to the seabed `z_b = z_w − h`, `h` the depth \[m];
 //! `U_s` the surface speed [m/s], `e` the horizontal heading unit vector.
 
 use crate::math::Vec3;
@@ -14,6 +14,16 @@ pub enum Profile {
     Uniform,
     /// `U_s ((z' − z_b)/h)^(1/7)`: zero at the seabed (needs a depth).
     PowerLaw,
+}
+
+impl Profile {
+    /// Whether the profile is defined only over a finite depth (the water refuses it in deep water).
+    pub fn needs_depth(self) -> bool {
+        match self {
+            Self::Uniform => false,
+            Self::PowerLaw => true,
+        }
+    }
 }
 
 /// A current over water of a given level and depth.
@@ -38,14 +48,15 @@ impl Current {
         self.surface == Vec3::zeros()
     }
 
-    /// `U(z)` [m/s] at height `z` [m] (unramped).
+    /// `U(z)` [m/s] at height `z` \[m] (unramped).
     pub fn velocity(&self, z: f64) -> Vec3 {
         match (self.profile, self.depth) {
             (Profile::PowerLaw, Some(h)) => {
                 let above_seabed = (z.min(self.level) - (self.level - h)).max(0.0);
                 self.surface * (above_seabed / h).powf(1.0 / 7.0)
             }
-            _ => self.surface,
+            // Deep water has the uniform profile only (the water refuses a power law without a depth).
+            (Profile::Uniform, _) | (Profile::PowerLaw, None) => self.surface,
         }
     }
 }

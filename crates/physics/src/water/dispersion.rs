@@ -1,7 +1,7 @@
 //! The linear dispersion relation of surface gravity waves (PHYSICS.md §6, Airy waves):
 //! `ω² = g k tanh(k h)` [1/s²], deep water `k = ω²/g` [rad/m].
 
-/// Wave number `k` [rad/m] of frequency `omega` [rad/s] in water of depth `depth` [m] (`None`:
+/// Wave number `k` [rad/m] of frequency `omega` [rad/s] in water of depth `depth` \[m] (`None`:
 /// deep) under gravity `gravity` [m/s²].
 ///
 /// Newton's method on `f(k) = g k tanh(k h) − ω²`, which is increasing and concave in `k`:
@@ -25,7 +25,7 @@ pub fn wave_number(omega: f64, depth: Option<f64>, gravity: f64) -> f64 {
     k
 }
 
-/// Wavelength `λ = 2π/k` [m] of period `period` [s].
+/// Wavelength `λ = 2π/k` \[m] of period `period` \[s].
 pub fn wavelength(period: f64, depth: Option<f64>, gravity: f64) -> f64 {
     std::f64::consts::TAU / wave_number(std::f64::consts::TAU / period, depth, gravity)
 }

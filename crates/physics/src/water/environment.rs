@@ -1,8 +1,8 @@
 //! The water a scene declares: density, still level, depth, current, waves and their ramp
 //! (PHYSICS.md §6, Water and Airy waves), checked, and the pressure and flow it gives.
 //!
-//! The still-water pressure is `ρ g (z_w − z)` [Pa]; waves add `p_d` and the current its flow.
-//! Both dynamic parts are ramped in over `T_r` [s] by `½ (1 − cos(π t/T_r))` (1 from `T_r` on).
+//! The still-water pressure is `ρ g (z_w − z)` \[Pa]; waves add `p_d` and the current its flow.
+//! Both dynamic parts are ramped in over `T_r` \[s] by `½ (1 − cos(π t/T_r))` (1 from `T_r` on).
 
 use super::current::{Current, Profile};
 use super::dispersion::wavelength;
@@ -17,15 +17,15 @@ pub use super::current::Profile as CurrentProfile;
 pub enum WaveSpec {
     /// Still water.
     Calm,
-    /// One Airy wave: height `H` [m] (crest to trough), period `T` [s], heading [rad] (direction
-    /// of travel, counter-clockwise from +x), phase `φ` [rad].
+    /// One Airy wave: height `H` \[m] (crest to trough), period `T` \[s], heading \[rad] (direction
+    /// of travel, counter-clockwise from +x), phase `φ` \[rad].
     Regular { height: f64, period: f64, heading: f64, phase: f64 },
-    /// A JONSWAP sea ([`super::spectrum`]): `H_s` [m], `T_p` [s], γ ≥ 1, heading [rad], the
+    /// A JONSWAP sea ([`super::spectrum`]): `H_s` \[m], `T_p` \[s], γ ≥ 1, heading \[rad], the
     /// number of components and the seed of their phases.
     Jonswap { significant_height: f64, peak_period: f64, gamma: f64, heading: f64, components: u32, seed: u64 },
 }
 
-/// A current: surface speed [m/s], heading [rad], profile.
+/// A current: surface speed [m/s], heading \[rad], profile.
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct CurrentSpec {
     pub speed: f64,
@@ -38,13 +38,13 @@ pub struct CurrentSpec {
 pub struct WaterSpec {
     /// ρ [kg/m³] > 0.
     pub density: f64,
-    /// Still-water level `z_w` [m].
+    /// Still-water level `z_w` \[m].
     pub level: f64,
-    /// Depth `h` [m] > 0 (seabed at `z_w − h`); `None` for deep water.
+    /// Depth `h` \[m] > 0 (seabed at `z_w − h`); `None` for deep water.
     pub depth: Option<f64>,
     pub current: CurrentSpec,
     pub waves: WaveSpec,
-    /// Ramp time `T_r` [s] ≥ 0; `None` for two wave periods (none for calm water).
+    /// Ramp time `T_r` \[s] ≥ 0; `None` for two wave periods (none for calm water).
     pub ramp: Option<f64>,
 }
 
@@ -135,17 +135,17 @@ impl Water {
         self.spec.density
     }
 
-    /// Still-water level `z_w` [m].
+    /// Still-water level `z_w` \[m].
     pub fn level(&self) -> f64 {
         self.spec.level
     }
 
-    /// Depth `h` [m], `None` for deep water.
+    /// Depth `h` \[m], `None` for deep water.
     pub fn depth(&self) -> Option<f64> {
         self.spec.depth
     }
 
-    /// The seabed's height `z_b = z_w − h` [m], if the water has a depth.
+    /// The seabed's height `z_b = z_w − h` \[m], if the water has a depth.
     pub fn seabed(&self) -> Option<f64> {
         self.spec.depth.map(|h| self.spec.level - h)
     }
@@ -164,7 +164,7 @@ impl Water {
         &self.sea
     }
 
-    /// Ramp time `T_r` [s].
+    /// Ramp time `T_r` \[s].
     pub fn ramp_time(&self) -> f64 {
         self.ramp
     }
@@ -191,12 +191,12 @@ impl Water {
         self.spec.current.speed + self.sea.components().iter().map(|c| c.frequency * c.amplitude).sum::<f64>()
     }
 
-    /// The surface elevation [m] above the still level at `(x, y)` and `time` [s], ramped.
+    /// The surface elevation \[m] above the still level at `(x, y)` and `time` \[s], ramped.
     pub fn elevation(&self, x: f64, y: f64, time: f64) -> f64 {
         if self.sea.is_calm() { 0.0 } else { self.ramp(time) * self.sea.elevation(x, y, time) }
     }
 
-    /// Velocity [m/s] and acceleration [m/s²] of the water at `point` and `time` [s]: waves and
+    /// Velocity [m/s] and acceleration [m/s²] of the water at `point` and `time` \[s]: waves and
     /// current, ramped.
     pub fn flow(&self, point: &Vec3, time: f64) -> (Vec3, Vec3) {
         let ramp = self.ramp(time);
@@ -235,7 +235,7 @@ fn check(spec: &WaterSpec) -> Result<(), WaterError> {
     }
     non_negative("current speed", "m/s", spec.current.speed)?;
     finite("current heading", spec.current.heading)?;
-    if spec.current.profile == Profile::PowerLaw && spec.depth.is_none() {
+    if spec.current.profile.needs_depth() && spec.depth.is_none() {
         return Err(WaterError::ProfileWithoutDepth);
     }
     if let Some(ramp) = spec.ramp {

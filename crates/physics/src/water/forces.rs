@@ -14,13 +14,13 @@ pub struct WaterForces {
     pub drag: Load,
     /// The added mass's reaction, diffraction force included.
     pub added_mass: Load,
-    /// `V_sub` [m³]: `−∫_wet (z_w − z) n_z dA`.
+    /// `V_sub` \[m³]: `−∫_wet (z_w − z) n_z dA`.
     pub submerged_volume: f64,
     /// `w = V_sub / V`, within [0, 1].
     pub wetted_fraction: f64,
-    /// `−∫_wet n_z dA` [m²]: the waterplane area (exact for a flat cut).
+    /// `−∫_wet n_z dA` \[m²]: the waterplane area (exact for a flat cut).
     pub waterplane_area: f64,
-    /// `F·v + M·ω` of all of the above [W].
+    /// `F·v + M·ω` of all of the above \[W].
     pub power: f64,
 }
 

@@ -2,7 +2,7 @@
 //! water's pressure is integrated over it (PHYSICS.md §6, Pressure on the boundary).
 //!
 //! The pressure integral is exact only over a closed, outward-oriented surface: the hull's
-//! signed volume `V = (1/3) Σ A (n·x_c)` [m³] must be positive and `|Σ A n|` [m²] zero up to
+//! signed volume `V = (1/3) Σ A (n·x_c)` \[m³] must be positive and `|Σ A n|` \[m²] zero up to
 //! round-off, or the body is refused (unlike a contact boundary, which is turned over when
 //! wound inwards: a hull wound inwards is a modelling mistake worth saying).
 
@@ -10,7 +10,7 @@ use crate::body::RigidBody;
 use crate::math::Vec3;
 use crate::mesh::shape_in_principal_frame;
 
-/// `|Σ A n|` above this fraction of the total area `Σ A` [m²] marks an open mesh: a closed
+/// `|Σ A n|` above this fraction of the total area `Σ A` \[m²] marks an open mesh: a closed
 /// one sums to zero exactly but for round-off (about 1e-16 of the area per triangle).
 pub const OPEN_TOLERANCE: f64 = 1e-9;
 
@@ -35,7 +35,7 @@ pub enum HullError {
     InsideOut { volume: f64 },
 }
 
-/// A closed, outward hull in the body's principal frame [m].
+/// A closed, outward hull in the body's principal frame \[m].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Hull {
     /// Vertices, principal frame [m].
@@ -53,7 +53,7 @@ pub struct Hull {
 }
 
 impl Hull {
-    /// The hull of `vertices` [m] and `triangles`, checked closed and outward.
+    /// The hull of `vertices` \[m] and `triangles`, checked closed and outward.
     ///
     /// # Errors
     /// No triangles, an index out of range, a non-finite vertex, an open mesh or an inward one.
@@ -103,7 +103,7 @@ impl Hull {
         Self::new(vertices, triangles)
     }
 
-    /// Vertices, principal frame [m].
+    /// Vertices, principal frame \[m].
     pub fn vertices(&self) -> &[Vec3] {
         &self.vertices
     }
@@ -112,27 +112,27 @@ impl Hull {
         &self.triangles
     }
 
-    /// `2 A n` of each triangle [m²], principal frame.
+    /// `2 A n` of each triangle \[m²], principal frame.
     pub fn double_area_normals(&self) -> &[Vec3] {
         &self.double_area_normals
     }
 
-    /// `V` [m³].
+    /// `V` \[m³].
     pub fn volume(&self) -> f64 {
         self.volume
     }
 
-    /// `Σ A` [m²].
+    /// `Σ A` \[m²].
     pub fn area(&self) -> f64 {
         self.area
     }
 
-    /// Radius of the ball about G that holds the hull [m].
+    /// Radius of the ball about G that holds the hull \[m].
     pub fn bounding_radius(&self) -> f64 {
         self.bounding_radius
     }
 
-    /// `½ Σ A |n·d|` [m²]: the area the hull shows to a flow along the unit direction `d`
+    /// `½ Σ A |n·d|` \[m²]: the area the hull shows to a flow along the unit direction `d`
     /// (principal frame), the default drag area across `d`.
     pub fn projected_area(&self, direction: &Vec3) -> f64 {
         0.25 * self.double_area_normals.iter().map(|n| n.dot(direction).abs()).sum::<f64>()

@@ -3,13 +3,13 @@
 //!
 //! Over the wet part of the hull (clipped at the still level `z_w`, exactly) with the head
 //! `h = z_w − z` and the divergence theorem on the volume closed by the flat waterplane:
-//! - displaced volume `V = −∫ h n_z dA` [m³];
+//! - displaced volume `V = −∫ h n_z dA` \[m³];
 //! - centre of buoyancy `∫_V x dV = −∫ x h n_z dA` (x, y), `∫_V (z − z_w) dV = ½ ∫ h² n_z dA`;
-//! - waterplane area `A_wp = −∫ n_z dA` [m²], its centroid `(x_f, y_f)` from `−∫ (x, y) n_z dA`,
-//!   its second moments `I_T = −∫ (y − y_f)² n_z dA`, `I_L = −∫ (x − x_f)² n_z dA` [m⁴] about
+//! - waterplane area `A_wp = −∫ n_z dA` \[m²], its centroid `(x_f, y_f)` from `−∫ (x, y) n_z dA`,
+//!   its second moments `I_T = −∫ (y − y_f)² n_z dA`, `I_L = −∫ (x − x_f)² n_z dA` \[m⁴] about
 //!   the world x and y axes through the centroid;
 //! - metacentric heights `GM_T = z_B − z_G + I_T/V` (roll, about x), `GM_L = z_B − z_G + I_L/V`
-//!   (pitch, about y) [m];
+//!   (pitch, about y) \[m];
 //! - natural periods `T = 2π √(M/K)`: heave `(m + a_zz)/(ρ g A_wp)`, roll `(I_xx + J_xx)/(ρ g V
 //!   GM_T)`, pitch `(I_yy + J_yy)/(ρ g V GM_L)` with the world-axis inertia and added mass.
 //!
@@ -27,23 +27,23 @@ use crate::math::{Mat3, Vec3};
 /// A hull's still-water properties at one pose (world axes).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Hydrostatics {
-    /// `V` [m³].
+    /// `V` \[m³].
     pub displaced_volume: f64,
-    /// Depth of the hull's lowest vertex below the still level [m].
+    /// Depth of the hull's lowest vertex below the still level \[m].
     pub draft: f64,
-    /// The centre of buoyancy [m] (meaningless when nothing is submerged).
+    /// The centre of buoyancy \[m] (meaningless when nothing is submerged).
     pub center_of_buoyancy: Vec3,
-    /// `A_wp` [m²].
+    /// `A_wp` \[m²].
     pub waterplane_area: f64,
-    /// `(x_f, y_f)` [m].
+    /// `(x_f, y_f)` \[m].
     pub waterplane_center: [f64; 2],
-    /// `I_T`, `I_L` [m⁴].
+    /// `I_T`, `I_L` \[m⁴].
     pub waterplane_moments: [f64; 2],
 }
 
 impl Hydrostatics {
-    /// The properties of `hull` at position `position` [m] (G) and rotation `rotation`
-    /// (principal → world), in still water at level `level` [m].
+    /// The properties of `hull` at position `position` \[m] (G) and rotation `rotation`
+    /// (principal → world), in still water at level `level` \[m].
     pub fn at(hull: &Hull, position: &Vec3, rotation: &Mat3, level: f64) -> Self {
         let world: Vec<Vec3> = hull.vertices().iter().map(|v| position + rotation * v).collect();
         let heads: Vec<f64> = world.iter().map(|x| level - x.z).collect();
@@ -92,7 +92,7 @@ impl Hydrostatics {
         }
     }
 
-    /// `GM_T`, `GM_L` [m] for the centre of mass at height `z_g` [m] (0 when nothing floats).
+    /// `GM_T`, `GM_L` \[m] for the centre of mass at height `z_g` \[m] (0 when nothing floats).
     pub fn metacentric_heights(&self, z_g: f64) -> [f64; 2] {
         if !(self.displaced_volume > 0.0) {
             return [0.0; 2];
@@ -102,8 +102,8 @@ impl Hydrostatics {
     }
 }
 
-/// The height of G [m] at which `hull`, turned by `rotation`, displaces `volume` [m³] of still
-/// water at level `level` [m] (horizontal position `x`, `y` [m] unchanged), to round-off; `None`
+/// The height of G \[m] at which `hull`, turned by `rotation`, displaces `volume` \[m³] of still
+/// water at level `level` \[m] (horizontal position `x`, `y` \[m] unchanged), to round-off; `None`
 /// when `volume` is not within (0, V): the body would sink or has no weight to float.
 ///
 /// Newton on `V_sub(z_G)`, whose slope is `−A_wp`, kept within a shrinking bracket (a bisection
@@ -139,19 +139,19 @@ pub fn equilibrium_height(hull: &Hull, rotation: &Mat3, level: f64, x: f64, y: f
 /// A floating body at its free-floating equilibrium in still water: what `tether check` prints.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FloatingEquilibrium {
-    /// Height of G [m] at equilibrium.
+    /// Height of G \[m] at equilibrium.
     pub height: f64,
     /// The hydrostatics there.
     pub statics: Hydrostatics,
-    /// `GM_T`, `GM_L` [m].
+    /// `GM_T`, `GM_L` \[m].
     pub metacentric_heights: [f64; 2],
-    /// Natural periods [s] of heave, roll and pitch with the added mass and inertia; `None`
+    /// Natural periods \[s] of heave, roll and pitch with the added mass and inertia; `None`
     /// where nothing restores (a negative metacentric height: the body capsizes).
     pub periods: [Option<f64>; 3],
 }
 
 /// The equilibrium of `floating` (`body`, turned as in `state`) in `water` under its weight
-/// and a vertical pull `pull` [N] (the couplings' at t = 0, positive up): heave only, the
+/// and a vertical pull `pull` \[N] (the couplings' at t = 0, positive up): heave only, the
 /// orientation and horizontal position kept. `None` if it sinks (its hull cannot displace
 /// enough) or is pulled out of the water.
 pub fn floating_equilibrium(

@@ -3,7 +3,7 @@
 //!
 //! In the body axes `b_j` (the scene's reference axes, carried by the body), with the relative
 //! flow at the drag centre `u_r = U + u − (v_G + ω × r_c)` [m/s] and the wetted fraction `w`:
-//! - drag `F_d = w Σ_j (½ ρ C_dj A_j |u_r·b_j| + c_j) (u_r·b_j) b_j` [N], at the drag centre,
+//! - drag `F_d = w Σ_j (½ ρ C_dj A_j |u_r·b_j| + c_j) (u_r·b_j) b_j` \[N], at the drag centre,
 //!   with the linear damping `c_j` [N·s/m] beside the quadratic drag;
 //! - rotational drag `M_d = −w Σ_j (C_rj |ω_j| + d_j) ω_j b_j` [N·m], `ω_j = ω·b_j`, with the
 //!   rotational drag `C_rj` [N·m·s²] and the rotational damping `d_j` [N·m·s].
@@ -20,7 +20,7 @@ use crate::math::{Mat3, Vec3};
 pub struct HydroSpec {
     /// `C_dj` [–] ≥ 0 per reference axis.
     pub drag: Vec3,
-    /// `A_j` [m²] > 0 per axis; `None`: the hull's projected areas.
+    /// `A_j` \[m²] > 0 per axis; `None`: the hull's projected areas.
     pub drag_areas: Option<Vec3>,
     /// `C_rj` [N·m·s²] ≥ 0.
     pub rotational_drag: Vec3,
@@ -32,7 +32,7 @@ pub struct HydroSpec {
     pub added_mass: Vec3,
     /// Added inertia [kg·m²] ≥ 0 about each axis (times the wetted fraction).
     pub added_inertia: Vec3,
-    /// The drag centre in the reference frame [m]; `None`: G.
+    /// The drag centre in the reference frame \[m]; `None`: G.
     pub drag_center: Option<Vec3>,
 }
 
@@ -53,9 +53,9 @@ pub struct Hydro {
     pub spec: HydroSpec,
     /// `b_j` as the columns, principal frame.
     pub axes: Mat3,
-    /// `A_j` [m²].
+    /// `A_j` \[m²].
     pub drag_areas: Vec3,
-    /// The drag centre, principal frame [m].
+    /// The drag centre, principal frame \[m].
     pub drag_center: Vec3,
 }
 
@@ -96,7 +96,7 @@ impl Hydro {
         self.spec.added_mass != Vec3::zeros() || self.spec.added_inertia != Vec3::zeros()
     }
 
-    /// `r_c` in world axes [m] for a body turned by `rotation`.
+    /// `r_c` in world axes \[m] for a body turned by `rotation`.
     pub fn drag_arm(&self, rotation: &Mat3) -> Vec3 {
         rotation * self.drag_center
     }

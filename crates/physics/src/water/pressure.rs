@@ -1,11 +1,11 @@
 //! Pressure integrated over a hull's wet surface: hydrostatics and Froude–Krylov (PHYSICS.md §6,
 //! Pressure on the boundary).
 //!
-//! Each triangle (outward `n`, area `A`) with vertex pressures `p1, p2, p3` [Pa] is clipped at
+//! Each triangle (outward `n`, area `A`) with vertex pressures `p1, p2, p3` \[Pa] is clipped at
 //! the zero line of the linear interpolant of p: one wet vertex leaves a triangle, two a
 //! quadrilateral (two triangles), three the whole. On each wet triangle, exactly for linear p:
-//! `F = −n A (p1 + p2 + p3)/3` [N] and `∫ p r dA = (A/12) [(p1 + p2 + p3)(r1 + r2 + r3) + p1 r1
-//! + p2 r2 + p3 r3]` [N·m], `r` from G, so that the moment about G is `M = n × ∫ p r dA`.
+//! `F = −n A (p1 + p2 + p3)/3` \[N] and `∫ p r dA = (A/12) [(p1 + p2 + p3)(r1 + r2 + r3) +
+//! p1 r1 + p2 r2 + p3 r3]` [N·m], `r` from G, so that the moment about G is `M = n × ∫ p r dA`.
 //! In still water p is linear in z, so this is exact for any closed mesh: `F = ρ g V_sub ẑ`
 //! through the centre of buoyancy.
 //!
@@ -76,18 +76,18 @@ pub fn wet_parts(p: &[f64; 3], mut each: impl FnMut(f64, [EdgePoint; 3])) {
 /// What the pressure gives over a hull, principal frame.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct PressureIntegral {
-    /// `−∫ p n dA` [N].
+    /// `−∫ p n dA` \[N].
     pub force: Vec3,
     /// `∫ r × (−p n) dA` about G [N·m].
     pub moment: Vec3,
-    /// `∫_wet (z_w − z) n dA` [m³]: the submerged volume is `−ẑ·` this (exact in still water).
+    /// `∫_wet (z_w − z) n dA` \[m³]: the submerged volume is `−ẑ·` this (exact in still water).
     pub head_flux: Vec3,
-    /// `∫_wet n dA` [m²]: the waterplane area is `−ẑ·` this (exact for a flat cut).
+    /// `∫_wet n dA` \[m²]: the waterplane area is `−ẑ·` this (exact for a flat cut).
     pub wet_normal: Vec3,
 }
 
-/// Integrates the vertex pressures `pressures` [Pa] over `hull`'s wet surface, with the vertex
-/// heads below the still level `heads` = `z_w − z` [m] for the submerged volume.
+/// Integrates the vertex pressures `pressures` \[Pa] over `hull`'s wet surface, with the vertex
+/// heads below the still level `heads` = `z_w − z` \[m] for the submerged volume.
 #[inline(always)]
 pub fn integrate(hull: &Hull, pressures: &[f64], heads: &[f64]) -> PressureIntegral {
     let mut total = PressureIntegral::default();

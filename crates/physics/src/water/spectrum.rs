@@ -26,9 +26,9 @@ pub const BAND: (f64, f64) = (0.6, 3.0);
 /// A JONSWAP sea state.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Jonswap {
-    /// `H_s` [m].
+    /// `H_s` \[m].
     pub significant_height: f64,
-    /// `T_p` [s].
+    /// `T_p` \[s].
     pub peak_period: f64,
     /// Peak enhancement γ ≥ 1 (1: Pierson–Moskowitz).
     pub gamma: f64,
@@ -43,7 +43,7 @@ impl Jonswap {
         gravity * gravity * omega.powi(-5) * (-1.25 * (peak / omega).powi(4)).exp() * self.gamma.powf(r)
     }
 
-    /// `count` components heading `heading` [rad] from `seed`, over water of depth `depth` [m]
+    /// `count` components heading `heading` \[rad] from `seed`, over water of depth `depth` \[m]
     /// (`None`: deep).
     pub fn components(
         &self,

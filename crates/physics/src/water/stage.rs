@@ -94,10 +94,10 @@ impl WaterStage {
         self.floating.iter().find(|f| f.body == body)
     }
 
-    /// Stage *water* at `time` [s] and the kinematics `on.frames`: each floating body's water
+    /// Stage *water* at `time` \[s] and the kinematics `on.frames`: each floating body's water
     /// forces into `on.records` (one per floating body) and added to `on.loads` (which must hold
     /// every other force of the evaluation: the added mass reacts to the total); returns their
-    /// power `Σ F·v + M·ω` [W].
+    /// power `Σ F·v + M·ω` \[W].
     ///
     /// Built for AVX-512 and AVX2 as well as the portable build, chosen by `level`
     /// ([`SupportedLevel::run`]; the same IEEE arithmetic: the same results, bit for bit): the
@@ -206,7 +206,7 @@ impl WaterStage {
     }
 }
 
-/// `F·v + M·ω` [W] of `load` on a body moving as `frame`.
+/// `F·v + M·ω` \[W] of `load` on a body moving as `frame`.
 #[inline(always)]
 pub fn power(load: &Load, frame: &BodyFrame) -> f64 {
     load.force.dot(&frame.velocity) + load.moment.dot(&(frame.rotation * frame.angular_velocity))

@@ -1,7 +1,7 @@
 //! Linear (Airy) waves: a sea is a sum of components (PHYSICS.md §6, Airy waves).
 //!
-//! A component of amplitude `a` [m], frequency `ω` [rad/s], wave number `k` [rad/m] (from
-//! [`super::dispersion`]), heading unit vector `e` and phase `φ` [rad] has the phase
+//! A component of amplitude `a` \[m], frequency `ω` [rad/s], wave number `k` [rad/m] (from
+//! [`super::dispersion`]), heading unit vector `e` and phase `φ` \[rad] has the phase
 //! `θ = k e·x − ω t + φ` and the elevation `η = a cos θ`. With `ζ = min(z, z_w) − z_w` (the
 //! kinematics above the still level are those at the still level), the depth `h` and
 //! `ε = e^{−2 k h}` (0 in deep water), written without overflow for any `k h`:
@@ -11,7 +11,7 @@
 //!
 //! all `e^{kζ}` in deep water. Velocity `u = Σ ω a (K_c cos θ e + K_s sin θ ẑ)` [m/s],
 //! acceleration `u̇ = Σ ω² a (K_c sin θ e − K_s cos θ ẑ)` [m/s²], dynamic pressure
-//! `p_d = ρ g Σ a K_p cos θ` [Pa]. Below the seabed the kinematics are those at the seabed.
+//! `p_d = ρ g Σ a K_p cos θ` \[Pa]. Below the seabed the kinematics are those at the seabed.
 //!
 //! The pressure is evaluated at every hull vertex of every floating body at every evaluation,
 //! for every component. A sea whose components all travel one way with wave numbers on a grid,
@@ -30,15 +30,15 @@ use crate::math::Vec3;
 /// One regular wave.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct WaveComponent {
-    /// `a` [m].
+    /// `a` \[m].
     pub amplitude: f64,
     /// `ω` [rad/s].
     pub frequency: f64,
     /// `k` [rad/m].
     pub wave_number: f64,
-    /// Direction of travel, counter-clockwise from +x [rad].
+    /// Direction of travel, counter-clockwise from +x \[rad].
     pub heading: f64,
-    /// `φ` [rad].
+    /// `φ` \[rad].
     pub phase: f64,
 }
 
@@ -61,7 +61,7 @@ struct Harmonic {
     epsilon: f64,
 }
 
-/// A sea at one instant: the complex amplitudes `b_i` [m] of [`Sea::instant`], padded with
+/// A sea at one instant: the complex amplitudes `b_i` \[m] of [`Sea::instant`], padded with
 /// zeros to a multiple of four components.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct SeaInstant {
@@ -83,7 +83,7 @@ pub struct Sea {
 }
 
 impl Sea {
-    /// The sea of `components` on water at level `level` [m] with depth `depth` [m] (`None`:
+    /// The sea of `components` on water at level `level` \[m] with depth `depth` \[m] (`None`:
     /// deep). The components' wave numbers must satisfy the dispersion relation at that depth.
     pub fn new(components: Vec<WaveComponent>, level: f64, depth: Option<f64>) -> Self {
         let harmonic = harmonic_layout(&components)
@@ -110,7 +110,7 @@ impl Sea {
         self.harmonic.is_some()
     }
 
-    /// `Σ a` [m]: no crest is higher above the still level.
+    /// `Σ a` \[m]: no crest is higher above the still level.
     pub fn highest_crest(&self) -> f64 {
         self.components.iter().map(|c| c.amplitude).sum()
     }
@@ -120,7 +120,7 @@ impl Sea {
         self.depth.map_or(0.0, |h| (-2.0 * c.wave_number * h).exp())
     }
 
-    /// The sea at `time` [s] into `instant`: `b_i = a_i e^{i(φ_i − ω_i t)}/(1 + ε_i)`.
+    /// The sea at `time` \[s] into `instant`: `b_i = a_i e^{i(φ_i − ω_i t)}/(1 + ε_i)`.
     pub fn instant(&self, time: f64, instant: &mut SeaInstant) {
         let padded = self.components.len().div_ceil(CHAINS) * CHAINS;
         instant.real.clear();
@@ -146,7 +146,7 @@ impl Sea {
         }
     }
 
-    /// `Σ a K_p cos θ` [m] at the point `(x, y, z)` at the sea's `instant`: the dynamic
+    /// `Σ a K_p cos θ` \[m] at the point `(x, y, z)` at the sea's `instant`: the dynamic
     /// pressure divided by `ρ g` (unramped).
     #[inline(always)]
     pub fn pressure_head(&self, instant: &SeaInstant, x: f64, y: f64, z: f64) -> f64 {
@@ -176,13 +176,13 @@ impl Sea {
             .sum()
     }
 
-    /// The surface elevation `η = Σ a cos θ` [m] above the still level at `(x, y)` and `time`
-    /// [s] (unramped).
+    /// The surface elevation `η = Σ a cos θ` \[m] above the still level at `(x, y)` and `time`
+    /// \[s] (unramped).
     pub fn elevation(&self, x: f64, y: f64, time: f64) -> f64 {
         self.components.iter().map(|c| c.amplitude * self.phase(c, x, y, time).cos()).sum()
     }
 
-    /// Velocity [m/s] and acceleration [m/s²] of the water at `point` and `time` [s]
+    /// Velocity [m/s] and acceleration [m/s²] of the water at `point` and `time` \[s]
     /// (unramped): the Morison loads' kinematics, one point per body.
     pub fn kinematics(&self, point: &Vec3, time: f64) -> (Vec3, Vec3) {
         let zeta = self.depth_below_level(point.z);
@@ -226,8 +226,7 @@ fn harmonic_layout(components: &[WaveComponent]) -> Option<Harmonic> {
     };
     let m0 = (first.wave_number / base).round();
     let on_grid = base > 0.0
-        && m0 >= 1.0
-        && m0 < 1e6
+        && (1.0..1e6).contains(&m0)
         && components
             .iter()
             .enumerate()
@@ -247,6 +246,7 @@ fn harmonic_sum(instant: &SeaInstant, z: [f64; 2], first: u32) -> f64 {
     let multiply = |a: [f64; 2], b: [f64; 2]| [a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0]];
     // z^first by squaring, then the chains z^first, z^{first+1}, … and the stride z^4.
     let (mut power, mut base, mut exponent) = ([1.0, 0.0], z, first);
+    // Ends: `exponent` loses a bit each pass.
     while exponent > 0 {
         if exponent & 1 == 1 {
             power = multiply(power, base);

@@ -29,14 +29,14 @@ pub const DIVERGENCE_FACTOR: f64 = 10.0;
 pub struct Health {
     /// Energies at t = 0.
     pub initial_energy: EnergyReport,
-    /// `Σ m |g| ℓ` [J] with ℓ the size of the scene at t = 0: the energy the bodies could gain
+    /// `Σ m |g| ℓ` \[J] with ℓ the size of the scene at t = 0: the energy the bodies could gain
     /// by falling across it, part of the budget whatever the height of the origin.
     pub fall_energy: f64,
     /// The binding stable time step, for the message.
     pub limit: Option<Limit>,
 }
 
-/// How far the balance drifted, against the budget [J].
+/// How far the balance drifted, against the budget \[J].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Drift {
     pub drift: f64,
@@ -57,8 +57,8 @@ impl Health {
         if drift <= DIVERGENCE_FACTOR * budget.max(f64::MIN_POSITIVE) { None } else { Some(Drift { drift, budget }) }
     }
 
-    /// The divergence behind `drift` at `time` [s], with the bodies' synchronised `states` and
-    /// the integrator step `step` [s]: the first body whose state is not finite, else the body
+    /// The divergence behind `drift` at `time` \[s], with the bodies' synchronised `states` and
+    /// the integrator step `step` \[s]: the first body whose state is not finite, else the body
     /// with the most kinetic energy.
     pub fn diverged(&self, system: &System, states: &[BodyState], drift: Drift, time: f64, step: f64) -> StepError {
         let dynamic = || (0..system.bodies().len()).filter(|&i| !system.bodies()[i].is_kinematic());
@@ -77,7 +77,7 @@ impl Health {
         }
     }
 
-    /// An adaptive step that shrank to `shrunk` [s], below round-off of the time.
+    /// An adaptive step that shrank to `shrunk` \[s], below round-off of the time.
     pub fn stalled(&self, system: &System, states: &[BodyState], shrunk: f64, time: f64, step: f64) -> StepError {
         let cause = format!(
             "carries the most kinetic energy as the adaptive step shrinks to {shrunk:.3e} s (too stiff, or blown up)"
@@ -113,8 +113,8 @@ fn most_energetic_body(system: &System, states: &[BodyState]) -> usize {
         .unwrap_or(0)
 }
 
-/// `Σ m |g| ℓ` [J], ℓ the diagonal of the box around the bodies' centres of mass and the
-/// coupling ends `ends` [m]; and for each floating body `ρ g V · 2r`, the work of its buoyancy
+/// `Σ m |g| ℓ` \[J], ℓ the diagonal of the box around the bodies' centres of mass and the
+/// coupling ends `ends` \[m]; and for each floating body `ρ g V · 2r`, the work of its buoyancy
 /// across its own size (`V` its hull's volume, `r` the radius of the ball about G that holds
 /// it): a body floating at rest alone has no other scale.
 pub fn fall_energy(system: &System, states: &[BodyState], ends: impl Iterator<Item = crate::math::Vec3>) -> f64 {

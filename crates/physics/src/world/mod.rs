@@ -62,7 +62,7 @@ pub struct World {
 
 impl World {
     /// A world at t = 0 from the system's initial states, with time step settings `timing`
-    /// (`dt` [s] > 0). Forces and accelerations at t = 0 are evaluated here.
+    /// (`dt` \[s] > 0). Forces and accelerations at t = 0 are evaluated here.
     ///
     /// # Errors
     /// A coupling that cannot give its forces at t = 0.
@@ -141,6 +141,9 @@ impl World {
     /// checked; the clock ends exactly at the span's end.
     fn adaptive_span(&mut self, h: f64) -> Result<(), StepError> {
         let end = self.clock.time + h;
+        // Ends: a rejected attempt makes the next one shorter by the scheme's safety factor at
+        // least, until `Dopri45::step` refuses one below round-off of the time (`Stalled`); an
+        // accepted one moves the clock toward `end`, which the last one meets exactly.
         loop {
             let report = self
                 .scheme
@@ -245,7 +248,7 @@ impl World {
         self.timing.tolerances
     }
 
-    /// Simulated time [s].
+    /// Simulated time \[s].
     pub fn time(&self) -> f64 {
         self.clock.time
     }
@@ -255,7 +258,7 @@ impl World {
         self.clock.steps
     }
 
-    /// World step [s]: what one [`World::step`] advances.
+    /// World step \[s]: what one [`World::step`] advances.
     pub fn dt(&self) -> f64 {
         self.timing.dt
     }
@@ -275,7 +278,7 @@ impl World {
         self.substeps
     }
 
-    /// The integrator's step `dt / substeps` [s], the one the stable time step bounds.
+    /// The integrator's step `dt / substeps` \[s], the one the stable time step bounds.
     pub fn step_size(&self) -> f64 {
         self.timing.dt / f64::from(self.substeps)
     }

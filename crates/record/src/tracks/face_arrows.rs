@@ -24,9 +24,9 @@ const ARROW_RGB: [u8; 3] = [230, 120, 40];
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct FaceArrows {
     pub contacts: ArrowedContacts,
-    /// Drawn from this simulated time on [s] (`None`: from the start).
+    /// Drawn from this simulated time on \[s] (`None`: from the start).
     pub from: Option<f64>,
-    /// Drawn up to this simulated time [s] (`None`: to the end).
+    /// Drawn up to this simulated time \[s] (`None`: to the end).
     pub until: Option<f64>,
 }
 

@@ -81,7 +81,7 @@ pub(crate) fn for_world(world: &World) -> Vec<(Box<dyn Track>, KindStats)> {
     if let Some(tension) = tension::TensionPlot::new(world) {
         add("tension plot", 1, Box::new(tension));
     }
-    add("energy plot", 1, Box::new(energy::EnergyPlot::default()));
+    add("energy plot", 1, Box::<energy::EnergyPlot>::default());
     if let Some(water) = water::WaterTrack::new(world) {
         add("water", water.entities(), Box::new(water));
     }

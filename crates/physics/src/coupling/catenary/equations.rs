@@ -1,7 +1,7 @@
 //! The elastic catenary's closure equations in dimensionless form (PHYSICS.md §3).
 //!
-//! With the line's weight `W = λ0 g L_eq` [N], the end-1 vertical force `V1 = c sinh u1` and
-//! horizontal tension `H = c` [N], PHYSICS.md's `a, b, c, u1, u2` form becomes Irvine's
+//! With the line's weight `W = λ0 g L_eq` \[N], the end-1 vertical force `V1 = c sinh u1` and
+//! horizontal tension `H = c` \[N], PHYSICS.md's `a, b, c, u1, u2` form becomes Irvine's
 //! (`sinh u = V/H`, `V2 = V1 + W`):
 //!
 //! `Δx = (H/w)(asinh(V2/H) − asinh(V1/H)) + H L/EA`,

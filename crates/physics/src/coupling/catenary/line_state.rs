@@ -22,27 +22,27 @@ pub struct Ground {
     pub grounding: Grounding,
     /// The solved profile, in units of the line (lengths / `L_eq`, forces / `W`).
     pub profile: Profile,
-    /// `z_b` [m], along the line's upward unit vector.
+    /// `z_b` \[m], along the line's upward unit vector.
     pub seabed: f64,
 }
 
 /// The solved line at one instant, world frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LineState {
-    /// End 1 [m].
+    /// End 1 \[m].
     pub origin: Vec3,
     /// Horizontal unit vector from end 1 toward end 2 (for a weightless line: along the chord),
     /// and the line's upward unit vector (against its submerged weight).
     pub e_x: Vec3,
     pub e_y: Vec3,
-    /// Horizontal span `Δx` [m] ≥ 0 and rise `Δy` [m] of end 2 over end 1.
+    /// Horizontal span `Δx` \[m] ≥ 0 and rise `Δy` \[m] of end 2 over end 1.
     pub span: f64,
     pub rise: f64,
-    /// `H` [N] ≥ 0 (of the suspended parts, for a grounded line) and `V1` [N] (vertical force of
+    /// `H` \[N] ≥ 0 (of the suspended parts, for a grounded line) and `V1` \[N] (vertical force of
     /// the line on end 1, up positive).
     pub horizontal_tension: f64,
     pub vertical1: f64,
-    /// Submerged weight `W = w L_eq` [N], `L_eq` [m] and `EA` [N].
+    /// Submerged weight `W = w L_eq` \[N], `L_eq` \[m] and `EA` \[N].
     pub weight: f64,
     pub length: f64,
     pub axial_stiffness: f64,
@@ -58,17 +58,17 @@ pub struct LineState {
 pub type EndStiffness = [[Mat3; 2]; 2];
 
 impl LineState {
-    /// `V2` [N]: the line pulls end 2 down by `V2` (`V1 + W` for a free line).
+    /// `V2` \[N]: the line pulls end 2 down by `V2` (`V1 + W` for a free line).
     pub fn vertical2(&self) -> f64 {
         -self.end_forces().1.dot(&self.e_y)
     }
 
-    /// End 2 [m].
+    /// End 2 \[m].
     pub fn end2(&self) -> Vec3 {
         self.origin + self.e_x * self.span + self.e_y * self.rise
     }
 
-    /// Forces exerted by the line on end 1 and end 2 [N].
+    /// Forces exerted by the line on end 1 and end 2 \[N].
     pub fn end_forces(&self) -> (Vec3, Vec3) {
         let Some(ground) = &self.ground else {
             let f1 = self.e_x * self.horizontal_tension + self.e_y * self.vertical1;
@@ -85,7 +85,7 @@ impl LineState {
         }
     }
 
-    /// Tensions at end 1 and end 2 [N].
+    /// Tensions at end 1 and end 2 \[N].
     pub fn end_tensions(&self) -> (f64, f64) {
         if self.ground.is_none() {
             return (
@@ -105,12 +105,12 @@ impl LineState {
         (u(f1.dot(&self.e_x), f1.dot(&self.e_y)), u(-f2.dot(&self.e_x), -f2.dot(&self.e_y)))
     }
 
-    /// `L_B` [m]: the length lying on the seabed (0 for a free line).
+    /// `L_B` \[m]: the length lying on the seabed (0 for a free line).
     pub fn grounded_length(&self) -> f64 {
         self.ground.map_or(0.0, |g| g.profile.grounded.max(0.0) * self.length)
     }
 
-    /// Where the suspended parts meet the seabed [m]: the touchdown of the part hanging from the
+    /// Where the suspended parts meet the seabed \[m]: the touchdown of the part hanging from the
     /// end that does not lie on the bottom, and of the anchor's when it is suspended too.
     pub fn touchdowns(&self) -> Vec<Vec3> {
         let Some(ground) = &self.ground else { return Vec::new() };
@@ -195,7 +195,7 @@ impl LineState {
             .collect()
     }
 
-    /// Height [m] of the lowest point of the free line along `e_y`: its vertex where the
+    /// Height \[m] of the lowest point of the free line along `e_y`: its vertex where the
     /// vertical force vanishes between the ends (`−1 < v1 < 0`, at `rise(h, v1, 0) − ε v1²/2`
     /// below end 1 in units of `L_eq`), else its lower end.
     pub fn lowest_height(&self) -> f64 {
@@ -212,7 +212,7 @@ impl LineState {
         ends.min(y1 + (rise(h, v1, 0.0) - 0.5 * eps * v1 * v1) * self.length)
     }
 
-    /// Potential energy of the line [J]: weight (heights along `e_y`, zero at the world origin)
+    /// Potential energy of the line \[J]: weight (heights along `e_y`, zero at the world origin)
     /// plus elastic strain. Integrating `∫ w y ds` and `∫ T²/(2EA) ds` over the solved shape
     /// and using the closure equations, in units of `W L_eq`:
     /// `U = y1/L + v2 Y − (v2 r2 − v1 r1)/2 + h X/2 − ε (v2³ − v1³)/6`, `r_i = √(h² + v_i²)`.

@@ -1,8 +1,8 @@
-//! Elastic quasi-static catenary coupling (PHYSICS.md §3, seed 000 [4952]–[4955]), lying on
+//! Elastic quasi-static catenary coupling (PHYSICS.md §3 \[4952]–\[4955]), lying on
 //! the seabed where it reaches it (PHYSICS.md §7).
 //!
-//! A line of mass per length `λ0` [kg/m], displaced volume per length `A_d` [m²], unstretched
-//! length `L_eq` [m] and stiffness `D` [N/m] (`EA = D L_eq` [N]) hangs between two ends in the
+//! A line of mass per length `λ0` [kg/m], displaced volume per length `A_d` \[m²], unstretched
+//! length `L_eq` \[m] and stiffness `D` [N/m] (`EA = D L_eq` \[N]) hangs between two ends in the
 //! vertical plane of gravity. In a fluid of density `ρ` [kg/m³] it weighs
 //! `w = (λ0 − ρ A_d) g` [N/m] (`W = w L_eq`); `e_y = −ĝ` (a buoyant line, `w < 0`, arches
 //! upward: `e_y = ĝ`), `e_x` the horizontal unit vector from end 1 toward end 2. With the
@@ -17,7 +17,7 @@
 //! lifted off the bottom is the free one unchanged, continuously across the lift-off.
 //!
 //! A massless line (or one in zero gravity, or neutrally buoyant) is a straight elastic rope:
-//! tension `T = D max(0, x − L_eq)` [N], pulling only when stretched.
+//! tension `T = D max(0, x − L_eq)` \[N], pulling only when stretched.
 //!
 //! - [`equations`], [`solver`]: the free line's closure and its solve;
 //! - [`grounded`]: the line on the seabed, its closure and its solve;
@@ -48,11 +48,11 @@ pub struct Catenary {
     pub end2: Endpoint,
     /// `λ0` [kg/m] ≥ 0.
     pub mass_per_length: f64,
-    /// `L_eq` [m] > 0.
+    /// `L_eq` \[m] > 0.
     pub length: f64,
     /// `D` [N/m] > 0: the stiffness of the whole line, `EA = D L_eq`.
     pub stiffness: f64,
-    /// `A_d` [m²] ≥ 0: the line's displaced volume per length, for its submerged weight.
+    /// `A_d` \[m²] ≥ 0: the line's displaced volume per length, for its submerged weight.
     pub displaced_area: f64,
 }
 
@@ -72,13 +72,13 @@ pub struct CatenaryError {
 }
 
 impl Catenary {
-    /// A line of `mass_per_length` λ0 [kg/m], unstretched `length` [m] and `stiffness` D [N/m]
+    /// A line of `mass_per_length` λ0 [kg/m], unstretched `length` \[m] and `stiffness` D [N/m]
     /// that displaces no fluid.
     pub fn new(end1: Endpoint, end2: Endpoint, mass_per_length: f64, length: f64, stiffness: f64) -> Self {
         Self { end1, end2, mass_per_length, length, stiffness, displaced_area: 0.0 }
     }
 
-    /// The line with displaced volume per length `displaced_area` A_d [m²].
+    /// The line with displaced volume per length `displaced_area` A_d \[m²].
     pub fn with_displaced_area(self, displaced_area: f64) -> Self {
         Self { displaced_area, ..self }
     }
@@ -88,7 +88,7 @@ impl Catenary {
         self.mass_per_length - fluid_density * self.displaced_area
     }
 
-    /// Solves the line for end positions `p1`, `p2` [m] in `surroundings`, warm-started from
+    /// Solves the line for end positions `p1`, `p2` \[m] in `surroundings`, warm-started from
     /// the solution `last` (the previous one of the same line), if any.
     ///
     /// With a seabed and a sinking line: a line grounded at the last solve is solved grounded
@@ -189,10 +189,10 @@ impl Catenary {
         vertical: bool,
         last: Option<&LineState>,
     ) -> Result<LineState, CatenaryError> {
-        if let Some(ground) = last.and_then(|s| s.ground.as_ref()) {
-            if let Some(state) = self.solve_grounded(&frame, seabed, Warm::Grounded(ground)) {
-                return Ok(state);
-            }
+        if let Some(ground) = last.and_then(|s| s.ground.as_ref())
+            && let Some(state) = self.solve_grounded(&frame, seabed, Warm::Grounded(ground))
+        {
+            return Ok(state);
         }
         let free = self.solve_free(frame, vertical, last)?;
         if free.lowest_height() >= seabed.elevation {

@@ -122,6 +122,7 @@ fn newton(closure: &Closure, start: Unknowns, mut evaluation: Evaluation) -> Opt
         step_log_h *= limit;
         step_v *= limit;
         let mut scale = 1.0;
+        // Ends: `scale` halves each refused pass, and below 1e-10 the solve gives up.
         loop {
             let (trial_log_h, trial_v) = (log_h + scale * step_log_h, v + scale * step_v);
             let trial = closure.evaluate(trial_log_h.exp(), trial_v);

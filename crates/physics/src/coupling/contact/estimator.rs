@@ -1,11 +1,11 @@
-//! Contact parameters from the impact they must stop (PHYSICS.md §4, seed [4959]–[4964]).
+//! Contact parameters from the impact they must stop (PHYSICS.md §4 \[4959]–\[4964]).
 //!
-//! With `A` the expected contact area [m²], `v` the normal impact speed [m/s] and `m_e` the
-//! effective mass [kg] (`m1` against the environment, `m1 m2/(m1 + m2)` between bodies), a face
+//! With `A` the expected contact area \[m²], `v` the normal impact speed [m/s] and `m_e` the
+//! effective mass \[kg] (`m1` against the environment, `m1 m2/(m1 + m2)` between bodies), a face
 //! set that first pushes at distance `d0` and must stop the impact by `d_min`:
 //! - stiffness `k1 = m_e v² / (A (d0 − d_min)²)` [N/m³]: the impact's kinetic energy is stored
 //!   over the penetration `d0 − d_min`;
-//! - stopping time `τ = (π/2) √(m_e / (A k1))` [s]: a quarter period of the contact oscillator;
+//! - stopping time `τ = (π/2) √(m_e / (A k1))` \[s]: a quarter period of the contact oscillator;
 //! - damping `k2 = 2ζ √(m_e k1 / A)` [N·s/m³] for a damping ratio `ζ ≪ 1`.
 //!
 //! The time step must be well below τ: [`STEPS_PER_STOPPING_TIME`] steps resolve it.
@@ -17,17 +17,17 @@ pub const STEPS_PER_STOPPING_TIME: f64 = 10.0;
 /// What the estimate starts from.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Impact {
-    /// Mass of the body [kg] > 0.
+    /// Mass of the body \[kg] > 0.
     pub mass: f64,
-    /// Mass of the other body [kg] > 0, or `None` against the environment.
+    /// Mass of the other body \[kg] > 0, or `None` against the environment.
     pub other_mass: Option<f64>,
-    /// `A` [m²] > 0.
+    /// `A` \[m²] > 0.
     pub area: f64,
     /// `v` [m/s] > 0.
     pub speed: f64,
-    /// `d0` [m].
+    /// `d0` \[m].
     pub range: f64,
-    /// `d_min` [m] < d0.
+    /// `d_min` \[m] < d0.
     pub min_distance: f64,
     /// `ζ` [-] ≥ 0.
     pub damping_ratio: f64,
@@ -36,15 +36,15 @@ pub struct Impact {
 /// The estimated parameters.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactEstimate {
-    /// `m_e` [kg].
+    /// `m_e` \[kg].
     pub effective_mass: f64,
     /// `k1` [N/m³].
     pub stiffness: f64,
     /// `k2` [N·s/m³].
     pub damping: f64,
-    /// `τ` [s].
+    /// `τ` \[s].
     pub stopping_time: f64,
-    /// `τ / STEPS_PER_STOPPING_TIME` [s].
+    /// `τ / STEPS_PER_STOPPING_TIME` \[s].
     pub recommended_dt: f64,
 }
 
@@ -59,17 +59,17 @@ pub enum EstimateError {
     NoPenetration { range: f64, min_distance: f64 },
 }
 
-/// `m1 m2 / (m1 + m2)` [kg], or `m1` against the environment.
+/// `m1 m2 / (m1 + m2)` \[kg], or `m1` against the environment.
 pub fn effective_mass(mass: f64, other_mass: Option<f64>) -> f64 {
     other_mass.map_or(mass, |other| mass * other / (mass + other))
 }
 
-/// `τ = (π/2) √(m_e / (A k1))` [s] for stiffness `k1` [N/m³] over area `A` [m²].
+/// `τ = (π/2) √(m_e / (A k1))` \[s] for stiffness `k1` [N/m³] over area `A` \[m²].
 pub fn stopping_time(effective_mass: f64, area: f64, stiffness: f64) -> f64 {
     std::f64::consts::FRAC_PI_2 * (effective_mass / (area * stiffness)).sqrt()
 }
 
-/// Integrator steps per world step `dt` [s] that keep each under the recommended time step.
+/// Integrator steps per world step `dt` \[s] that keep each under the recommended time step.
 pub fn substeps_for(dt: f64, recommended_dt: f64) -> u32 {
     (dt / recommended_dt).ceil().clamp(1.0, f64::from(u32::MAX)) as u32
 }

@@ -1,15 +1,15 @@
-//! The contact law of one face (PHYSICS.md §4, seed [4958] and [4965]).
+//! The contact law of one face (PHYSICS.md §4 \[4958] and \[4965]).
 //!
-//! Within the range `d < d0` of the opposing boundary, with penetration `x = d0 − d` [m] and
+//! Within the range `d < d0` of the opposing boundary, with penetration `x = d0 − d` \[m] and
 //! its rate `ẋ = −ḋ` [m/s]:
-//! - normal force `f_n = max(0, a (k1 x + k2 ẋ))` [N] along the opposing boundary's normal. The
+//! - normal force `f_n = max(0, a (k1 x + k2 ẋ))` \[N] along the opposing boundary's normal. The
 //!   clamp at zero makes the model purely repulsive: a face leaving fast is not pulled back
 //!   (no adhesion), so the force drops to zero before the face is out of range;
-//! - friction `f_t = −μ f_n tanh(k_t |v_t|) v_t/|v_t|` [N], `v_t` the sliding velocity of the
+//! - friction `f_t = −μ f_n tanh(k_t |v_t|) v_t/|v_t|` \[N], `v_t` the sliding velocity of the
 //!   face relative to the opposing boundary (kinetic friction, regularised at rest: a face
 //!   under a tangential load `F < μ f_n` creeps at `v_t = atanh(F/(μ f_n))/k_t`);
-//! - penalty energy `½ a k1 x²` [J]; power dissipated `(f_n − a k1 x) ẋ + μ f_n tanh(k_t|v_t|) |v_t|`
-//!   [W] ≥ 0 (damping, the clamp, and friction).
+//! - penalty energy `½ a k1 x²` \[J]; power dissipated `(f_n − a k1 x) ẋ + μ f_n tanh(k_t|v_t|) |v_t|`
+//!   \[W] ≥ 0 (damping, the clamp, and friction).
 
 use crate::math::Vec3;
 
@@ -20,7 +20,7 @@ pub struct ContactLaw {
     pub stiffness: f64,
     /// `k2`: normal damping per unit face area [N·s/m³].
     pub damping: f64,
-    /// `d0`: distance at which the contact starts to push [m].
+    /// `d0`: distance at which the contact starts to push \[m].
     pub range: f64,
     /// `μ`: friction coefficient [-].
     pub friction: f64,
@@ -31,20 +31,20 @@ pub struct ContactLaw {
 /// What the law gives for one face.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct FaceContact {
-    /// `f_n + f_t` [N], in the axes of `normal`.
+    /// `f_n + f_t` \[N], in the axes of `normal`.
     pub force: Vec3,
-    /// `|f_n|` [N].
+    /// `|f_n|` \[N].
     pub normal_force: f64,
-    /// `f_t` [N].
+    /// `f_t` \[N].
     pub friction: Vec3,
-    /// `½ a k1 x²` [J].
+    /// `½ a k1 x²` \[J].
     pub potential: f64,
-    /// Power dissipated [W] ≥ 0.
+    /// Power dissipated \[W] ≥ 0.
     pub dissipated_power: f64,
 }
 
 impl ContactLaw {
-    /// The force on a face of area `area` [m²] at distance `distance` [m] < d0 from the opposing
+    /// The force on a face of area `area` \[m²] at distance `distance` \[m] < d0 from the opposing
     /// boundary, whose unit normal there is `normal` (pointing towards the face), moving at
     /// `relative_velocity` [m/s] relative to the boundary (same axes as `normal`).
     #[inline(always)]
@@ -92,7 +92,7 @@ const EXP_FLOOR: f64 = -40.0;
 /// instead of thirteen in sequence), and `2ᵏ` written into the exponent bits.
 #[inline(always)]
 fn exp_of_non_positive(x: f64) -> f64 {
-    const LN2_HIGH: f64 = 0.693_147_180_369_123_816_49; // 0x3fe62e42fee00000: 32 bits
+    const LN2_HIGH: f64 = f64::from_bits(0x3fe6_2e42_fee0_0000); // 0.693 147 180 369 123 816 49: 32 bits
     const LN2_LOW: f64 = 1.908_214_929_270_587_7e-10; // ln 2 − LN2_HIGH
     // Adding 1.5·2⁵² rounds to an integer, which lands in the low bits of the sum (|k| ≤ 58).
     const ROUNDING: f64 = 6_755_399_441_055_744.0;

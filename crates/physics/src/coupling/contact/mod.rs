@@ -1,17 +1,17 @@
-//! Face-based penalty contact with tanh friction (PHYSICS.md §4, seed [4956]–[4965]).
+//! Face-based penalty contact with tanh friction (PHYSICS.md §4 \[4956]–\[4965]).
 //!
 //! A contact coupling pushes the faces of one body's [`BoundaryMesh`] away from an opposing
 //! boundary: half-spaces of the environment (a ground plane, quay walls, the walls of a domain
 //! box) or another body's [`Surface`]. For each face within the range `d0` of the opposing
 //! boundary the [`ContactLaw`] gives `f_f = f_n + f_t` at its centroid `r_f`; the body receives
-//! `Σ f_f` and the moment about G `Σ (r_f − x_G) × f_f` ([4956]–[4957]); another body receives
+//! `Σ f_f` and the moment about G `Σ (r_f − x_G) × f_f` (\[4956]–\[4957]); another body receives
 //! `−f_f` at the same points, so momentum is conserved.
 //!
 //! Cost: a body whose bounding ball is out of range of a plane costs one dot product; a pair of
 //! bodies whose bounding balls are apart costs one distance. Then, against a plane, each face on
-//! the plane's [`shortlist`] costs a dot product (the list is drawn up again, by culling groups of
-//! faces, only when the body has moved or turned by its margin); against a body, each face in a
-//! group near the other's bounding box costs a BVH query.
+//! the plane's shortlist (`shortlist.rs`) costs a dot product (the list is drawn up again, by
+//! culling groups of faces, only when the body has moved or turned by its margin); against a
+//! body, each face in a group near the other's bounding box costs a BVH query.
 
 mod batch;
 pub mod estimator;
@@ -29,7 +29,7 @@ use normals::NormalForces;
 use shortlist::Shortlist;
 use std::sync::Arc;
 
-/// A half-space boundary: the plane through `point` [m] with unit `normal` pointing to the side
+/// A half-space boundary: the plane through `point` \[m] with unit `normal` pointing to the side
 /// the bodies are on.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Plane {
@@ -38,7 +38,7 @@ pub struct Plane {
 }
 
 impl Plane {
-    /// The six inward walls of the axis-aligned box `[low, high]` [m], the boundary of the
+    /// The six inward walls of the axis-aligned box `[low, high]` \[m], the boundary of the
     /// computational domain.
     pub fn domain_box(low: &Vec3, high: &Vec3) -> [Self; 6] {
         let wall = |point: &Vec3, axis: usize, sign: f64| Self { point: *point, normal: Vec3::ith(axis, sign) };
@@ -65,20 +65,20 @@ pub enum Opposing {
 /// One face in contact, in the body's principal frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ActiveFace {
-    /// `r_f − x_G` [m], principal frame.
+    /// `r_f − x_G` \[m], principal frame.
     pub centroid: Vec3,
-    /// `f_f` on the body [N], principal frame.
+    /// `f_f` on the body \[N], principal frame.
     pub force: Vec3,
 }
 
 /// Totals of the last evaluation.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ContactTotals {
-    /// `Σ |f_n|` [N].
+    /// `Σ |f_n|` \[N].
     pub normal: f64,
-    /// `|Σ f_t|` [N].
+    /// `|Σ f_t|` \[N].
     pub friction: f64,
-    /// `Σ a_f` of the faces in range [m²].
+    /// `Σ a_f` of the faces in range \[m²].
     pub area: f64,
     /// Faces in range.
     pub faces: usize,
@@ -91,7 +91,7 @@ pub struct Contact {
     pub boundary: Arc<BoundaryMesh>,
     pub against: Opposing,
     pub law: ContactLaw,
-    /// `A`, the expected contact area [m²] (PHYSICS.md §4) behind the time step limit.
+    /// `A`, the expected contact area \[m²] (PHYSICS.md §4) behind the time step limit.
     pub expected_area: f64,
 }
 
@@ -99,9 +99,9 @@ pub struct Contact {
 /// (PHYSICS.md §4).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ContactForces {
-    /// `Σ |f_n|` [N].
+    /// `Σ |f_n|` \[N].
     pub normal: f64,
-    /// `|Σ f_t|` [N].
+    /// `|Σ f_t|` \[N].
     pub friction: f64,
 }
 
@@ -182,6 +182,7 @@ impl Contact {
                     };
                     for batch in batches {
                         let (contacts, mut in_range) = batch.contacts(&self.law, &view);
+                        // Ends: each pass clears the lowest set bit.
                         while in_range != 0 {
                             let lane = in_range.trailing_zeros() as usize;
                             in_range &= in_range - 1;
@@ -236,13 +237,13 @@ impl Contact {
         (last_in_range.is_some(), lanes.total())
     }
 
-    /// The area behind the time step limit [m²]: the larger of the expected contact area and
+    /// The area behind the time step limit \[m²]: the larger of the expected contact area and
     /// the area in contact at the kinematics `frames`.
     pub fn limit_area(&self, frames: &[BodyFrame]) -> f64 {
         self.expected_area.max(self.totals(frames).area)
     }
 
-    /// Stopping time `τ` [s] of an impact on an area `area` [m²] for the effective mass
+    /// Stopping time `τ` \[s] of an impact on an area `area` \[m²] for the effective mass
     /// `1/inverse_mass` (PHYSICS.md §4); infinite when neither side responds to forces.
     pub fn stopping_time(&self, area: f64, inverse_mass: f64) -> f64 {
         if inverse_mass > 0.0 {

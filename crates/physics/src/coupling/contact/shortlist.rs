@@ -80,6 +80,7 @@ impl Shortlist {
                 continue;
             }
             let mut in_range = group.below(height, normal, limit);
+            // Ends: each pass clears the lowest set bit.
             while in_range != 0 {
                 chunk[filled] = group.first + in_range.trailing_zeros() as usize;
                 in_range &= in_range - 1;

@@ -1,6 +1,6 @@
 //! Closed-form and invariant checks of the leapfrog world (issue 2's real numbers).
 
-mod common;
+use tether_test_support as common;
 
 use approx::assert_relative_eq;
 use common::{oscillator, scene};

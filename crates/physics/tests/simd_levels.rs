@@ -5,7 +5,7 @@
 //! domain box), a body–body contact, linear and progressive springs with dampers, and a catenary.
 //! On a processor without AVX2 there is only the portable build, and nothing to compare.
 
-mod common;
+use tether_test_support as common;
 
 use tether_physics::body::BodyState;
 use tether_physics::coupling::{CouplingForces, CouplingKind};

@@ -2,7 +2,7 @@
 //! contact: bounded at 0.99 of the estimate, growing at 1.01), the impact limit `substeps: Auto`
 //! holds, and divergence detection (issues 5, 6 and 14).
 
-mod common;
+use tether_test_support as common;
 
 use approx::assert_relative_eq;
 use common::oscillator;

@@ -1,6 +1,6 @@
 //! Body boundaries from files and the errors a bad mesh or contact declaration gives.
 
-mod common;
+use tether_test_support as common;
 
 use approx::assert_relative_eq;
 use std::path::Path;
@@ -15,7 +15,7 @@ fn with_shape(shape: &str) -> Result<scene::Scene, scene::SceneError> {
         "Scene(dt: 1e-4, bodies: [Body(name: \"m\", master: Node(position: (0.0, 0.0, 2.0), mass: 1.0, inertia: Inertia(xx: 0.2, yy: 0.2, zz: 0.2)), shape: {shape})],
          couplings: [Contact(name: \"ground\", body: \"m\", against: Plane(point: (0.0, 0.0, 0.0), normal: (0.0, 0.0, 1.0)), stiffness: 1e6)])"
     );
-    scene::parse(&text, &common::here("fixtures/scene.ron"))
+    scene::parse(&text, &common::here!("fixtures/scene.ron"))
 }
 
 fn boundary_area_and_volume(scene: &scene::Scene) -> (f64, f64) {
@@ -38,7 +38,7 @@ fn floating(file: &str) -> scene::Scene {
         "Scene(dt: 1e-3, water: Water(), bodies: [Body(name: \"m\", master: Node(position: (0.0, 0.0, 0.0), mass: 400.0, inertia: Inertia(xx: 60.0, yy: 70.0, zz: 80.0)),
              shape: Mesh(file: {file:?}, center: (-0.5, -0.5, -0.5)), hydro: Hydro())])"
     );
-    scene::parse(&text, &common::here("fixtures/scene.ron")).unwrap_or_else(|e| panic!("{e}"))
+    scene::parse(&text, &common::here!("fixtures/scene.ron")).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// The one mesh policy: the inward-wound `cube_inward.stl` is turned over with one warning, the
@@ -88,7 +88,7 @@ fn error(shape: &str) -> String {
 #[test]
 fn missing_unknown_and_degenerate_mesh_files_are_errors_at_the_file_name() {
     let missing = error("Mesh(file: \"nowhere.obj\")");
-    assert!(missing.starts_with(&format!("{}:1:", common::here("fixtures/scene.ron").display())), "{missing}");
+    assert!(missing.starts_with(&format!("{}:1:", common::here!("fixtures/scene.ron").display())), "{missing}");
     assert!(missing.contains("cannot read mesh file") && missing.contains("nowhere.obj"), "{missing}");
     // The column points at the file name.
     let column: usize = missing.split(':').nth(2).and_then(|c| c.parse().ok()).expect("path:line:col");

@@ -44,6 +44,35 @@ fn a_bad_scene_exits_1_with_one_line() {
     assert_eq!(stderr.trim(), format!("error: {}:1:7: time step dt must be > 0 s, got -1", path.display()));
 }
 
+/// The one mesh policy reaches the user one way: `tether check` on the inward-wound cube as a
+/// contact boundary and as a hull in water passes both times, with the same one warning on stderr.
+#[test]
+fn check_warns_alike_of_an_inward_mesh_in_contact_and_in_water() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::copy(common::repo("crates/scene/tests/fixtures/cube_inward.stl"), dir.path().join("cube.stl")).unwrap();
+    let body = "Body(name: \"m\", master: Node(position: (0.0, 0.0, 2.0), mass: 400.0, inertia: Inertia(xx: 60.0, yy: 70.0, zz: 80.0)),
+        shape: Mesh(file: \"cube.stl\", center: (-0.5, -0.5, -0.5))";
+    let in_contact = format!(
+        "Scene(dt: 1e-4, bodies: [{body})], couplings: [Contact(name: \"ground\", body: \"m\",
+            against: Plane(point: (0.0, 0.0, 0.0), normal: (0.0, 0.0, 1.0)), stiffness: 1e6)])"
+    );
+    let in_water = format!("Scene(dt: 1e-3, water: Water(), bodies: [{body}, hydro: Hydro())])");
+    for (name, text) in [("contact.ron", in_contact), ("water.ron", in_water)] {
+        let path = dir.path().join(name);
+        std::fs::write(&path, text).unwrap();
+        let out = tether(&["check", path.to_str().unwrap()]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{name}: {stderr}");
+        assert_eq!(
+            stderr.trim(),
+            format!(
+                "warning: {}: body \"m\": mesh file \"cube.stl\": the mesh is wound inwards (its normals point into the body: signed volume -1.000000e0 m³); it was turned over to point outwards",
+                path.display()
+            )
+        );
+    }
+}
+
 #[test]
 fn record_refuses_bad_flags_and_unwritable_paths_before_running() {
     let scene = common::repo("scenes/spring_mass.ron");

@@ -270,7 +270,7 @@ fn the_panel_renders_on_the_cpu_like_its_snapshot() {
     let panel = panel(dir.path());
     let mut harness = Harness::builder()
         .with_size([440.0, 1100.0])
-        .with_options(SnapshotOptions::new().threshold(2.0).output_path(here("snapshots")))
+        .with_options(SnapshotOptions::new().threshold(2.0).output_path(here!("snapshots")))
         .wgpu()
         .build_ui_state(|ui, panel: &mut ControlPanel| panel.ui(ui, None), panel);
     open_from_list(&mut harness, "moored_buoy.ron");

@@ -1,7 +1,7 @@
 //! Face-based penalty contact (PHYSICS.md §4): impacts, rest, friction, body–body momentum.
 //! Tolerances are stated for the time steps used.
 
-mod common;
+use tether_test_support as common;
 
 use approx::assert_relative_eq;
 use common::scene;

@@ -1,6 +1,6 @@
 //! Closed-form and invariant checks of the leapfrog world (PHYSICS.md §5).
 
-mod common;
+use tether_test_support as common;
 
 use approx::assert_relative_eq;
 use common::{oscillator, scene};

@@ -2,7 +2,7 @@
 //! error against its tolerance, long-run energy, the energy ledger, supports and prescribed
 //! motion, and the extremes (stiffness and mass ratios of 1e6, |ω| dt near 1).
 
-mod common;
+use tether_test_support as common;
 
 use approx::assert_relative_eq;
 use common::{oscillator, scene};

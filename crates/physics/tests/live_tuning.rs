@@ -1,7 +1,7 @@
 //! Live tuning in the physics: a coupling replaced and the time step changed while running,
 //! against closed forms, and the energy ledger kept continuous across the change.
 
-mod common;
+use tether_test_support as common;
 
 use common::oscillator;
 use tether_physics::integrator::{Integrator, Substeps, Timing, Tolerances};

@@ -2,7 +2,7 @@
 //! symmetric top and intermediate-axis flip, the thin pole, the heavy symmetric top and the
 //! compound pendulum.
 
-mod common;
+use tether_test_support as common;
 
 use approx::assert_relative_eq;
 use nalgebra::Vector3;

@@ -6,7 +6,7 @@
 //! catenary; and on a barge in an irregular sea, the water's forces.
 //! On a processor without AVX2 there is only the portable build, and nothing to compare.
 
-mod common;
+use tether_test_support as common;
 
 use tether_physics::body::BodyState;
 use tether_physics::coupling::{CouplingForces, CouplingKind};

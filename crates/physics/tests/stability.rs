@@ -2,7 +2,7 @@
 //! contact: bounded at 0.99 of the estimate, growing at 1.01), the impact limit `substeps: Auto`
 //! holds, and divergence detection (PHYSICS.md §1 "Stable time step", §5 "Health check").
 
-mod common;
+use tether_test_support as common;
 
 use approx::{assert_abs_diff_eq, assert_relative_eq};
 use common::oscillator;

@@ -1,7 +1,7 @@
 //! Water (PHYSICS.md §6): the closed forms of floating and sinking bodies, waves and
 //! their convergence, added mass under every integrator, the energy balance with water.
 
-mod common;
+use tether_test_support as common;
 
 use approx::assert_relative_eq;
 use common::scene;

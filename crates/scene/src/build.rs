@@ -16,10 +16,9 @@ use tether_physics::coupling::{Catenary, Contact, Coupling, CouplingKind, Elasti
 use tether_physics::integrator::{Substeps, Timing, Tolerances};
 use tether_physics::mass_properties::{MassError, MassProperties, Node};
 use tether_physics::math::{Mat3, Rotation, Vec3};
-use tether_physics::mesh::{BoundaryMesh, MeshError, Surface};
+use tether_physics::mesh::{BoundaryMesh, MeshError, OutwardMesh, Surface};
 use tether_physics::seabed::Seabed;
 use tether_physics::system::{System, SystemError};
-use tether_physics::water::Hull;
 use tether_physics::world::{StepError, World};
 
 mod water;
@@ -62,8 +61,9 @@ pub struct Bodies {
 }
 
 impl Bodies {
-    /// Builds every body of `file` (mesh files relative to `directory`).
-    pub fn build(file: &SceneFile, directory: &Path) -> Result<Self, Problem> {
+    /// Builds every body of `file` (mesh files relative to `directory`); warns of a mesh file
+    /// wound inwards.
+    pub fn build(file: &SceneFile, directory: &Path, warnings: &mut Vec<String>) -> Result<Self, Problem> {
         let mut bodies = Vec::with_capacity(file.bodies.len());
         for (index, def) in file.bodies.iter().enumerate() {
             let at = ItemAt::new(
@@ -72,8 +72,7 @@ impl Bodies {
                 file.bodies[..index].iter().filter(|b| b.name == def.name).count(),
             );
             check_name(&at, file.bodies[..index].iter().map(|b| b.name.as_str()))?;
-            let in_water = file.water.is_some() && def.hydro.is_some();
-            bodies.push(build_body(def, directory, &at, in_water)?);
+            bodies.push(build_body(def, directory, &at, warnings)?);
         }
         let boundaries = Boundaries::new(bodies.len());
         Ok(Self { bodies, boundaries })
@@ -95,7 +94,7 @@ pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
             message: format!("duration must be > 0 s, got {}", file.duration),
         });
     }
-    let mut bodies = Bodies::build(file, directory)?;
+    let mut bodies = Bodies::build(file, directory, &mut warnings)?;
     let mut states = Vec::with_capacity(file.bodies.len());
     for (def, body) in file.bodies.iter().zip(&bodies.bodies) {
         if let Some(axis) = body.mass_properties.violated_triangle_inequality() {
@@ -425,7 +424,7 @@ fn node(def: &NodeDef) -> Node {
     Node { position: vec3(def.position), mass: def.mass, inertia: tensor(&def.inertia) }
 }
 
-fn build_body(def: &BodyDef, directory: &Path, at: &ItemAt, in_water: bool) -> Result<RigidBody, Problem> {
+fn build_body(def: &BodyDef, directory: &Path, at: &ItemAt, warnings: &mut Vec<String>) -> Result<RigidBody, Problem> {
     let slaves: Vec<Node> = def.slaves.iter().map(node).collect();
     let mass_properties = MassProperties::from_nodes(&node(&def.master), &slaves).map_err(|e| {
         let field = match e {
@@ -435,7 +434,7 @@ fn build_body(def: &BodyDef, directory: &Path, at: &ItemAt, in_water: bool) -> R
         at.at_field(field, e.to_string())
     })?;
     let support = build_support(&def.support, at)?;
-    let shape = build_shape(&def.shape, directory, at, in_water)?;
+    let shape = build_shape(&def.shape, directory, at, warnings)?;
     let slave_positions: Vec<Vec3> = slaves.iter().map(|n| n.position).collect();
     Ok(RigidBody::new(def.name.clone(), mass_properties, vec3(def.master.position), &slave_positions, support, shape))
 }
@@ -482,9 +481,10 @@ const MAX_SUBDIVISIONS: u32 = 6;
 /// 64 gives 49,152.
 const MAX_BOX_SUBDIVISIONS: u32 = 64;
 
-/// The body's shape; `in_water`: a mesh file must also be a closed, outward hull as written
-/// (a contact boundary wound inwards is turned over, a hull is refused).
-fn build_shape(def: &ShapeDef, directory: &Path, at: &ItemAt, in_water: bool) -> Result<Shape, Problem> {
+/// The body's shape. A mesh file is checked once here by [`OutwardMesh::new`], for contact and
+/// water alike (whether it is closed, which only a hull needs, is checked when the body enters
+/// the water); one wound inwards is turned over, with a warning.
+fn build_shape(def: &ShapeDef, directory: &Path, at: &ItemAt, warnings: &mut Vec<String>) -> Result<Shape, Problem> {
     let positive = |field: &'static str, value: f64| at.require(field, value, Bound::Positive, "m").map(|_| ());
     Ok(match def {
         ShapeDef::Box { size, center, subdivisions } => {
@@ -523,14 +523,11 @@ fn build_shape(def: &ShapeDef, directory: &Path, at: &ItemAt, in_water: bool) ->
             let (vertices, triangles) =
                 mesh_file::read(&directory.join(file)).map_err(|e| at.problem(Some("file"), Some(file), e))?;
             let vertices: Vec<Vec3> = vertices.iter().map(|v| v * *scale + vec3(*center)).collect();
-            if in_water {
-                Hull::new(vertices.clone(), triangles.clone()).map_err(|e| {
-                    at.problem(Some("file"), Some(file), format!("mesh file {file:?} as a hull in water: {e}"))
-                })?;
-            }
-            // Checked now, so that a contact can always mesh the body.
-            let mesh = BoundaryMesh::new(vertices, triangles)
+            let mesh = OutwardMesh::new(vertices, triangles)
                 .map_err(|e| at.problem(Some("file"), Some(file), format!("mesh file {file:?}: {e}")))?;
+            if let Some(turned_over) = mesh.turned_over {
+                warnings.push(format!("body \"{}\": mesh file {file:?}: {turned_over}", at.name));
+            }
             Shape::Mesh { vertices: mesh.vertices, triangles: mesh.triangles }
         }
     })

@@ -3,7 +3,7 @@
 //! non-finite state without reporting it (PHYSICS.md §5 "Health check"). Bounded: a fixed number of cases per run.
 //! Inputs that once broke something are kept in `tests/regressions/`.
 
-mod common;
+use tether_test_support as common;
 
 use proptest::prelude::*;
 use std::panic::{AssertUnwindSafe, catch_unwind};
@@ -165,7 +165,7 @@ pub fn exercise(text: &str) -> Result<(), String> {
 fn sources() -> Vec<String> {
     let mut files = common::scene_files();
     files.retain(|f| !f.ends_with("chain100_air.ron"));
-    files.push(common::here("fixtures/unstable_chain.ron"));
+    files.push(common::here!("fixtures/unstable_chain.ron"));
     files.iter().map(|f| std::fs::read_to_string(f).unwrap()).collect()
 }
 
@@ -198,7 +198,7 @@ proptest! {
 /// Inputs that once broke the loader or the stepper, each still handled.
 #[test]
 fn regression_corpus() {
-    let dir = common::here("regressions");
+    let dir = common::here!("regressions");
     let mut count = 0;
     for entry in std::fs::read_dir(&dir).unwrap() {
         let path = entry.unwrap().path();

@@ -1,10 +1,11 @@
 //! Body boundaries from files and the errors a bad mesh or contact declaration gives.
 
-mod common;
+use tether_test_support as common;
 
 use approx::assert_relative_eq;
 use std::path::Path;
 use tether_physics::coupling::CouplingKind;
+use tether_physics::water::hydrostatics::equilibrium_height;
 use tether_scene as scene;
 
 /// A scene in `tests/fixtures/` with one body of shape `shape`, resting at z = 2, in contact
@@ -14,7 +15,7 @@ fn with_shape(shape: &str) -> Result<scene::Scene, scene::SceneError> {
         "Scene(dt: 1e-4, bodies: [Body(name: \"m\", master: Node(position: (0.0, 0.0, 2.0), mass: 1.0, inertia: Inertia(xx: 0.2, yy: 0.2, zz: 0.2)), shape: {shape})],
          couplings: [Contact(name: \"ground\", body: \"m\", against: Plane(point: (0.0, 0.0, 0.0), normal: (0.0, 0.0, 1.0)), stiffness: 1e6)])"
     );
-    scene::parse(&text, &common::here("fixtures/scene.ron"))
+    scene::parse(&text, &common::here!("fixtures/scene.ron"))
 }
 
 fn boundary_area_and_volume(scene: &scene::Scene) -> (f64, f64) {
@@ -30,12 +31,41 @@ fn an_obj_cube_with_quads_loads_as_twelve_triangles_scaled() {
     assert_relative_eq!(volume, 8.0, epsilon = 1e-12);
 }
 
+/// The unit cube of `file` centred on G (a 400 kg point at the origin) floating in still water
+/// of 1025 kg/m³ (the scene's default).
+fn floating(file: &str) -> scene::Scene {
+    let text = format!(
+        "Scene(dt: 1e-3, water: Water(), bodies: [Body(name: \"m\", master: Node(position: (0.0, 0.0, 0.0), mass: 400.0, inertia: Inertia(xx: 60.0, yy: 70.0, zz: 80.0)),
+             shape: Mesh(file: {file:?}, center: (-0.5, -0.5, -0.5)), hydro: Hydro())])"
+    );
+    scene::parse(&text, &common::here!("fixtures/scene.ron")).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The one mesh policy: the inward-wound `cube_inward.stl` is turned over with one warning, the
+/// same whether the body is in contact or in water; as a contact boundary it encloses the unit
+/// cube, and as a hull it floats at the outward `cube.obj`'s draft, the closed form
+/// `d = m/(ρ A_wp)` = 400/1025 m under a 1 m² waterplane (G, the centre, `½ − d` above the level).
 #[test]
-fn an_inward_wound_stl_cube_is_turned_outwards() {
-    let scene = with_shape("Mesh(file: \"cube_inward.stl\")").unwrap_or_else(|e| panic!("{e}"));
-    let (area, volume) = boundary_area_and_volume(&scene);
-    assert_relative_eq!(area, 6.0, epsilon = 1e-6);
-    assert_relative_eq!(volume, 1.0, epsilon = 1e-6);
+fn an_inward_wound_stl_cube_is_turned_outwards_with_one_warning_for_contact_and_for_water() {
+    let shape = "Mesh(file: \"cube_inward.stl\", center: (-0.5, -0.5, -0.5))";
+    let in_contact = with_shape(shape).unwrap_or_else(|e| panic!("{e}"));
+    let (area, volume) = boundary_area_and_volume(&in_contact);
+    assert_relative_eq!(area, 6.0, epsilon = 1e-12);
+    assert_relative_eq!(volume, 1.0, epsilon = 1e-12);
+    let in_water = floating("cube_inward.stl");
+    let warning = "body \"m\": mesh file \"cube_inward.stl\": the mesh is wound inwards (its normals point into the body: signed volume -1.000000e0 m³); it was turned over to point outwards";
+    assert_eq!(in_contact.warnings, [warning]);
+    assert_eq!(in_water.warnings, [warning]);
+    let outward = floating("cube.obj");
+    assert!(outward.warnings.is_empty(), "{:?}", outward.warnings);
+    let draft = 400.0 / 1025.0;
+    for loaded in [&in_water, &outward] {
+        let hull = &loaded.world.system().water().expect("water").floating[0].hull;
+        assert_relative_eq!(hull.volume(), 1.0, epsilon = 1e-12);
+        let turn = loaded.world.system().initial_states()[0].orientation.to_rotation_matrix().into_inner();
+        let height = equilibrium_height(hull, &turn, 0.0, 0.0, 0.0, draft).expect("it floats");
+        assert_relative_eq!(height, 0.5 - draft, epsilon = 1e-12);
+    }
 }
 
 #[test]
@@ -58,7 +88,7 @@ fn error(shape: &str) -> String {
 #[test]
 fn missing_unknown_and_degenerate_mesh_files_are_errors_at_the_file_name() {
     let missing = error("Mesh(file: \"nowhere.obj\")");
-    assert!(missing.starts_with(&format!("{}:1:", common::here("fixtures/scene.ron").display())), "{missing}");
+    assert!(missing.starts_with(&format!("{}:1:", common::here!("fixtures/scene.ron").display())), "{missing}");
     assert!(missing.contains("cannot read mesh file") && missing.contains("nowhere.obj"), "{missing}");
     // The column points at the file name.
     let column: usize = missing.split(':').nth(2).and_then(|c| c.parse().ok()).expect("path:line:col");

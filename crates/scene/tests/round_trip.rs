@@ -1,6 +1,6 @@
 //! "Save as": a scene written back as RON loads to the same scene, wherever it is written.
 
-mod common;
+use tether_test_support as common;
 
 use common::{repo, scene_files};
 use std::path::Path;

@@ -1,6 +1,6 @@
 //! Every shipped scene loads; every bad scene is refused with `path:line:col: message`.
 
-mod common;
+use tether_test_support as common;
 
 use std::path::Path;
 use tether_scene as scene;

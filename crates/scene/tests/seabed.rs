@@ -1,7 +1,7 @@
 //! The `seabed` section, a line's displaced area and a body's initial rotation (PHYSICS.md §7): what
 //! they build, and a one-line `path:line:col` error naming the item for each bad value.
 
-mod common;
+use tether_test_support as common;
 
 use approx::assert_relative_eq;
 use std::path::Path;

@@ -11,7 +11,7 @@
 //!
 //! All shipped scenes together run in about 1 s (release build); none is shortened.
 
-mod common;
+use tether_test_support as common;
 
 use nalgebra::Vector3;
 use tether_physics::world::World;

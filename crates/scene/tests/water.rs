@@ -1,7 +1,7 @@
 //! Scenes with water (PHYSICS.md §6): what they declare reaches the physics, and every bad value
 //! is refused with one line `path:line:col: message` naming the body or the water field.
 
-mod common;
+use tether_test_support as common;
 
 use tether_physics::water::WaveSpec;
 use tether_scene as scene;
@@ -113,12 +113,10 @@ fn bad_coefficients_and_hulls_are_refused_naming_the_body() {
         ("added_mass: (0.5, 0.5, 1.0)", "added_mass: (0.5, 0.5, 1.0), drag_areas: (1.0, 0.0, 1.0)"),
         "bad.ron:15:13: body \"box\": hydro: drag_areas must be finite and > 0 m² on every axis, got (1, 0, 1)",
     );
-    let fixture = |name: &str| common::here(&format!("fixtures/{name}")).display().to_string();
-    for (file, expected) in [
-        ("open_box.obj", "the hull is open"),
-        ("flat.obj", "the hull encloses no volume"),
-        ("cube_inward.stl", "the hull is inside out"),
-    ] {
+    let fixture = |name: &str| common::here!(&format!("fixtures/{name}")).display().to_string();
+    for (file, expected) in
+        [("open_box.obj", "its shape as a hull in water: the mesh is open"), ("flat.obj", "the mesh has zero area")]
+    {
         let text = GOOD.replace("Box(size: (2.0, 2.0, 1.0))", &format!("Mesh(file: {:?})", fixture(file)));
         let error = common::error_of(&text);
         assert!(

@@ -1,15 +1,19 @@
 //! Boundary meshes: the closed triangle mesh a contact sees of a body (PHYSICS.md §4).
 //!
-//! A [`BoundaryMesh`] is fixed in the body's principal frame (origin G) \[m]. Each face keeps
-//! what the contact force needs, computed once: area `a_f` \[m²], centroid `r_f` \[m] and unit
-//! outward normal. The mesh is oriented so that its normals point out of the body (a file wound
-//! the other way is turned over, judged by the sign of its enclosed volume).
+//! A [`BoundaryMesh`] is fixed in the body's principal frame (origin G) [m]. Each face keeps
+//! what the contact force needs, computed once: area `a_f` [m²], centroid `r_f` [m] and unit
+//! outward normal. The triangles are checked and wound outward by [`OutwardMesh`], as a hull's
+//! are (a mesh wound inwards is turned over, judged by the sign of its enclosed volume).
 //!
 //! [`Surface`] is the same boundary as an opposing surface for another body's faces: parry's
 //! triangle mesh with its bounding-volume hierarchy answers "how far is this point from the
 //! boundary, on which side, and what is the normal there".
 
+mod check;
 pub mod primitives;
+
+pub use check::{MAX_EXTENT, MIN_THICKNESS, MeshError, OutwardMesh, TurnedOver};
+pub(crate) use check::{double_area_normal, signed_volume};
 
 use crate::body::{RigidBody, Shape};
 use crate::math::{Vec3, bounding_box};
@@ -26,35 +30,6 @@ pub struct Face {
     pub normal: Vec3,
     /// `a_f` \[m²].
     pub area: f64,
-}
-
-/// Farthest a vertex may be from the origin \[m]: distances squared must not overflow.
-pub const MAX_EXTENT: f64 = 1e12;
-
-/// A boundary thinner than this along an axis \[m] (but not flat) is refused: the distance
-/// queries' bounding-volume hierarchy divides by the thickness, which for a subnormal one
-/// overflows (a box of size 1e-320 made parry's tree build index out of bounds).
-pub const MIN_THICKNESS: f64 = 1e-9;
-
-/// Why a triangle list is not a usable boundary.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum MeshError {
-    #[error("the mesh has no triangles")]
-    NoTriangles,
-    #[error("triangle {triangle} refers to vertex {vertex}, but the mesh has {count} vertices")]
-    VertexOutOfRange { triangle: usize, vertex: u32, count: usize },
-    #[error("vertex {vertex} is not a finite point")]
-    NotFinite { vertex: usize },
-    #[error("vertex {vertex} is {distance:e} m from the origin, beyond {MAX_EXTENT:e} m")]
-    TooFar { vertex: usize, distance: f64 },
-    #[error("the mesh has zero area: every triangle is degenerate")]
-    ZeroArea,
-    #[error(
-        "the mesh is {thickness:e} m thick along axis {axis}: below {MIN_THICKNESS:e} m, too thin to tell its sides apart (a flat mesh has thickness 0)"
-    )]
-    TooThin { axis: char, thickness: f64 },
-    #[error("the mesh cannot be used for distance queries: {0}")]
-    Topology(String),
 }
 
 /// Up to this many faces share a bounding ball in a [`FaceGroup`].
@@ -120,56 +95,26 @@ pub struct BoundaryMesh {
 }
 
 impl BoundaryMesh {
-    /// A boundary from vertices \[m] and triangles (vertex indices). Degenerate triangles are
-    /// kept for display but give no face; an inward-wound mesh is turned over.
+    /// A boundary from vertices [m] and triangles (vertex indices), checked and wound outward by
+    /// [`OutwardMesh::new`] (a mesh wound inwards is turned over). Degenerate triangles are kept
+    /// for display but give no face.
     ///
     /// # Errors
-    /// No triangles, an index out of range, a non-finite vertex, or zero total area.
-    pub fn new(vertices: Vec<Vec3>, mut triangles: Vec<[u32; 3]>) -> Result<Self, MeshError> {
-        if triangles.is_empty() {
-            return Err(MeshError::NoTriangles);
-        }
-        if let Some(vertex) = vertices.iter().position(|v| !v.iter().all(|x| x.is_finite())) {
-            return Err(MeshError::NotFinite { vertex });
-        }
-        if let Some(vertex) = vertices.iter().position(|v| v.amax() > MAX_EXTENT) {
-            return Err(MeshError::TooFar { vertex, distance: vertices[vertex].norm() });
-        }
-        let (low, high) = bounding_box(vertices.iter().copied());
-        if let Some(axis) =
-            (0..3).find(|&axis| (high[axis] - low[axis]) > 0.0 && high[axis] - low[axis] < MIN_THICKNESS)
-        {
-            return Err(MeshError::TooThin { axis: ['x', 'y', 'z'][axis], thickness: high[axis] - low[axis] });
-        }
-        for (triangle, corners) in triangles.iter().enumerate() {
-            if let Some(&vertex) = corners.iter().find(|&&i| i as usize >= vertices.len()) {
-                return Err(MeshError::VertexOutOfRange { triangle, vertex, count: vertices.len() });
-            }
-        }
-        let corners = |t: &[u32; 3]| t.map(|i| vertices[i as usize]);
-        // Negative when the normals point inwards.
-        if signed_volume(&vertices, &triangles) < 0.0 {
-            for t in &mut triangles {
-                t.swap(1, 2);
-            }
-        }
-        let faces: Vec<Face> = triangles
+    /// See [`OutwardMesh::new`].
+    pub fn new(vertices: Vec<Vec3>, triangles: Vec<[u32; 3]>) -> Result<Self, MeshError> {
+        let OutwardMesh { vertices, triangles, .. } = OutwardMesh::new(vertices, triangles)?;
+        let mut faces: Vec<Face> = triangles
             .iter()
             .filter_map(|t| {
-                let [a, b, c] = corners(t);
-                let scaled_normal = (b - a).cross(&(c - a));
+                let scaled_normal = double_area_normal(&vertices, t);
                 let double_area = scaled_normal.norm();
                 (double_area > 0.0).then(|| Face {
-                    centroid: (a + b + c) / 3.0,
+                    centroid: t.map(|i| vertices[i as usize]).iter().sum::<Vec3>() / 3.0,
                     normal: scaled_normal / double_area,
                     area: 0.5 * double_area,
                 })
             })
             .collect();
-        if faces.is_empty() {
-            return Err(MeshError::ZeroArea);
-        }
-        let mut faces = faces;
         let mut groups = Vec::new();
         split_into_groups(&mut faces, 0, &mut groups);
         let bounding_radius = vertices.iter().map(|v| v.norm()).fold(0.0, f64::max);
@@ -222,16 +167,6 @@ pub fn shape_in_principal_frame(body: &RigidBody) -> (Vec<Vec3>, Vec<[u32; 3]>) 
     };
     let to_principal = &body.reference_in_principal;
     (vertices.iter().map(|v| to_principal.transform_point(&(*v).into()).coords).collect(), triangles)
-}
-
-/// `Σ a·(b × c)/6` over the triangles (a, b, c) [m³]: the enclosed volume of a closed mesh,
-/// positive when every triangle is wound counter-clockwise seen from outside.
-pub(crate) fn signed_volume(vertices: &[Vec3], triangles: &[[u32; 3]]) -> f64 {
-    triangles
-        .iter()
-        .map(|t| vertices[t[0] as usize].dot(&vertices[t[1] as usize].cross(&vertices[t[2] as usize])))
-        .sum::<f64>()
-        / 6.0
 }
 
 /// Splits `faces` (starting at index `first` of the whole list) in place at the median of
@@ -358,16 +293,6 @@ mod tests {
                 );
             }
         }
-    }
-
-    #[test]
-    fn bad_meshes_are_refused() {
-        assert_eq!(BoundaryMesh::new(vec![Vec3::zeros()], vec![]), Err(MeshError::NoTriangles));
-        let flat = vec![Vec3::zeros(), Vec3::x(), Vec3::x() * 2.0];
-        assert_eq!(BoundaryMesh::new(flat.clone(), vec![[0, 1, 2]]), Err(MeshError::ZeroArea));
-        assert!(matches!(BoundaryMesh::new(flat, vec![[0, 1, 3]]), Err(MeshError::VertexOutOfRange { vertex: 3, .. })));
-        let nan = vec![Vec3::zeros(), Vec3::x(), Vec3::new(f64::NAN, 0.0, 0.0)];
-        assert_eq!(BoundaryMesh::new(nan, vec![[0, 1, 2]]), Err(MeshError::NotFinite { vertex: 2 }));
     }
 
     #[test]

@@ -1,41 +1,20 @@
 //! A floating body's hull: its closed, outward boundary mesh in the principal frame, as the
 //! water's pressure is integrated over it (PHYSICS.md §6, Pressure on the boundary).
 //!
-//! The pressure integral is exact only over a closed, outward-oriented surface: the hull's
-//! signed volume `V = (1/3) Σ A (n·x_c)` \[m³] must be positive and `|Σ A n|` \[m²] zero up to
-//! round-off, or the body is refused (unlike a contact boundary, which is turned over when
-//! wound inwards: a hull wound inwards is a modelling mistake worth saying).
+//! The pressure integral is exact only over a closed, outward-oriented surface. The triangles
+//! are checked and wound outward by [`OutwardMesh`], as a contact boundary's are (a mesh wound
+//! inwards is turned over, and a loader warns of it); then `|Σ A n|` [m²] must be zero up to
+//! round-off and the signed volume `V = (1/3) Σ A (n·x_c)` [m³] positive, or the body is refused.
 
 use crate::body::RigidBody;
 use crate::math::Vec3;
-use crate::mesh::shape_in_principal_frame;
+use crate::mesh::{MeshError, OutwardMesh, double_area_normal, shape_in_principal_frame};
 
 /// `|Σ A n|` above this fraction of the total area `Σ A` \[m²] marks an open mesh: a closed
 /// one sums to zero exactly but for round-off (about 1e-16 of the area per triangle).
 pub const OPEN_TOLERANCE: f64 = 1e-9;
 
-/// A mesh that cannot be a hull.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum HullError {
-    #[error("the hull has no triangles")]
-    NoTriangles,
-    #[error("triangle {triangle} refers to vertex {vertex}, but the hull has {count} vertices")]
-    VertexOutOfRange { triangle: usize, vertex: u32, count: usize },
-    #[error("vertex {vertex} is not a finite point")]
-    NotFinite { vertex: usize },
-    #[error(
-        "the hull is open: its faces' area vectors sum to {gap:.3e} m² (of {area:.3e} m²), not zero; a body in water needs a closed mesh"
-    )]
-    Open { gap: f64, area: f64 },
-    #[error("the hull encloses no volume (a flat or degenerate mesh); a body in water needs a closed mesh")]
-    NoVolume,
-    #[error(
-        "the hull is inside out (its normals point inwards: signed volume {volume:.6e} m³); a body in water needs an outward-oriented mesh"
-    )]
-    InsideOut { volume: f64 },
-}
-
-/// A closed, outward hull in the body's principal frame \[m].
+/// A closed, outward hull in the body's principal frame [m].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Hull {
     /// Vertices, principal frame [m].
@@ -53,29 +32,19 @@ pub struct Hull {
 }
 
 impl Hull {
-    /// The hull of `vertices` \[m] and `triangles`, checked closed and outward.
+    /// The hull of `vertices` [m] and `triangles`, checked and wound outward by
+    /// [`OutwardMesh::new`], then checked closed.
     ///
     /// # Errors
-    /// No triangles, an index out of range, a non-finite vertex, an open mesh or an inward one.
-    pub fn new(vertices: Vec<Vec3>, triangles: Vec<[u32; 3]>) -> Result<Self, HullError> {
-        if triangles.is_empty() {
-            return Err(HullError::NoTriangles);
-        }
-        if let Some(vertex) = vertices.iter().position(|v| !v.iter().all(|x| x.is_finite())) {
-            return Err(HullError::NotFinite { vertex });
-        }
-        for (triangle, corners) in triangles.iter().enumerate() {
-            if let Some(&vertex) = corners.iter().find(|&&i| i as usize >= vertices.len()) {
-                return Err(HullError::VertexOutOfRange { triangle, vertex, count: vertices.len() });
-            }
-        }
+    /// Those of [`OutwardMesh::new`], an open mesh, or one that encloses no volume.
+    pub fn new(vertices: Vec<Vec3>, triangles: Vec<[u32; 3]>) -> Result<Self, MeshError> {
+        let OutwardMesh { vertices, triangles, .. } = OutwardMesh::new(vertices, triangles)?;
         let corner = |t: &[u32; 3], i: usize| vertices[t[i] as usize];
-        let double_area_normals: Vec<Vec3> =
-            triangles.iter().map(|t| (corner(t, 1) - corner(t, 0)).cross(&(corner(t, 2) - corner(t, 0)))).collect();
+        let double_area_normals: Vec<Vec3> = triangles.iter().map(|t| double_area_normal(&vertices, t)).collect();
         let area = 0.5 * double_area_normals.iter().map(Vec3::norm).sum::<f64>();
         let gap = 0.5 * double_area_normals.iter().sum::<Vec3>().norm();
         if !(gap <= OPEN_TOLERANCE * area) {
-            return Err(HullError::Open { gap, area });
+            return Err(MeshError::Open { gap, area });
         }
         // (1/3) Σ A n·x_c = (1/6) Σ (2 A n)·(a + b + c)/3.
         let volume = triangles
@@ -84,11 +53,9 @@ impl Hull {
             .map(|(t, n)| n.dot(&(corner(t, 0) + corner(t, 1) + corner(t, 2))))
             .sum::<f64>()
             / 18.0;
-        if volume == 0.0 || !(area > 0.0) {
-            return Err(HullError::NoVolume);
-        }
+        // Not negative: the mesh is wound outward.
         if !(volume > 0.0) {
-            return Err(HullError::InsideOut { volume });
+            return Err(MeshError::NoVolume);
         }
         let bounding_radius = vertices.iter().map(Vec3::norm).fold(0.0, f64::max);
         Ok(Self { vertices, triangles, double_area_normals, volume, area, bounding_radius })
@@ -98,7 +65,7 @@ impl Hull {
     ///
     /// # Errors
     /// See [`Hull::new`].
-    pub fn of_body(body: &RigidBody) -> Result<Self, HullError> {
+    pub fn of_body(body: &RigidBody) -> Result<Self, MeshError> {
         let (vertices, triangles) = shape_in_principal_frame(body);
         Self::new(vertices, triangles)
     }
@@ -154,12 +121,34 @@ mod tests {
         assert_relative_eq!(hull.projected_area(&Vec3::z()), 200.0, max_relative = 1e-14);
     }
 
+    /// A unit cube wound inwards is turned over to the outward cube's hull, which floats at the
+    /// closed-form draft `d = m/(ρ A_wp)`: 400 kg in water of 1025 kg/m³ under a 1 m² waterplane
+    /// displaces 0.390244 m³, so G (the cube's centre) rests `½ − d` above the still level.
     #[test]
-    fn open_and_inside_out_hulls_are_refused() {
-        let (vertices, mut triangles) = primitives::cuboid(&Vec3::repeat(1.0), &Vec3::zeros(), 1);
+    fn an_inward_hull_is_turned_over_and_floats_at_the_outward_ones_draft() {
+        use crate::water::hydrostatics::equilibrium_height;
+        let (vertices, triangles) = primitives::cuboid(&Vec3::repeat(1.0), &Vec3::zeros(), 2);
         let inward: Vec<[u32; 3]> = triangles.iter().map(|t| [t[0], t[2], t[1]]).collect();
-        assert!(matches!(Hull::new(vertices.clone(), inward), Err(HullError::InsideOut { .. })));
+        let outward_hull = Hull::new(vertices.clone(), triangles).expect("a closed box");
+        let turned_hull = Hull::new(vertices, inward).expect("a closed box wound inwards");
+        assert_eq!(turned_hull, outward_hull);
+        let draft = 400.0 / 1025.0;
+        for hull in [&outward_hull, &turned_hull] {
+            assert_relative_eq!(hull.volume(), 1.0, max_relative = 1e-14);
+            let height = equilibrium_height(hull, &crate::math::Mat3::identity(), 0.0, 0.0, 0.0, draft)
+                .expect("lighter than the water it can displace");
+            assert_relative_eq!(height, 0.5 - draft, epsilon = 1e-12);
+        }
+    }
+
+    #[test]
+    fn open_and_flat_hulls_are_refused() {
+        let (vertices, mut triangles) = primitives::cuboid(&Vec3::repeat(1.0), &Vec3::zeros(), 1);
         triangles.pop();
-        assert!(matches!(Hull::new(vertices, triangles), Err(HullError::Open { .. })));
+        assert!(matches!(Hull::new(vertices, triangles), Err(MeshError::Open { .. })));
+        // A square and the same square wound the other way: closed, but it encloses nothing.
+        let square = vec![Vec3::zeros(), Vec3::x(), Vec3::new(1.0, 1.0, 0.0), Vec3::y()];
+        let both_sides = vec![[0, 1, 2], [0, 2, 3], [0, 2, 1], [0, 3, 2]];
+        assert_eq!(Hull::new(square, both_sides), Err(MeshError::NoVolume));
     }
 }

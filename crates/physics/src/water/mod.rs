@@ -45,6 +45,6 @@ pub mod waves;
 
 pub use environment::{CurrentProfile, CurrentSpec, Water, WaterError, WaterSpec, WaveSpec};
 pub use forces::WaterForces;
-pub use hull::{Hull, HullError};
+pub use hull::Hull;
 pub use morison::Hydro;
 pub use stage::{FloatingBody, WaterScratch, WaterStage, WaterStageInputs};

@@ -5,12 +5,13 @@
 use super::added_mass::AddedMass;
 use super::environment::{Water, WaterError, WaterSpec};
 use super::forces::WaterForces;
-use super::hull::{Hull, HullError};
+use super::hull::Hull;
 use super::morison::{Hydro, HydroError, HydroSpec};
 use super::pressure::integrate;
 use super::waves::SeaInstant;
 use crate::body::{BodyFrame, Load, RigidBody};
 use crate::math::Vec3;
+use crate::mesh::MeshError;
 use crate::simd::SupportedLevel;
 use std::sync::Arc;
 
@@ -26,7 +27,7 @@ pub struct FloatingBody {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum FloatingError {
     #[error(transparent)]
-    Hull(#[from] HullError),
+    Hull(#[from] MeshError),
     #[error(transparent)]
     Hydro(#[from] HydroError),
 }
@@ -35,7 +36,7 @@ impl FloatingBody {
     /// Body `index` of `bodies` with coefficients `spec`: its hull from its shape.
     ///
     /// # Errors
-    /// A shape that is not a closed outward hull, or bad coefficients.
+    /// A shape that is not a closed hull ([`Hull::new`]), or bad coefficients.
     pub fn new(bodies: &[RigidBody], index: usize, spec: HydroSpec) -> Result<Self, FloatingError> {
         let body = &bodies[index];
         let hull = Hull::of_body(body)?;

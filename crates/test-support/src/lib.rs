@@ -1,0 +1,62 @@
+//! Helpers shared by the integration tests of the physics, scene and application crates: worlds
+//! described as scene text, paths into the repository, the one-line errors of bad scene text.
+//! (The application's own helpers — the X server, its binary — stay in its `tests/common`.)
+
+use std::path::{Path, PathBuf};
+use tether_scene::{self as scene, Scene};
+
+/// Path of a file under the repository root.
+pub fn repo(path: &str) -> PathBuf {
+    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+    // This crate is `crates/test-support`: its manifest's directory has the root two levels up.
+    manifest.ancestors().nth(2).expect("crates/test-support lies two levels below the root").join(path)
+}
+
+/// Path of a file under the calling crate's `tests/` (expanded where it is called, so that
+/// `CARGO_MANIFEST_DIR` is the caller's).
+#[macro_export]
+macro_rules! here {
+    ($path:expr) => {
+        ::std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join($path)
+    };
+}
+
+/// Every shipped scene (`.ron` under `scenes/`).
+pub fn scene_files() -> Vec<PathBuf> {
+    scene::list(&repo("scenes"))
+}
+
+/// Parses scene text (labelled `test.ron`), panicking with the error line if it is bad.
+pub fn scene(text: &str) -> Scene {
+    scene::parse(text, Path::new("test.ron")).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The one-line error of scene text labelled `bad.ron`, panicking if the text is accepted.
+pub fn error_of(text: &str) -> String {
+    match scene::parse(text, Path::new("bad.ron")) {
+        Ok(_) => panic!("accepted:\n{text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+/// `good` with `edit.0` replaced once by `edit.1` is refused with one line starting `expected`.
+pub fn assert_edit_error(good: &str, edit: (&str, &str), expected: &str) {
+    assert!(good.contains(edit.0), "edit target {:?} missing", edit.0);
+    let error = error_of(&good.replacen(edit.0, edit.1, 1));
+    assert!(error.starts_with(expected), "expected {expected:?}…, got {error:?}");
+    assert_eq!(error.lines().count(), 1, "{error}");
+}
+
+/// A one-body oscillator along x: a body of mass 1 kg attached to the world origin by a spring
+/// with law `law` (RON) and damping `damping` [N·s/m], starting at `x` [m] with speed `v` [m/s],
+/// free only along x, time step `dt` [s].
+pub fn oscillator(law: &str, damping: f64, x: f64, v: f64, dt: f64) -> Scene {
+    scene(&format!(
+        "Scene(gravity: (0.0, 0.0, 0.0), dt: {dt:e}, bodies: [Body(name: \"m\",
+            master: Node(position: ({x:e}, 0.0, 0.0), mass: 1.0, inertia: Inertia(xx: 0.01, yy: 0.01, zz: 0.01)),
+            velocity: ({v:e}, 0.0, 0.0),
+            support: Fixed(translation: (false, true, true), rotation: true),
+            shape: Sphere(radius: 0.1))],
+        couplings: [SpringDamper(name: \"s\", end1: World((0.0, 0.0, 0.0)), end2: Body(body: \"m\"), law: {law}, damping: {damping:e})])"
+    ))
+}

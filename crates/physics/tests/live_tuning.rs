@@ -89,37 +89,17 @@ fn tuned_values_are_checked_by_the_scene_builder() {
 fn the_time_step_changed_while_running_keeps_the_motion() {
     let mut world = oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", 0.0, 1.01, 0.0, 1e-3).world;
     run_to(&mut world, 0.25);
-    world
-        .set_timing(Timing {
-            dt: 5e-4,
-            integrator: Integrator::Leapfrog2,
-            substeps: Substeps::Fixed(2),
-            tolerances: Tolerances::default(),
-        })
-        .unwrap();
+    let halved = Timing::new(5e-4, Integrator::Leapfrog2, Substeps::Fixed(2), Tolerances::default());
+    world.set_timing(halved.expect("a valid setting")).unwrap();
     assert_eq!((world.dt(), world.substeps()), (5e-4, 2));
     run_to(&mut world, 1.0);
     let error = world.state(0).position.x - 1.0 - 0.01 * (10.0 * world.time()).cos();
     assert!(error.abs() < 1e-6, "error {error:e} m");
-    assert!(
-        world
-            .set_timing(Timing {
-                dt: 0.0,
-                integrator: Integrator::Leapfrog,
-                substeps: Substeps::Fixed(1),
-                tolerances: Tolerances::default()
-            })
-            .is_err()
-    );
-    assert!(
-        world
-            .set_timing(Timing {
-                dt: 1e-3,
-                integrator: Integrator::Leapfrog,
-                substeps: Substeps::Fixed(0),
-                tolerances: Tolerances::default()
-            })
-            .is_err()
-    );
+    // Bad settings never reach the world: their constructor refuses them, naming the field.
+    let refused = |dt: f64, substeps: u32| {
+        Timing::new(dt, Integrator::Leapfrog, Substeps::Fixed(substeps), Tolerances::default()).unwrap_err().to_string()
+    };
+    assert_eq!(refused(0.0, 1), "dt must be > 0 s, got 0");
+    assert_eq!(refused(1e-3, 0), "substeps must be at least 1, got 0");
     assert_eq!(world.dt(), 5e-4, "a refused setting leaves the world as it was");
 }

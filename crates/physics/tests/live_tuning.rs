@@ -103,3 +103,29 @@ fn the_time_step_changed_while_running_keeps_the_motion() {
     assert_eq!(refused(1e-3, 0), "substeps must be at least 1, got 0");
     assert_eq!(world.dt(), 5e-4, "a refused setting leaves the world as it was");
 }
+
+/// A refused edit says what it is — an index the world does not have, a body it does not have —
+/// and leaves the world as it was (a system error was once reported as "no such coupling").
+#[test]
+fn a_refused_coupling_edit_names_its_cause_and_leaves_the_world_as_it_was() {
+    use tether_physics::coupling::{Coupling, CouplingKind, ElasticLaw, Endpoint, SpringDamper};
+    use tether_physics::math::Vec3;
+    use tether_physics::system::SystemError;
+    use tether_physics::world::EditError;
+    let mut world = oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", 0.0, 1.01, 0.0, 1e-3).world;
+    run_to(&mut world, 0.1);
+    let (time, position, balance) = (world.time(), world.state(0).position, world.energy().balance());
+    let to_body = |body: usize| {
+        let law = ElasticLaw::Linear { stiffness: 400.0, rest_length: 1.0 };
+        let spring = SpringDamper::new(Endpoint::World(Vec3::zeros()), Endpoint::Center { body }, law, 0.0);
+        Coupling { name: "s".into(), kind: CouplingKind::SpringDamper(spring.expect("a valid spring")) }
+    };
+    let out_of_range = world.replace_coupling(7, to_body(0)).unwrap_err();
+    assert_eq!(out_of_range, EditError::NoSuchCoupling { index: 7, count: 1 });
+    assert_eq!(out_of_range.to_string(), "the world has no coupling 7 (it has 1)");
+    let unknown_body = world.replace_coupling(0, to_body(3)).unwrap_err();
+    assert_eq!(unknown_body, EditError::System(SystemError::UnknownBody { coupling: "s".into(), body: 3, count: 1 }));
+    assert_eq!(unknown_body.to_string(), "coupling \"s\" refers to body 3, but the system has 1 bodies");
+    assert_eq!((world.time(), world.state(0).position, world.energy().balance()), (time, position, balance));
+    assert!(matches!(&world.couplings()[0].kind, CouplingKind::SpringDamper(s) if s.law.force(2.0) == 100.0));
+}

@@ -242,21 +242,15 @@ fn seabed_problem(error: SeabedError) -> Problem {
 /// A system the scene cannot make, placed at the coupling at fault when there is one.
 fn system_problem(file: &SceneFile, error: SystemError) -> Problem {
     match &error {
-        SystemError::BelowSeabed { coupling, end, .. } => {
-            let field = if *end == 1 { "end1" } else { "end2" };
+        SystemError::BelowSeabed { coupling, source } => {
+            let field = if source.end == 1 { "end1" } else { "end2" };
             match file.couplings.iter().position(|c| c.name() == coupling) {
-                Some(index) => coupling_at(file, index).problem(Some(field), None, strip_coupling(&error.to_string())),
+                Some(index) => coupling_at(file, index).problem(Some(field), None, source.to_string()),
                 None => Problem { place: Place::Top("seabed"), message: error.to_string() },
             }
         }
         _ => Problem { place: Place::Top("couplings"), message: error.to_string() },
     }
-}
-
-/// The message of a system error without its leading `coupling "name": `, which the placed
-/// problem adds again.
-fn strip_coupling(message: &str) -> String {
-    message.split_once("\": ").map_or(message, |(_, rest)| rest).to_string()
 }
 
 /// Warnings about lines: a displaced volume where there is no water to displace; a line that

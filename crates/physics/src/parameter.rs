@@ -52,8 +52,9 @@ impl std::fmt::Display for Bound {
 /// A parameter refused by the constructor of the type it belongs to.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ParameterError {
-    /// A number outside its range: "`stiffness` must be > 0 N/m, got -1".
-    #[error("{field} must be {bound}{}, got {value}", spaced(unit))]
+    /// A number outside its range: "stiffness must be > 0 N/m, got -1", "level must be finite,
+    /// got NaN".
+    #[error("{field} must be {}, got {value}", range(*bound, unit))]
     OutOfRange { field: &'static str, value: f64, bound: Bound, unit: &'static str },
     /// A count below its least value.
     #[error("{field} must be at least {least}, got {value}")]
@@ -81,9 +82,9 @@ pub fn require(field: &'static str, value: f64, bound: Bound, unit: &'static str
     if bound.holds(value) { Ok(value) } else { Err(ParameterError::OutOfRange { field, value, bound, unit }) }
 }
 
-/// ` unit`, or nothing for a number without a unit.
-fn spaced(unit: &str) -> String {
-    if unit.is_empty() { String::new() } else { format!(" {unit}") }
+/// The range as a message writes it: `> 0 N/m`, `≥ 0` for a number without a unit, `finite`.
+fn range(bound: Bound, unit: &str) -> String {
+    if unit.is_empty() || bound == Bound::Finite { bound.to_string() } else { format!("{bound} {unit}") }
 }
 
 #[cfg(test)]
@@ -105,6 +106,8 @@ mod tests {
             require("rtol", 1.0, Bound::OpenUnit, "").unwrap_err().to_string(),
             "rtol must be > 0 and < 1, got 1"
         );
+        let not_finite = require("level", f64::NAN, Bound::Finite, "m").unwrap_err();
+        assert_eq!(not_finite.to_string(), "level must be finite, got NaN");
         for bound in [Bound::Positive, Bound::NonNegative, Bound::OpenUnit, Bound::Finite] {
             assert!(!bound.holds(f64::NAN) && !bound.holds(f64::INFINITY), "{bound}");
         }

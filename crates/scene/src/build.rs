@@ -1,6 +1,8 @@
 //! Turns a parsed [`SceneFile`] into a [`World`]: the one place where scene data becomes
-//! simulation state. Every check that needs more than one value (names, references, mass
-//! properties, tables) is made here and reported with the item it concerns.
+//! simulation state. Checks that need more than one value (names, references, mass properties)
+//! are made here; a value's own range is checked by the constructor of its physics type
+//! ([`tether_physics::parameter`]), whose error is placed here at the item and field it names,
+//! never checked twice.
 
 use super::file::{
     AgainstDef, BodyDef, CouplingDef, EndDef, InertiaDef, LawDef, NodeDef, SceneFile, SeabedContactDef, SeabedDef,
@@ -647,8 +649,8 @@ fn body_index(name: &str, bodies: &[RigidBody], field: &'static str, at: &ItemAt
     })
 }
 
-/// The elastic law of `def`; its tables are checked here, its numbers by
-/// [`SpringDamper::new`].
+/// The elastic law of `def`: its tables checked as they are made
+/// ([`ElasticLaw::stiffness_table`]), its numbers by [`SpringDamper::new`].
 fn build_law(def: &LawDef) -> Result<ElasticLaw, ParameterError> {
     Ok(match def {
         LawDef::Linear { stiffness, rest_length } => {

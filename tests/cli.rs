@@ -41,7 +41,7 @@ fn a_bad_scene_exits_1_with_one_line() {
     let out = tether(&["check", path.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(1));
     let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(stderr.trim(), format!("error: {}:1:7: time step dt must be > 0 s, got -1", path.display()));
+    assert_eq!(stderr.trim(), format!("error: {}:1:7: dt must be > 0 s, got -1", path.display()));
 }
 
 /// The one mesh policy reaches the user one way: `tether check` on the inward-wound cube as a
@@ -233,7 +233,8 @@ fn forces_json_reports_the_catenary_solution() {
     assert_eq!(chain["name"], "chain");
     assert_eq!(chain["kind"], "catenary");
     // Ends (2, 0, 0) and (18, 0, 0): level, span 16 m, L = 30 m, λ0 = 20 kg/m, D = 1e6 N/m.
-    let line = Catenary::new(Endpoint::World(Vec3::zeros()), Endpoint::World(Vec3::zeros()), 20.0, 30.0, 1e6);
+    let line = Catenary::new(Endpoint::World(Vec3::zeros()), Endpoint::World(Vec3::zeros()), 20.0, 30.0, 1e6)
+        .expect("a valid line");
     let s = line
         .solve(
             &Vec3::new(2.0, 0.0, 0.0),

@@ -372,7 +372,7 @@ fn statics_panel_tunes_the_seabed_jumps_to_equilibrium_and_draws_the_offset_curv
     });
     assert_eq!(friction(&world(&harness)), 0.9);
     set_knob(&mut harness, "seabed line friction C_B", -0.1);
-    harness.get_by_label_contains("Refused: seabed line friction C_B must be ≥ 0, got -0.1");
+    harness.get_by_label_contains("Refused: seabed: line_friction must be ≥ 0, got -0.1");
     assert_eq!(friction(&world(&harness)), 0.9);
 
     // The first line's A_d (three lines show the knob).

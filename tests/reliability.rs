@@ -121,7 +121,7 @@ fn unknown_integrator_and_bad_time_step_flags_are_refused() {
     let out =
         tether().args(["record", scene.to_str().unwrap(), "-o", "/tmp/never.rrd", "--dt=-0.001"]).output().unwrap();
     assert_eq!(out.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("--dt must be a positive number of seconds, got -0.001"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--dt: dt must be > 0 s, got -0.001"));
 }
 
 fn error_of(text: &str) -> String {

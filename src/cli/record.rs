@@ -109,9 +109,6 @@ fn positive(name: &str, value: f64, unit: &str) -> anyhow::Result<f64> {
 
 pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     let log_hz = positive("--log-hz", args.log_hz, "frames per second")?;
-    if let Some(dt) = args.dt {
-        positive("--dt", dt, "seconds")?;
-    }
     if let Some(duration) = args.duration {
         positive("--duration", duration, "seconds")?;
     }
@@ -119,7 +116,9 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     if args.dt.is_some() || args.integrator.is_some() {
         scene.file.dt = args.dt.unwrap_or(scene.file.dt);
         scene.file.integrator = args.integrator.unwrap_or(scene.file.integrator);
-        scene = tether_scene::retime(scene)?;
+        // The time step is checked where the physics builds it (`Timing::new`): the flag reads
+        // the message a scene file's `dt` would.
+        scene = tether_scene::retime(scene).map_err(|error| anyhow::anyhow!("--dt: {}", error.message))?;
     }
     let duration = args.duration.unwrap_or(scene.file.duration);
     super::warn_if_unstable(&scene.world);

@@ -114,7 +114,8 @@ fn grounded_warm_cases() -> Vec<(Grounding, f64)> {
 fn moving_mooring() -> (Catenary, Surroundings, Vec<(Vec3, LineState)>) {
     let g = 9.80665;
     let line =
-        Catenary::new(Endpoint::World(Vec3::zeros()), Endpoint::World(Vec3::zeros()), 800.0 / g, 500.0, 7.51e9 / 500.0);
+        Catenary::new(Endpoint::World(Vec3::zeros()), Endpoint::World(Vec3::zeros()), 800.0 / g, 500.0, 7.51e9 / 500.0)
+            .expect("MoorPy's line has valid values");
     let surroundings = Surroundings {
         gravity: Vec3::new(0.0, 0.0, -g),
         fluid_density: 0.0,

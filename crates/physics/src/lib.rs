@@ -8,6 +8,8 @@
 //! - [`body`]: a rigid body's constant properties; its state, load, support and kinematics (§1);
 //! - [`dynamics`]: accelerations from loads, Euler's equations (§1);
 //! - [`table`]: piecewise-linear tables with exact integrals, for curve-defined laws;
+//! - [`parameter`]: the range each parameter must lie in, checked once by the constructor of
+//!   its type, and the error naming the field;
 //! - [`mesh`]: boundary meshes of bodies for contact, and their distance queries (§4);
 //! - [`coupling`]: the forces between bodies and the world (§2–4, lines on the seabed §7);
 //! - [`seabed`]: the flat bottom lines lie on and bodies touch (§7);
@@ -47,6 +49,7 @@ pub mod integrator;
 pub mod mass_properties;
 pub mod math;
 pub mod mesh;
+pub mod parameter;
 pub mod seabed;
 pub mod simd;
 pub mod stability;

@@ -7,8 +7,9 @@
 //! plane (PHYSICS.md §4), which the scene declares.
 
 use crate::math::Vec3;
+use crate::parameter::{Bound, ParameterError, require};
 
-/// A flat seabed.
+/// A flat seabed, built by [`Seabed::new`], which checks its values.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Seabed {
     /// `z_b` \[m]: the height of the bottom along the upward vertical.
@@ -18,28 +19,21 @@ pub struct Seabed {
     pub line_friction: f64,
 }
 
-/// A seabed that cannot be.
-#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
-pub enum SeabedError {
-    #[error("seabed elevation must be finite, got {0} m")]
-    Elevation(f64),
-    #[error("seabed line friction C_B must be ≥ 0, got {0}")]
-    LineFriction(f64),
-}
+/// A seabed that cannot be: the parameter at fault.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("seabed: {0}")]
+pub struct SeabedError(pub ParameterError);
 
 impl Seabed {
-    /// A seabed at `elevation` \[m] with line friction `line_friction` [–].
+    /// A seabed at `elevation` z_b [m] (finite) with line friction `line_friction` C_B [–] ≥ 0.
     ///
     /// # Errors
     /// A non-finite elevation, or a negative or non-finite friction coefficient.
     pub fn new(elevation: f64, line_friction: f64) -> Result<Self, SeabedError> {
-        if !elevation.is_finite() {
-            return Err(SeabedError::Elevation(elevation));
-        }
-        if !(line_friction >= 0.0 && line_friction.is_finite()) {
-            return Err(SeabedError::LineFriction(line_friction));
-        }
-        Ok(Self { elevation, line_friction })
+        Ok(Self {
+            elevation: require("elevation", elevation, Bound::Finite, "m").map_err(SeabedError)?,
+            line_friction: require("line_friction", line_friction, Bound::NonNegative, "").map_err(SeabedError)?,
+        })
     }
 
     /// Height \[m] of `point` above the bottom, along the unit upward vertical `up`.

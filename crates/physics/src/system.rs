@@ -58,16 +58,26 @@ pub enum SystemError {
     UnknownBody { coupling: String, body: usize, count: usize },
     #[error("floating body {body} of {count} does not exist or floats twice")]
     FloatingBody { body: usize, count: usize },
-    #[error("{0}")]
+    #[error(transparent)]
     Water(#[from] WaterError),
     #[error("body \"{body}\": {source}")]
     Hydro { body: String, source: FloatingError },
     #[error("the system has no water")]
     NoWater,
-    #[error(
-        "coupling \"{coupling}\": end {end} is {depth} m below the seabed (z_b = {elevation} m): an anchor lies on the seabed or above it"
-    )]
-    BelowSeabed { coupling: String, end: usize, depth: f64, elevation: f64 },
+    #[error("coupling \"{coupling}\": {source}")]
+    BelowSeabed { coupling: String, source: BelowSeabed },
+}
+
+/// A catenary end fixed in the world below the seabed.
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+#[error("end {end} is {depth} m below the seabed (z_b = {elevation} m): an anchor lies on the seabed or above it")]
+pub struct BelowSeabed {
+    /// 1 or 2.
+    pub end: usize,
+    /// How far below [m].
+    pub depth: f64,
+    /// The seabed's `z_b` [m].
+    pub elevation: f64,
 }
 
 /// A coupling that could not give its forces: its index, and why.
@@ -397,12 +407,8 @@ fn check_anchors(couplings: &[Coupling], seabed: &Seabed, gravity: &Vec3) -> Res
             let Endpoint::World(point) = endpoint else { continue };
             let height = seabed.height(point, &up);
             if height < -ON_SEABED * line.length {
-                return Err(SystemError::BelowSeabed {
-                    coupling: coupling.name.clone(),
-                    end,
-                    depth: -height,
-                    elevation: seabed.elevation,
-                });
+                let source = BelowSeabed { end, depth: -height, elevation: seabed.elevation };
+                return Err(SystemError::BelowSeabed { coupling: coupling.name.clone(), source });
             }
         }
     }

@@ -18,6 +18,7 @@ fn dry() -> Surroundings {
 
 fn line(mass_per_length: f64, length: f64, stiffness: f64) -> Catenary {
     Catenary::new(Endpoint::World(V::zeros()), Endpoint::World(V::zeros()), mass_per_length, length, stiffness)
+        .expect("the tests' lines have valid values")
 }
 
 fn solve(line: &Catenary, p1: V, p2: V) -> LineState {

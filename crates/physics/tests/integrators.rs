@@ -385,15 +385,15 @@ fn adaptive_settings_are_checked_where_they_are_written() {
     let error = |text: String| parse(&text).err().map(|e| e.to_string()).unwrap_or_default();
     assert_eq!(
         error(format!("Scene(dt: 0.01, integrator: dopri45,\n  adaptive: (rtol: 0.0), {body})")),
-        "bad.ron:2:14: adaptive rtol must be > 0 and < 1, got 0"
+        "bad.ron:2:14: adaptive: rtol must be > 0 and < 1, got 0"
     );
     assert_eq!(
         error(format!("Scene(dt: 0.01, integrator: dopri45,\n  adaptive: (atol: -1e-9), {body})")),
-        "bad.ron:2:14: adaptive atol must be > 0, got -0.000000001"
+        "bad.ron:2:14: adaptive: atol must be > 0, got -0.000000001"
     );
     assert_eq!(
         error(format!("Scene(dt: 0.01, integrator: dopri45,\n  adaptive: (max_step: 0), {body})")),
-        "bad.ron:2:14: adaptive max_step must be > 0 s, got 0"
+        "bad.ron:2:14: adaptive: max_step must be > 0 s, got 0"
     );
     assert!(
         error(format!("Scene(dt: 0.01, adaptive: (rtl: 1e-6), {body})")).starts_with("bad.ron:1:"),

@@ -89,37 +89,43 @@ fn tuned_values_are_checked_by_the_scene_builder() {
 fn the_time_step_changed_while_running_keeps_the_motion() {
     let mut world = oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", 0.0, 1.01, 0.0, 1e-3).world;
     run_to(&mut world, 0.25);
-    world
-        .set_timing(Timing {
-            dt: 5e-4,
-            integrator: Integrator::Leapfrog2,
-            substeps: Substeps::Fixed(2),
-            tolerances: Tolerances::default(),
-        })
-        .unwrap();
+    let halved = Timing::new(5e-4, Integrator::Leapfrog2, Substeps::Fixed(2), Tolerances::default());
+    world.set_timing(halved.expect("a valid setting")).unwrap();
     assert_eq!((world.dt(), world.substeps()), (5e-4, 2));
     run_to(&mut world, 1.0);
     let error = world.state(0).position.x - 1.0 - 0.01 * (10.0 * world.time()).cos();
     assert!(error.abs() < 1e-6, "error {error:e} m");
-    assert!(
-        world
-            .set_timing(Timing {
-                dt: 0.0,
-                integrator: Integrator::Leapfrog,
-                substeps: Substeps::Fixed(1),
-                tolerances: Tolerances::default()
-            })
-            .is_err()
-    );
-    assert!(
-        world
-            .set_timing(Timing {
-                dt: 1e-3,
-                integrator: Integrator::Leapfrog,
-                substeps: Substeps::Fixed(0),
-                tolerances: Tolerances::default()
-            })
-            .is_err()
-    );
+    // Bad settings never reach the world: their constructor refuses them, naming the field.
+    let refused = |dt: f64, substeps: u32| {
+        Timing::new(dt, Integrator::Leapfrog, Substeps::Fixed(substeps), Tolerances::default()).unwrap_err().to_string()
+    };
+    assert_eq!(refused(0.0, 1), "dt must be > 0 s, got 0");
+    assert_eq!(refused(1e-3, 0), "substeps must be at least 1, got 0");
     assert_eq!(world.dt(), 5e-4, "a refused setting leaves the world as it was");
+}
+
+/// A refused edit says what it is — an index the world does not have, a body it does not have —
+/// and leaves the world as it was (a system error was once reported as "no such coupling").
+#[test]
+fn a_refused_coupling_edit_names_its_cause_and_leaves_the_world_as_it_was() {
+    use tether_physics::coupling::{Coupling, CouplingKind, ElasticLaw, Endpoint, SpringDamper};
+    use tether_physics::math::Vec3;
+    use tether_physics::system::SystemError;
+    use tether_physics::world::EditError;
+    let mut world = oscillator("Linear(stiffness: 100.0, rest_length: 1.0)", 0.0, 1.01, 0.0, 1e-3).world;
+    run_to(&mut world, 0.1);
+    let (time, position, balance) = (world.time(), world.state(0).position, world.energy().balance());
+    let to_body = |body: usize| {
+        let law = ElasticLaw::Linear { stiffness: 400.0, rest_length: 1.0 };
+        let spring = SpringDamper::new(Endpoint::World(Vec3::zeros()), Endpoint::Center { body }, law, 0.0);
+        Coupling { name: "s".into(), kind: CouplingKind::SpringDamper(spring.expect("a valid spring")) }
+    };
+    let out_of_range = world.replace_coupling(7, to_body(0)).unwrap_err();
+    assert_eq!(out_of_range, EditError::NoSuchCoupling { index: 7, count: 1 });
+    assert_eq!(out_of_range.to_string(), "the world has no coupling 7 (it has 1)");
+    let unknown_body = world.replace_coupling(0, to_body(3)).unwrap_err();
+    assert_eq!(unknown_body, EditError::System(SystemError::UnknownBody { coupling: "s".into(), body: 3, count: 1 }));
+    assert_eq!(unknown_body.to_string(), "coupling \"s\" refers to body 3, but the system has 1 bodies");
+    assert_eq!((world.time(), world.state(0).position, world.energy().balance()), (time, position, balance));
+    assert!(matches!(&world.couplings()[0].kind, CouplingKind::SpringDamper(s) if s.law.force(2.0) == 100.0));
 }

@@ -26,6 +26,7 @@ fn on_seabed(elevation: f64, friction: f64) -> Surroundings {
 /// A line of submerged weight `w` [N/m], unstretched `length` [m] and axial stiffness `ea` [N].
 fn line(w: f64, length: f64, ea: f64) -> Catenary {
     Catenary::new(Endpoint::World(V::zeros()), Endpoint::World(V::zeros()), w / G, length, ea / length)
+        .expect("the tests' lines have valid values")
 }
 
 fn solve(line: &Catenary, p1: V, p2: V, surroundings: &Surroundings) -> LineState {
@@ -369,13 +370,15 @@ fn continuous_across_the_lift_off_and_the_heap() {
 #[test]
 fn submerged_weight_and_a_buoyant_line() {
     let chain = Catenary::new(Endpoint::World(V::zeros()), Endpoint::World(V::zeros()), 100.0, 50.0, 1e6)
-        .with_displaced_area(0.0127);
+        .and_then(|line| line.with_displaced_area(0.0127))
+        .expect("a valid chain");
     let water = Surroundings { gravity: V::new(0.0, 0.0, -G), fluid_density: 1025.0, seabed: None };
     let s = chain.solve(&V::zeros(), &V::new(40.0, 0.0, 10.0), &water, None).unwrap();
     let (f1, f2) = s.end_forces();
     assert_relative_eq!(f1 + f2, V::new(0.0, 0.0, -(100.0 - 1025.0 * 0.0127) * G * 50.0), max_relative = 1e-10);
     let float = Catenary::new(Endpoint::World(V::zeros()), Endpoint::World(V::zeros()), 5.0, 50.0, 1e6)
-        .with_displaced_area(0.01);
+        .and_then(|line| line.with_displaced_area(0.01))
+        .expect("a valid line");
     let arch = float.solve(&V::zeros(), &V::new(40.0, 0.0, 0.0), &water, None).unwrap();
     let (f1, f2) = arch.end_forces();
     assert_relative_eq!(f1 + f2, V::new(0.0, 0.0, (1025.0 * 0.01 - 5.0) * G * 50.0), max_relative = 1e-10);

@@ -1,6 +1,8 @@
 //! Turns a parsed [`SceneFile`] into a [`World`]: the one place where scene data becomes
-//! simulation state. Every check that needs more than one value (names, references, mass
-//! properties, tables) is made here and reported with the item it concerns.
+//! simulation state. Checks that need more than one value (names, references, mass properties)
+//! are made here; a value's own range is checked by the constructor of its physics type
+//! ([`tether_physics::parameter`]), whose error is placed here at the item and field it names,
+//! never checked twice.
 
 use super::file::{
     AgainstDef, BodyDef, CouplingDef, EndDef, InertiaDef, LawDef, NodeDef, SceneFile, SeabedContactDef, SeabedDef,
@@ -13,11 +15,12 @@ use std::sync::Arc;
 use tether_physics::body::{BodyState, PrescribedMotion, RigidBody, Shape, Support, VelocityProfile};
 use tether_physics::coupling::contact::{ContactLaw, Opposing, Plane};
 use tether_physics::coupling::{Catenary, Contact, Coupling, CouplingKind, ElasticLaw, Endpoint, SpringDamper};
-use tether_physics::integrator::{Substeps, Timing, Tolerances};
+use tether_physics::integrator::{Timing, Tolerances};
 use tether_physics::mass_properties::{MassError, MassProperties, Node};
 use tether_physics::math::{Mat3, Rotation, Vec3};
 use tether_physics::mesh::{BoundaryMesh, MeshError, OutwardMesh, Surface};
-use tether_physics::seabed::Seabed;
+use tether_physics::parameter::{Bound, ParameterError, require};
+use tether_physics::seabed::{Seabed, SeabedError};
 use tether_physics::system::{System, SystemError};
 use tether_physics::world::{StepError, World};
 
@@ -88,12 +91,8 @@ impl Bodies {
 pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
     let mut warnings = Vec::new();
     let timing = timing_with_warnings(file, &mut warnings)?;
-    if !(file.duration > 0.0) {
-        return Err(Problem {
-            place: Place::Top("duration"),
-            message: format!("duration must be > 0 s, got {}", file.duration),
-        });
-    }
+    require("duration", file.duration, Bound::Positive, "s")
+        .map_err(|error| Problem { place: Place::Top("duration"), message: error.to_string() })?;
     let mut bodies = Bodies::build(file, directory, &mut warnings)?;
     let mut states = Vec::with_capacity(file.bodies.len());
     for (def, body) in file.bodies.iter().zip(&bodies.bodies) {
@@ -161,8 +160,7 @@ fn build_seabed(
 ) -> Result<Seabed, Problem> {
     let at = ItemAt::section("seabed");
     let elevation = seabed_elevation(def, file, &at)?;
-    let seabed = Seabed::new(elevation, at.require("line_friction", def.line_friction, Bound::NonNegative, "")?)
-        .map_err(|e| at.at_field("line_friction", e.to_string()))?;
+    let seabed = Seabed::new(elevation, def.line_friction).map_err(seabed_problem)?;
     if let Some(contact) = &def.contact {
         couplings.extend(seabed_contacts(contact, &seabed, file, built, &at)?);
     }
@@ -206,7 +204,8 @@ fn seabed_contacts(
     built: &mut Bodies,
     at: &ItemAt,
 ) -> Result<Vec<Coupling>, Problem> {
-    let law = build_contact_law(def.stiffness, def.damping, def.range, def.friction, def.friction_sharpness, at)?;
+    let law = ContactLaw::new(def.stiffness, def.damping, def.range, def.friction, def.friction_sharpness)
+        .map_err(|e| at.refused(&e))?;
     let up = -vec3(file.gravity).try_normalize(0.0).unwrap_or_else(|| -Vec3::z());
     let plane = Plane { point: up * seabed.elevation, normal: up };
     let Bodies { bodies, boundaries } = built;
@@ -228,30 +227,31 @@ fn seabed_contacts(
             .mesh(bodies, body)
             .map_err(|e| at.problem(Some("bodies"), Some(name), format!("boundary of body {name:?}: {e}")))?;
         let expected_area = boundary.area() / 6.0;
-        let contact = Contact::new(body, boundary, Opposing::Planes(vec![plane]), law, expected_area);
+        let contact = Contact::new(body, boundary, Opposing::Planes(vec![plane]), law, expected_area)
+            .map_err(|e| at.refused(&e))?;
         couplings.push(Coupling { name: coupling, kind: CouplingKind::Contact(contact) });
     }
     Ok(couplings)
 }
 
+/// A seabed refused by its constructor, placed at its field; the error names the seabed.
+fn seabed_problem(error: SeabedError) -> Problem {
+    let place = Place::Section { section: "seabed", field: Some(error.0.field()), literal: None };
+    Problem { place, message: error.to_string() }
+}
+
 /// A system the scene cannot make, placed at the coupling at fault when there is one.
 fn system_problem(file: &SceneFile, error: SystemError) -> Problem {
     match &error {
-        SystemError::BelowSeabed { coupling, end, .. } => {
-            let field = if *end == 1 { "end1" } else { "end2" };
+        SystemError::BelowSeabed { coupling, source } => {
+            let field = if source.end == 1 { "end1" } else { "end2" };
             match file.couplings.iter().position(|c| c.name() == coupling) {
-                Some(index) => coupling_at(file, index).problem(Some(field), None, strip_coupling(&error.to_string())),
+                Some(index) => coupling_at(file, index).problem(Some(field), None, source.to_string()),
                 None => Problem { place: Place::Top("seabed"), message: error.to_string() },
             }
         }
         _ => Problem { place: Place::Top("couplings"), message: error.to_string() },
     }
-}
-
-/// The message of a system error without its leading `coupling "name": `, which the placed
-/// problem adds again.
-fn strip_coupling(message: &str) -> String {
-    message.split_once("\": ").map_or(message, |(_, rest)| rest).to_string()
 }
 
 /// Warnings about lines: a displaced volume where there is no water to displace; a line that
@@ -283,17 +283,9 @@ pub fn timing(file: &SceneFile) -> Result<Timing, Problem> {
 }
 
 fn timing_with_warnings(file: &SceneFile, warnings: &mut Vec<String>) -> Result<Timing, Problem> {
-    if !(file.dt > 0.0 && file.dt.is_finite()) {
-        return Err(Problem {
-            place: Place::Top("dt"),
-            message: format!("time step dt must be > 0 s, got {}", file.dt),
-        });
-    }
-    if file.substeps == Substeps::Fixed(0) {
-        return Err(Problem { place: Place::Top("substeps"), message: "substeps must be at least 1".into() });
-    }
     let tolerances = build_tolerances(file, warnings)?;
-    Ok(Timing { dt: file.dt, integrator: file.integrator, substeps: file.substeps, tolerances })
+    Timing::new(file.dt, file.integrator, file.substeps, tolerances)
+        .map_err(|error| Problem { place: Place::Top(error.field()), message: error.to_string() })
 }
 
 /// Builds coupling `index` of `file` on its own, against the scene's built `bodies`, with the
@@ -306,32 +298,17 @@ pub fn coupling(file: &SceneFile, index: usize, bodies: &mut Bodies) -> Result<C
     build_coupling(def, bodies, &coupling_at(file, index))
 }
 
-/// The `adaptive` settings, checked; a warning when the integrator does not use them.
+/// The `adaptive` settings, checked by [`Tolerances::new`]; a warning when the integrator does
+/// not use them.
 fn build_tolerances(file: &SceneFile, warnings: &mut Vec<String>) -> Result<Tolerances, Problem> {
     let Some(def) = file.adaptive else { return Ok(Tolerances::default()) };
-    if !(def.rtol > 0.0 && def.rtol < 1.0) {
-        return Err(Problem {
-            place: Place::Top("rtol"),
-            message: format!("adaptive rtol must be > 0 and < 1, got {}", def.rtol),
-        });
-    }
-    if !(def.atol > 0.0) {
-        return Err(Problem {
-            place: Place::Top("atol"),
-            message: format!("adaptive atol must be > 0, got {}", def.atol),
-        });
-    }
-    if let Some(max_step) = def.max_step.filter(|m| !(*m > 0.0)) {
-        return Err(Problem {
-            place: Place::Top("max_step"),
-            message: format!("adaptive max_step must be > 0 s, got {max_step}"),
-        });
-    }
+    let tolerances = Tolerances::new(def.rtol, def.atol, def.max_step)
+        .map_err(|error| ItemAt::section("adaptive").refused(&error))?;
     if !file.integrator.is_adaptive() {
         warnings
             .push(format!("the adaptive settings are for integrator dopri45; {} ignores them", file.integrator.name()));
     }
-    Ok(Tolerances { rtol: def.rtol, atol: def.atol, max_step: def.max_step })
+    Ok(tolerances)
 }
 
 /// Locates problems in one item, or in a top-level section.
@@ -381,23 +358,15 @@ impl<'a> ItemAt<'a> {
         self.problem(None, None, message)
     }
 
-    /// `value` if it is within `bound`, else a problem at `field`: "`field` must be > 0 `unit`,
-    /// got `value`" (NaN is never within).
-    fn require(&self, field: &'static str, value: f64, bound: Bound, unit: &str) -> Result<f64, Problem> {
-        let (within, rule) = match bound {
-            Bound::Positive => (value > 0.0, "> 0"),
-            Bound::NonNegative => (value >= 0.0, "≥ 0"),
-        };
-        let unit = if unit.is_empty() { String::new() } else { format!(" {unit}") };
-        if within { Ok(value) } else { Err(self.at_field(field, format!("{field} must be {rule}{unit}, got {value}"))) }
+    /// A value refused by the constructor of its physics type, placed at its field.
+    fn refused(&self, error: &ParameterError) -> Problem {
+        self.at_field(error.field(), error.to_string())
     }
-}
 
-/// The range a number must be in.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Bound {
-    Positive,
-    NonNegative,
+    /// `value` if it is within `bound` ([`require`]), else the problem at `field`.
+    fn require(&self, field: &'static str, value: f64, bound: Bound, unit: &'static str) -> Result<f64, Problem> {
+        require(field, value, bound, unit).map_err(|error| self.refused(&error))
+    }
 }
 
 /// Names become entity paths and CLI arguments: non-empty, letters, digits, `_`, `-`, `.`; unique.
@@ -581,18 +550,15 @@ fn build_coupling(def: &CouplingDef, built: &mut Bodies, at: &ItemAt) -> Result<
     let kind = match def {
         CouplingDef::SpringDamper { end1, end2, law, damping, .. } => {
             let (end1, end2) = build_ends(end1, end2, bodies, at)?;
-            let damping = at.require("damping", *damping, Bound::NonNegative, "N·s/m")?;
-            CouplingKind::SpringDamper(SpringDamper::new(end1, end2, build_law(law, at)?, damping))
+            let law = build_law(law).map_err(|e| at.refused(&e))?;
+            CouplingKind::SpringDamper(SpringDamper::new(end1, end2, law, *damping).map_err(|e| at.refused(&e))?)
         }
         CouplingDef::Catenary { end1, end2, mass_per_length, length, stiffness, displaced_area, .. } => {
             let (end1, end2) = build_ends(end1, end2, bodies, at)?;
-            let mass_per_length = at.require("mass_per_length", *mass_per_length, Bound::NonNegative, "kg/m")?;
-            let length = at.require("length", *length, Bound::Positive, "m")?;
-            let stiffness = at.require("stiffness", *stiffness, Bound::Positive, "N/m")?;
-            let displaced_area = at.require("displaced_area", *displaced_area, Bound::NonNegative, "m²")?;
-            CouplingKind::Catenary(
-                Catenary::new(end1, end2, mass_per_length, length, stiffness).with_displaced_area(displaced_area),
-            )
+            let line = Catenary::new(end1, end2, *mass_per_length, *length, *stiffness)
+                .and_then(|line| line.with_displaced_area(*displaced_area))
+                .map_err(|e| at.refused(&e))?;
+            CouplingKind::Catenary(line)
         }
         CouplingDef::Contact {
             body,
@@ -605,16 +571,16 @@ fn build_coupling(def: &CouplingDef, built: &mut Bodies, at: &ItemAt) -> Result<
             expected_area,
             ..
         } => {
-            let law = build_contact_law(*stiffness, *damping, *range, *friction, *friction_sharpness, at)?;
+            let law = ContactLaw::new(*stiffness, *damping, *range, *friction, *friction_sharpness)
+                .map_err(|e| at.refused(&e))?;
             let index = body_index(body, bodies, "body", at)?;
             let mesh_problem = |e: MeshError| at.at_field("body", format!("boundary of body {body:?}: {e}"));
             let boundary = boundaries.mesh(bodies, index).map_err(mesh_problem)?;
             let against = build_against(against, index, bodies, boundaries, at)?;
-            let expected_area = match expected_area {
-                Some(area) => at.require("expected_area", *area, Bound::Positive, "m²")?,
-                None => boundary.area() / 6.0,
-            };
-            CouplingKind::Contact(Contact::new(index, boundary, against, law, expected_area))
+            let expected_area = expected_area.unwrap_or(boundary.area() / 6.0);
+            CouplingKind::Contact(
+                Contact::new(index, boundary, against, law, expected_area).map_err(|e| at.refused(&e))?,
+            )
         }
     };
     Ok(Coupling { name: def.name().to_string(), kind })
@@ -631,23 +597,6 @@ fn build_ends(
         return Err(at.at_field("end2", "both ends are the same point: the coupling has no direction".into()));
     }
     Ok((build_end(end1, bodies, at)?, build_end(end2, bodies, at)?))
-}
-
-fn build_contact_law(
-    stiffness: f64,
-    damping: f64,
-    range: f64,
-    friction: f64,
-    friction_sharpness: f64,
-    at: &ItemAt,
-) -> Result<ContactLaw, Problem> {
-    Ok(ContactLaw {
-        stiffness: at.require("stiffness", stiffness, Bound::Positive, "N/m³")?,
-        damping: at.require("damping", damping, Bound::NonNegative, "N·s/m³")?,
-        range: at.require("range", range, Bound::NonNegative, "m")?,
-        friction: at.require("friction", friction, Bound::NonNegative, "")?,
-        friction_sharpness: at.require("friction_sharpness", friction_sharpness, Bound::Positive, "s/m")?,
-    })
 }
 
 fn build_against(
@@ -697,30 +646,25 @@ fn body_index(name: &str, bodies: &[RigidBody], field: &'static str, at: &ItemAt
     })
 }
 
-fn build_law(def: &LawDef, at: &ItemAt) -> Result<ElasticLaw, Problem> {
-    let non_negative = |field: &'static str, value: f64, unit: &str| at.require(field, value, Bound::NonNegative, unit);
-    let table = |points: &[(f64, f64)]| {
-        ElasticLaw::stiffness_table(points.to_vec()).map_err(|e| at.at_field("points", e.to_string()))
-    };
+/// The elastic law of `def`: its tables checked as they are made
+/// ([`ElasticLaw::stiffness_table`]), its numbers by [`SpringDamper::new`].
+fn build_law(def: &LawDef) -> Result<ElasticLaw, ParameterError> {
     Ok(match def {
-        LawDef::Linear { stiffness, rest_length } => ElasticLaw::Linear {
-            stiffness: non_negative("stiffness", *stiffness, "N/m")?,
-            rest_length: non_negative("rest_length", *rest_length, "m")?,
-        },
+        LawDef::Linear { stiffness, rest_length } => {
+            ElasticLaw::Linear { stiffness: *stiffness, rest_length: *rest_length }
+        }
         LawDef::Polynomial { a, b, c, rest_length } => {
-            ElasticLaw::Polynomial { a: *a, b: *b, c: *c, rest_length: non_negative("rest_length", *rest_length, "m")? }
+            ElasticLaw::Polynomial { a: *a, b: *b, c: *c, rest_length: *rest_length }
         }
-        LawDef::ForceCurve { points } => {
-            ElasticLaw::force_curve(points.clone()).map_err(|e| at.at_field("points", e.to_string()))?
-        }
+        LawDef::ForceCurve { points } => ElasticLaw::force_curve(points.clone())?,
         LawDef::StiffnessCurve { points, rest_length } => ElasticLaw::StiffnessCurve {
-            stiffness: table(points)?,
-            rest_length: non_negative("rest_length", *rest_length, "m")?,
+            stiffness: ElasticLaw::stiffness_table(points.clone())?,
+            rest_length: *rest_length,
         },
         LawDef::ReferenceForce { points, reference_length, reference_force, rest_length } => {
             ElasticLaw::ReferenceForce {
-                stiffness: table(points)?,
-                reference_length: non_negative("reference_length", *reference_length, "m")?,
+                stiffness: ElasticLaw::stiffness_table(points.clone())?,
+                reference_length: *reference_length,
                 reference_force: *reference_force,
                 rest_length: *rest_length,
             }

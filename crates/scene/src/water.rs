@@ -181,16 +181,12 @@ impl WaterDef {
     /// The water section's field that `error` is about.
     pub fn field_of(error: &WaterError) -> &'static str {
         match error {
-            WaterError::Density(_) => "density",
-            WaterError::Depth(_) => "depth",
             WaterError::Gamma(_) => "gamma",
             WaterError::Components(_) => "components",
             WaterError::Breaking { .. } => "waves",
             WaterError::ProfileWithoutDepth => "profile",
             WaterError::Gravity(..) => "water",
-            WaterError::NotFinite { field, .. }
-            | WaterError::NotPositive { field, .. }
-            | WaterError::Negative { field, .. } => match *field {
+            WaterError::Parameter(error) => match error.field() {
                 "wave height" => "height",
                 "wave period" => "period",
                 "significant wave height" => "hs",
@@ -198,6 +194,9 @@ impl WaterDef {
                 "current speed" => "speed",
                 "ramp" => "ramp",
                 "level" => "level",
+                "density" => "density",
+                "depth" => "depth",
+                "gamma" => "gamma",
                 _ => "waves",
             },
         }

@@ -119,14 +119,14 @@ fn inertia_not_positive_definite() {
 
 #[test]
 fn zero_time_step() {
-    assert_error(("dt: 0.001", "dt: 0.0"), "bad.ron:2:5: time step dt must be > 0 s, got 0");
+    assert_error(("dt: 0.001", "dt: 0.0"), "bad.ron:2:5: dt must be > 0 s, got 0");
 }
 
 #[test]
 fn non_monotonic_table() {
     assert_error(
         ("(0.5, 10.0), (1.0, 20.0)", "(0.5, 10.0), (0.4, 20.0)"),
-        "bad.ron:20:33: coupling \"link\": table point 1: x must increase strictly (0.5 then 0.4)",
+        "bad.ron:20:33: coupling \"link\": points: table point 1: x must increase strictly (0.5 then 0.4)",
     );
 }
 
@@ -134,7 +134,7 @@ fn non_monotonic_table() {
 fn table_with_one_point() {
     assert_error(
         ("(0.5, 10.0), (1.0, 20.0)", "(0.5, 10.0)"),
-        "bad.ron:20:33: coupling \"link\": a table needs at least 2 points, got 1",
+        "bad.ron:20:33: coupling \"link\": points: a table needs at least 2 points, got 1",
     );
 }
 

@@ -298,7 +298,7 @@ impl Runner {
     fn edit_water(
         &mut self,
         what: &str,
-        edit: impl FnOnce(&mut World) -> Result<(), tether_physics::world::WaterEditError>,
+        edit: impl FnOnce(&mut World) -> Result<(), tether_physics::world::EditError>,
     ) {
         let Some(run) = &mut self.run else { return };
         match edit(&mut run.world) {

@@ -6,7 +6,8 @@
 //! computed directly, never as `k_eff · (x − x0)`, so there is no 0/0 at `x = x0`; `k_eff` is
 //! offered for display, and at `x0` it is the tangent stiffness, as PHYSICS.md §2 prescribes.
 
-use crate::table::{Extrapolation, Table, TableError};
+use crate::parameter::{Bound, ParameterError, require};
+use crate::table::{Extrapolation, Table};
 
 /// An elastic law `f_e(x)`.
 #[derive(Debug, Clone, PartialEq)]
@@ -30,13 +31,50 @@ pub enum ElasticLaw {
 
 impl ElasticLaw {
     /// A force curve from (x, f) points, extended linearly.
-    pub fn force_curve(points: Vec<(f64, f64)>) -> Result<Self, TableError> {
-        Ok(Self::ForceCurve { curve: Table::new(points, Extrapolation::Linear)? })
+    ///
+    /// # Errors
+    /// Points that are not a table, at field `points`.
+    pub fn force_curve(points: Vec<(f64, f64)>) -> Result<Self, ParameterError> {
+        let curve = Table::new(points, Extrapolation::Linear)
+            .map_err(|source| ParameterError::Table { field: "points", source })?;
+        Ok(Self::ForceCurve { curve })
     }
 
     /// A stiffness table from (ξ, k) points, extended with constant end stiffness.
-    pub fn stiffness_table(points: Vec<(f64, f64)>) -> Result<Table, TableError> {
-        Table::new(points, Extrapolation::Constant)
+    ///
+    /// # Errors
+    /// Points that are not a table, at field `points`.
+    pub fn stiffness_table(points: Vec<(f64, f64)>) -> Result<Table, ParameterError> {
+        Table::new(points, Extrapolation::Constant).map_err(|source| ParameterError::Table { field: "points", source })
+    }
+
+    /// Checks the law's numbers (its tables were checked when they were made): a linear
+    /// stiffness `k` [N/m] ≥ 0, rest and reference lengths [m] ≥ 0, the other coefficients
+    /// finite. [`super::SpringDamper::new`] calls it: a law is checked where its spring is built.
+    ///
+    /// # Errors
+    /// The first number out of its range, named by its field.
+    pub fn check(&self) -> Result<(), ParameterError> {
+        let rest = |x0: f64| require("rest_length", x0, Bound::NonNegative, "m").map(drop);
+        match self {
+            Self::Linear { stiffness, rest_length } => {
+                require("stiffness", *stiffness, Bound::NonNegative, "N/m")?;
+                rest(*rest_length)
+            }
+            Self::Polynomial { a, b, c, rest_length } => {
+                require("a", *a, Bound::Finite, "N/m")?;
+                require("b", *b, Bound::Finite, "N/m²")?;
+                require("c", *c, Bound::Finite, "N/m³")?;
+                rest(*rest_length)
+            }
+            Self::ForceCurve { .. } => Ok(()),
+            Self::StiffnessCurve { rest_length, .. } => rest(*rest_length),
+            Self::ReferenceForce { reference_length, reference_force, rest_length, .. } => {
+                require("reference_length", *reference_length, Bound::NonNegative, "m")?;
+                require("reference_force", *reference_force, Bound::Finite, "N")?;
+                require("rest_length", *rest_length, Bound::Finite, "m").map(drop)
+            }
+        }
     }
 
     /// `x0` \[m], the length at which the elastic force vanishes (for a force curve: its first

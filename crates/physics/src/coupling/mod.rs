@@ -40,9 +40,6 @@ pub enum CouplingKind {
 pub enum CouplingError {
     #[error(transparent)]
     Catenary(#[from] CatenaryError),
-    /// A coupling replaced at an index the world does not have.
-    #[error("the world has no coupling {0}")]
-    NoSuchCoupling(usize),
 }
 
 /// A named coupling.

@@ -10,11 +10,13 @@ use super::ends::Endpoint;
 use super::forces::CouplingForces;
 use crate::body::{BodyFrame, Load};
 use crate::math::{Mat3, Vec3};
+use crate::parameter::{Bound, ParameterError, require};
 
 /// Below this distance [m] the ends count as coincident: the direction is undefined.
 const COINCIDENT: f64 = 1e-12;
 
-/// A spring and a parallel linear damper between two ends.
+/// A spring and a parallel linear damper between two ends, built by [`SpringDamper::new`],
+/// which checks its values.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SpringDamper {
     pub end1: Endpoint,
@@ -46,8 +48,13 @@ impl SpringCache {
 }
 
 impl SpringDamper {
-    pub fn new(end1: Endpoint, end2: Endpoint, law: ElasticLaw, damping: f64) -> Self {
-        Self { end1, end2, law, damping }
+    /// A spring of elastic `law` and damper `damping` k_d [N·s/m] ≥ 0 between two ends.
+    ///
+    /// # Errors
+    /// A damping or a law coefficient out of its range ([`ElasticLaw::check`]), named by its field.
+    pub fn new(end1: Endpoint, end2: Endpoint, law: ElasticLaw, damping: f64) -> Result<Self, ParameterError> {
+        law.check()?;
+        Ok(Self { end1, end2, law, damping: require("damping", damping, Bound::NonNegative, "N·s/m")? })
     }
 
     /// Forces at the kinematics `frames` (PHYSICS.md §2 \[4944]–\[4945]), added to the end bodies' `loads`
@@ -108,7 +115,8 @@ mod tests {
     #[test]
     fn coincident_ends_give_finite_forces_and_keep_the_last_direction() {
         let law = ElasticLaw::Linear { stiffness: 100.0, rest_length: 0.5 };
-        let spring = SpringDamper::new(Endpoint::World(Vec3::zeros()), Endpoint::Center { body: 0 }, law, 2.0);
+        // A valid law and damping: the constructor accepts them.
+        let spring = SpringDamper::new(Endpoint::World(Vec3::zeros()), Endpoint::Center { body: 0 }, law, 2.0).unwrap();
         let mut cache = SpringCache::default();
         let mut loads = [Load::default()];
         let mut out = CouplingForces::default();

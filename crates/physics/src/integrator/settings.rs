@@ -1,5 +1,8 @@
 //! The time step settings a scene declares: which integrator, the world step, its substeps and
-//! the adaptive scheme's tolerances.
+//! the adaptive scheme's tolerances, each checked by its constructor ([`Timing::new`],
+//! [`Tolerances::new`]).
+
+use crate::parameter::{Bound, ParameterError, require};
 
 /// The scheme that advances a world by one step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
@@ -93,13 +96,28 @@ pub struct Tolerances {
     pub max_step: Option<f64>,
 }
 
+impl Tolerances {
+    /// Relative tolerance `rtol` [–] in (0, 1), absolute tolerance `atol` > 0, largest step
+    /// `max_step` [s] > 0 if any.
+    ///
+    /// # Errors
+    /// A value out of its range, named by its field.
+    pub fn new(rtol: f64, atol: f64, max_step: Option<f64>) -> Result<Self, ParameterError> {
+        Ok(Self {
+            rtol: require("rtol", rtol, Bound::OpenUnit, "")?,
+            atol: require("atol", atol, Bound::Positive, "")?,
+            max_step: max_step.map(|step| require("max_step", step, Bound::Positive, "s")).transpose()?,
+        })
+    }
+}
+
 impl Default for Tolerances {
     fn default() -> Self {
         Self { rtol: 1e-6, atol: 1e-9, max_step: None }
     }
 }
 
-/// The time step settings of a world.
+/// The time step settings of a world, built by [`Timing::new`], which checks them.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Timing {
     /// World step \[s] > 0.
@@ -108,4 +126,44 @@ pub struct Timing {
     pub substeps: Substeps,
     /// Used by [`Integrator::Dopri45`] only.
     pub tolerances: Tolerances,
+}
+
+impl Timing {
+    /// World step `dt` [s] > 0 taken by `integrator` in `substeps` (at least 1 when fixed), with
+    /// `tolerances` for the adaptive scheme.
+    ///
+    /// # Errors
+    /// A time step out of its range, or no substeps.
+    pub fn new(
+        dt: f64,
+        integrator: Integrator,
+        substeps: Substeps,
+        tolerances: Tolerances,
+    ) -> Result<Self, ParameterError> {
+        let dt = require("dt", dt, Bound::Positive, "s")?;
+        if let Substeps::Fixed(n @ 0) = substeps {
+            return Err(ParameterError::TooFew { field: "substeps", value: n, least: 1 });
+        }
+        Ok(Self { dt, integrator, substeps, tolerances })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_constructors_refuse_each_bad_value_by_its_field() {
+        let tolerances = Tolerances::default();
+        let refused = |result: Result<Timing, ParameterError>| result.unwrap_err().to_string();
+        assert_eq!(refused(Timing::new(0.0, Integrator::Rk4, Substeps::Auto, tolerances)), "dt must be > 0 s, got 0");
+        assert_eq!(
+            refused(Timing::new(1e-3, Integrator::Rk4, Substeps::Fixed(0), tolerances)),
+            "substeps must be at least 1, got 0"
+        );
+        assert_eq!(Timing::new(1e-3, Integrator::Rk4, Substeps::Fixed(2), tolerances).unwrap().dt, 1e-3);
+        assert_eq!(Tolerances::new(0.0, 1e-9, None).unwrap_err().to_string(), "rtol must be > 0 and < 1, got 0");
+        assert_eq!(Tolerances::new(1e-6, -1e-9, None).unwrap_err().field(), "atol");
+        assert_eq!(Tolerances::new(1e-6, 1e-9, Some(0.0)).unwrap_err().to_string(), "max_step must be > 0 s, got 0");
+    }
 }

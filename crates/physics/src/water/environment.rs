@@ -9,6 +9,7 @@ use super::dispersion::wavelength;
 use super::spectrum::Jonswap;
 use super::waves::{Sea, WaveComponent};
 use crate::math::Vec3;
+use crate::parameter::{Bound, ParameterError, require};
 
 pub use super::current::Profile as CurrentProfile;
 
@@ -71,16 +72,9 @@ pub const BREAKING_STEEPNESS: f64 = 1.0 / 7.0;
 /// Water that cannot be.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum WaterError {
-    #[error("{field} must be finite, got {value}")]
-    NotFinite { field: &'static str, value: f64 },
-    #[error("density must be > 0 kg/m³, got {0}")]
-    Density(f64),
-    #[error("depth must be > 0 m, got {0}")]
-    Depth(f64),
-    #[error("{field} must be > 0 {unit}, got {value}")]
-    NotPositive { field: &'static str, unit: &'static str, value: f64 },
-    #[error("{field} must be ≥ 0 {unit}, got {value}")]
-    Negative { field: &'static str, unit: &'static str, value: f64 },
+    /// A number out of its range ([`crate::parameter`]).
+    #[error(transparent)]
+    Parameter(#[from] ParameterError),
     #[error("JONSWAP gamma must be ≥ 1, got {0}")]
     Gamma(f64),
     #[error("a JONSWAP sea needs 1 to {MAX_COMPONENTS} components, got {0}")]
@@ -211,52 +205,35 @@ impl Water {
 
 /// Every number finite and in its range.
 fn check(spec: &WaterSpec) -> Result<(), WaterError> {
-    let finite = |field: &'static str, value: f64| {
-        if value.is_finite() { Ok(()) } else { Err(WaterError::NotFinite { field, value }) }
-    };
-    let positive = |field: &'static str, unit: &'static str, value: f64| {
-        finite(field, value)?;
-        if value > 0.0 { Ok(()) } else { Err(WaterError::NotPositive { field, unit, value }) }
-    };
-    let non_negative = |field: &'static str, unit: &'static str, value: f64| {
-        finite(field, value)?;
-        if value >= 0.0 { Ok(()) } else { Err(WaterError::Negative { field, unit, value }) }
-    };
-    finite("density", spec.density)?;
-    if !(spec.density > 0.0) {
-        return Err(WaterError::Density(spec.density));
-    }
-    finite("level", spec.level)?;
+    require("density", spec.density, Bound::Positive, "kg/m³")?;
+    require("level", spec.level, Bound::Finite, "m")?;
     if let Some(depth) = spec.depth {
-        finite("depth", depth)?;
-        if !(depth > 0.0) {
-            return Err(WaterError::Depth(depth));
-        }
+        require("depth", depth, Bound::Positive, "m")?;
     }
-    non_negative("current speed", "m/s", spec.current.speed)?;
-    finite("current heading", spec.current.heading)?;
+    require("current speed", spec.current.speed, Bound::NonNegative, "m/s")?;
+    require("current heading", spec.current.heading, Bound::Finite, "rad")?;
     if spec.current.profile.needs_depth() && spec.depth.is_none() {
         return Err(WaterError::ProfileWithoutDepth);
     }
     if let Some(ramp) = spec.ramp {
-        non_negative("ramp", "s", ramp)?;
+        require("ramp", ramp, Bound::NonNegative, "s")?;
     }
     match spec.waves {
         WaveSpec::Calm => {}
         WaveSpec::Regular { height, period, heading, phase } => {
-            non_negative("wave height", "m", height)?;
-            positive("wave period", "s", period)?;
-            finite("wave heading", heading)?;
-            finite("wave phase", phase)?;
+            require("wave height", height, Bound::NonNegative, "m")?;
+            require("wave period", period, Bound::Positive, "s")?;
+            require("wave heading", heading, Bound::Finite, "rad")?;
+            require("wave phase", phase, Bound::Finite, "rad")?;
         }
         WaveSpec::Jonswap { significant_height, peak_period, gamma, heading, components, .. } => {
-            non_negative("significant wave height", "m", significant_height)?;
-            positive("peak period", "s", peak_period)?;
-            finite("gamma", gamma)?;
+            require("significant wave height", significant_height, Bound::NonNegative, "m")?;
+            require("peak period", peak_period, Bound::Positive, "s")?;
+            require("gamma", gamma, Bound::Finite, "")?;
             if !(gamma >= 1.0) {
                 return Err(WaterError::Gamma(gamma));
             }
-            finite("wave heading", heading)?;
+            require("wave heading", heading, Bound::Finite, "rad")?;
             if !(1..=MAX_COMPONENTS).contains(&components) {
                 return Err(WaterError::Components(components));
             }
@@ -324,13 +301,15 @@ mod tests {
 
     #[test]
     fn bad_water_is_refused_with_the_reason() {
-        assert_eq!(with(|s| s.density = 0.0), Err(WaterError::Density(0.0)));
-        assert_eq!(with(|s| s.depth = Some(-1.0)), Err(WaterError::Depth(-1.0)));
-        assert!(matches!(with(|s| s.density = f64::NAN), Err(WaterError::NotFinite { field: "density", .. })));
-        assert!(matches!(
-            with(|s| s.waves = WaveSpec::Regular { height: 2.0, period: 0.0, heading: 0.0, phase: 0.0 }),
-            Err(WaterError::NotPositive { field: "wave period", .. })
-        ));
+        let refused = |edit: fn(&mut WaterSpec)| with(edit).unwrap_err().to_string();
+        assert_eq!(refused(|s| s.density = 0.0), "density must be > 0 kg/m³, got 0");
+        assert_eq!(refused(|s| s.depth = Some(-1.0)), "depth must be > 0 m, got -1");
+        assert_eq!(refused(|s| s.density = f64::NAN), "density must be > 0 kg/m³, got NaN");
+        assert_eq!(refused(|s| s.level = f64::INFINITY), "level must be finite, got inf");
+        assert_eq!(
+            refused(|s| s.waves = WaveSpec::Regular { height: 2.0, period: 0.0, heading: 0.0, phase: 0.0 }),
+            "wave period must be > 0 s, got 0"
+        );
         // A 10 m wave of 3 s (λ = 14.05 m deep) breaks.
         assert!(matches!(
             with(|s| s.waves = WaveSpec::Regular { height: 10.0, period: 3.0, heading: 0.0, phase: 0.0 }),

@@ -26,9 +26,9 @@ pub struct FloatingBody {
 /// A body that cannot float, and why.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum FloatingError {
-    #[error(transparent)]
+    #[error("its shape as a hull in water: {0}")]
     Hull(#[from] MeshError),
-    #[error(transparent)]
+    #[error("hydro: {0}")]
     Hydro(#[from] HydroError),
 }
 

@@ -5,9 +5,9 @@
 //! a refused edit leaves the world as it was.
 
 use super::World;
-use super::error::{EditError, StepError, TimingError, WaterEditError};
+use super::error::{EditError, StepError};
 use crate::body::BodyState;
-use crate::coupling::{Coupling, CouplingError};
+use crate::coupling::Coupling;
 use crate::energy::Work;
 use crate::integrator::{Substeps, Timing};
 use crate::seabed::Seabed;
@@ -32,29 +32,22 @@ impl World {
     /// divergence message then quotes the stable time step of the new parameters.
     ///
     /// # Errors
-    /// The new coupling cannot give its forces here, refers to a body the world does not have,
-    /// or `index` is out of range; the world is then unchanged.
-    pub fn replace_coupling(&mut self, index: usize, coupling: Coupling) -> Result<(), StepError> {
-        if index >= self.system.couplings().len() {
-            return Err(StepError::Coupling {
-                coupling: coupling.name,
-                time: self.clock.time,
-                source: CouplingError::NoSuchCoupling(index),
-            });
+    /// `index` out of range ([`EditError::NoSuchCoupling`]), a new coupling that refers to a
+    /// body the world does not have or anchors below the seabed ([`EditError::System`]), or
+    /// that cannot give its forces here ([`EditError::Forces`]); the world is then unchanged.
+    pub fn replace_coupling(&mut self, index: usize, coupling: Coupling) -> Result<(), EditError> {
+        let count = self.system.couplings().len();
+        if index >= count {
+            return Err(EditError::NoSuchCoupling { index, count });
         }
         let before = self.clone();
-        let name = coupling.name.clone();
         self.states = self.synchronized_states();
-        if self.system.replace_coupling(index, coupling).is_err() {
+        if let Err(error) = self.system.replace_coupling(index, coupling) {
             *self = before;
-            return Err(StepError::Coupling {
-                coupling: name,
-                time: self.clock.time,
-                source: CouplingError::NoSuchCoupling(index),
-            });
+            return Err(error.into());
         }
         self.evaluation.forget(index, &self.system.couplings()[index]);
-        self.restart_after_edit(before)
+        self.restart_after_edit(before).map_err(Into::into)
     }
 
     /// Replaces the seabed while running (live tuning of its line friction `C_B`): as
@@ -83,7 +76,7 @@ impl World {
     /// then unchanged.
     pub fn place(&mut self, states: &[BodyState]) -> Result<(), EditError> {
         if states.len() != self.states.len() {
-            let error = crate::system::SystemError::StateCount { bodies: self.states.len(), states: states.len() };
+            let error = SystemError::StateCount { bodies: self.states.len(), states: states.len() };
             return Err(error.into());
         }
         let before = self.clone();
@@ -100,7 +93,7 @@ impl World {
     /// # Errors
     /// Water that cannot be, a world without water, or forces that cannot be evaluated; the
     /// world is then unchanged.
-    pub fn replace_water(&mut self, spec: WaterSpec) -> Result<(), WaterEditError> {
+    pub fn replace_water(&mut self, spec: WaterSpec) -> Result<(), EditError> {
         self.edit_water(|system| system.replace_water(spec))
     }
 
@@ -110,7 +103,7 @@ impl World {
     /// # Errors
     /// Bad coefficients, a body that does not float, or forces that cannot be evaluated; the
     /// world is then unchanged.
-    pub fn replace_hydro(&mut self, body: usize, spec: HydroSpec) -> Result<(), WaterEditError> {
+    pub fn replace_hydro(&mut self, body: usize, spec: HydroSpec) -> Result<(), EditError> {
         self.edit_water(|system| system.replace_hydro(body, spec))
     }
 
@@ -119,35 +112,28 @@ impl World {
     fn edit_water(
         &mut self,
         edit: impl FnOnce(&mut crate::system::System) -> Result<(), SystemError>,
-    ) -> Result<(), WaterEditError> {
+    ) -> Result<(), EditError> {
         let before = self.clone();
         self.states = self.synchronized_states();
         if let Err(error) = edit(&mut self.system) {
             *self = before;
-            return Err(WaterEditError::Refused(error));
+            return Err(error.into());
         }
-        self.restart_after_edit(before).map_err(WaterEditError::Forces)
+        self.restart_after_edit(before).map_err(Into::into)
     }
 
-    /// Changes the time step, the integrator, the substeps and the adaptive tolerances at the
-    /// current time, keeping the state: the new integrator starts from the synchronised
-    /// positions and velocities, so the motion goes on where it was. `Substeps::Auto` is
-    /// resolved from the stable time steps of the current state.
+    /// Changes the time step, the integrator, the substeps and the adaptive tolerances (checked
+    /// by [`Timing::new`]) at the current time, keeping the state: the new integrator starts
+    /// from the synchronised positions and velocities, so the motion goes on where it was.
+    /// `Substeps::Auto` is resolved from the stable time steps of the current state.
     ///
     /// # Errors
-    /// `dt` not finite and positive, zero substeps, or forces that cannot be evaluated; the
-    /// world is then unchanged.
-    pub fn set_timing(&mut self, timing: Timing) -> Result<(), TimingError> {
-        if !(timing.dt.is_finite() && timing.dt > 0.0) {
-            return Err(TimingError::Step(timing.dt));
-        }
-        if timing.substeps == Substeps::Fixed(0) {
-            return Err(TimingError::NoSubsteps);
-        }
+    /// Forces that cannot be evaluated; the world is then unchanged.
+    pub fn set_timing(&mut self, timing: Timing) -> Result<(), EditError> {
         let before = self.clone();
         if let Err(error) = self.retime(timing) {
             *self = before;
-            return Err(TimingError::Forces(error));
+            return Err(error.into());
         }
         Ok(())
     }

@@ -1,5 +1,4 @@
-//! What stops a world: a step that could not be completed, a time step setting or a live edit
-//! refused.
+//! What stops a world: a step that could not be completed, or a live edit refused.
 
 use crate::coupling::CouplingError;
 use crate::system::SystemError;
@@ -16,35 +15,20 @@ pub enum StepError {
     Diverged { time: f64, body: String, cause: String, advice: String },
 }
 
-/// A live edit refused by [`super::World::set_seabed`] or [`super::World::place`].
+/// A live edit refused ([`super::World::replace_coupling`], [`super::World::set_seabed`],
+/// [`super::World::place`], [`super::World::replace_water`], [`super::World::replace_hydro`],
+/// [`super::World::set_timing`]); the world is then unchanged. Each kind carries its typed
+/// source and prints as it does: one line, naming what is at fault.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum EditError {
-    /// The edit would make the system inconsistent (an anchor below a raised seabed).
+    /// A coupling replaced at an index the world does not have.
+    #[error("the world has no coupling {index} (it has {count})")]
+    NoSuchCoupling { index: usize, count: usize },
+    /// The edit would make the system inconsistent: an unknown body, an anchor below a raised
+    /// seabed, water that cannot be, a body that does not float.
     #[error(transparent)]
     System(#[from] SystemError),
     /// The forces cannot be evaluated after it.
     #[error(transparent)]
     Forces(#[from] StepError),
-}
-
-/// A time step setting refused by [`super::World::set_timing`].
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum TimingError {
-    #[error("time step dt must be > 0 s, got {0}")]
-    Step(f64),
-    #[error("substeps must be at least 1")]
-    NoSubsteps,
-    #[error(transparent)]
-    Forces(StepError),
-}
-
-/// A live edit of the water refused by [`super::World::replace_water`] or
-/// [`super::World::replace_hydro`]; the world is then unchanged.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum WaterEditError {
-    /// The new water or coefficients cannot be.
-    #[error(transparent)]
-    Refused(SystemError),
-    #[error(transparent)]
-    Forces(StepError),
 }

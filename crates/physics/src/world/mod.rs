@@ -22,7 +22,7 @@ use crate::integrator::{Integrator, MAX_AUTO_SUBSTEPS, Scheme, StepFailure, Step
 use crate::math::Vec3;
 use crate::stability::{self, Limit, Situation};
 use crate::system::{EvaluationError, System};
-pub use error::{EditError, StepError, TimingError, WaterEditError};
+pub use error::{EditError, StepError};
 use health::Health;
 
 /// `substeps: Auto` keeps each integrator step under this fraction of the stable time step.

@@ -60,13 +60,7 @@ fn placed(error: SystemError) -> Problem {
                 FloatingError::Hull(_) => "shape",
                 FloatingError::Hydro(_) => "hydro",
             };
-            at.at_field(
-                field,
-                match source {
-                    FloatingError::Hull(e) => format!("its shape as a hull in water: {e}"),
-                    FloatingError::Hydro(e) => format!("hydro: {e}"),
-                },
-            )
+            at.at_field(field, source.to_string())
         }
         other => Problem { place: Place::Top("water"), message: other.to_string() },
     }

@@ -32,6 +32,7 @@ use super::ends::Endpoint;
 use super::forces::CouplingForces;
 use crate::body::{BodyFrame, Load};
 use crate::math::Vec3;
+use crate::parameter::{Bound, ParameterError, require};
 use crate::seabed::Seabed;
 use crate::surroundings::Surroundings;
 use equations::Closure;
@@ -41,7 +42,7 @@ pub use line_state::{EndStiffness, Ground, LineEnd, LineState};
 /// Height above the seabed, a fraction of `L_eq`, within which an end lies on it.
 pub const ON_SEABED: f64 = 1e-9;
 
-/// A catenary line between two ends.
+/// A catenary line between two ends, built by [`Catenary::new`], which checks its values.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Catenary {
     pub end1: Endpoint,
@@ -72,15 +73,34 @@ pub struct CatenaryError {
 }
 
 impl Catenary {
-    /// A line of `mass_per_length` λ0 [kg/m], unstretched `length` \[m] and `stiffness` D [N/m]
-    /// that displaces no fluid.
-    pub fn new(end1: Endpoint, end2: Endpoint, mass_per_length: f64, length: f64, stiffness: f64) -> Self {
-        Self { end1, end2, mass_per_length, length, stiffness, displaced_area: 0.0 }
+    /// A line of `mass_per_length` λ0 [kg/m] ≥ 0, unstretched `length` [m] > 0 and `stiffness`
+    /// D [N/m] > 0 that displaces no fluid.
+    ///
+    /// # Errors
+    /// A value out of its range, named by its field.
+    pub fn new(
+        end1: Endpoint,
+        end2: Endpoint,
+        mass_per_length: f64,
+        length: f64,
+        stiffness: f64,
+    ) -> Result<Self, ParameterError> {
+        Ok(Self {
+            end1,
+            end2,
+            mass_per_length: require("mass_per_length", mass_per_length, Bound::NonNegative, "kg/m")?,
+            length: require("length", length, Bound::Positive, "m")?,
+            stiffness: require("stiffness", stiffness, Bound::Positive, "N/m")?,
+            displaced_area: 0.0,
+        })
     }
 
-    /// The line with displaced volume per length `displaced_area` A_d \[m²].
-    pub fn with_displaced_area(self, displaced_area: f64) -> Self {
-        Self { displaced_area, ..self }
+    /// The line with displaced volume per length `displaced_area` A_d [m²] ≥ 0.
+    ///
+    /// # Errors
+    /// A negative or non-finite area.
+    pub fn with_displaced_area(self, displaced_area: f64) -> Result<Self, ParameterError> {
+        Ok(Self { displaced_area: require("displaced_area", displaced_area, Bound::NonNegative, "m²")?, ..self })
     }
 
     /// `λ0 − ρ A_d` [kg/m] in a fluid of density `fluid_density` ρ [kg/m³]: what weighs.

@@ -12,8 +12,9 @@
 //!   \[W] ≥ 0 (damping, the clamp, and friction).
 
 use crate::math::Vec3;
+use crate::parameter::{Bound, ParameterError, require};
 
-/// Contact parameters (PHYSICS.md §4).
+/// Contact parameters (PHYSICS.md §4), built by [`ContactLaw::new`], which checks them.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactLaw {
     /// `k1`: normal stiffness per unit face area [N/m³] (N/m for each m² in contact).
@@ -44,7 +45,28 @@ pub struct FaceContact {
 }
 
 impl ContactLaw {
-    /// The force on a face of area `area` \[m²] at distance `distance` \[m] < d0 from the opposing
+    /// The law of stiffness `k1` [N/m³] > 0, damping `k2` [N·s/m³] ≥ 0, range `d0` [m] ≥ 0,
+    /// friction `μ` [–] ≥ 0 and friction sharpness `k_t` [s/m] > 0.
+    ///
+    /// # Errors
+    /// A value out of its range, named by its field.
+    pub fn new(
+        stiffness: f64,
+        damping: f64,
+        range: f64,
+        friction: f64,
+        friction_sharpness: f64,
+    ) -> Result<Self, ParameterError> {
+        Ok(Self {
+            stiffness: require("stiffness", stiffness, Bound::Positive, "N/m³")?,
+            damping: require("damping", damping, Bound::NonNegative, "N·s/m³")?,
+            range: require("range", range, Bound::NonNegative, "m")?,
+            friction: require("friction", friction, Bound::NonNegative, "")?,
+            friction_sharpness: require("friction_sharpness", friction_sharpness, Bound::Positive, "s/m")?,
+        })
+    }
+
+    /// The force on a face of area `area` [m²] at distance `distance` [m] < d0 from the opposing
     /// boundary, whose unit normal there is `normal` (pointing towards the face), moving at
     /// `relative_velocity` [m/s] relative to the boundary (same axes as `normal`).
     #[inline(always)]

@@ -23,6 +23,7 @@ use super::forces::CouplingForces;
 use crate::body::{BodyFrame, Load};
 use crate::math::{Mat3, Vec3};
 use crate::mesh::{BoundaryMesh, Face, Surface};
+use crate::parameter::{Bound, ParameterError, require};
 use batch::{Accumulated, FaceBatch, LaneSums, PlaneView};
 pub use law::{ContactLaw, FaceContact};
 use normals::NormalForces;
@@ -84,7 +85,8 @@ pub struct ContactTotals {
     pub faces: usize,
 }
 
-/// A contact coupling between the faces of body `body` and an opposing boundary.
+/// A contact coupling between the faces of body `body` and an opposing boundary, built by
+/// [`Contact::new`], which checks its values.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Contact {
     pub body: usize,
@@ -125,14 +127,20 @@ impl ContactCache {
 }
 
 impl Contact {
+    /// The faces of body `body`'s `boundary` against `against` under `law`, with the expected
+    /// contact area `expected_area` A [m²] > 0.
+    ///
+    /// # Errors
+    /// An expected area out of its range.
     pub fn new(
         body: usize,
         boundary: Arc<BoundaryMesh>,
         against: Opposing,
         law: ContactLaw,
         expected_area: f64,
-    ) -> Self {
-        Self { body, boundary, against, law, expected_area }
+    ) -> Result<Self, ParameterError> {
+        let expected_area = require("expected_area", expected_area, Bound::Positive, "m²")?;
+        Ok(Self { body, boundary, against, law, expected_area })
     }
 
     /// A fresh cache for a run: one empty face list per plane.

@@ -7,7 +7,7 @@
 
 use crate::sweep::case::Status;
 use crate::sweep::plan::Plan;
-use crate::sweep::results::Rows;
+use crate::sweep::rows::Rows;
 use crate::sweep::store::Store;
 use crate::sweep::table::{Columns, Row, compact};
 use rerun::external::egui;

@@ -6,10 +6,11 @@
 //! finishes. A run of the whole sweep (not a shard) then writes the results; a shard leaves that
 //! to `tether sweep merge`.
 
-use super::SweepError;
 use super::case::{self, CaseError, Outcome, Recording, Status};
+use super::error::SweepError;
 use super::plan::Plan;
-use super::results::{self, Rows, Written};
+use super::results::{self, Written};
+use super::rows::Rows;
 use super::shard::Shard;
 use super::store::{self, Manifest, Store};
 use super::table::Row;

@@ -5,7 +5,7 @@
 //! metric's unit in its field's metadata (`unit`). Rows go out in batches of [`BATCH`], so the
 //! table is never whole in memory.
 
-use super::SweepError;
+use super::error::SweepError;
 use super::spec::{Level, LevelKind};
 use super::table::{CASE_COLUMN, Columns, OUTCOME_COLUMNS, Row};
 use arrow_array::builder::{BooleanBuilder, Float64Builder, StringBuilder};

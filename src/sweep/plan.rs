@@ -8,10 +8,10 @@
 //! factor; [`Plan::check_cases`] builds every case to run, so that a combination it refuses is
 //! named with its case — both before anything runs.
 
-use super::SweepError;
 use super::design::Cases;
+use super::error::SweepError;
 use super::factor::{Factor, Values};
-use super::metrics::{Metric, MetricDef};
+use super::metrics::{Metric, MetricDef, RefusedMetric};
 use super::spec::{Design, Level, SpecText};
 use super::table::{CASE_COLUMN, Columns, FactorColumn, MetricColumn, OUTCOME_COLUMNS};
 use crate::runner::Runner;
@@ -96,7 +96,9 @@ impl Plan {
                 .error_at("", "settle_band", format!("settle_band must be > 0 and < 1, got {}", file.settle_band))
                 .into());
         }
-        let metrics = Metric::all(&scene.world, file.standard_metrics, &file.metrics, &spec)?;
+        let metrics = Metric::all(&scene.world, file.standard_metrics, &file.metrics).map_err(
+            |RefusedMetric { name, message }| spec.error_at(&name, "metrics", format!("metric \"{name}\": {message}")),
+        )?;
         check_names(&factors, &metrics, &file.metrics, &spec)?;
         let names = names(&scene);
         Ok(Self {

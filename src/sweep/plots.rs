@@ -11,11 +11,11 @@
 //! Memory: the factors' values of every case, and the values of as many metrics at a time as
 //! fit in [`VALUES_PER_PASS`] numbers (the rows are read again for each such pass).
 
-use super::SweepError;
 use super::case::Status;
+use super::error::SweepError;
 use super::factor::Values;
 use super::plan::Plan;
-use super::results::Rows;
+use super::rows::Rows;
 use super::spec::{Design, Level, LevelKind};
 use super::table::{Columns, compact};
 use crate::chart_style::{self, COLOURS, register_font_family};

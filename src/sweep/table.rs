@@ -156,6 +156,18 @@ impl Columns {
     }
 }
 
+/// A level as the results table writes it (and every message names it).
+impl std::fmt::Display for Level {
+    /// Numbers in their shortest form that reads back to the same `f64`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Number(x) => f.write_str(&number(*x)),
+            Self::Flag(flag) => write!(f, "{flag}"),
+            Self::Text(text) => f.write_str(text),
+        }
+    }
+}
+
 /// `x` in the shortest form that reads back to the same `f64`: plain between 1e-4 and 1e15,
 /// with an exponent outside (so 1e-12 is not written with twelve zeros).
 pub fn number(x: f64) -> String {

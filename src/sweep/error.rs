@@ -1,6 +1,7 @@
 //! A sweep's errors, each one line for the user, placed in the spec or scene where it can be.
 
 use super::spec::SpecError;
+use crate::runner::Runner;
 use tether_scene::SceneError;
 
 /// Why a sweep cannot run or its results cannot be written: one line for the user.
@@ -24,10 +25,37 @@ pub enum SweepError {
     /// A merge of a sweep whose cases do not all have a row.
     #[error("{0}")]
     Incomplete(String),
-    /// The run was stopped (Ctrl-C) before any case ran.
-    #[error("interrupted while the cases were being checked; nothing was run")]
-    Interrupted,
+    /// The run was stopped (Ctrl-C, SIGTERM) at a stage that keeps nothing of itself.
+    #[error("interrupted while {0}")]
+    Interrupted(Stage),
     /// A table or chart that cannot be written.
     #[error("{path}: {message}")]
     Output { path: String, message: String },
+}
+
+/// A stage of a sweep a Ctrl-C or SIGTERM can stop, and what stopping it leaves.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stage {
+    /// Building every case's scene before anything runs: nothing was run or written.
+    Checking,
+    /// Writing the results from the rows: every row is kept, no results file half-written.
+    Writing,
+}
+
+impl std::fmt::Display for Stage {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::Checking => "the cases were being checked; nothing was run",
+            Self::Writing => "the results were being written; every row is kept (`tether sweep merge` writes them)",
+        })
+    }
+}
+
+/// `Err(Interrupted(stage))` once `runner` is cancelled (Ctrl-C, SIGTERM): what a stage checks
+/// between its steps — a value, a row, a chart — so that it stops within one of them.
+///
+/// # Errors
+/// [`SweepError::Interrupted`] at `stage`.
+pub fn unless_cancelled(runner: &Runner, stage: Stage) -> Result<(), SweepError> {
+    if runner.cancelled() { Err(SweepError::Interrupted(stage)) } else { Ok(()) }
 }

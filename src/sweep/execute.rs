@@ -4,10 +4,11 @@
 //! will run (a value the loader refuses stops everything here, named), writes the manifest,
 //! then runs its cases on the runner's threads, appending each row to its run file as the case
 //! finishes. A run of the whole sweep (not a shard) then writes the results; a shard leaves that
-//! to `tether sweep merge`.
+//! to `tether sweep merge`. A Ctrl-C or SIGTERM (the runner's cancel flag) stops each stage —
+//! checking, running, writing — within a case's step or a row, keeping every finished row.
 
 use super::case::{self, CaseError, Outcome, Recording, Status};
-use super::error::SweepError;
+use super::error::{Stage, SweepError};
 use super::plan::Plan;
 use super::results::{self, Written};
 use super::rows::Rows;
@@ -64,7 +65,7 @@ pub struct Report {
     pub process_cpu_seconds: f64,
     /// The results, when this run completed the sweep.
     pub written: Option<Written>,
-    /// Whether Ctrl-C stopped it.
+    /// Whether Ctrl-C or SIGTERM stopped it (while running or writing).
     pub interrupted: bool,
 }
 
@@ -103,7 +104,7 @@ pub fn run(
         )));
     }
     let to_run = || (0..plan.cases.len()).filter(|&c| in_slice(c) && !done[c]);
-    plan.check_factors()?;
+    plan.check_factors(&options.runner)?;
     plan.check_cases(&options.runner, to_run())?;
     let checking = start.elapsed();
     store.create(&manifest)?;
@@ -158,10 +159,18 @@ pub fn run(
             Ok(())
         },
     )?;
-    let interrupted = options.runner.cancelled();
+    let stopped_running = options.runner.cancelled();
     let running = start.elapsed() - checking;
     let process_cpu_seconds = process_cpu_seconds() - cpu_start;
-    let written = if options.shard.is_none() && !interrupted { complete(plan, &store, &options.runner)? } else { None };
+    let (written, stopped_writing) = if options.shard.is_none() && !stopped_running {
+        match complete(plan, &store, &options.runner) {
+            // Every row is kept: the report says it was interrupted, --resume writes them.
+            Err(SweepError::Interrupted(Stage::Writing)) => (None, true),
+            other => (other?, false),
+        }
+    } else {
+        (None, false)
+    };
     statuses.retain(|(_, n)| *n > 0);
     let writing = start.elapsed() - checking - running;
     Ok(Report {
@@ -176,7 +185,7 @@ pub fn run(
         case_cpu_seconds,
         process_cpu_seconds,
         written,
-        interrupted,
+        interrupted: stopped_running || stopped_writing,
     })
 }
 

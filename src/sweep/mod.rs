@@ -41,6 +41,6 @@ pub mod summary;
 pub mod table;
 pub mod value_path;
 
-pub use error::SweepError;
+pub use error::{Stage, SweepError};
 pub use execute::{Options, Progress, Report, merge, run};
 pub use plan::Plan;

@@ -7,7 +7,7 @@
 //! to `tether sweep merge`. A Ctrl-C or SIGTERM (the runner's cancel flag) stops each stage —
 //! checking, running, writing — within a case's step or a row, keeping every finished row.
 
-use super::case::{self, CaseError, Outcome, Recording, Status};
+use super::case::{self, CaseError, Ending, Outcome, Recording, Status};
 use super::error::{Stage, SweepError};
 use super::plan::Plan;
 use super::results::{self, Written};
@@ -149,12 +149,12 @@ pub fn run(
             };
             let row = Row::new(case, values, outcome, columns.metrics.len());
             run_file.append(&row)?;
-            case_cpu_seconds += row.cpu_seconds;
-            if let Some(count) = statuses.iter_mut().find(|(s, _)| *s == row.status) {
+            case_cpu_seconds += row.ending.cpu_seconds;
+            if let Some(count) = statuses.iter_mut().find(|(s, _)| *s == row.ending.status) {
                 count.1 += 1;
             }
             state.done += 1;
-            state.failed += usize::from(row.status != Status::Ok);
+            state.failed += usize::from(row.ending.status != Status::Ok);
             progress(state);
             Ok(())
         },
@@ -191,15 +191,9 @@ pub fn run(
 
 /// A row for a case whose scene the loader refused.
 fn refused(message: String) -> Outcome {
-    Outcome {
-        status: Status::Refused,
-        message,
-        end_time: 0.0,
-        steps: 0,
-        rejected_steps: 0,
-        cpu_seconds: 0.0,
-        metrics: None,
-    }
+    let ending =
+        Ending { status: Status::Refused, message, end_time: 0.0, steps: 0, rejected_steps: 0, cpu_seconds: 0.0 };
+    Outcome { ending, metrics: None }
 }
 
 /// Writes the results if every case has a row.

@@ -149,7 +149,7 @@ fn axes(plan: &Plan, rows: &Rows, runner: &Runner) -> Result<Axes, SweepError> {
                 other => names.iter().position(|n| *n == other.to_string()).unwrap_or(0) as f64,
             });
         }
-        ok.push(row.status == Status::Ok);
+        ok.push(row.ending.status == Status::Ok);
         Ok(())
     })?;
     Ok(Axes { positions, categories, ok })
@@ -160,12 +160,12 @@ fn values(rows: &Rows, series: &[Series], runner: &Runner) -> Result<Vec<Vec<Opt
     let mut values = vec![Vec::with_capacity(rows.len()); series.len()];
     rows.for_each(|row| {
         unless_cancelled(runner, Stage::Writing)?;
-        let ok = row.status == Status::Ok;
+        let ok = row.ending.status == Status::Ok;
         for (slot, s) in values.iter_mut().zip(series) {
             slot.push(match s.source {
                 Source::Metric(k) => row.metrics[k],
-                Source::Cpu => ok.then_some(row.cpu_seconds),
-                Source::Steps => ok.then_some((row.steps + row.rejected_steps) as f64),
+                Source::Cpu => ok.then_some(row.ending.cpu_seconds),
+                Source::Steps => ok.then_some((row.ending.steps + row.ending.rejected_steps) as f64),
             });
         }
         Ok(())

@@ -216,7 +216,9 @@ pub fn cycles(graph: &Graph) -> Vec<Vec<String>> {
     let mut found = Vec::new();
     while let Some(circle) = cycle(&rest) {
         let (from, to) = (&circle[circle.len() - 2], &circle[circle.len() - 1]);
-        rest.get_mut(from).map(|edges| edges.remove(to));
+        if let Some(edges) = rest.get_mut(from) {
+            edges.remove(to);
+        }
         found.push(circle);
     }
     found

@@ -78,12 +78,9 @@ impl Cases {
                     };
                     around.push((levels, at_base));
                 }
-                let changed = |(index, (levels, at_base)): (usize, &(&[Level], Level))| {
-                    levels.iter().filter(move |l| *l != at_base).map(move |l| (index, l))
-                };
-                let count = around.iter().enumerate().flat_map(changed).count().checked_add(1);
+                let count = off_base(&around).count().checked_add(1);
                 let count = within(count, max_cases, "one factor at a time")?;
-                let changes = around.iter().enumerate().flat_map(changed).map(|(i, l)| (i, l.clone())).collect();
+                let changes = off_base(&around).map(|(index, level)| (index, level.clone())).collect();
                 let base = around.into_iter().map(|(_, at_base)| at_base).collect();
                 Ok(Self { layout: Layout::OneAtATime { base, changes }, count })
             }
@@ -155,6 +152,14 @@ fn within(count: Option<usize>, max_cases: usize, what: &str) -> Result<usize, S
         )),
         None => Err(format!("{what} has more than {} cases: ask for fewer", usize::MAX)),
     }
+}
+
+/// Each factor's levels that differ from its base value, with the factor's index, from its
+/// `(levels, base value)` in `around`.
+fn off_base<'a>(around: &'a [(&'a [Level], Level)]) -> impl Iterator<Item = (usize, &'a Level)> + 'a {
+    around.iter().enumerate().flat_map(|(index, (levels, at_base))| {
+        levels.iter().filter(move |level| *level != at_base).map(move |level| (index, level))
+    })
 }
 
 /// A factor's levels, or why `design` cannot use it.

@@ -519,7 +519,7 @@ fn a_sweep_past_the_case_limit_is_refused_at_once_with_its_size() {
     // The new user's mistyped count: 100 million levels, 3.2 GB of them had they been made.
     assert_eq!(
         refused(&grid(r#"Factor(path: "dt", values: Linear(from: 1e-4, to: 1e-3, count: 100000000))"#), &[]),
-        "sweep.ron:2:28: factor `dt`: 100000000 levels, more than the limit of 1000000 cases a sweep may have: ask for fewer, or raise the limit with --max-cases 100000000"
+        "sweep.ron:2:22: factor `dt`: 100000000 levels, more than the limit of 1000000 cases a sweep may have: ask for fewer, or raise the limit with --max-cases 100000000"
     );
     let thousand = |path: &str| format!(r#"Factor(path: "{path}", values: Linear(from: 1.0, to: 2.0, count: 1000))"#);
     let cube = [thousand("couplings.spring.law.stiffness"), thousand("couplings.spring.damping"), thousand("dt")];
@@ -538,7 +538,7 @@ fn a_sweep_past_the_case_limit_is_refused_at_once_with_its_size() {
     let dir = nine_cases();
     assert_eq!(
         refused(&std::fs::read_to_string(dir.path().join("sweep.ron")).unwrap(), &["--max-cases", "8"]),
-        "sweep.ron:4:17: the grid (3 × 3 levels) has 9 cases, more than the limit of 8: ask for fewer, or raise the limit with --max-cases 9"
+        "sweep.ron:4:9: the grid (3 × 3 levels) has 9 cases, more than the limit of 8: ask for fewer, or raise the limit with --max-cases 9"
     );
     let printed = tether_ok(&["sweep", "sweep.ron", "-o", "out", "--max-cases", "9"], dir.path());
     assert!(printed.contains("ran 9 of 9 cases: 9 ok"), "{printed}");

@@ -7,6 +7,7 @@ mod common;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use tether::runner::Runner;
+use tether::sweep::design::DEFAULT_MAX_CASES;
 use tether::sweep::spec::Level;
 use tether::sweep::{self, Options, Plan};
 
@@ -88,7 +89,7 @@ fn cell(header: &[String], row: &[String], name: &str) -> f64 {
 }
 
 fn plan(dir: &Path) -> Plan {
-    Plan::load(&dir.join("sweep.ron")).unwrap_or_else(|e| panic!("{e}"))
+    Plan::load(&dir.join("sweep.ron"), DEFAULT_MAX_CASES).unwrap_or_else(|e| panic!("{e}"))
 }
 
 fn runner(jobs: usize) -> Runner {
@@ -386,10 +387,26 @@ fn a_killed_sweep_resumes_where_it_stopped() {
     assert_eq!(without_cpu(&here.join("out/results.csv")), without_cpu(&here.join("fresh/results.csv")));
 }
 
-/// Ctrl-C (SIGINT) stops the cases in flight and keeps the rows written: exit code 130, and
-/// `--resume` finishes the sweep.
+/// Sends `signal` to `child` and waits for it to end; returns its output and how long it took
+/// to end after the signal.
+fn signal_and_wait(child: std::process::Child, signal: libc::c_int) -> (Output, std::time::Duration) {
+    let sent = std::time::Instant::now();
+    // SAFETY: signalling the child this test started.
+    unsafe { libc::kill(child.id() as libc::pid_t, signal) };
+    let out = child.wait_with_output().unwrap();
+    (out, sent.elapsed())
+}
+
+/// Ctrl-C (SIGINT) and SIGTERM stop the cases in flight within a second (each checks between
+/// steps) and keep the rows written: exit code 130, and `--resume` finishes the sweep.
 #[test]
-fn ctrl_c_keeps_the_rows_written_and_resume_finishes() {
+fn ctrl_c_and_sigterm_keep_the_rows_written_and_resume_finishes() {
+    for signal in [libc::SIGINT, libc::SIGTERM] {
+        stop_a_run_with(signal);
+    }
+}
+
+fn stop_a_run_with(signal: libc::c_int) {
     let dir = twelve_long_cases();
     let here = dir.path();
     let mut child = Command::new(env!("CARGO_BIN_EXE_tether"))
@@ -400,10 +417,9 @@ fn ctrl_c_keeps_the_rows_written_and_resume_finishes() {
         .unwrap();
     let rows_file = here.join("out/runs/all.csv");
     wait_for_rows(&rows_file, 2, &mut child);
-    // SAFETY: signalling the child this test started.
-    unsafe { libc::kill(child.id() as libc::pid_t, libc::SIGINT) };
-    let out = child.wait_with_output().unwrap();
-    assert_eq!(out.status.code(), Some(130));
+    let (out, took) = signal_and_wait(child, signal);
+    assert_eq!(out.status.code(), Some(130), "signal {signal}");
+    assert!(took.as_secs_f64() < 1.0, "signal {signal}: the sweep took {took:?} to stop");
     assert!(
         String::from_utf8_lossy(&out.stdout)
             .contains("interrupted: the finished cases are kept; run again with --resume"),
@@ -416,6 +432,116 @@ fn ctrl_c_keeps_the_rows_written_and_resume_finishes() {
     assert!(resumed.contains(&format!("ran {} of 12 cases", 12 - kept.len())), "{resumed}");
     let (_, rows) = table(&here.join("out/results.csv"));
     assert_eq!(rows.len(), 12);
+}
+
+/// SIGTERM while a large sweep's cases are being checked (a million values of a factor, each
+/// built into the base scene: minutes of work) stops it within a second: exit code 130, the
+/// stage named, nothing run and nothing written.
+#[test]
+fn sigterm_stops_the_checking_of_a_large_sweep_within_a_second() {
+    use std::io::BufRead as _;
+    let spec = r#"Sweep(scene: "oscillator.ron", duration: 0.01, design: Grid, factors: [
+        Factor(path: "couplings.spring.law.stiffness", values: Linear(from: 100.0, to: 200.0, count: 1000000)),
+    ])"#;
+    let dir = folder(&oscillator(0.0, 0.01), spec);
+    let mut child = Command::new(env!("CARGO_BIN_EXE_tether"))
+        .args(["sweep", "sweep.ron", "-o", "out"])
+        .current_dir(dir.path())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    // The first line comes once the plan is made, as its checking starts.
+    let mut stderr = std::io::BufReader::new(child.stderr.take().unwrap());
+    let mut first = String::new();
+    stderr.read_line(&mut first).unwrap();
+    assert!(first.starts_with("sweep sweep: 1000000 cases (full grid)"), "{first}");
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    assert!(child.try_wait().unwrap().is_none(), "a million values are not checked in 0.3 s");
+    let (out, took) = signal_and_wait(child, libc::SIGTERM);
+    let mut rest = String::new();
+    std::io::Read::read_to_string(&mut stderr, &mut rest).unwrap();
+    assert_eq!(out.status.code(), Some(130), "{rest}");
+    assert!(took.as_secs_f64() < 1.0, "the checking took {took:?} to stop");
+    assert_eq!(rest.trim(), "interrupted while the cases were being checked; nothing was run");
+    assert!(!dir.path().join("out").exists(), "nothing written");
+}
+
+/// Every stage stops at a cancelled runner and keeps what it had: checking the factors' values
+/// and the cases runs nothing; a merge writes no results and leaves no draft behind, and the
+/// rows are untouched for the next merge.
+#[test]
+fn every_stage_stops_at_a_cancelled_runner() {
+    use std::sync::Arc;
+    use std::sync::atomic::AtomicBool;
+    use tether::sweep::{Stage, SweepError};
+    let dir = nine_cases();
+    let plan = plan(dir.path());
+    let cancelled = runner(2).with_cancel(Arc::new(AtomicBool::new(true)));
+    let stage = |result: Result<_, SweepError>| match result {
+        Err(SweepError::Interrupted(stage)) => stage,
+        other => panic!("{:?}", other.map(drop)),
+    };
+    assert_eq!(stage(plan.check_factors(&cancelled)), Stage::Checking);
+    assert_eq!(stage(plan.check_cases(&cancelled, 0..plan.cases.len())), Stage::Checking);
+    let here = dir.path();
+    tether_ok(&["sweep", "sweep.ron", "-o", "out", "--shard", "0/1"], here);
+    let rows = std::fs::read(here.join("out/runs/shard-0-of-1.csv")).unwrap();
+    assert_eq!(stage(sweep::merge(&here.join("out"), &cancelled).map(drop)), Stage::Writing);
+    let left: Vec<String> =
+        std::fs::read_dir(here.join("out")).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into()).collect();
+    assert!(
+        !left.iter().any(|name| name.starts_with("results") || name.ends_with(".tmp") || name == "summary.md"),
+        "{left:?}"
+    );
+    assert_eq!(std::fs::read(here.join("out/runs/shard-0-of-1.csv")).unwrap(), rows, "the rows are kept");
+    let merged = sweep::merge(&here.join("out"), &runner(2)).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(merged.statuses, "9 ok");
+    assert_eq!(table(&here.join("out/results.csv")).1.len(), 9);
+}
+
+/// A sweep past the case limit (1,000,000, or `--max-cases N`) is refused at once — counted,
+/// never made — in one line with its size and the flag that raises the limit; nothing written.
+#[test]
+fn a_sweep_past_the_case_limit_is_refused_at_once_with_its_size() {
+    let scene = oscillator(0.0, 0.01);
+    let refused = |spec: &str, extra: &[&str]| {
+        let dir = folder(&scene, spec);
+        let mut args = vec!["sweep", "sweep.ron", "-o", "out"];
+        args.extend(extra);
+        let start = std::time::Instant::now();
+        let message = tether_error(&args, dir.path());
+        let took = start.elapsed();
+        assert!(took.as_secs_f64() < 1.0, "refused after {took:?}: {message}");
+        assert!(!dir.path().join("out").exists(), "nothing written for: {message}");
+        message
+    };
+    let grid = |factors: &str| format!("Sweep(scene: \"oscillator.ron\", design: Grid, factors: [\n  {factors}\n])");
+    // The new user's mistyped count: 100 million levels, 3.2 GB of them had they been made.
+    assert_eq!(
+        refused(&grid(r#"Factor(path: "dt", values: Linear(from: 1e-4, to: 1e-3, count: 100000000))"#), &[]),
+        "sweep.ron:2:22: factor `dt`: 100000000 levels, more than the limit of 1000000 cases a sweep may have: ask for fewer, or raise the limit with --max-cases 100000000"
+    );
+    let thousand = |path: &str| format!(r#"Factor(path: "{path}", values: Linear(from: 1.0, to: 2.0, count: 1000))"#);
+    let cube = [thousand("couplings.spring.law.stiffness"), thousand("couplings.spring.damping"), thousand("dt")];
+    assert_eq!(
+        refused(&grid(&cube.join(",\n  ")), &[]),
+        "sweep.ron:1:32: the grid (1000 × 1000 × 1000 levels) has 1000000000 cases, more than the limit of 1000000: ask for fewer, or raise the limit with --max-cases 1000000000"
+    );
+    assert_eq!(
+        refused(
+            r#"Sweep(scene: "oscillator.ron", design: LatinHypercube(samples: 4000000000, seed: 1), factors: [Factor(path: "dt", values: Uniform(from: 1e-4, to: 1e-3))])"#,
+            &[]
+        ),
+        "sweep.ron:1:32: the Latin hypercube has 4000000000 cases, more than the limit of 1000000: ask for fewer, or raise the limit with --max-cases 4000000000"
+    );
+    // Nine cases: refused under a limit of 8, run under one of 9.
+    let dir = nine_cases();
+    assert_eq!(
+        refused(&std::fs::read_to_string(dir.path().join("sweep.ron")).unwrap(), &["--max-cases", "8"]),
+        "sweep.ron:4:9: the grid (3 × 3 levels) has 9 cases, more than the limit of 8: ask for fewer, or raise the limit with --max-cases 9"
+    );
+    let printed = tether_ok(&["sweep", "sweep.ron", "-o", "out", "--max-cases", "9"], dir.path());
+    assert!(printed.contains("ran 9 of 9 cases: 9 ok"), "{printed}");
 }
 
 /// A torn last line (a machine that went down mid-write) is cut off on resume, and its case
@@ -558,8 +684,8 @@ fn shipped_specs_load() {
         .collect();
     assert!(!specs.is_empty());
     for spec in specs {
-        let plan = Plan::load(&spec).unwrap_or_else(|e| panic!("{e}"));
-        plan.check_factors().unwrap_or_else(|e| panic!("{e}"));
+        let plan = Plan::load(&spec, DEFAULT_MAX_CASES).unwrap_or_else(|e| panic!("{e}"));
+        plan.check_factors(&runner(2)).unwrap_or_else(|e| panic!("{e}"));
         plan.check_cases(&runner(2), 0..plan.cases.len()).unwrap_or_else(|e| panic!("{e}"));
     }
 }

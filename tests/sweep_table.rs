@@ -26,7 +26,7 @@ fn sweep_with_failures() -> tempfile::TempDir {
         Factor(path: "dt", values: List([1e-3, 0.5])),
     ])"#;
     std::fs::write(dir.path().join("sweep.ron"), spec).unwrap();
-    let plan = Plan::load(&dir.path().join("sweep.ron")).unwrap();
+    let plan = Plan::load(&dir.path().join("sweep.ron"), tether::sweep::design::DEFAULT_MAX_CASES).unwrap();
     let options = Options {
         runner: Runner::new(std::num::NonZeroUsize::new(2).unwrap()),
         shard: None,

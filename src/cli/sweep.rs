@@ -1,7 +1,9 @@
 //! `tether sweep SPEC.ron -o DIR [--jobs N] [--shard I/N] [--resume] [--record]
-//! [--case-timeout S]` and `tether sweep merge DIR`: a scene run over a design of factor values,
-//! with a progress bar; the figures of the run (wall time, CPU time of the cases, how busy the
-//! threads were, the cost per case beyond its simulation) printed at the end.
+//! [--case-timeout S] [--max-cases N]` and `tether sweep merge DIR`: a scene run over a design of
+//! factor values, with a progress bar; the figures of the run (wall time, CPU time of the cases,
+//! how busy the threads were, the cost per case beyond its simulation) printed at the end.
+//! Ctrl-C or SIGTERM stops any stage — checking the cases, running them, writing the results —
+//! within a case's step or a row, keeping every finished row (exit code 130).
 
 use anyhow::{Context as _, bail};
 use clap::{Args, Subcommand};
@@ -12,8 +14,9 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 use tether::runner::Runner;
+use tether::sweep::design::DEFAULT_MAX_CASES;
 use tether::sweep::shard::{self, ShardArg};
-use tether::sweep::{self, Options, Plan, Progress, Report, SweepError};
+use tether::sweep::{self, Options, Plan, Progress, Report, Stage, SweepError};
 
 #[derive(Debug, Args)]
 #[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
@@ -46,6 +49,10 @@ pub struct SweepArgs {
     /// Wall-time limit of one case [s]; a case past it is a row with status timed_out.
     #[arg(long, default_value_t = 600.0)]
     case_timeout: f64,
+    /// The most cases the sweep may have (a spec past it is refused with its size before
+    /// anything is made).
+    #[arg(long, default_value_t = DEFAULT_MAX_CASES)]
+    max_cases: usize,
 }
 
 #[derive(Debug, Subcommand)]
@@ -68,9 +75,17 @@ pub enum Outcome {
 }
 
 pub fn run(args: &SweepArgs) -> anyhow::Result<Outcome> {
+    // Installed first: every stage from the planning on stops at the flag.
+    let cancel = Arc::new(AtomicBool::new(false));
+    let flag = Arc::clone(&cancel);
+    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
+        .context("installing the Ctrl-C / SIGTERM handler")?;
     if let Some(SweepCommand::Merge { dir, jobs }) = &args.command {
-        let runner = Runner::new(jobs.unwrap_or_else(tether::runner::all_cores));
-        let written = sweep::merge(dir, &runner)?;
+        let runner = Runner::new(jobs.unwrap_or_else(tether::runner::all_cores)).with_cancel(cancel);
+        let written = match sweep::merge(dir, &runner) {
+            Err(SweepError::Interrupted(stage)) => return Ok(interrupted(stage)),
+            other => other?,
+        };
         super::print(&format!(
             "merged {}: {}\nwritten: {}\n",
             dir.display(),
@@ -87,11 +102,7 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<Outcome> {
         bail!("--log-hz must be a positive number of frames per second, got {}", args.log_hz);
     }
     let shard = shard::resolve(args.shard, &|name| std::env::var(name).ok()).map_err(anyhow::Error::msg)?;
-    let plan = Plan::load(spec)?;
-    let cancel = Arc::new(AtomicBool::new(false));
-    let flag = Arc::clone(&cancel);
-    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
-        .context("installing the Ctrl-C / SIGTERM handler")?;
+    let plan = Plan::load(spec, args.max_cases)?;
     let runner = Runner::new(args.jobs.unwrap_or_else(tether::runner::all_cores))
         .with_case_timeout(Duration::from_secs_f64(args.case_timeout))
         .with_cancel(cancel);
@@ -119,14 +130,17 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<Outcome> {
     });
     bar.finish_and_clear();
     let report = match report {
-        Err(SweepError::Interrupted) => {
-            eprintln!("interrupted while the cases were being checked: nothing was run");
-            return Ok(Outcome::Interrupted);
-        }
+        Err(SweepError::Interrupted(stage)) => return Ok(interrupted(stage)),
         other => other?,
     };
     super::print(&describe(&report, output, jobs))?;
     Ok(if report.interrupted { Outcome::Interrupted } else { Outcome::Finished })
+}
+
+/// Says which stage Ctrl-C or SIGTERM stopped, and what it left.
+fn interrupted(stage: Stage) -> Outcome {
+    eprintln!("interrupted while {stage}");
+    Outcome::Interrupted
 }
 
 /// What the run did, in a few lines: the cases by status, the time, where the results are.

@@ -7,7 +7,7 @@
 
 use crate::sweep::case::Status;
 use crate::sweep::plan::Plan;
-use crate::sweep::results::Rows;
+use crate::sweep::rows::Rows;
 use crate::sweep::store::Store;
 use crate::sweep::table::{Columns, Row, compact};
 use rerun::external::egui;
@@ -148,7 +148,7 @@ impl SweepTable {
     fn arrange(&mut self) {
         let mut order: Vec<usize> = (0..self.rows.len()).collect();
         let rows = &self.rows;
-        let failed = |i: usize| rows[i].status != Status::Ok;
+        let failed = |i: usize| rows[i].ending.status != Status::Ok;
         order.sort_by(|&a, &b| {
             let first = if self.failures_first { failed(b).cmp(&failed(a)) } else { Ordering::Equal };
             first.then_with(|| match self.sort {
@@ -193,7 +193,7 @@ impl SweepTable {
     /// Draws the table; returns what it asks for.
     pub fn ui(&mut self, ui: &mut egui::Ui) -> Option<SweepAction> {
         let mut action = None;
-        let failed = self.rows.iter().filter(|r| r.status != Status::Ok).count();
+        let failed = self.rows.iter().filter(|r| r.ending.status != Status::Ok).count();
         ui.horizontal(|ui| {
             ui.strong(format!("Sweep {}", self.plan.name)).on_hover_text(self.dir.display().to_string());
             ui.label(format!(
@@ -300,20 +300,20 @@ fn cell(ui: &mut egui::Ui, row: &Row, column: Column) {
         Column::Factor(k) => {
             ui.label(row.values[k].number().map_or_else(|| row.values[k].to_string(), compact));
         }
-        Column::Status if row.status == Status::Ok => {
-            ui.label(row.status.name());
+        Column::Status if row.ending.status == Status::Ok => {
+            ui.label(row.ending.status.name());
         }
         Column::Status => {
-            ui.colored_label(ui.visuals().error_fg_color, row.status.name());
+            ui.colored_label(ui.visuals().error_fg_color, row.ending.status.name());
         }
-        Column::EndTime => number(ui, Some(row.end_time)),
+        Column::EndTime => number(ui, Some(row.ending.end_time)),
         Column::Metric(k) => number(ui, row.metrics[k]),
         Column::Steps => {
-            ui.label((row.steps + row.rejected_steps).to_string());
+            ui.label((row.ending.steps + row.ending.rejected_steps).to_string());
         }
-        Column::Cpu => number(ui, Some(row.cpu_seconds)),
+        Column::Cpu => number(ui, Some(row.ending.cpu_seconds)),
         Column::Message => {
-            ui.label(&row.message).on_hover_text(&row.message);
+            ui.label(&row.ending.message).on_hover_text(&row.ending.message);
         }
     }
 }
@@ -330,11 +330,11 @@ fn compare(a: &Row, b: &Row, column: Column) -> Ordering {
             (Some(x), Some(y)) => x.total_cmp(&y),
             _ => a.values[k].to_string().cmp(&b.values[k].to_string()),
         },
-        Column::Status => a.status.name().cmp(b.status.name()),
-        Column::EndTime => a.end_time.total_cmp(&b.end_time),
+        Column::Status => a.ending.status.name().cmp(b.ending.status.name()),
+        Column::EndTime => a.ending.end_time.total_cmp(&b.ending.end_time),
         Column::Metric(k) => numbers(a.metrics[k], b.metrics[k]),
-        Column::Steps => (a.steps + a.rejected_steps).cmp(&(b.steps + b.rejected_steps)),
-        Column::Cpu => a.cpu_seconds.total_cmp(&b.cpu_seconds),
-        Column::Message => a.message.cmp(&b.message),
+        Column::Steps => (a.ending.steps + a.ending.rejected_steps).cmp(&(b.ending.steps + b.ending.rejected_steps)),
+        Column::Cpu => a.ending.cpu_seconds.total_cmp(&b.ending.cpu_seconds),
+        Column::Message => a.ending.message.cmp(&b.ending.message),
     }
 }

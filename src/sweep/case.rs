@@ -49,9 +49,10 @@ impl Status {
     }
 }
 
-/// What one case gave.
+/// How a case ended and what it took: the part of its [`Outcome`] its results row
+/// ([`super::table::Row`]) holds as it is.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Outcome {
+pub struct Ending {
     pub status: Status,
     /// Why it failed (empty when it is ok).
     pub message: String,
@@ -60,8 +61,15 @@ pub struct Outcome {
     /// Integrator steps accepted, and rejected (`dopri45`).
     pub steps: u64,
     pub rejected_steps: u64,
-    /// CPU time of the run's thread from t = 0 to the end [s] (building the world excluded).
+    /// CPU time of the run's thread from t = 0 to the end [s] (building the world excluded): a
+    /// measurement, the one column that differs between two runs.
     pub cpu_seconds: f64,
+}
+
+/// What one case gave.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outcome {
+    pub ending: Ending,
     /// The metrics, in the sweep's order (only when it is ok: a failed run's are not its own).
     pub metrics: Option<Vec<f64>>,
 }
@@ -155,15 +163,15 @@ pub fn run(
             Err(message) => (Status::Diverged, message, world.time(), None),
         },
     };
-    Ok(Outcome {
+    let ending = Ending {
         status,
         message,
         end_time,
         steps: world.integrator_steps(),
         rejected_steps: world.rejected_steps(),
         cpu_seconds,
-        metrics,
-    })
+    };
+    Ok(Outcome { ending, metrics })
 }
 
 fn unwritable(recording: &Recording<'_>, error: &dyn std::fmt::Display) -> String {

@@ -12,12 +12,20 @@
 //!   `uᵢⱼ = (πⱼ(i) + rᵢⱼ)/N` with `πⱼ` a permutation of `0…N−1` and `rᵢⱼ ∈ [0, 1)`, both drawn
 //!   from the seed (ChaCha8, value-stable across platforms). A range takes `from + u (to − from)`
 //!   (in logarithm for a log range); a list of levels takes level `⌊u n⌋`.
+//!
+//! A design's size is counted before anything of it is made, and one past the sweep's limit
+//! ([`DEFAULT_MAX_CASES`] unless `--max-cases` says otherwise) is refused with its size: a
+//! mistyped count is one line, not gigabytes of plan.
 
 use super::factor::{Factor, Values};
 use super::spec::{Design, Level};
 use rand::seq::SliceRandom as _;
 use rand::{Rng as _, SeedableRng as _};
 use rand_chacha::ChaCha8Rng;
+
+/// The most cases a sweep may have unless `tether sweep --max-cases N` says otherwise: a million
+/// cases are planned in about a second and indexed in some 50 MB, and take days to run.
+pub const DEFAULT_MAX_CASES: usize = 1_000_000;
 
 /// The cases of a design.
 #[derive(Debug, Clone, PartialEq)]
@@ -37,12 +45,14 @@ enum Layout {
 }
 
 impl Cases {
-    /// The cases `design` makes of `factors`.
+    /// The cases `design` makes of `factors`, at most `max_cases` of them, counted before any
+    /// is made.
     ///
     /// # Errors
-    /// An empty design (no factor, no level, no sample), a design too large to count, a range
-    /// in a design that needs levels, or (one at a time) a factor with no base value.
-    pub fn new(design: &Design, factors: &[Factor]) -> Result<Self, String> {
+    /// An empty design (no factor, no level, no sample), more cases than `max_cases` (with
+    /// their number), a range in a design that needs levels, or (one at a time) a factor with
+    /// no base value.
+    pub fn new(design: &Design, factors: &[Factor], max_cases: usize) -> Result<Self, String> {
         if factors.is_empty() {
             return Err("the sweep has no factor: the design is empty".into());
         }
@@ -50,16 +60,15 @@ impl Cases {
             Design::Grid => {
                 let sizes =
                     factors.iter().map(|f| levels(f, "a grid").map(<[Level]>::len)).collect::<Result<Vec<_>, _>>()?;
-                let count = sizes
-                    .iter()
-                    .try_fold(1_usize, |n, &size| n.checked_mul(size))
-                    .ok_or("the grid has more cases than can be counted")?;
+                let count = sizes.iter().try_fold(1_usize, |n, &size| n.checked_mul(size));
+                let shown: Vec<String> = sizes.iter().map(ToString::to_string).collect();
+                let count = within(count, max_cases, &format!("the grid ({} levels)", shown.join(" × ")))?;
                 Ok(Self { layout: Layout::Grid { sizes }, count })
             }
             Design::OneAtATime => {
-                let mut base = Vec::with_capacity(factors.len());
-                let mut changes = Vec::new();
-                for (index, factor) in factors.iter().enumerate() {
+                // Per factor: its levels and its value in the base scene.
+                let mut around: Vec<(&[Level], Level)> = Vec::with_capacity(factors.len());
+                for factor in factors {
                     let levels = levels(factor, "one at a time")?;
                     let Some(at_base) = factor.base.clone() else {
                         return Err(format!(
@@ -67,17 +76,19 @@ impl Cases {
                             factor.name
                         ));
                     };
-                    changes.extend(levels.iter().filter(|l| **l != at_base).map(|l| (index, l.clone())));
-                    base.push(at_base);
+                    around.push((levels, at_base));
                 }
-                let count = 1 + changes.len();
+                let count = off_base(&around).count().checked_add(1);
+                let count = within(count, max_cases, "one factor at a time")?;
+                let changes = off_base(&around).map(|(index, level)| (index, level.clone())).collect();
+                let base = around.into_iter().map(|(_, at_base)| at_base).collect();
                 Ok(Self { layout: Layout::OneAtATime { base, changes }, count })
             }
             Design::LatinHypercube { samples, seed } => {
                 if samples == 0 {
                     return Err("a Latin hypercube of 0 samples is empty".into());
                 }
-                let count = samples as usize;
+                let count = within(usize::try_from(samples).ok(), max_cases, "the Latin hypercube")?;
                 let mut random = ChaCha8Rng::seed_from_u64(seed);
                 let places = factors
                     .iter()
@@ -129,6 +140,26 @@ impl Cases {
             }
         }
     }
+}
+
+/// `count` (`None`: past `usize`) if it is at most `max_cases`, else why not: `what`, its size,
+/// and how to raise the limit.
+fn within(count: Option<usize>, max_cases: usize, what: &str) -> Result<usize, String> {
+    match count {
+        Some(count) if count <= max_cases => Ok(count),
+        Some(count) => Err(format!(
+            "{what} has {count} cases, more than the limit of {max_cases}: ask for fewer, or raise the limit with --max-cases {count}"
+        )),
+        None => Err(format!("{what} has more than {} cases: ask for fewer", usize::MAX)),
+    }
+}
+
+/// Each factor's levels that differ from its base value, with the factor's index, from its
+/// `(levels, base value)` in `around`.
+fn off_base<'a>(around: &'a [(&'a [Level], Level)]) -> impl Iterator<Item = (usize, &'a Level)> + 'a {
+    around.iter().enumerate().flat_map(|(index, (levels, at_base))| {
+        levels.iter().filter(move |level| *level != at_base).map(move |level| (index, level))
+    })
 }
 
 /// A factor's levels, or why `design` cannot use it.

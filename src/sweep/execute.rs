@@ -4,12 +4,14 @@
 //! will run (a value the loader refuses stops everything here, named), writes the manifest,
 //! then runs its cases on the runner's threads, appending each row to its run file as the case
 //! finishes. A run of the whole sweep (not a shard) then writes the results; a shard leaves that
-//! to `tether sweep merge`.
+//! to `tether sweep merge`. A Ctrl-C or SIGTERM (the runner's cancel flag) stops each stage —
+//! checking, running, writing — within a case's step or a row, keeping every finished row.
 
-use super::SweepError;
-use super::case::{self, CaseError, Outcome, Recording, Status};
+use super::case::{self, CaseError, Ending, Outcome, Recording, Status};
+use super::error::{Stage, SweepError};
 use super::plan::Plan;
-use super::results::{self, Rows, Written};
+use super::results::{self, Written};
+use super::rows::Rows;
 use super::shard::Shard;
 use super::store::{self, Manifest, Store};
 use super::table::Row;
@@ -63,7 +65,7 @@ pub struct Report {
     pub process_cpu_seconds: f64,
     /// The results, when this run completed the sweep.
     pub written: Option<Written>,
-    /// Whether Ctrl-C stopped it.
+    /// Whether Ctrl-C or SIGTERM stopped it (while running or writing).
     pub interrupted: bool,
 }
 
@@ -102,7 +104,7 @@ pub fn run(
         )));
     }
     let to_run = || (0..plan.cases.len()).filter(|&c| in_slice(c) && !done[c]);
-    plan.check_factors()?;
+    plan.check_factors(&options.runner)?;
     plan.check_cases(&options.runner, to_run())?;
     let checking = start.elapsed();
     store.create(&manifest)?;
@@ -147,20 +149,28 @@ pub fn run(
             };
             let row = Row::new(case, values, outcome, columns.metrics.len());
             run_file.append(&row)?;
-            case_cpu_seconds += row.cpu_seconds;
-            if let Some(count) = statuses.iter_mut().find(|(s, _)| *s == row.status) {
+            case_cpu_seconds += row.ending.cpu_seconds;
+            if let Some(count) = statuses.iter_mut().find(|(s, _)| *s == row.ending.status) {
                 count.1 += 1;
             }
             state.done += 1;
-            state.failed += usize::from(row.status != Status::Ok);
+            state.failed += usize::from(row.ending.status != Status::Ok);
             progress(state);
             Ok(())
         },
     )?;
-    let interrupted = options.runner.cancelled();
+    let stopped_running = options.runner.cancelled();
     let running = start.elapsed() - checking;
     let process_cpu_seconds = process_cpu_seconds() - cpu_start;
-    let written = if options.shard.is_none() && !interrupted { complete(plan, &store, &options.runner)? } else { None };
+    let (written, stopped_writing) = if options.shard.is_none() && !stopped_running {
+        match complete(plan, &store, &options.runner) {
+            // Every row is kept: the report says it was interrupted, --resume writes them.
+            Err(SweepError::Interrupted(Stage::Writing)) => (None, true),
+            other => (other?, false),
+        }
+    } else {
+        (None, false)
+    };
     statuses.retain(|(_, n)| *n > 0);
     let writing = start.elapsed() - checking - running;
     Ok(Report {
@@ -175,21 +185,15 @@ pub fn run(
         case_cpu_seconds,
         process_cpu_seconds,
         written,
-        interrupted,
+        interrupted: stopped_running || stopped_writing,
     })
 }
 
 /// A row for a case whose scene the loader refused.
 fn refused(message: String) -> Outcome {
-    Outcome {
-        status: Status::Refused,
-        message,
-        end_time: 0.0,
-        steps: 0,
-        rejected_steps: 0,
-        cpu_seconds: 0.0,
-        metrics: None,
-    }
+    let ending =
+        Ending { status: Status::Refused, message, end_time: 0.0, steps: 0, rejected_steps: 0, cpu_seconds: 0.0 };
+    Outcome { ending, metrics: None }
 }
 
 /// Writes the results if every case has a row.

@@ -29,11 +29,13 @@ pub enum Values {
 }
 
 impl Factor {
-    /// The factor `def` of the spec `spec`, its paths found in the base scene's data `tree`.
+    /// The factor `def` of the spec `spec`, its paths found in the base scene's data `tree`; it
+    /// may have at most `max_cases` levels (the sweep's limit), counted before they are made.
     ///
     /// # Errors
-    /// A path that leads nowhere, or values that are not values, placed at the factor's path.
-    pub fn new(def: &FactorDef, tree: &Value, spec: &SpecText<'_>) -> Result<Self, SpecError> {
+    /// A path that leads nowhere, values that are not values or more levels than `max_cases`,
+    /// placed at the factor's path.
+    pub fn new(def: &FactorDef, tree: &Value, spec: &SpecText<'_>, max_cases: usize) -> Result<Self, SpecError> {
         let paths = def.path.paths();
         let first = paths.first().map_or("", String::as_str);
         let fail = |message: String| spec.error_at(first, "factors", message);
@@ -51,7 +53,7 @@ impl Factor {
             }
             found.push(value_path);
         }
-        let values = values(&def.values)
+        let values = values(&def.values, max_cases)
             .map_err(|message| spec.error_after(first, "values", format!("factor `{name}`: {message}")))?;
         let bases: Vec<Option<Level>> = found.iter().map(|p| p.get(tree).and_then(level_of)).collect();
         let base = bases.first().cloned().flatten().filter(|b| bases.iter().all(|other| other.as_ref() == Some(b)));
@@ -126,9 +128,21 @@ fn level_of(value: &Value) -> Option<Level> {
     }
 }
 
-/// The values `def` gives, checked: at least one, finite, of one kind; a logarithmic ladder or
-/// range of positive numbers.
-fn values(def: &ValuesDef) -> Result<Values, String> {
+/// The values `def` gives, checked: at least one, at most `max_cases` (no design runs more
+/// levels of a factor than the sweep may have cases: the count is checked before a ladder is
+/// made), finite, of one kind; a logarithmic ladder or range of positive numbers.
+fn values(def: &ValuesDef, max_cases: usize) -> Result<Values, String> {
+    let count = match def {
+        ValuesDef::List(levels) => levels.len(),
+        ValuesDef::Linear { count, .. } | ValuesDef::Log { count, .. } => usize::try_from(*count).unwrap_or(usize::MAX),
+        // A range has no levels: the Latin hypercube's samples are its size.
+        ValuesDef::Uniform { .. } | ValuesDef::LogUniform { .. } => 0,
+    };
+    if count > max_cases {
+        return Err(format!(
+            "{count} levels, more than the limit of {max_cases} cases a sweep may have: ask for fewer, or raise the limit with --max-cases {count}"
+        ));
+    }
     let finite = |name: &str, x: f64| {
         if x.is_finite() { Ok(x) } else { Err(format!("`{name}` must be a finite number, got {x}")) }
     };
@@ -195,7 +209,7 @@ mod tests {
     use super::*;
 
     fn numbers(def: ValuesDef) -> Vec<f64> {
-        match values(&def).unwrap() {
+        match values(&def, 100).unwrap() {
             Values::Levels(levels) => levels.iter().map(|l| l.number().unwrap()).collect(),
             range => panic!("{range:?}"),
         }
@@ -214,7 +228,7 @@ mod tests {
 
     #[test]
     fn refuses_values_that_are_not_values() {
-        let error = |def: ValuesDef| values(&def).unwrap_err();
+        let error = |def: ValuesDef| values(&def, 100).unwrap_err();
         assert_eq!(error(ValuesDef::List(vec![])), "the list of values is empty");
         assert_eq!(error(ValuesDef::Linear { from: 0.0, to: 1.0, count: 0 }), "`count` must be at least 1");
         assert_eq!(
@@ -230,5 +244,10 @@ mod tests {
             error(ValuesDef::List(vec![Level::Number(1.0), Level::Text("rk4".into())])),
             "the values mix kinds (1 and rk4): give numbers, names or flags, not several"
         );
+        assert_eq!(
+            error(ValuesDef::Linear { from: 0.0, to: 1.0, count: 101 }),
+            "101 levels, more than the limit of 100 cases a sweep may have: ask for fewer, or raise the limit with --max-cases 101"
+        );
+        assert_eq!(numbers(ValuesDef::Linear { from: 0.0, to: 99.0, count: 100 }).len(), 100, "at the limit");
     }
 }

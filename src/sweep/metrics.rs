@@ -20,7 +20,6 @@
 //! A declared metric is a quantity reduced over the run (from its `after` time on):
 //! `Metric(name: "heave", of: Position("buoy", Z), take: MaxAbs, after: 5.0)`.
 
-use super::spec::{SpecError, SpecText};
 use serde::Deserialize;
 use tether_physics::body::{BodyState, Support};
 use tether_physics::math::{Rotation, Vec3};
@@ -102,6 +101,13 @@ pub enum Reduction {
     Range,
 }
 
+/// A declared metric the scene cannot measure: its name, and why.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct RefusedMetric {
+    pub name: String,
+    pub message: String,
+}
+
 /// A metric, its bodies and couplings found in the scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Metric {
@@ -163,13 +169,8 @@ impl Metric {
     ///
     /// # Errors
     /// A declared metric naming a body or coupling the scene does not have, or an invalid
-    /// window, placed at the metric's name.
-    pub fn all(
-        world: &World,
-        standard: bool,
-        declared: &[MetricDef],
-        spec: &SpecText<'_>,
-    ) -> Result<Vec<Self>, SpecError> {
+    /// window.
+    pub fn all(world: &World, standard: bool, declared: &[MetricDef]) -> Result<Vec<Self>, RefusedMetric> {
         let mut metrics = Vec::new();
         if standard {
             for (index, coupling) in world.couplings().iter().enumerate() {
@@ -204,8 +205,7 @@ impl Metric {
         metrics.push(Self { name: "settle_time_s".into(), unit: "s", measure: Measure::SettleTime });
         metrics.push(Self { name: "energy_error".into(), unit: "–", measure: Measure::EnergyError });
         for def in declared {
-            let fail =
-                |message: String| spec.error_at(&def.name, "metrics", format!("metric \"{}\": {message}", def.name));
+            let fail = |message: String| RefusedMetric { name: def.name.clone(), message };
             let probe = probe(world, &def.of).map_err(fail)?;
             if !(def.after.is_finite() && def.after >= 0.0) {
                 return Err(fail(format!("`after` must be a time ≥ 0 s, got {}", def.after)));

@@ -14,8 +14,9 @@
 //! - [`execute`]: a run into the output directory ([`store`]: manifest, run files, resume),
 //!   on the engine of many cases shared with `tether study` ([`crate::runner`]), in
 //!   [`shard`]s on a cluster, and the merge of the shards;
-//! - [`results`]: the rows in case order written as [`table`] (CSV), [`parquet`],
-//!   [`summary`] (Markdown) and [`plots`] (PNG).
+//! - [`rows`]: the rows gathered from the run files in case order; [`results`]: them written as
+//!   [`table`] (CSV), [`parquet`], [`summary`] (Markdown) and [`plots`] (PNG);
+//! - [`error`]: why a sweep cannot run or its results cannot be written.
 //!
 //! Re-running a spec gives the same rows bit for bit, serial or parallel, sharded or not: a
 //! case's numbers depend on its values alone (the one exception is `cpu_s`, a measurement). On
@@ -24,6 +25,7 @@
 
 pub mod case;
 pub mod design;
+pub mod error;
 pub mod execute;
 pub mod factor;
 pub mod metrics;
@@ -31,6 +33,7 @@ pub mod parquet;
 pub mod plan;
 pub mod plots;
 pub mod results;
+pub mod rows;
 pub mod shard;
 pub mod spec;
 pub mod store;
@@ -38,36 +41,6 @@ pub mod summary;
 pub mod table;
 pub mod value_path;
 
+pub use error::{Stage, SweepError};
 pub use execute::{Options, Progress, Report, merge, run};
 pub use plan::Plan;
-use spec::SpecError;
-use tether_scene::SceneError;
-
-/// Why a sweep cannot run or its results cannot be written: one line for the user.
-#[derive(Debug, thiserror::Error)]
-pub enum SweepError {
-    /// The spec is wrong: `spec.ron:line:col: message`, naming the factor or metric.
-    #[error(transparent)]
-    Spec(#[from] SpecError),
-    /// The base scene is wrong: `scene.ron:line:col: message`.
-    #[error(transparent)]
-    Scene(#[from] SceneError),
-    /// The scene loader refuses a case's combination of values.
-    #[error("case {case} ({values}): {message}")]
-    Case { case: usize, values: String, message: String },
-    /// The output directory cannot take the sweep, or holds something that is not a sweep's.
-    #[error("{0}")]
-    Directory(String),
-    /// A file that cannot be read or written.
-    #[error("{path}: {message}")]
-    Io { path: String, message: String },
-    /// A merge of a sweep whose cases do not all have a row.
-    #[error("{0}")]
-    Incomplete(String),
-    /// The run was stopped (Ctrl-C) before any case ran.
-    #[error("interrupted while the cases were being checked; nothing was run")]
-    Interrupted,
-    /// A table or chart that cannot be written.
-    #[error("{path}: {message}")]
-    Output { path: String, message: String },
-}

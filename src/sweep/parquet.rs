@@ -5,7 +5,7 @@
 //! metric's unit in its field's metadata (`unit`). Rows go out in batches of [`BATCH`], so the
 //! table is never whole in memory.
 
-use super::SweepError;
+use super::error::SweepError;
 use super::spec::{Level, LevelKind};
 use super::table::{CASE_COLUMN, Columns, OUTCOME_COLUMNS, Row};
 use arrow_array::builder::{BooleanBuilder, Float64Builder, StringBuilder};
@@ -136,15 +136,15 @@ fn arrays(columns: &Columns, rows: &[Row]) -> Vec<ArrayRef> {
     let mut status = StringBuilder::new();
     let mut message = StringBuilder::new();
     for row in rows {
-        status.append_value(row.status.name());
-        message.append_option((!row.message.is_empty()).then_some(&row.message));
+        status.append_value(row.ending.status.name());
+        message.append_option((!row.ending.message.is_empty()).then_some(&row.ending.message));
     }
     arrays.push(Arc::new(status.finish()));
     arrays.push(Arc::new(message.finish()));
-    arrays.push(real(&|r| Some(r.end_time)));
-    arrays.push(whole(&|r| r.steps));
-    arrays.push(whole(&|r| r.rejected_steps));
-    arrays.push(real(&|r| Some(r.cpu_seconds)));
+    arrays.push(real(&|r| Some(r.ending.end_time)));
+    arrays.push(whole(&|r| r.ending.steps));
+    arrays.push(whole(&|r| r.ending.rejected_steps));
+    arrays.push(real(&|r| Some(r.ending.cpu_seconds)));
     for k in 0..columns.metrics.len() {
         arrays.push(real(&|r| r.metrics[k]));
     }

@@ -6,12 +6,12 @@
 //! and messages (placed in the base scene's text). [`Plan::check_factors`] builds the base with
 //! each factor's values one at a time, so that a value the loader refuses is named with its
 //! factor; [`Plan::check_cases`] builds every case to run, so that a combination it refuses is
-//! named with its case — both before anything runs.
+//! named with its case — both before anything runs, each stopping at a Ctrl-C or SIGTERM.
 
-use super::SweepError;
 use super::design::Cases;
+use super::error::{Stage, SweepError, unless_cancelled};
 use super::factor::{Factor, Values};
-use super::metrics::{Metric, MetricDef};
+use super::metrics::{Metric, MetricDef, RefusedMetric};
 use super::spec::{Design, Level, SpecText};
 use super::table::{CASE_COLUMN, Columns, FactorColumn, MetricColumn, OUTCOME_COLUMNS};
 use crate::runner::Runner;
@@ -40,20 +40,24 @@ pub struct Plan {
 }
 
 impl Plan {
-    /// Reads the spec at `spec_path` and its base scene.
+    /// Reads the spec at `spec_path` and its base scene; the sweep may have at most
+    /// `max_cases` cases ([`super::design::DEFAULT_MAX_CASES`] unless the user says otherwise),
+    /// counted before any is made.
     ///
     /// # Errors
-    /// A spec or scene that cannot be read or is wrong, placed `path:line:col`.
-    pub fn load(spec_path: &Path) -> Result<Self, SweepError> {
+    /// A spec or scene that cannot be read or is wrong, or a sweep of more cases than
+    /// `max_cases` (with its size), placed `path:line:col`.
+    pub fn load(spec_path: &Path, max_cases: usize) -> Result<Self, SweepError> {
         let spec_text = std::fs::read_to_string(spec_path).map_err(|e| SweepError::Io {
             path: spec_path.display().to_string(),
             message: format!("cannot read the sweep spec: {e}"),
         })?;
-        Self::from_text(spec_path, spec_text, None)
+        Self::read(spec_path, spec_text, None, max_cases)
     }
 
-    /// The plan of the spec `spec_text` (read from `spec_path`), its base scene read from the
-    /// file the spec names, or given as `scene` (path and text: a sweep directory's copy).
+    /// The plan of a sweep directory's copy of its spec `spec_text` (read from `spec_path`) and
+    /// of its base scene `scene` (path and text), or of the scene the spec names: no limit on
+    /// its size, which was accepted when it ran.
     ///
     /// # Errors
     /// As [`Plan::load`].
@@ -61,6 +65,15 @@ impl Plan {
         spec_path: &Path,
         spec_text: String,
         scene: Option<(PathBuf, String)>,
+    ) -> Result<Self, SweepError> {
+        Self::read(spec_path, spec_text, scene, usize::MAX)
+    }
+
+    fn read(
+        spec_path: &Path,
+        spec_text: String,
+        scene: Option<(PathBuf, String)>,
+        max_cases: usize,
     ) -> Result<Self, SweepError> {
         let spec = SpecText { path: spec_path, text: &spec_text };
         let file = spec.parse()?;
@@ -89,14 +102,18 @@ impl Plan {
         if name.is_empty() || !name.chars().all(|c| c.is_alphanumeric() || "-_".contains(c)) {
             return Err(spec.error_at(&name, "name", format!("the sweep's name \"{name}\" must be letters, digits, - and _ (it names the recordings' application)")).into());
         }
-        let factors = file.factors.iter().map(|def| Factor::new(def, &base, &spec)).collect::<Result<Vec<_>, _>>()?;
-        let cases = Cases::new(&file.design, &factors).map_err(|message| spec.error_at("", "design", message))?;
+        let factors =
+            file.factors.iter().map(|def| Factor::new(def, &base, &spec, max_cases)).collect::<Result<Vec<_>, _>>()?;
+        let cases =
+            Cases::new(&file.design, &factors, max_cases).map_err(|message| spec.error_at("", "design", message))?;
         if !(file.settle_band > 0.0 && file.settle_band < 1.0) {
             return Err(spec
                 .error_at("", "settle_band", format!("settle_band must be > 0 and < 1, got {}", file.settle_band))
                 .into());
         }
-        let metrics = Metric::all(&scene.world, file.standard_metrics, &file.metrics, &spec)?;
+        let metrics = Metric::all(&scene.world, file.standard_metrics, &file.metrics).map_err(
+            |RefusedMetric { name, message }| spec.error_at(&name, "metrics", format!("metric \"{name}\": {message}")),
+        )?;
         check_names(&factors, &metrics, &file.metrics, &spec)?;
         let names = names(&scene);
         Ok(Self {
@@ -147,11 +164,13 @@ impl Plan {
         Ok(scene)
     }
 
-    /// Builds the base scene with each value of each factor alone (a range: its two ends).
+    /// Builds the base scene with each value of each factor alone (a range: its two ends),
+    /// until `runner` is cancelled.
     ///
     /// # Errors
-    /// The first value the loader refuses, placed at its factor in the spec.
-    pub fn check_factors(&self) -> Result<(), SweepError> {
+    /// The first value the loader refuses, placed at its factor in the spec; the run cancelled
+    /// (checked before each value).
+    pub fn check_factors(&self, runner: &Runner) -> Result<(), SweepError> {
         let spec = SpecText { path: &self.spec_path, text: &self.spec_text };
         for factor in &self.factors {
             let levels = match &factor.values {
@@ -159,6 +178,7 @@ impl Plan {
                 Values::Range { from, to, .. } => vec![Level::Number(*from), Level::Number(*to)],
             };
             for level in levels {
+                unless_cancelled(runner, Stage::Checking)?;
                 // The other factors as the base scene has them.
                 let mut tree = self.base.clone();
                 factor.set(&mut tree, &level);
@@ -191,7 +211,7 @@ impl Plan {
                 Some(message) => Err(SweepError::Case { case, values: self.describe(case), message }),
             },
         )?;
-        if runner.cancelled() { Err(SweepError::Interrupted) } else { Ok(()) }
+        unless_cancelled(runner, Stage::Checking)
     }
 
     /// `couplings.mooring1.stiffness = 5000000, integrator = rk4`.

@@ -11,11 +11,11 @@
 //! Memory: the factors' values of every case, and the values of as many metrics at a time as
 //! fit in [`VALUES_PER_PASS`] numbers (the rows are read again for each such pass).
 
-use super::SweepError;
 use super::case::Status;
+use super::error::{Stage, SweepError, unless_cancelled};
 use super::factor::Values;
 use super::plan::Plan;
-use super::results::Rows;
+use super::rows::Rows;
 use super::spec::{Design, Level, LevelKind};
 use super::table::{Columns, compact};
 use crate::chart_style::{self, COLOURS, register_font_family};
@@ -61,13 +61,13 @@ struct Axes {
 /// Draws every chart into `folder`; returns their file names, sorted.
 ///
 /// # Errors
-/// A chart that cannot be drawn or written.
+/// A chart that cannot be drawn or written; `runner` cancelled (checked at each row and chart).
 pub fn draw(plan: &Plan, rows: &Rows, folder: &Path, runner: &Runner) -> Result<Vec<String>, SweepError> {
     let fail = |message: String| SweepError::Output { path: folder.display().to_string(), message };
     register_font_family().map_err(fail)?;
     std::fs::create_dir_all(folder).map_err(|e| super::store::io(folder, "cannot create", &e))?;
     let columns = plan.columns();
-    let axes = axes(plan, rows)?;
+    let axes = axes(plan, rows, runner)?;
     let mut series: Vec<Series> = columns
         .metrics
         .iter()
@@ -80,7 +80,7 @@ pub fn draw(plan: &Plan, rows: &Rows, folder: &Path, runner: &Runner) -> Result<
     let per_pass = (VALUES_PER_PASS / axes.ok.len().max(1)).max(1);
     let mut written = Vec::new();
     for chunk in series.chunks(per_pass) {
-        let values = values(rows, chunk)?;
+        let values = values(rows, chunk, runner)?;
         let charts: Vec<(usize, usize)> =
             (0..chunk.len()).flat_map(|s| (0..plan.factors.len()).map(move |f| (s, f))).collect();
         runner.run(
@@ -98,6 +98,8 @@ pub fn draw(plan: &Plan, rows: &Rows, folder: &Path, runner: &Runner) -> Result<
                 Ok::<(), SweepError>(())
             },
         )?;
+        // A cancelled runner starts no further chart and returns.
+        unless_cancelled(runner, Stage::Writing)?;
     }
     written.sort();
     Ok(written)
@@ -126,7 +128,7 @@ fn file_names(series: &[Series], columns: &Columns) -> BTreeMap<(String, usize),
 }
 
 /// Every case's place on each factor's axis.
-fn axes(plan: &Plan, rows: &Rows) -> Result<Axes, SweepError> {
+fn axes(plan: &Plan, rows: &Rows, runner: &Runner) -> Result<Axes, SweepError> {
     let categories: Vec<Vec<String>> = plan
         .factors
         .iter()
@@ -140,28 +142,30 @@ fn axes(plan: &Plan, rows: &Rows) -> Result<Axes, SweepError> {
     let mut positions = vec![Vec::with_capacity(rows.len()); plan.factors.len()];
     let mut ok = Vec::with_capacity(rows.len());
     rows.for_each(|row| {
+        unless_cancelled(runner, Stage::Writing)?;
         for ((slot, value), names) in positions.iter_mut().zip(&row.values).zip(&categories) {
             slot.push(match value {
                 Level::Number(x) => *x,
                 other => names.iter().position(|n| *n == other.to_string()).unwrap_or(0) as f64,
             });
         }
-        ok.push(row.status == Status::Ok);
+        ok.push(row.ending.status == Status::Ok);
         Ok(())
     })?;
     Ok(Axes { positions, categories, ok })
 }
 
 /// The values of `series` for every case (`None`: the case has none).
-fn values(rows: &Rows, series: &[Series]) -> Result<Vec<Vec<Option<f64>>>, SweepError> {
+fn values(rows: &Rows, series: &[Series], runner: &Runner) -> Result<Vec<Vec<Option<f64>>>, SweepError> {
     let mut values = vec![Vec::with_capacity(rows.len()); series.len()];
     rows.for_each(|row| {
-        let ok = row.status == Status::Ok;
+        unless_cancelled(runner, Stage::Writing)?;
+        let ok = row.ending.status == Status::Ok;
         for (slot, s) in values.iter_mut().zip(series) {
             slot.push(match s.source {
                 Source::Metric(k) => row.metrics[k],
-                Source::Cpu => ok.then_some(row.cpu_seconds),
-                Source::Steps => ok.then_some((row.steps + row.rejected_steps) as f64),
+                Source::Cpu => ok.then_some(row.ending.cpu_seconds),
+                Source::Steps => ok.then_some((row.ending.steps + row.ending.rejected_steps) as f64),
             });
         }
         Ok(())

@@ -128,7 +128,8 @@ pub enum ValuesDef {
     LogUniform { from: f64, to: f64 },
 }
 
-/// One value of a factor, as the spec writes it and the results table shows it.
+/// One value of a factor, as the spec writes it and the results table shows it (its `Display`,
+/// with the table's numbers, is in [`super::table`]).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
 pub enum Level {
@@ -152,17 +153,6 @@ impl Level {
         match self {
             Self::Number(x) => Some(*x),
             _ => None,
-        }
-    }
-}
-
-impl std::fmt::Display for Level {
-    /// Numbers in their shortest form that reads back to the same `f64`.
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::Number(x) => f.write_str(&super::table::number(*x)),
-            Self::Flag(flag) => write!(f, "{flag}"),
-            Self::Text(text) => f.write_str(text),
         }
     }
 }

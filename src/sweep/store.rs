@@ -15,7 +15,7 @@
 //! written by whichever comes first, atomically (a temporary file renamed), and the others
 //! check that it describes their sweep. Nothing of another sweep is ever overwritten.
 
-use super::SweepError;
+use super::error::SweepError;
 use super::table::{Columns, Row};
 use serde::{Deserialize, Serialize};
 use std::fs::{self, File, OpenOptions};

@@ -45,12 +45,12 @@ impl Summary {
     /// Takes one row (rows come in case order, so ties go to the lowest case).
     pub fn add(&mut self, row: &Row) {
         self.cases += 1;
-        self.cpu_seconds += row.cpu_seconds;
-        if let Some(slot) = Status::ALL.iter().position(|s| *s == row.status) {
+        self.cpu_seconds += row.ending.cpu_seconds;
+        if let Some(slot) = Status::ALL.iter().position(|s| *s == row.ending.status) {
             self.statuses[slot] += 1;
         }
-        if row.status != Status::Ok && self.failures.len() < LISTED_FAILURES {
-            self.failures.push((row.case, row.status, row.message.clone()));
+        if row.ending.status != Status::Ok && self.failures.len() < LISTED_FAILURES {
+            self.failures.push((row.case, row.ending.status, row.ending.message.clone()));
         }
         for (extremes, value) in self.extremes.iter_mut().zip(&row.metrics) {
             let Some(x) = *value else { continue };

@@ -7,7 +7,7 @@
 //! written, bit for bit. A metric a failed case has no value for is an empty cell (a null in
 //! Parquet); NaN is never written.
 
-use super::case::{Outcome, Status};
+use super::case::{Ending, Outcome, Status};
 use super::spec::{Level, LevelKind};
 use serde::{Deserialize, Serialize};
 
@@ -40,19 +40,13 @@ pub struct MetricColumn {
     pub unit: String,
 }
 
-/// One case's results.
+/// One case's results: its number, its values, how it ended, and each metric's value (a cell
+/// read back may be empty on its own, where the [`Outcome`] has all of them or none).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
     pub case: usize,
     pub values: Vec<Level>,
-    pub status: Status,
-    pub message: String,
-    /// Simulated time reached [s].
-    pub end_time: f64,
-    pub steps: u64,
-    pub rejected_steps: u64,
-    /// CPU seconds of the run (a measurement: the one column that differs between two runs).
-    pub cpu_seconds: f64,
+    pub ending: Ending,
     pub metrics: Vec<Option<f64>>,
 }
 
@@ -61,17 +55,7 @@ impl Row {
     pub fn new(case: usize, values: Vec<Level>, outcome: Outcome, metric_count: usize) -> Self {
         let metrics =
             outcome.metrics.map_or_else(|| vec![None; metric_count], |values| values.into_iter().map(Some).collect());
-        Self {
-            case,
-            values,
-            status: outcome.status,
-            message: outcome.message,
-            end_time: outcome.end_time,
-            steps: outcome.steps,
-            rejected_steps: outcome.rejected_steps,
-            cpu_seconds: outcome.cpu_seconds,
-            metrics,
-        }
+        Self { case, values, ending: outcome.ending, metrics }
     }
 }
 
@@ -90,12 +74,12 @@ impl Columns {
         let mut fields = vec![row.case.to_string()];
         fields.extend(row.values.iter().map(ToString::to_string));
         fields.extend([
-            row.status.name().to_string(),
-            row.message.clone(),
-            number(row.end_time),
-            row.steps.to_string(),
-            row.rejected_steps.to_string(),
-            number(row.cpu_seconds),
+            row.ending.status.name().to_string(),
+            row.ending.message.clone(),
+            number(row.ending.end_time),
+            row.ending.steps.to_string(),
+            row.ending.rejected_steps.to_string(),
+            number(row.ending.cpu_seconds),
         ]);
         fields.extend(row.metrics.iter().map(|m| m.map(number).unwrap_or_default()));
         fields
@@ -137,22 +121,32 @@ impl Columns {
             let i = at + OUTCOME_COLUMNS.len() + k;
             metrics.push(if field(i).is_empty() { None } else { Some(real(i, &metric.name)?) });
         }
-        Ok(Row {
-            case,
-            values,
+        let ending = Ending {
             status,
             message: field(at + 1).to_string(),
             end_time: real(at + 2, "end_time_s")?,
             steps: whole(at + 3, "steps")?,
             rejected_steps: whole(at + 4, "rejected_steps")?,
             cpu_seconds: real(at + 5, "cpu_s")?,
-            metrics,
-        })
+        };
+        Ok(Row { case, values, ending, metrics })
     }
 
     /// The index of the metric `name`.
     pub fn metric(&self, name: &str) -> Option<usize> {
         self.metrics.iter().position(|m| m.name == name)
+    }
+}
+
+/// A level as the results table writes it (and every message names it).
+impl std::fmt::Display for Level {
+    /// Numbers in their shortest form that reads back to the same `f64`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Number(x) => f.write_str(&number(*x)),
+            Self::Flag(flag) => write!(f, "{flag}"),
+            Self::Text(text) => f.write_str(text),
+        }
     }
 }
 
@@ -214,12 +208,14 @@ mod tests {
         let row = Row {
             case: 17,
             values: vec![Level::Number(1.0 / 3.0), Level::Text("rk4".into())],
-            status: Status::Diverged,
-            message: "the simulation diverged at t = 1 s: body \"a, b\" spins".into(),
-            end_time: 1.0,
-            steps: 1000,
-            rejected_steps: 0,
-            cpu_seconds: 0.0123,
+            ending: Ending {
+                status: Status::Diverged,
+                message: "the simulation diverged at t = 1 s: body \"a, b\" spins".into(),
+                end_time: 1.0,
+                steps: 1000,
+                rejected_steps: 0,
+                cpu_seconds: 0.0123,
+            },
             metrics: vec![Some(0.1 + 0.2), None],
         };
         let mut writer = csv::Writer::from_writer(Vec::new());

@@ -4,13 +4,11 @@
 //! axes parallel to the world axes at t = 0. Vectors are RON tuples `(x, y, z)`. Every number
 //! must be finite; unknown fields are rejected.
 
+pub use super::finite::Triple;
 use super::finite::{finite, finite_option, finite_pairs, finite_velocity_table, finite3};
 use super::water::{HydroDef, WaterDef};
 use serde::{Deserialize, Serialize};
 use tether_physics::integrator::{Integrator, Substeps};
-
-/// `(x, y, z)`.
-pub type Triple = [f64; 3];
 
 /// A whole scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -3,6 +3,9 @@
 
 use serde::de::{Deserialize, Deserializer, Error};
 
+/// `(x, y, z)`: a vector or point as a scene file writes it, read finite by [`finite3`].
+pub type Triple = [f64; 3];
+
 fn check<E: Error>(value: f64) -> Result<f64, E> {
     if value.is_finite() { Ok(value) } else { Err(E::custom(format!("number must be finite, got {value}"))) }
 }
@@ -15,8 +18,8 @@ pub fn finite_option<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::
     Option::<f64>::deserialize(d)?.map(check::<D::Error>).transpose()
 }
 
-pub fn finite3<'de, D: Deserializer<'de>>(d: D) -> Result<[f64; 3], D::Error> {
-    let v = <[f64; 3]>::deserialize(d)?;
+pub fn finite3<'de, D: Deserializer<'de>>(d: D) -> Result<Triple, D::Error> {
+    let v = Triple::deserialize(d)?;
     for x in v {
         check::<D::Error>(x)?;
     }
@@ -32,8 +35,8 @@ pub fn finite_pairs<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<(f64, f64)>, 
     Ok(v)
 }
 
-pub fn finite_velocity_table<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<(f64, [f64; 3])>, D::Error> {
-    let v = Vec::<(f64, [f64; 3])>::deserialize(d)?;
+pub fn finite_velocity_table<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<(f64, Triple)>, D::Error> {
+    let v = Vec::<(f64, Triple)>::deserialize(d)?;
     for (t, w) in &v {
         check::<D::Error>(*t)?;
         for &x in w {

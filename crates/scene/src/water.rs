@@ -14,8 +14,7 @@
 //! ),
 //! ```
 
-use super::file::Triple;
-use super::finite::{finite, finite_option, finite3};
+use super::finite::{Triple, finite, finite_option, finite3};
 use serde::{Deserialize, Serialize};
 use tether_physics::math::Vec3;
 use tether_physics::water::morison::HydroSpec;

@@ -4,8 +4,9 @@
 //!
 //! - [`app`]: the eframe application (window, embedded viewer, dropped files);
 //! - [`panel`]: the control panel, which the tests drive headlessly: it lays out the sub-panels,
-//!   holds the simulation handle and the [`open_scene`] (the scene being tuned, no egui in it),
-//!   and applies what its sub-panels ask for:
+//!   holds the simulation handle and the [`open_scene`] (the scene being tuned, no egui in it;
+//!   its [`knobs`]: each tunable group's drafts and refusals, checked by the scene builder), and
+//!   applies what its sub-panels ask for:
 //!   - [`scenes`]: scene list, file dialogs, load errors;
 //!   - [`run_controls`]: play/pause/step/reset, speed, integrator, dt, substeps;
 //!   - [`tuning`]: every parameter of every coupling, with units; revert, save as;
@@ -24,6 +25,7 @@ pub mod app;
 pub mod contact_estimator;
 pub mod dialogs;
 pub mod indicators;
+pub mod knobs;
 pub mod open_scene;
 pub mod panel;
 pub mod run_controls;

@@ -1,21 +1,76 @@
-//! The scene being run and tuned, with no egui in it: what its file says, what is tuned, what
-//! the knobs show and why a value was refused; loading it, checking a tuned value with the scene
-//! builder, reverting to the file and saving as RON. The panel draws it and sends the
-//! simulation what it accepts.
+//! The scene being run and tuned, with no egui in it: what its file says, what is tuned, its
+//! knobs (what they show and why a value was refused, [`Knobs`]); loading it, checking a tuned
+//! value with the scene builder, reverting to the file and saving as RON. The panel draws it and
+//! sends the simulation what it accepts.
 
-use super::simulation::Run;
-use super::simulation::Wake;
+use super::knobs::{Group, Knobs};
+use super::simulation::{Command, Run, Wake};
 use super::watch::FileWatch;
 use std::path::{Path, PathBuf};
-use std::time::Duration;
-use tether_physics::coupling::Coupling;
+use std::time::{Duration, Instant};
 use tether_physics::integrator::Timing;
-use tether_physics::water::WaterSpec;
-use tether_physics::water::morison::HydroSpec;
 use tether_scene::build::{self, Bodies};
 use tether_scene::file::CouplingDef;
 use tether_scene::water::{HydroDef, WaterDef};
 use tether_scene::{self as scene, SceneError, SceneFile};
+
+/// Why the scene builder refused a tuned value, as it words it (the same message as loading).
+pub type Refusal = String;
+
+/// The couplings' parameters, a knob per coupling, built against the scene's bodies. (Indexing
+/// by `index` holds in each group: its knobs are read from a scene of the same shape as the one
+/// written, the tuned scene being the file with values changed.)
+static COUPLINGS: Group<CouplingDef, Refusal> = Group {
+    values: |file| file.couplings.clone(),
+    put: |file, index, def| file.couplings[index] = def,
+    build: |candidate, index, bodies| {
+        let coupling = build::coupling(candidate, index, bodies).map_err(|p| p.message)?;
+        Ok(Command::SetCoupling { index, coupling, sent: Instant::now() })
+    },
+};
+
+/// The water's waves, current and density: one knob, none without water.
+static WATER: Group<WaterDef, Refusal> = Group {
+    values: |file| file.water.iter().cloned().collect(),
+    put: |file, _, water| file.water = Some(water),
+    build: |candidate, _, _| Ok(Command::SetWater(build::water_spec(candidate).map_err(|p| p.message)?)),
+};
+
+/// Each body's drag and added-mass coefficients (`None`: the body declares none), a knob per
+/// body.
+static HYDRO: Group<Option<HydroDef>, Refusal> = Group {
+    values: |file| file.bodies.iter().map(|body| body.hydro.clone()).collect(),
+    put: |file, index, hydro| file.bodies[index].hydro = hydro,
+    build: |candidate, body, bodies| {
+        Ok(Command::SetHydro { body, spec: build::hydro_spec(candidate, body, bodies).map_err(|p| p.message)? })
+    },
+};
+
+/// A knob of the open scene, as the panels name it: its group, and which of the group's knobs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum KnobId {
+    /// Coupling `index`'s parameters.
+    Coupling(usize),
+    Water,
+    /// Body `index`'s coefficients in the water.
+    Hydro(usize),
+}
+
+/// Every knob of the scene, read from one scene file: the file's when it is loaded, a sweep
+/// case's when a case is (all groups at once: none can keep another scene's values). A new
+/// group is a [`Group`] static, a field here and a [`KnobId`] variant.
+pub struct SceneKnobs {
+    pub couplings: Knobs<CouplingDef, Refusal>,
+    pub water: Knobs<WaterDef, Refusal>,
+    pub hydro: Knobs<Option<HydroDef>, Refusal>,
+}
+
+impl SceneKnobs {
+    /// The knobs showing what `file` says.
+    pub fn of(file: &SceneFile) -> Self {
+        Self { couplings: Knobs::of(&COUPLINGS, file), water: Knobs::of(&WATER, file), hydro: Knobs::of(&HYDRO, file) }
+    }
+}
 
 /// The scene being run: what its file says, and what is tuned.
 pub struct OpenScene {
@@ -26,16 +81,8 @@ pub struct OpenScene {
     pub file: SceneFile,
     /// What runs: the file with the accepted tuned values.
     pub tuned: SceneFile,
-    /// What the knobs show, accepted or not.
-    pub drafts: Vec<CouplingDef>,
-    /// Why a draft was refused, per coupling.
-    pub refusals: Vec<Option<String>>,
-    /// What the water knobs show (the file's water, tuned), and why it was refused.
-    pub water_draft: Option<WaterDef>,
-    pub water_refusal: Option<String>,
-    /// What each body's water coefficients' knobs show, and why they were refused.
-    pub hydro_drafts: Vec<Option<HydroDef>>,
-    pub hydro_refusals: Vec<Option<String>>,
+    /// What the knobs show, accepted or not, and why a value was refused.
+    pub knobs: SceneKnobs,
     /// The scene's bodies as built: a tuned coupling is built against them.
     bodies: Bodies,
     watch: Option<FileWatch>,
@@ -82,12 +129,7 @@ impl OpenScene {
         let scene = Self {
             path: path.to_path_buf(),
             text: loaded.text,
-            drafts: loaded.file.couplings.clone(),
-            refusals: vec![None; loaded.file.couplings.len()],
-            water_draft: loaded.file.water.clone(),
-            water_refusal: None,
-            hydro_drafts: loaded.file.bodies.iter().map(|b| b.hydro.clone()).collect(),
-            hydro_refusals: vec![None; loaded.file.bodies.len()],
+            knobs: SceneKnobs::of(&loaded.file),
             tuned: loaded.file.clone(),
             file: loaded.file,
             bodies: loaded.bodies,
@@ -97,8 +139,8 @@ impl OpenScene {
     }
 
     /// Loads the scene at `path` as its file says it, and runs `variant` of it (a sweep's
-    /// case: the same scene with some values changed), shown as tuned values: "revert to file"
-    /// goes back to what the file says. `label` names the run.
+    /// case: the same scene with some values changed), shown as tuned values in every knob:
+    /// "revert to file" goes back to what the file says. `label` names the run.
     ///
     /// # Errors
     /// The file cannot be read or built, or the loader refuses the variant.
@@ -106,13 +148,7 @@ impl OpenScene {
         let Loaded { scene: base, mut notes, .. } = Self::load(path, wake)?;
         let case = scene::build_variant(&base.text, path, variant)?;
         notes.extend(case.warnings.iter().map(|w| format!("warning: {w}")));
-        let scene = Self {
-            drafts: case.file.couplings.clone(),
-            refusals: vec![None; case.file.couplings.len()],
-            tuned: case.file,
-            bodies: case.bodies,
-            ..base
-        };
+        let scene = Self { knobs: SceneKnobs::of(&case.file), tuned: case.file, bodies: case.bodies, ..base };
         Ok(Loaded { scene, run: Run { label, world: case.world }, notes })
     }
 
@@ -129,72 +165,26 @@ impl OpenScene {
         }
     }
 
-    /// Checks draft `index` with the scene builder (same checks and messages as loading): an
-    /// accepted value goes into the tuned scene and comes back as the coupling to run; a
-    /// refused one stays in its knob with the reason.
-    pub fn tune(&mut self, index: usize) -> Option<Coupling> {
-        let (Some(draft), Some(_)) = (self.drafts.get(index), self.refusals.get(index)) else { return None };
-        let mut candidate = self.tuned.clone();
-        candidate.couplings[index] = draft.clone();
-        match build::coupling(&candidate, index, &mut self.bodies) {
-            Ok(coupling) => {
-                self.refusals[index] = None;
-                self.tuned = candidate;
-                Some(coupling)
-            }
-            Err(problem) => {
-                self.refusals[index] = Some(problem.message);
-                None
-            }
+    /// Checks what knob `knob` shows with the scene builder (same checks and messages as
+    /// loading): an accepted value goes into the tuned scene and comes back as the command that
+    /// applies it; a refused one stays in its knob with the reason.
+    pub fn tune(&mut self, knob: KnobId) -> Option<Command> {
+        let (knobs, tuned, bodies) = (&mut self.knobs, &mut self.tuned, &mut self.bodies);
+        match knob {
+            KnobId::Coupling(index) => knobs.couplings.tune(index, tuned, bodies),
+            KnobId::Water => knobs.water.tune(0, tuned, bodies),
+            KnobId::Hydro(index) => knobs.hydro.tune(index, tuned, bodies),
         }
     }
 
-    /// Checks the water draft with the scene builder: accepted into the tuned scene and returned
-    /// as the spec to run; refused with the reason kept.
-    pub fn tune_water(&mut self) -> Option<WaterSpec> {
-        let mut candidate = self.tuned.clone();
-        candidate.water.clone_from(&self.water_draft);
-        match build::water_spec(&candidate) {
-            Ok(spec) => {
-                self.water_refusal = None;
-                self.tuned = candidate;
-                Some(spec)
-            }
-            Err(problem) => {
-                self.water_refusal = Some(problem.message);
-                None
-            }
-        }
-    }
-
-    /// Checks body `index`'s coefficients draft likewise.
-    pub fn tune_hydro(&mut self, index: usize) -> Option<HydroSpec> {
-        let Some(draft) = self.hydro_drafts.get(index) else { return None };
-        let mut candidate = self.tuned.clone();
-        candidate.bodies[index].hydro.clone_from(draft);
-        match build::hydro_spec(&candidate, index, &self.bodies) {
-            Ok(spec) => {
-                self.hydro_refusals[index] = None;
-                self.tuned = candidate;
-                Some(spec)
-            }
-            Err(problem) => {
-                self.hydro_refusals[index] = Some(problem.message);
-                None
-            }
-        }
-    }
-
-    /// The water knobs back to what the file says; returns whether the water and which bodies'
-    /// coefficients are to be applied again (those tuned, or refused).
-    pub fn revert_water_to_file(&mut self) -> (bool, Vec<usize>) {
-        self.water_draft.clone_from(&self.file.water);
-        let water = self.tuned.water != self.file.water || self.water_refusal.is_some();
-        self.hydro_drafts = self.file.bodies.iter().map(|b| b.hydro.clone()).collect();
-        let bodies = (0..self.hydro_drafts.len())
-            .filter(|&i| self.tuned.bodies[i].hydro != self.file.bodies[i].hydro || self.hydro_refusals[i].is_some())
-            .collect();
-        (water, bodies)
+    /// Every knob back to what the file says; returns the knobs to [`tune`](Self::tune) again
+    /// (those tuned, or refused).
+    pub fn revert_to_file(&mut self) -> Vec<KnobId> {
+        let (knobs, file, tuned) = (&mut self.knobs, &self.file, &self.tuned);
+        let couplings = knobs.couplings.revert(file, tuned).into_iter().map(KnobId::Coupling);
+        let water = knobs.water.revert(file, tuned).into_iter().map(|_| KnobId::Water);
+        let hydro = knobs.hydro.revert(file, tuned).into_iter().map(KnobId::Hydro);
+        couplings.chain(water).chain(hydro).collect()
     }
 
     /// The time step settings of `candidate` (the tuned scene with the timing knobs written in),
@@ -205,15 +195,6 @@ impl OpenScene {
         Ok(timing)
     }
 
-    /// Every knob back to what the file says; returns the couplings to apply again (those
-    /// tuned, or refused).
-    pub fn revert_to_file(&mut self) -> Vec<usize> {
-        self.drafts.clone_from(&self.file.couplings);
-        (0..self.drafts.len())
-            .filter(|&i| self.tuned.couplings[i] != self.file.couplings[i] || self.refusals[i].is_some())
-            .collect()
-    }
-
     /// Writes the tuned scene to `path` as RON that loads back to the same scene (mesh files
     /// found from the new folder too).
     pub fn save_as(&self, path: &Path) -> Result<(), String> {
@@ -222,5 +203,98 @@ impl OpenScene {
         scene::relocate_meshes(&mut tuned, &folder(&self.path), &folder(path));
         let text = scene::to_ron(&tuned).map_err(|e| e.to_string())?;
         std::fs::write(path, text).map_err(|e| e.to_string())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use tether_physics::water::WaveSpec;
+    use tether_scene::water::WavesDef;
+
+    /// A floating box in regular waves 1 m high and 6 s long, drag C_d z = 1, on a spring of
+    /// k = 100 N/m to the world.
+    const FLOAT: &str = r#"Scene(dt: 0.01, water: Water(depth: 30.0, waves: Regular(height: 1.0, period: 6.0)), bodies: [
+        Body(name: "float", master: Node(position: (0.0, 0.0, 0.0), mass: 1025.0, inertia: Inertia(xx: 300.0, yy: 300.0, zz: 300.0)),
+             shape: Box(size: (2.0, 2.0, 1.0)), hydro: Hydro(drag: (1.0, 1.0, 1.0)))],
+        couplings: [SpringDamper(name: "spring", end1: World((0.0, 0.0, -5.0)), end2: Body(body: "float"),
+            law: Linear(stiffness: 100.0, rest_length: 5.0), damping: 0.0)])"#;
+
+    fn waves(water: &WaterDef) -> (f64, f64) {
+        match water.waves {
+            WavesDef::Regular { height, period, .. } => (height, period),
+            ref other => panic!("{other:?}"),
+        }
+    }
+
+    fn water_knob(open: &mut OpenScene) -> &mut WaterDef {
+        &mut open.knobs.water.knobs_mut().first_mut().expect("the scene has water").draft
+    }
+
+    fn open(dir: &tempfile::TempDir, variant: impl FnOnce(&mut SceneFile)) -> OpenScene {
+        let path = dir.path().join("float.ron");
+        std::fs::write(&path, FLOAT).unwrap();
+        let mut case = scene::parse(FLOAT, &path).unwrap().file;
+        variant(&mut case);
+        OpenScene::load_variant(&path, case, "case".into(), std::sync::Arc::new(|| {})).unwrap().scene
+    }
+
+    /// A sweep case's values are what every knob group shows (the wave height 2.5 m, the drag
+    /// C_d z = 0.3, the stiffness 400 N/m), the file's kept to revert to; tuning the wave period
+    /// applies the case's height with it; reverting lists the three groups to apply again and
+    /// shows the file's values.
+    #[test]
+    fn a_variant_shows_in_every_knob_group_and_survives_an_edit_of_another_value() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut open = open(&dir, |case| {
+            if let Some(WaterDef { waves: WavesDef::Regular { height, .. }, .. }) = &mut case.water {
+                *height = 2.5;
+            }
+            if let Some(hydro) = &mut case.bodies[0].hydro {
+                hydro.drag[2] = 0.3;
+            }
+            if let CouplingDef::SpringDamper { law: tether_scene::file::LawDef::Linear { stiffness, .. }, .. } =
+                &mut case.couplings[0]
+            {
+                *stiffness = 400.0;
+            }
+        });
+        assert_eq!(waves(water_knob(&mut open)), (2.5, 6.0));
+        assert_eq!(open.knobs.hydro.knobs()[0].draft.as_ref().map(|h| h.drag[2]), Some(0.3));
+        assert_eq!(open.knobs.couplings.knobs()[0].draft, open.tuned.couplings[0]);
+        assert_eq!(open.file.water.as_ref().map(waves), Some((1.0, 6.0)), "the file's, to revert to");
+
+        if let WavesDef::Regular { period, .. } = &mut water_knob(&mut open).waves {
+            *period = 7.0;
+        }
+        let Some(Command::SetWater(spec)) = open.tune(KnobId::Water) else { panic!("the water is applied") };
+        let WaveSpec::Regular { height, period, .. } = spec.waves else { panic!("{:?}", spec.waves) };
+        assert_eq!((height, period), (2.5, 7.0), "the case's height, the new period");
+        assert_eq!(open.tuned.water.as_ref().map(waves), Some((2.5, 7.0)));
+
+        assert_eq!(open.revert_to_file(), [KnobId::Coupling(0), KnobId::Water, KnobId::Hydro(0)]);
+        assert_eq!(waves(water_knob(&mut open)), (1.0, 6.0));
+        assert_eq!(open.knobs.hydro.knobs()[0].draft, open.file.bodies[0].hydro);
+        assert_eq!(open.knobs.couplings.knobs()[0].draft, open.file.couplings[0]);
+    }
+
+    /// A refused value stays in its knob with the builder's reason, the tuned scene untouched;
+    /// revert lists it (refused, though the tuned value is the file's) and tuning it again
+    /// clears the reason.
+    #[test]
+    fn a_refused_value_keeps_its_reason_until_reverted_and_tuned_again() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut open = open(&dir, |_| {});
+        water_knob(&mut open).density = 0.0;
+        assert!(open.tune(KnobId::Water).is_none());
+        let knob = &open.knobs.water.knobs()[0];
+        assert_eq!(knob.refusal.as_deref(), Some("water: density must be > 0 kg/m³, got 0"));
+        assert_eq!(open.tuned, open.file, "a refused value is not tuned");
+
+        assert_eq!(open.revert_to_file(), [KnobId::Water]);
+        assert_eq!(water_knob(&mut open).density, 1025.0);
+        assert!(matches!(open.tune(KnobId::Water), Some(Command::SetWater(spec)) if spec.density == 1025.0));
+        assert_eq!(open.knobs.water.knobs()[0].refusal, None);
+        assert!(open.revert_to_file().is_empty(), "nothing left to apply");
     }
 }

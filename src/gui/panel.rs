@@ -8,7 +8,8 @@
 use super::contact_estimator::{self, ImpactDraft, UseEstimate};
 use super::dialogs::{Dialogs, Purpose};
 use super::indicators::{self, EnergyHistory};
-use super::open_scene::{OnDisk, OpenScene};
+use super::knobs::Knob;
+use super::open_scene::{KnobId, OnDisk, OpenScene};
 use super::run_controls::{self, RunAction, TimingDraft};
 use super::scenes::{self, SceneAction};
 use super::simulation::{Command, Report, Simulation, Speed, Status, Wake};
@@ -20,7 +21,7 @@ use super::water::{self, WaterAction};
 use rerun::external::egui;
 use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 use tether_scene::file::CouplingDef;
 
 /// Keys of the run shortcuts: play/pause, one step, reset.
@@ -418,10 +419,10 @@ impl ControlPanel {
             ui.label("Open a scene to tune its couplings.");
             return;
         };
-        let actions = tuning::ui(ui, &mut open.drafts, &open.refusals, &open.file);
+        let actions = tuning::ui(ui, open.knobs.couplings.knobs_mut(), &open.file);
         for action in actions {
             match action {
-                TuningAction::Edited(index) => self.tune(index),
+                TuningAction::Edited(index) => self.tune(KnobId::Coupling(index)),
                 TuningAction::Revert => self.revert_to_file(),
                 TuningAction::SaveAs => {
                     let folder =
@@ -434,24 +435,25 @@ impl ControlPanel {
 
     fn water_ui(&mut self, ui: &mut egui::Ui) {
         let Some(open) = &mut self.scene else { return };
-        let drafts = open.water_draft.as_mut().map(|water| water::WaterDrafts {
+        let knobs = &mut open.knobs;
+        let drafts = knobs.water.knobs_mut().first_mut().map(|water| water::WaterKnobs {
             water,
-            water_refusal: open.water_refusal.as_deref(),
-            bodies: open
-                .hydro_drafts
+            bodies: knobs
+                .hydro
+                .knobs_mut()
                 .iter_mut()
-                .zip(&open.hydro_refusals)
                 .zip(&open.file.bodies)
                 .enumerate()
-                .filter_map(|(index, ((draft, refusal), body))| {
-                    draft.as_mut().map(|hydro| (index, body.name.as_str(), hydro, refusal.as_deref()))
+                .filter_map(|(index, (Knob { draft, refusal }, body))| {
+                    let refusal = refusal.as_ref();
+                    draft.as_mut().map(|hydro| (index, body.name.as_str(), hydro, refusal))
                 })
                 .collect(),
         });
         for action in water::ui(ui, drafts) {
             match action {
-                WaterAction::Water => self.tune_water(),
-                WaterAction::Hydro(index) => self.tune_hydro(index),
+                WaterAction::Water => self.tune(KnobId::Water),
+                WaterAction::Hydro(index) => self.tune(KnobId::Hydro(index)),
             }
         }
     }
@@ -480,54 +482,31 @@ impl ControlPanel {
         }
     }
 
-    /// Has the water draft checked by the scene builder; sends the simulation what it accepts.
-    pub fn tune_water(&mut self) {
+    /// Has what knob `knob` shows checked by the scene builder (same checks and messages as
+    /// loading): an accepted value goes to the simulation, a refused one stays in its knob with
+    /// the reason and the simulation is untouched.
+    pub fn tune(&mut self, knob: KnobId) {
         let Some(open) = &mut self.scene else { return };
-        if let Some(spec) = open.tune_water() {
-            self.simulation.send(Command::SetWater(spec));
-        }
-    }
-
-    /// Has body `index`'s coefficients draft checked; sends the simulation what it accepts.
-    pub fn tune_hydro(&mut self, index: usize) {
-        let Some(open) = &mut self.scene else { return };
-        if let Some(spec) = open.tune_hydro(index) {
-            self.simulation.send(Command::SetHydro { body: index, spec });
-        }
-    }
-
-    /// Has draft `index` checked by the scene builder (same checks and messages as loading);
-    /// an accepted value goes to the simulation, a refused one stays in its knob with the
-    /// reason and the simulation is untouched.
-    pub fn tune(&mut self, index: usize) {
-        let Some(open) = &mut self.scene else { return };
-        if let Some(coupling) = open.tune(index) {
-            self.simulation.send(Command::SetCoupling { index, coupling, sent: Instant::now() });
+        if let Some(command) = open.tune(knob) {
+            self.simulation.send(command);
         }
     }
 
     /// The estimator's k1 and k2 into a contact's knobs, applied as an edit.
     fn use_estimate(&mut self, estimate: UseEstimate) {
         let Some(open) = &mut self.scene else { return };
-        if let Some(CouplingDef::Contact { stiffness, damping, .. }) = open.drafts.get_mut(estimate.index) {
+        let knob = open.knobs.couplings.knobs_mut().get_mut(estimate.index);
+        if let Some(Knob { draft: CouplingDef::Contact { stiffness, damping, .. }, .. }) = knob {
             (*stiffness, *damping) = (estimate.stiffness, estimate.damping);
-            self.tune(estimate.index);
+            self.tune(KnobId::Coupling(estimate.index));
         }
     }
 
     /// Every coupling and the water back to what the file says, in the running simulation too.
     pub fn revert_to_file(&mut self) {
         let Some(open) = &mut self.scene else { return };
-        let couplings = open.revert_to_file();
-        let (water, bodies) = open.revert_water_to_file();
-        for index in couplings {
-            self.tune(index);
-        }
-        if water {
-            self.tune_water();
-        }
-        for index in bodies {
-            self.tune_hydro(index);
+        for knob in open.revert_to_file() {
+            self.tune(knob);
         }
     }
 

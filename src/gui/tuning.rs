@@ -1,14 +1,17 @@
 //! Live tuning: every parameter of every coupling, with its unit, edited in place (spring law
 //! coefficients and tables, rest length, damping; catenary λ0, L_eq, D; contact k1, k2, d0, μ,
 //! k_t and the expected area when the scene sets it). The knobs
-//! edit the panel's drafts (scene-file data, [`CouplingDef`]); the panel checks an edited draft
-//! with the scene builder and sends the simulation the coupling it builds. "Revert to file"
-//! and "save as" act on the whole scene.
+//! edit the open scene's coupling knobs' drafts (scene-file data, [`CouplingDef`]); the panel
+//! checks an edited draft with the scene builder and sends the simulation the coupling it
+//! builds. "Revert to file" and "save as" act on the whole scene.
 //!
 //! The matches on [`CouplingDef`] and [`LawDef`] are exhaustive: a new coupling kind or elastic
 //! law does not compile until it has its knobs here.
 
+use super::knobs::Knob;
 use rerun::external::egui;
+use rerun::external::egui::emath::Numeric;
+use std::fmt::Display;
 use tether_scene::SceneFile;
 use tether_scene::file::{CouplingDef, LawDef};
 
@@ -21,14 +24,9 @@ pub enum TuningAction {
     SaveAs,
 }
 
-/// Draws a section per coupling with its knobs; `refusals` are the reasons drafts were refused,
-/// `file` what the scene file says (edited couplings are marked).
-pub fn ui(
-    ui: &mut egui::Ui,
-    drafts: &mut [CouplingDef],
-    refusals: &[Option<String>],
-    file: &SceneFile,
-) -> Vec<TuningAction> {
+/// Draws a section per coupling with its knobs and why a value was refused; `file` is what the
+/// scene file says (edited couplings are marked).
+pub fn ui(ui: &mut egui::Ui, knobs: &mut [Knob<CouplingDef, impl Display>], file: &SceneFile) -> Vec<TuningAction> {
     let mut actions = Vec::new();
     ui.horizontal(|ui| {
         ui.strong("Couplings");
@@ -43,17 +41,17 @@ pub fn ui(
             actions.push(TuningAction::SaveAs);
         }
     });
-    if drafts.is_empty() {
+    if knobs.is_empty() {
         ui.label("This scene has no couplings.");
     }
-    for (index, draft) in drafts.iter_mut().enumerate() {
+    for (index, Knob { draft, refusal }) in knobs.iter_mut().enumerate() {
         let edited = file.couplings.get(index) != Some(&*draft);
         let title = format!("{}{} ({})", draft.name(), if edited { " •" } else { "" }, kind_name(draft));
         egui::CollapsingHeader::new(title).id_salt(("coupling", index)).default_open(index < 4).show(ui, |ui| {
             if coupling_knobs(ui, index, draft) {
                 actions.push(TuningAction::Edited(index));
             }
-            if let Some(Some(refusal)) = refusals.get(index) {
+            if let Some(refusal) = refusal {
                 ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refusal}"));
             }
         });
@@ -120,12 +118,12 @@ fn law_knobs(ui: &mut egui::Ui, law: &mut LawDef) -> bool {
     }
 }
 
-/// One number with its label and unit, in a grid row; true when it was edited. The drag speed
-/// is 1 % of the value, so a knob tunes coarse and fine values alike; typing any number works,
-/// and the scene builder refuses the bad ones.
-pub(super) fn knob(ui: &mut egui::Ui, label: &str, value: &mut f64, unit: &str) -> bool {
+/// One number (a real, or a count) with its label and unit, in a grid row; true when it was
+/// edited. The drag speed is 1 % of the value, so a knob tunes coarse and fine values alike;
+/// typing any number works, and the scene builder refuses the bad ones.
+pub(super) fn knob(ui: &mut egui::Ui, label: &str, value: &mut impl Numeric, unit: &str) -> bool {
     let name = ui.label(label);
-    let speed = value.abs().max(1e-3) * 0.01;
+    let speed = value.to_f64().abs().max(1e-3) * 0.01;
     let response = ui.add(egui::DragValue::new(value).speed(speed).max_decimals(6)).labelled_by(name.id);
     ui.label(unit);
     ui.end_row();

@@ -1,11 +1,13 @@
 //! The water panel: the scene's waves, current and density, and each floating body's drag and
-//! added-mass coefficients, all live (PHYSICS.md §6). The knobs edit the panel's drafts
-//! (scene-file data, [`WaterDef`] and [`HydroDef`]); the panel checks an edited draft with the
-//! scene builder (the same checks and messages as loading) and sends the simulation what it
-//! accepts; a refused value stays in its knob with the reason.
+//! added-mass coefficients, all live (PHYSICS.md §6). The knobs edit the open scene's water and
+//! coefficient knobs' drafts (scene-file data, [`WaterDef`] and [`HydroDef`]); the panel checks
+//! an edited draft with the scene builder (the same checks and messages as loading) and sends
+//! the simulation what it accepts; a refused value stays in its knob with the reason.
 
+use super::knobs::Knob;
 use super::tuning::knob;
 use rerun::external::egui;
+use std::fmt::Display;
 use tether_scene::water::{CurrentDef, HydroDef, WaterDef, WavesDef};
 
 /// What the water panel asks for.
@@ -17,18 +19,19 @@ pub enum WaterAction {
     Hydro(usize),
 }
 
-/// The water's drafts and refusals, as the panel shows them.
-pub struct WaterDrafts<'a> {
-    pub water: &'a mut WaterDef,
-    pub water_refusal: Option<&'a str>,
+/// The water's knobs, as the panel shows them; `R` is why a value was refused.
+pub struct WaterKnobs<'a, R> {
+    pub water: &'a mut Knob<WaterDef, R>,
     /// `(body index, name, coefficients, refusal)` of each floating body.
-    pub bodies: Vec<(usize, &'a str, &'a mut HydroDef, Option<&'a str>)>,
+    pub bodies: Vec<(usize, &'a str, &'a mut HydroDef, Option<&'a R>)>,
 }
 
 /// Draws the water section; nothing for a scene without water.
-pub fn ui(ui: &mut egui::Ui, drafts: Option<WaterDrafts>) -> Vec<WaterAction> {
+pub fn ui<R: Display>(ui: &mut egui::Ui, knobs: Option<WaterKnobs<R>>) -> Vec<WaterAction> {
     let mut actions = Vec::new();
-    let Some(WaterDrafts { water, water_refusal, bodies }) = drafts else { return actions };
+    let Some(WaterKnobs { water: Knob { draft: water, refusal: water_refusal }, bodies }) = knobs else {
+        return actions;
+    };
     egui::CollapsingHeader::new("Water").id_salt("water").default_open(true).show(ui, |ui| {
         let edited = egui::Grid::new("water knobs").num_columns(3).show(ui, |ui| water_knobs(ui, water)).inner;
         if edited {

@@ -60,8 +60,16 @@ impl Xvfb {
         let search = || self.xdotool(&["search", "--onlyvisible", "--name", name]);
         wait_for(&format!("a window named {name:?}"), limit, || search().status.success());
         let id = String::from_utf8_lossy(&search().stdout).lines().next().unwrap_or_default().to_string();
-        self.xdotool(&["windowfocus", "--sync", &id]);
+        self.give_keyboard(&id);
         id
+    }
+
+    /// Gives window `id` the keyboard and waits (at most 10 s) until it has it.
+    pub fn give_keyboard(&self, id: &str) {
+        self.xdotool(&["windowfocus", "--sync", id]);
+        wait_for(&format!("window {id} to have the keyboard"), Duration::from_secs(10), || {
+            String::from_utf8_lossy(&self.xdotool(&["getwindowfocus"]).stdout).trim() == id
+        });
     }
 }
 
@@ -104,22 +112,22 @@ impl Gui {
         Self { process }
     }
 
-    /// Waits (at most 120 s) for the Tether window, lets its first frames draw, and gives it the
-    /// keyboard; fails with the program's stderr if it exits first.
-    pub fn focus(&mut self, x: &Xvfb) -> String {
+    /// Waits (at most 120 s) for the Tether window to show and for `ready` (the program has
+    /// started: its first scene is in the recording — keys sent before the window's event loop
+    /// runs its app are dropped), then gives the window the keyboard and waits for it to have
+    /// it; fails with the program's stderr if it exits first.
+    pub fn focus(&mut self, x: &Xvfb, mut ready: impl FnMut() -> bool) -> String {
         let search = || x.xdotool(&["search", "--onlyvisible", "--name", "^Tether$"]);
         let start = Instant::now();
-        while !search().status.success() {
+        while !(search().status.success() && ready()) {
             if let Some(status) = self.process.try_wait().unwrap() {
                 panic!("tether exited with {status} before its window showed:\n{}", self.stderr());
             }
-            assert!(start.elapsed() < Duration::from_secs(120), "no Tether window after 120 s");
+            assert!(start.elapsed() < Duration::from_secs(120), "no Tether window running its scene after 120 s");
             std::thread::sleep(Duration::from_millis(100));
         }
         let id = String::from_utf8_lossy(&search().stdout).lines().next().unwrap_or_default().to_string();
-        std::thread::sleep(Duration::from_secs(2));
-        x.xdotool(&["windowfocus", "--sync", &id]);
-        std::thread::sleep(Duration::from_millis(500));
+        x.give_keyboard(&id);
         id
     }
 
@@ -180,7 +188,7 @@ pub fn stores(path: &Path) -> BTreeMap<rerun::StoreId, rerun::ChunkStore> {
 }
 
 /// Every store in an `.rrd` file, or why it cannot be read (yet: it may still be written).
-pub fn try_stores(path: &Path) -> anyhow::Result<BTreeMap<rerun::StoreId, rerun::ChunkStore>> {
+fn try_stores(path: &Path) -> anyhow::Result<BTreeMap<rerun::StoreId, rerun::ChunkStore>> {
     let mut file = std::fs::File::open(path)?;
     rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file)
 }
@@ -205,7 +213,23 @@ pub fn sim_time_in(stores: &BTreeMap<rerun::StoreId, rerun::ChunkStore>) -> f64 
 
 /// Whether a recording in the file logged the entity `path` (e.g. `/world/bodies/mass`).
 pub fn has_entity(path: &Path, entity: &str) -> bool {
-    stores(path).values().any(|store| store.iter_physical_chunks().any(|c| c.entity_path().to_string() == entity))
+    logs_entity(&stores(path), entity)
+}
+
+/// Whether a recording in these stores logged the entity `entity`.
+fn logs_entity(stores: &BTreeMap<rerun::StoreId, rerun::ChunkStore>, entity: &str) -> bool {
+    stores.values().any(|store| store.iter_physical_chunks().any(|c| c.entity_path().to_string() == entity))
+}
+
+/// Whether the recording at `path`, which may still be being written, has logged `entity` yet.
+pub fn recorded(path: &Path, entity: &str) -> bool {
+    try_stores(path).is_ok_and(|stores| logs_entity(&stores, entity))
+}
+
+/// Largest `sim_time` [s] of the energy plot in the recording at `path` so far (it may still be
+/// being written; 0 while it cannot be read).
+pub fn sim_time_so_far(path: &Path) -> f64 {
+    try_stores(path).map_or(0.0, |stores| sim_time_in(&stores))
 }
 
 /// `rerun rrd verify` passes on the file (it is complete, footer included).

@@ -5,9 +5,11 @@
 //! commands; [`sweep`] runs a scene over a design of factor values and [`study`] measures the
 //! integrators against a reference run, both on the engine of many cases in [`runner`], and
 //! write tables and charts ([`chart_style`]); [`statics`] reports static equilibria and offset
-//! curves. The `tether` binary's command line lives beside `main.rs`.
+//! curves. The `tether` binary's command line lives beside `main.rs`. The window is the `gui`
+//! feature (on by default); without it the library and the binary are headless.
 
 pub mod chart_style;
+#[cfg(feature = "gui")]
 pub mod gui;
 pub mod runner;
 pub mod statics;

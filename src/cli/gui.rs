@@ -1,15 +1,18 @@
 //! `tether gui [SCENE] [--connect URL] [--save OUT.rrd] [--sweep DIR]` and `tether view
-//! FILE.rrd`: the window.
+//! FILE.rrd`: the window. A build without the `gui` feature (the headless build) keeps the
+//! subcommands and says, when one is run, that it has no window and how to get one.
 
-use anyhow::{Context as _, bail};
+use anyhow::bail;
 use clap::Args;
-use std::path::{Path, PathBuf};
-use tether::gui::GuiOptions;
+use std::path::PathBuf;
+#[cfg(feature = "gui")]
+use {anyhow::Context as _, tether::gui::GuiOptions};
 
 /// Opened when `tether` runs with no scene, if it exists (relative to the working folder).
 const DEFAULT_SCENE: &str = "scenes/moored_buoy.ron";
 
 /// Listed in the window's scene list.
+#[cfg(feature = "gui")]
 const SCENES_DIR: &str = "scenes";
 
 #[derive(Debug, Default, Args)]
@@ -28,6 +31,7 @@ pub struct GuiArgs {
     sweep: Option<PathBuf>,
 }
 
+#[cfg(feature = "gui")]
 pub fn run(args: GuiArgs) -> anyhow::Result<()> {
     let scene = args.scene.or_else(|| Some(PathBuf::from(DEFAULT_SCENE)).filter(|p| p.is_file()));
     if let Some(dir) = &args.sweep
@@ -46,11 +50,39 @@ pub fn run(args: GuiArgs) -> anyhow::Result<()> {
     tether::gui::run(options).context("the window")
 }
 
+#[cfg(feature = "gui")]
 pub fn view(recording: PathBuf) -> anyhow::Result<()> {
-    if !Path::new(&recording).is_file() {
+    if !recording.is_file() {
         bail!("no recording at {}", recording.display());
     }
     let options =
         GuiOptions { recording: Some(recording), scenes_dir: PathBuf::from(SCENES_DIR), ..Default::default() };
     tether::gui::run(options).context("the window")
+}
+
+/// What the headless build says for `tether`, `tether gui` and `tether view`, before what it
+/// can do instead.
+#[cfg(not(feature = "gui"))]
+const NO_WINDOW: &str = "this tether is the headless build (without the `gui` feature), which has no window \
+    (the full one: `cargo install --path .`, or `scripts/run`)";
+
+/// The headless build: no window; says how to record the scene instead, for which viewer.
+#[cfg(not(feature = "gui"))]
+pub fn run(args: GuiArgs) -> anyhow::Result<()> {
+    let scene = args.scene.unwrap_or_else(|| PathBuf::from(DEFAULT_SCENE));
+    let recording = args.save.unwrap_or_else(|| scene.with_extension("rrd"));
+    let viewer = args.connect.map_or("any Rerun viewer".to_string(), |url| format!("the viewer at {url}"));
+    let sweep = args.sweep.map(|dir| format!("; the sweep's table is {}", dir.join("summary.md").display()));
+    bail!(
+        "{NO_WINDOW}; `tether record {} -o {}` records the scene for {viewer}{}",
+        scene.display(),
+        recording.display(),
+        sweep.unwrap_or_default()
+    )
+}
+
+/// The headless build: no window; the Rerun viewer plays the recording.
+#[cfg(not(feature = "gui"))]
+pub fn view(recording: PathBuf) -> anyhow::Result<()> {
+    bail!("{NO_WINDOW}; `rerun {}` plays the recording", recording.display())
 }

@@ -8,7 +8,7 @@ mod common;
 use std::path::Path;
 use std::process::{Command, Output};
 use std::sync::Arc;
-use tether::gui::open_scene::OpenScene;
+use tether::gui::open_scene::{KnobId, OpenScene};
 use tether_scene::file::{CouplingDef, LawDef};
 
 /// What each path must say of the spring's stiffness set to −5 N/m.
@@ -57,12 +57,14 @@ fn a_negative_stiffness_reads_the_same_from_the_file_a_knob_and_a_sweep_case() {
     // The knob: the open scene checks the edited draft as loading does, and keeps the reason.
     let loaded = OpenScene::load(&dir.path().join("spring.ron"), Arc::new(|| {})).unwrap();
     let mut open = loaded.scene;
-    let CouplingDef::SpringDamper { law: LawDef::Linear { stiffness, .. }, .. } = &mut open.drafts[0] else {
+    let CouplingDef::SpringDamper { law: LawDef::Linear { stiffness, .. }, .. } =
+        &mut open.knobs.couplings.knobs_mut()[0].draft
+    else {
         panic!("the spring scene's coupling is a linear spring")
     };
     *stiffness = -5.0;
-    assert!(open.tune(0).is_none(), "a negative stiffness must be refused");
-    assert_eq!(open.refusals[0].as_deref(), Some(STIFFNESS));
+    assert!(open.tune(KnobId::Coupling(0)).is_none(), "a negative stiffness must be refused");
+    assert_eq!(open.knobs.couplings.knobs()[0].refusal.as_deref(), Some(STIFFNESS));
     // The sweep case: the factor's value, placed in the base scene.
     sweep_of(dir.path(), "couplings.spring.law.stiffness", "-5.0");
     let from_case = error_line(&["sweep", "sweep.ron", "-o", "out"], dir.path());

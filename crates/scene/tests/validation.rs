@@ -4,7 +4,7 @@
 //! `build_variant`), the physics called directly — reads the same one-line message for the same
 //! bad value, naming the coupling (or section) and the field.
 
-mod common;
+use tether_test_support as common;
 
 use std::path::Path;
 use tether_physics::coupling::{ElasticLaw, Endpoint, SpringDamper};

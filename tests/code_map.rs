@@ -1,4 +1,4 @@
-//! The code map in `docs/architecture.md` lists every module of the four crates, and nothing that
+//! The code map in `docs/architecture.md` lists every module of the workspace's crates, and nothing that
 //! is not there: a module added, moved or removed without its line in the map fails here.
 //!
 //! The map has one section per crate, headed ``### `DIR/` — name``, whose table rows start with
@@ -8,7 +8,8 @@
 use std::collections::BTreeSet;
 use std::path::Path;
 
-const SOURCE_DIRS: [&str; 4] = ["crates/physics/src", "crates/scene/src", "crates/record/src", "src"];
+const SOURCE_DIRS: [&str; 5] =
+    ["crates/physics/src", "crates/scene/src", "crates/record/src", "crates/test-support/src", "src"];
 
 /// Every module under `dir`, named as the map names it.
 fn modules(dir: &Path, prefix: &str, found: &mut BTreeSet<String>) {
@@ -49,7 +50,7 @@ fn the_code_map_lists_every_module_and_only_those() {
         let mut actual = BTreeSet::new();
         modules(&repo.join(dir), "", &mut actual);
         let listed = mapped(&map, dir);
-        assert!(actual.len() > 5, "{dir}: the sources were read ({} modules)", actual.len());
+        assert!(!actual.is_empty(), "{dir}: the sources were read ({} modules)", actual.len());
         problems.extend(actual.difference(&listed).map(|m| format!("{dir}/{m}: not in the code map")));
         problems.extend(listed.difference(&actual).map(|m| format!("{dir}/{m}: in the code map, not in the code")));
     }

@@ -62,7 +62,7 @@ impl Evaluation {
         &self.forces
     }
 
-    /// The couplings' elastic energy [J] at the last evaluation: the sum of their records'
+    /// The couplings' elastic energy \[J] at the last evaluation: the sum of their records'
     /// `potential`.
     pub fn elastic_energy(&self) -> f64 {
         self.elastic

@@ -25,7 +25,7 @@ pub struct Seabed {
 pub struct SeabedError(pub ParameterError);
 
 impl Seabed {
-    /// A seabed at `elevation` z_b [m] (finite) with line friction `line_friction` C_B [–] ≥ 0.
+    /// A seabed at `elevation` z_b \[m] (finite) with line friction `line_friction` C_B [–] ≥ 0.
     ///
     /// # Errors
     /// A non-finite elevation, or a negative or non-finite friction coefficient.

@@ -74,9 +74,9 @@ pub enum SystemError {
 pub struct BelowSeabed {
     /// 1 or 2.
     pub end: usize,
-    /// How far below [m].
+    /// How far below \[m].
     pub depth: f64,
-    /// The seabed's `z_b` [m].
+    /// The seabed's `z_b` \[m].
     pub elevation: f64,
 }
 

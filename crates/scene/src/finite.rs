@@ -3,7 +3,7 @@
 
 use serde::de::{Deserialize, Deserializer, Error};
 
-/// `(x, y, z)`: a vector or point as a scene file writes it, read finite by [`finite3`].
+/// `(x, y, z)`: a vector or point as a scene file writes it, read finite by `finite3`.
 pub type Triple = [f64; 3];
 
 fn check<E: Error>(value: f64) -> Result<f64, E> {

@@ -49,7 +49,7 @@ impl ElasticLaw {
     }
 
     /// Checks the law's numbers (its tables were checked when they were made): a linear
-    /// stiffness `k` [N/m] ≥ 0, rest and reference lengths [m] ≥ 0, the other coefficients
+    /// stiffness `k` [N/m] ≥ 0, rest and reference lengths \[m] ≥ 0, the other coefficients
     /// finite. [`super::SpringDamper::new`] calls it: a law is checked where its spring is built.
     ///
     /// # Errors

@@ -98,7 +98,7 @@ pub struct Tolerances {
 
 impl Tolerances {
     /// Relative tolerance `rtol` [–] in (0, 1), absolute tolerance `atol` > 0, largest step
-    /// `max_step` [s] > 0 if any.
+    /// `max_step` \[s] > 0 if any.
     ///
     /// # Errors
     /// A value out of its range, named by its field.
@@ -129,7 +129,7 @@ pub struct Timing {
 }
 
 impl Timing {
-    /// World step `dt` [s] > 0 taken by `integrator` in `substeps` (at least 1 when fixed), with
+    /// World step `dt` \[s] > 0 taken by `integrator` in `substeps` (at least 1 when fixed), with
     /// `tolerances` for the adaptive scheme.
     ///
     /// # Errors

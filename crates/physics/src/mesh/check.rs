@@ -9,10 +9,10 @@
 
 use crate::math::{Vec3, bounding_box};
 
-/// Farthest a vertex may be from the origin [m]: distances squared must not overflow.
+/// Farthest a vertex may be from the origin \[m]: distances squared must not overflow.
 pub const MAX_EXTENT: f64 = 1e12;
 
-/// A boundary thinner than this along an axis [m] (but not flat) is refused: the distance
+/// A boundary thinner than this along an axis \[m] (but not flat) is refused: the distance
 /// queries' bounding-volume hierarchy divides by the thickness, which for a subnormal one
 /// overflows (a box of size 1e-320 made parry's tree build index out of bounds).
 pub const MIN_THICKNESS: f64 = 1e-9;
@@ -49,7 +49,7 @@ pub enum MeshError {
 /// `Display`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TurnedOver {
-    /// Signed volume `V` of the mesh as given [m³], negative.
+    /// Signed volume `V` of the mesh as given \[m³], negative.
     pub volume: f64,
 }
 
@@ -66,7 +66,7 @@ impl std::fmt::Display for TurnedOver {
 /// A triangle list that passed the check, wound outward (counter-clockwise seen from outside).
 #[derive(Debug, Clone, PartialEq)]
 pub struct OutwardMesh {
-    /// Vertices [m], as given.
+    /// Vertices \[m], as given.
     pub vertices: Vec<Vec3>,
     /// Triangles (vertex indices), counter-clockwise seen from outside.
     pub triangles: Vec<[u32; 3]>,
@@ -75,7 +75,7 @@ pub struct OutwardMesh {
 }
 
 impl OutwardMesh {
-    /// Checks `vertices` [m] and `triangles` (vertex indices) and winds them outward.
+    /// Checks `vertices` \[m] and `triangles` (vertex indices) and winds them outward.
     ///
     /// # Errors
     /// No triangles, a non-finite vertex, one beyond [`MAX_EXTENT`], a mesh thinner than

@@ -1,7 +1,7 @@
 //! Boundary meshes: the closed triangle mesh a contact sees of a body (PHYSICS.md §4).
 //!
-//! A [`BoundaryMesh`] is fixed in the body's principal frame (origin G) [m]. Each face keeps
-//! what the contact force needs, computed once: area `a_f` [m²], centroid `r_f` [m] and unit
+//! A [`BoundaryMesh`] is fixed in the body's principal frame (origin G) \[m]. Each face keeps
+//! what the contact force needs, computed once: area `a_f` \[m²], centroid `r_f` \[m] and unit
 //! outward normal. The triangles are checked and wound outward by [`OutwardMesh`], as a hull's
 //! are (a mesh wound inwards is turned over, judged by the sign of its enclosed volume).
 //!
@@ -95,7 +95,7 @@ pub struct BoundaryMesh {
 }
 
 impl BoundaryMesh {
-    /// A boundary from vertices [m] and triangles (vertex indices), checked and wound outward by
+    /// A boundary from vertices \[m] and triangles (vertex indices), checked and wound outward by
     /// [`OutwardMesh::new`] (a mesh wound inwards is turned over). Degenerate triangles are kept
     /// for display but give no face.
     ///

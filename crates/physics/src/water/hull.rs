@@ -3,8 +3,8 @@
 //!
 //! The pressure integral is exact only over a closed, outward-oriented surface. The triangles
 //! are checked and wound outward by [`OutwardMesh`], as a contact boundary's are (a mesh wound
-//! inwards is turned over, and a loader warns of it); then `|Σ A n|` [m²] must be zero up to
-//! round-off and the signed volume `V = (1/3) Σ A (n·x_c)` [m³] positive, or the body is refused.
+//! inwards is turned over, and a loader warns of it); then `|Σ A n|` \[m²] must be zero up to
+//! round-off and the signed volume `V = (1/3) Σ A (n·x_c)` \[m³] positive, or the body is refused.
 
 use crate::body::RigidBody;
 use crate::math::Vec3;
@@ -14,7 +14,7 @@ use crate::mesh::{MeshError, OutwardMesh, double_area_normal, shape_in_principal
 /// one sums to zero exactly but for round-off (about 1e-16 of the area per triangle).
 pub const OPEN_TOLERANCE: f64 = 1e-9;
 
-/// A closed, outward hull in the body's principal frame [m].
+/// A closed, outward hull in the body's principal frame \[m].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Hull {
     /// Vertices, principal frame [m].
@@ -32,7 +32,7 @@ pub struct Hull {
 }
 
 impl Hull {
-    /// The hull of `vertices` [m] and `triangles`, checked and wound outward by
+    /// The hull of `vertices` \[m] and `triangles`, checked and wound outward by
     /// [`OutwardMesh::new`], then checked closed.
     ///
     /// # Errors

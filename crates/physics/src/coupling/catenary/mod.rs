@@ -73,7 +73,7 @@ pub struct CatenaryError {
 }
 
 impl Catenary {
-    /// A line of `mass_per_length` λ0 [kg/m] ≥ 0, unstretched `length` [m] > 0 and `stiffness`
+    /// A line of `mass_per_length` λ0 [kg/m] ≥ 0, unstretched `length` \[m] > 0 and `stiffness`
     /// D [N/m] > 0 that displaces no fluid.
     ///
     /// # Errors
@@ -95,7 +95,7 @@ impl Catenary {
         })
     }
 
-    /// The line with displaced volume per length `displaced_area` A_d [m²] ≥ 0.
+    /// The line with displaced volume per length `displaced_area` A_d \[m²] ≥ 0.
     ///
     /// # Errors
     /// A negative or non-finite area.

@@ -45,7 +45,7 @@ pub struct FaceContact {
 }
 
 impl ContactLaw {
-    /// The law of stiffness `k1` [N/m³] > 0, damping `k2` [N·s/m³] ≥ 0, range `d0` [m] ≥ 0,
+    /// The law of stiffness `k1` [N/m³] > 0, damping `k2` [N·s/m³] ≥ 0, range `d0` \[m] ≥ 0,
     /// friction `μ` [–] ≥ 0 and friction sharpness `k_t` [s/m] > 0.
     ///
     /// # Errors
@@ -66,7 +66,7 @@ impl ContactLaw {
         })
     }
 
-    /// The force on a face of area `area` [m²] at distance `distance` [m] < d0 from the opposing
+    /// The force on a face of area `area` \[m²] at distance `distance` \[m] < d0 from the opposing
     /// boundary, whose unit normal there is `normal` (pointing towards the face), moving at
     /// `relative_velocity` [m/s] relative to the boundary (same axes as `normal`).
     #[inline(always)]

@@ -128,7 +128,7 @@ impl ContactCache {
 
 impl Contact {
     /// The faces of body `body`'s `boundary` against `against` under `law`, with the expected
-    /// contact area `expected_area` A [m²] > 0.
+    /// contact area `expected_area` A \[m²] > 0.
     ///
     /// # Errors
     /// An expected area out of its range.

@@ -1,6 +1,6 @@
 //! Helpers shared by the application's integration tests: the X server (`x11`), the GUI tests'
 //! scene; the helpers every crate's tests share are `tether-test-support`'s, re-exported here.
-#![allow(dead_code)] // each test binary uses its own subset
+#![allow(dead_code, unused_imports)] // each test binary uses its own subset
 
 pub mod x11;
 

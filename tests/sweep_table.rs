@@ -190,6 +190,7 @@ fn a_case_that_varies_the_wave_height_shows_it_and_keeps_it_through_another_wate
     assert_eq!((height, period), (2.5, 7.0), "the new period, the case's height");
     assert_eq!(knob_value(&harness, "wave height H"), 2.5);
 
+    // The case's duration is the sweep's, not a knob: only the water goes back to the file.
     harness.get_by_label("Revert to file").click();
     // The case's duration (the sweep's) stays: "Revert to file" reverts the knobs.
     until(&mut harness, "the revert", |p| p.scene().is_some_and(|s| s.tuned.water == s.file.water));

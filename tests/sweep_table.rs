@@ -192,7 +192,6 @@ fn a_case_that_varies_the_wave_height_shows_it_and_keeps_it_through_another_wate
 
     // The case's duration is the sweep's, not a knob: only the water goes back to the file.
     harness.get_by_label("Revert to file").click();
-    // The case's duration (the sweep's) stays: "Revert to file" reverts the knobs.
     until(&mut harness, "the revert", |p| p.scene().is_some_and(|s| s.tuned.water == s.file.water));
     until(&mut harness, "the file's waves in the running world", |p| {
         p.simulation().snapshot(PATIENCE).is_some_and(|w| wave_height(&w) == 1.0)

@@ -17,6 +17,7 @@ use super::table::{CASE_COLUMN, Columns, FactorColumn, MetricColumn, OUTCOME_COL
 use crate::runner::Runner;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
+use tether_physics::parameter::{Bound, require};
 use tether_scene::{Scene, SceneError, SceneFile};
 
 /// A sweep, ready to run.
@@ -91,9 +92,9 @@ impl Plan {
         let mut base = serde_json::to_value(&scene.file)
             .map_err(|e| spec.error_at(&file.scene, "scene", format!("the scene's data cannot be addressed: {e}")))?;
         if let Some(duration) = file.duration {
-            if !(duration.is_finite() && duration > 0.0) {
-                return Err(spec.error_at("", "duration", format!("duration must be > 0 s, got {duration}")).into());
-            }
+            // The rule and message of the scene file's own duration (its one owner).
+            let duration = require("duration", duration, Bound::Positive, "s")
+                .map_err(|refused| spec.error_at("", "duration", refused.to_string()))?;
             base["duration"] = Value::from(duration);
         }
         let name = file.name.clone().unwrap_or_else(|| {
@@ -106,11 +107,8 @@ impl Plan {
             file.factors.iter().map(|def| Factor::new(def, &base, &spec, max_cases)).collect::<Result<Vec<_>, _>>()?;
         let cases =
             Cases::new(&file.design, &factors, max_cases).map_err(|message| spec.error_at("", "design", message))?;
-        if !(file.settle_band > 0.0 && file.settle_band < 1.0) {
-            return Err(spec
-                .error_at("", "settle_band", format!("settle_band must be > 0 and < 1, got {}", file.settle_band))
-                .into());
-        }
+        require("settle_band", file.settle_band, Bound::OpenUnit, "")
+            .map_err(|refused| spec.error_at("", "settle_band", refused.to_string()))?;
         let metrics = Metric::all(&scene.world, file.standard_metrics, &file.metrics).map_err(
             |RefusedMetric { name, message }| spec.error_at(&name, "metrics", format!("metric \"{name}\": {message}")),
         )?;

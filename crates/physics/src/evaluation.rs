@@ -5,7 +5,8 @@
 use crate::body::{BodyFrame, Load};
 use crate::coupling::catenary::LineState;
 use crate::coupling::contact::ContactForces;
-use crate::coupling::{Coupling, CouplingCache, CouplingForces};
+use crate::coupling::lumped_line::LineRun;
+use crate::coupling::{Coupling, CouplingCache, CouplingForces, CouplingKind, LineModel};
 use crate::water::{WaterForces, WaterScratch};
 
 /// The buffers of the force evaluation, one entry per body or coupling of a [`System`](crate::system::System).
@@ -21,6 +22,8 @@ pub struct Evaluation {
     pub(crate) elastic: f64,
     /// What each coupling remembers (warm starts, face lists).
     pub(crate) caches: Vec<CouplingCache>,
+    /// The nodes of each dynamic line (PHYSICS.md §8), in the order of their couplings.
+    pub(crate) lines: Vec<LineRun>,
     /// What the water did to each floating body (empty without water).
     pub(crate) water: Vec<WaterForces>,
     /// The water stage's buffers.
@@ -36,14 +39,34 @@ impl Evaluation {
             forces: vec![CouplingForces::default(); couplings.len()],
             elastic: 0.0,
             caches: couplings.iter().map(Coupling::new_cache).collect(),
+            lines: (0..couplings.len()).filter(|&i| is_dynamic(&couplings[i])).map(LineRun::new).collect(),
             water: Vec::new(),
             water_scratch: WaterScratch::default(),
         }
     }
 
     /// Starts coupling `index`'s cache afresh for `coupling`, which replaced it.
+    /// A dynamic line starts again at rest in its static equilibrium where it is now.
     pub(crate) fn forget(&mut self, index: usize, coupling: &Coupling) {
         self.caches[index] = coupling.new_cache();
+        self.lines.retain(|run| run.coupling != index);
+        if is_dynamic(coupling) {
+            let at = self.lines.partition_point(|run| run.coupling < index);
+            self.lines.insert(at, LineRun::new(index));
+        }
+    }
+
+    /// Keeps every dynamic line's last evaluation as the start of its next interval: the world
+    /// calls it when it accepts an integrator step ([`LineRun::commit`]).
+    pub(crate) fn commit_lines(&mut self) {
+        for run in &mut self.lines {
+            run.commit();
+        }
+    }
+
+    /// The run of dynamic line coupling `index` (`None` for another kind or model).
+    pub fn line_run(&self, index: usize) -> Option<&LineRun> {
+        self.lines.iter().find(|run| run.coupling == index)
     }
 
     /// Body kinematics at the last evaluation, world axes.
@@ -95,5 +118,13 @@ impl Evaluation {
             Some(CouplingCache::Contact(cache)) => Some(cache.forces(&self.forces[index])),
             _ => None,
         }
+    }
+}
+
+/// Whether `coupling` is a dynamic line.
+fn is_dynamic(coupling: &Coupling) -> bool {
+    match &coupling.kind {
+        CouplingKind::Catenary(line) => matches!(line.model, LineModel::Dynamic(_)),
+        CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => false,
     }
 }

@@ -16,6 +16,8 @@ pub enum Bound {
     NonNegative,
     /// `> 0 and < 1`.
     OpenUnit,
+    /// `≥ 0 and ≤ 1`.
+    UnitInterval,
     /// Any finite number.
     Finite,
 }
@@ -28,6 +30,7 @@ impl Bound {
                 Self::Positive => value > 0.0,
                 Self::NonNegative => value >= 0.0,
                 Self::OpenUnit => value > 0.0 && value < 1.0,
+                Self::UnitInterval => (0.0..=1.0).contains(&value),
                 Self::Finite => true,
             }
     }
@@ -38,6 +41,7 @@ impl Bound {
             Self::Positive => "> 0",
             Self::NonNegative => "≥ 0",
             Self::OpenUnit => "> 0 and < 1",
+            Self::UnitInterval => "≥ 0 and ≤ 1",
             Self::Finite => "finite",
         }
     }
@@ -59,6 +63,9 @@ pub enum ParameterError {
     /// A count below its least value.
     #[error("{field} must be at least {least}, got {value}")]
     TooFew { field: &'static str, value: u32, least: u32 },
+    /// A count above its greatest value.
+    #[error("{field} must be at most {most}, got {value}")]
+    TooMany { field: &'static str, value: u32, most: u32 },
     /// A list of points that is not a table.
     #[error("{field}: {source}")]
     Table { field: &'static str, source: TableError },
@@ -68,7 +75,10 @@ impl ParameterError {
     /// The field at fault, as scene files spell it.
     pub fn field(&self) -> &'static str {
         match self {
-            Self::OutOfRange { field, .. } | Self::TooFew { field, .. } | Self::Table { field, .. } => field,
+            Self::OutOfRange { field, .. }
+            | Self::TooFew { field, .. }
+            | Self::TooMany { field, .. }
+            | Self::Table { field, .. } => field,
         }
     }
 }
@@ -108,7 +118,7 @@ mod tests {
         );
         let not_finite = require("level", f64::NAN, Bound::Finite, "m").unwrap_err();
         assert_eq!(not_finite.to_string(), "level must be finite, got NaN");
-        for bound in [Bound::Positive, Bound::NonNegative, Bound::OpenUnit, Bound::Finite] {
+        for bound in [Bound::Positive, Bound::NonNegative, Bound::OpenUnit, Bound::UnitInterval, Bound::Finite] {
             assert!(!bound.holds(f64::NAN) && !bound.holds(f64::INFINITY), "{bound}");
         }
         assert!(Bound::Finite.holds(-3.0) && !Bound::Positive.holds(0.0) && Bound::NonNegative.holds(0.0));

@@ -20,7 +20,8 @@
 
 use crate::body::{BodyState, Load, RigidBody, Support};
 use crate::coupling::catenary::ON_SEABED;
-use crate::coupling::{Coupling, CouplingError, CouplingKind, Endpoint};
+use crate::coupling::lumped_line::Discrete;
+use crate::coupling::{Coupling, CouplingError, CouplingForces, CouplingKind, Endpoint, LineModel};
 use crate::energy::Powers;
 use crate::evaluation::Evaluation;
 use crate::math::Vec3;
@@ -160,10 +161,32 @@ impl System {
 
     /// The system as a static solve sees it ([`crate::statics`]): nothing moves, so the water has
     /// no waves and no added mass, and its current flows at full strength from t = 0 (no ramp);
-    /// hydrostatics, the current's drag and everything else as they are. Borrowed unchanged
-    /// without water.
+    /// a dynamic line is its quasi-static catenary (the limit of its discrete equilibrium as N
+    /// grows, PHYSICS.md §8); hydrostatics, the current's drag and everything else as they are.
+    /// Borrowed unchanged without water or dynamic lines.
     pub fn at_rest(&self) -> std::borrow::Cow<'_, System> {
-        let Some(stage) = &self.water else { return std::borrow::Cow::Borrowed(self) };
+        let dynamic =
+            |c: &Coupling| matches!(&c.kind, CouplingKind::Catenary(line) if line.model != LineModel::QuasiStatic);
+        if self.water.is_none() && !self.couplings.iter().any(dynamic) {
+            return std::borrow::Cow::Borrowed(self);
+        }
+        let couplings = self
+            .couplings
+            .iter()
+            .map(|coupling| match &coupling.kind {
+                CouplingKind::Catenary(line) => Coupling {
+                    kind: CouplingKind::Catenary(line.clone().with_model(LineModel::QuasiStatic)),
+                    ..coupling.clone()
+                },
+                CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => coupling.clone(),
+            })
+            .collect();
+        let water = self.water.as_ref().map(|stage| self.still(stage));
+        std::borrow::Cow::Owned(Self { water, couplings, ..self.clone() })
+    }
+
+    /// `stage` as [`System::at_rest`] has it: no waves, no added mass, no ramp.
+    fn still(&self, stage: &WaterStage) -> WaterStage {
         let spec = WaterSpec { waves: crate::water::WaveSpec::Calm, ramp: Some(0.0), ..*stage.water.spec() };
         // Still water with a ramp of 0 s passes every check the accepted water passed.
         let water =
@@ -179,7 +202,7 @@ impl System {
                 FloatingBody { hydro, ..entry.clone() }
             })
             .collect();
-        std::borrow::Cow::Owned(Self { water: Some(WaterStage { water, floating }), ..self.clone() })
+        WaterStage { water, floating }
     }
 
     /// Replaces the water's spec (a live edit: the world restarts its integrator after it).
@@ -300,6 +323,7 @@ impl System {
         for (load, body) in evaluation.loads.iter_mut().zip(&self.bodies) {
             *load = self.gravity_load(body);
         }
+        self.apply_lines(evaluation, time)?;
         let dissipated = self.apply_couplings(evaluation)?;
         let water = self.apply_water(evaluation, time);
         Ok(Powers { dissipated, external: self.external_power(evaluation), water })
@@ -314,6 +338,49 @@ impl System {
         } else {
             Load { force: self.surroundings.gravity * body.mass(), moment: Vec3::zeros() }
         }
+    }
+
+    /// Stage *lines* at time `time` \[s] and the kinematics `evaluation.frames`: each dynamic
+    /// line stepped from its last accepted state to `time`, its end forces added to the loads
+    /// and its record written for the couplings stage to sum (PHYSICS.md §8).
+    ///
+    /// # Errors
+    /// The first line whose nodes stopped being finite.
+    #[inline]
+    pub fn apply_lines(&self, evaluation: &mut Evaluation, time: f64) -> Result<(), EvaluationError> {
+        if evaluation.lines.is_empty() {
+            return Ok(());
+        }
+        self.step_lines(evaluation, time)
+    }
+
+    /// [`System::apply_lines`] for a scene that has dynamic lines.
+    #[inline(never)]
+    fn step_lines(&self, evaluation: &mut Evaluation, time: f64) -> Result<(), EvaluationError> {
+        let Evaluation { frames, loads, forces, lines, .. } = evaluation;
+        let water = self.water.as_ref().map(|stage| &stage.water);
+        for run in lines.iter_mut() {
+            let index = run.coupling;
+            let CouplingKind::Catenary(line) = &self.couplings[index].kind else { continue };
+            let LineModel::Dynamic(parameters) = &line.model else { continue };
+            let discrete = Discrete::new(line, parameters, &self.surroundings, water.map(|w| w.level()));
+            let ends = [line.end1.motion(frames), line.end2.motion(frames)];
+            let outcome = run
+                .advance(line, &discrete, &self.surroundings, water, &ends, time)
+                .map_err(|source| EvaluationError { coupling: index, source: CouplingError::Line(source) })?;
+            ends[0].apply(&outcome.f1, loads);
+            ends[1].apply(&outcome.f2, loads);
+            forces[index] = CouplingForces {
+                point1: ends[0].position,
+                point2: ends[1].position,
+                f1: outcome.f1,
+                f2: outcome.f2,
+                tension: outcome.f1.norm().max(outcome.f2.norm()),
+                dissipated_power: outcome.dissipated_power,
+                potential: outcome.energy,
+            };
+        }
+        Ok(())
     }
 
     /// Stage *couplings* at the kinematics `evaluation.frames`: each coupling's forces, kept per

@@ -8,13 +8,15 @@
 //!
 //! - [`ends`]: where the ends are attached and how a force there reaches a body;
 //! - [`forces`]: the record of what a coupling did;
-//! - [`spring_damper`] with its [`elastic_law`], [`catenary`], [`contact`]: the kinds.
+//! - [`spring_damper`] with its [`elastic_law`], [`catenary`] (quasi-static, or dynamic by
+//!   [`lumped_line`]), [`contact`]: the kinds.
 
 pub mod catenary;
 pub mod contact;
 pub mod elastic_law;
 pub mod ends;
 pub mod forces;
+pub mod lumped_line;
 pub mod spring_damper;
 
 use crate::body::{BodyFrame, Load};
@@ -25,6 +27,7 @@ pub use contact::{Contact, ContactCache};
 pub use elastic_law::ElasticLaw;
 pub use ends::{Attachment, EndMotion, Endpoint};
 pub use forces::CouplingForces;
+pub use lumped_line::{InternalDamping, LineError, LineModel, LumpedMass};
 pub use spring_damper::{SpringCache, SpringDamper};
 
 /// The physical model of a coupling.
@@ -40,6 +43,8 @@ pub enum CouplingKind {
 pub enum CouplingError {
     #[error(transparent)]
     Catenary(#[from] CatenaryError),
+    #[error(transparent)]
+    Line(#[from] LineError),
 }
 
 /// A named coupling.

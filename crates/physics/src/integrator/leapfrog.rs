@@ -135,6 +135,7 @@ impl Leapfrog {
                 frame.rotation = state.rotation_matrix();
             }
         }
+        system.apply_lines(evaluation, time)?;
         let dissipated = system.apply_couplings(evaluation)?;
         // The water's work: the trapezoid of the forces at both ends against the half-step
         // velocities they straddle (second order; against each end's own lagged velocity it

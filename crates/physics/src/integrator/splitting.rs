@@ -94,6 +94,7 @@ impl Splitting {
             }
             *load = system.gravity_load(body);
         }
+        system.apply_lines(evaluation, time)?;
         let dissipated = system.apply_couplings(evaluation)?;
         // The water's work: the trapezoid of the forces at both ends against the half-step
         // velocities they straddle (second order; against each end's own lagged velocity it

@@ -110,6 +110,7 @@ impl World {
             .scheme
             .start(&self.system, &mut self.states, &mut self.evaluation, time, h)
             .map_err(|e| self.coupling_error(e))?;
+        self.evaluation.commit_lines();
         Ok(())
     }
 
@@ -164,6 +165,7 @@ impl World {
 
     /// Stage *ledger*: an accepted integrator step's work and energies.
     fn book(&mut self, report: &StepReport) {
+        self.evaluation.commit_lines();
         self.ledger.add(&report.work);
         self.body_energy = report.energy;
         self.clock.integrator_steps += 1;

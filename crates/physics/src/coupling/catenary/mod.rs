@@ -30,6 +30,7 @@ pub mod solver;
 
 use super::ends::Endpoint;
 use super::forces::CouplingForces;
+use super::lumped_line::LineModel;
 use crate::body::{BodyFrame, Load};
 use crate::math::Vec3;
 use crate::parameter::{Bound, ParameterError, require};
@@ -55,6 +56,8 @@ pub struct Catenary {
     pub stiffness: f64,
     /// `A_d` \[m²] ≥ 0: the line's displaced volume per length, for its submerged weight.
     pub displaced_area: f64,
+    /// Quasi-static (this module) or dynamic ([`super::lumped_line`], PHYSICS.md §8).
+    pub model: LineModel,
 }
 
 /// What a line remembers: its last solution, the warm start of the next solve (and what the
@@ -92,7 +95,13 @@ impl Catenary {
             length: require("length", length, Bound::Positive, "m")?,
             stiffness: require("stiffness", stiffness, Bound::Positive, "N/m")?,
             displaced_area: 0.0,
+            model: LineModel::QuasiStatic,
         })
+    }
+
+    /// The line modelled by `model` (its parameters already checked by their constructor).
+    pub fn with_model(self, model: LineModel) -> Self {
+        Self { model, ..self }
     }
 
     /// The line with displaced volume per length `displaced_area` A_d \[m²] ≥ 0.
@@ -270,6 +279,10 @@ impl Catenary {
         loads: &mut [Load],
         out: &mut CouplingForces,
     ) -> Result<(), CatenaryError> {
+        if let LineModel::Dynamic(_) = self.model {
+            // The lines stage has written a dynamic line's forces and record already.
+            return Ok(());
+        }
         let (end1, end2) = (self.end1.motion(frames), self.end2.motion(frames));
         let state = self.solve(&end1.position, &end2.position, surroundings, cache.last.as_ref())?;
         let (f1, f2) = state.end_forces();

@@ -1,0 +1,136 @@
+//! One dynamic line in its surroundings: the constants its nodes and segments share, and how
+//! short its own time step must be (PHYSICS.md §8 "Discretisation", "Stable time step").
+
+use super::LumpedMass;
+use crate::coupling::Catenary;
+use crate::math::Vec3;
+use crate::seabed::Seabed;
+use crate::surroundings::Surroundings;
+
+/// Fraction of the stable sub-step a line steps by.
+pub const SUBSTEP_MARGIN: f64 = 0.8;
+
+/// A line's constants in SI units, made at each evaluation from its coupling and what surrounds
+/// it (a live edit of either is seen at the next).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Discrete {
+    /// `N`.
+    pub segments: usize,
+    /// `l = L/N` \[m].
+    pub segment: f64,
+    /// `EA` \[N].
+    pub ea: f64,
+    /// `BA` \[N·s].
+    pub ba: f64,
+    /// `λ0` [kg/m].
+    pub mass_per_length: f64,
+    /// `A_d` \[m²] and the volume-equivalent diameter `d = √(4 A_d/π)` \[m].
+    pub displaced_area: f64,
+    pub diameter: f64,
+    /// The width `d` \[m] the seabed pushes on: the diameter, or for a line that declares no
+    /// displaced area, that of a steel rod (7850 kg/m³) of its mass per length.
+    pub bearing: f64,
+    /// Gravity [m/s²], and the unit upward vertical `−ĝ`.
+    pub gravity: Vec3,
+    pub up: Vec3,
+    /// `ρ` [kg/m³] of the water the line is in (0 without water).
+    pub density: f64,
+    /// Height of the still water surface along `up` \[m], if the scene has water.
+    pub water_level: Option<f64>,
+    pub seabed: Option<Seabed>,
+    pub parameters: LumpedMass,
+}
+
+impl Discrete {
+    /// The constants of `line` modelled by `parameters` in `surroundings`, with the still water
+    /// surface at `water_level` \[m] if there is water.
+    pub fn new(
+        line: &Catenary,
+        parameters: &LumpedMass,
+        surroundings: &Surroundings,
+        water_level: Option<f64>,
+    ) -> Self {
+        let segments = parameters.segments as usize;
+        let segment = line.length / segments as f64;
+        let ea = line.stiffness * line.length;
+        let g = surroundings.gravity.norm();
+        let up = if g > 0.0 { -surroundings.gravity / g } else { Vec3::z() };
+        Self {
+            segments,
+            segment,
+            ea,
+            ba: parameters.damping.coefficient(segment, ea, line.mass_per_length),
+            mass_per_length: line.mass_per_length,
+            displaced_area: line.displaced_area,
+            diameter: diameter(line.displaced_area),
+            bearing: if line.displaced_area > 0.0 {
+                diameter(line.displaced_area)
+            } else {
+                diameter(line.mass_per_length / STEEL_DENSITY)
+            },
+            gravity: surroundings.gravity,
+            up,
+            density: if water_level.is_some() { surroundings.fluid_density } else { 0.0 },
+            water_level,
+            seabed: surroundings.seabed,
+            parameters: *parameters,
+        }
+    }
+
+    /// `l_i` \[m]: the length of line node `i` carries (`l/2` at an end).
+    #[inline(always)]
+    pub fn share(&self, node: usize) -> f64 {
+        if node == 0 || node == self.segments { 0.5 * self.segment } else { self.segment }
+    }
+
+    /// Whether a node at `position` is under the still water surface.
+    #[inline(always)]
+    pub fn submerged(&self, position: &Vec3) -> bool {
+        self.water_level.is_some_and(|level| position.dot(&self.up) < level)
+    }
+
+    /// The line's stable time steps \[s] under the semi-implicit Euler it is stepped by
+    /// (`2/(√(ω² + β²) + β)` for a mode `ω` damped at rate `β`, PHYSICS.md §8): the axial one
+    /// of its highest mode, `ω = 2√(EA/(λ0 l²))`, `β = 2 BA/(λ0 l²)` (the transverse modes,
+    /// `ω = 2√(T/(λ0 l l_s))`, are slower while `T < EA`); and the seabed's,
+    /// `ω² = k_b d/λ0`, `β = (c_b d + C_B w/v_s)/(2 λ0)` with `w` the wet weight per length.
+    pub fn limits(&self) -> LineLimits {
+        let lambda = self.mass_per_length.max(f64::MIN_POSITIVE);
+        let l2 = self.segment * self.segment;
+        let axial = oscillator(2.0 * (self.ea / (lambda * l2)).sqrt(), 2.0 * self.ba / (lambda * l2));
+        let seabed = self.seabed.map_or(f64::INFINITY, |seabed| {
+            let p = &self.parameters;
+            let wet = (self.mass_per_length - self.density * self.displaced_area).max(0.0) * self.gravity.norm();
+            let rate =
+                (p.seabed_damping * self.bearing + seabed.line_friction * wet / p.friction_speed) / (2.0 * lambda);
+            oscillator((p.seabed_stiffness * self.bearing / lambda).sqrt(), rate)
+        });
+        LineLimits { axial, seabed }
+    }
+
+    /// The sub-step the line takes: [`SUBSTEP_MARGIN`] of its binding limit.
+    pub fn substep(&self) -> f64 {
+        let limits = self.limits();
+        SUBSTEP_MARGIN * limits.axial.min(limits.seabed)
+    }
+}
+
+/// A line's own stable time steps \[s] (infinite where nothing limits).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LineLimits {
+    pub axial: f64,
+    pub seabed: f64,
+}
+
+/// Density of steel [kg/m³], for the bearing width of a line without a displaced area.
+const STEEL_DENSITY: f64 = 7850.0;
+
+/// `√(4 A/π)` \[m] of a circle of area `area` \[m²].
+fn diameter(area: f64) -> f64 {
+    (4.0 * area / std::f64::consts::PI).sqrt()
+}
+
+/// `2/(√(ω² + β²) + β)` \[s] for angular frequency `omega` [rad/s] and damping rate `rate` [1/s].
+fn oscillator(omega: f64, rate: f64) -> f64 {
+    2.0 / ((omega * omega + rate * rate).sqrt() + rate)
+}

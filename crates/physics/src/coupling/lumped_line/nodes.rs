@@ -1,0 +1,200 @@
+//! The nodes of a dynamic line and the forces on them (PHYSICS.md §8 "Segment i", "Node i").
+//!
+//! Segment `i` joins nodes `i` and `i + 1`: `Δ = r_{i+1} − r_i`, `l_s = |Δ|`, `q = Δ/l_s`,
+//! `ε = l_s/l − 1`, `ε̇ = q·(v_{i+1} − v_i)/l`; it carries `T = EA max(ε, 0) + BA ε̇` \[N]
+//! along `q`. Node `i` (length share `l_i`, mass `m_i = λ0 l_i`) feels its segments, its wet
+//! weight `m_i g − ρ A_d l_i g` under the still surface (`m_i g` above it), and under water the
+//! drag `½ρ C_dn d l_i |v_rn| v_rn + ½ρ C_dt π d l_i |v_rt| v_rt` and the waves' inertia
+//! `ρ A_d l_i [(1 + C_an) u̇_n + (1 + C_at) u̇_t]` on the relative velocity `v_r = u − v` split
+//! along the node's tangent `q̂`; below the seabed (penetration `δ`) `(k_b δ − c_b v_z) d l_i`
+//! upward and the friction `−C_B F_z tanh(|v_h|/v_s) v_h/|v_h|`. Its mass matrix is
+//! `M_i = m_i E + ρ A_d l_i [C_an (E − q̂q̂ᵀ) + C_at q̂q̂ᵀ]` under water: `a E + b q̂q̂ᵀ`,
+//! inverted as `(E − b/(a + b) q̂q̂ᵀ)/a`.
+
+use super::Discrete;
+use crate::math::Vec3;
+
+/// Where a line's nodes are and how fast they move, at `time`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LineNodes {
+    /// \[s].
+    pub time: f64,
+    /// `r_0 … r_N` \[m], world.
+    pub positions: Vec<Vec3>,
+    /// `v_0 … v_N` [m/s], world.
+    pub velocities: Vec<Vec3>,
+}
+
+impl LineNodes {
+    /// `positions` at rest at `time`.
+    pub fn at_rest(time: f64, positions: Vec<Vec3>) -> Self {
+        let velocities = vec![Vec3::zeros(); positions.len()];
+        Self { time, positions, velocities }
+    }
+
+    /// `½ Σ m_i |v_i|²` \[J] of the nodes between the ends (the ends move with what they are
+    /// attached to; their half-segment inertia is left out, as in MoorDyn's coupled points).
+    pub fn kinetic_energy(&self, line: &Discrete) -> f64 {
+        let interior = 1..line.segments;
+        interior.map(|i| 0.5 * line.mass_per_length * line.share(i) * self.velocities[i].norm_squared()).sum()
+    }
+}
+
+/// The water's velocity and acceleration at a node [m/s, m/s²] (zero without water).
+pub type Flow = (Vec3, Vec3);
+
+/// The forces on a line's nodes at one instant, with what they store.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct NodeForces {
+    /// Every force on node `i` \[N].
+    pub total: Vec<Vec3>,
+    /// The part of `total` with no potential (internal damping, drag, the waves' inertia, the
+    /// seabed's damping and friction) \[N]: its work is booked.
+    pub unbooked: Vec<Vec3>,
+    /// Segment tensions `EA max(ε, 0) + BA ε̇` \[N].
+    pub tensions: Vec<f64>,
+    /// Node mass matrices as `(a, b, q̂)`: `M = a E + b q̂q̂ᵀ` [kg].
+    pub masses: Vec<(f64, f64, Vec3)>,
+    /// Elastic `Σ ½ EA l ε²` over taut segments, wet weight and seabed `Σ ½ k_b d l_i δ²` \[J].
+    pub potential: f64,
+}
+
+impl NodeForces {
+    /// Buffers for a line of `segments` segments.
+    fn resize(&mut self, segments: usize) {
+        self.total.resize(segments + 1, Vec3::zeros());
+        self.unbooked.resize(segments + 1, Vec3::zeros());
+        self.tensions.resize(segments, 0.0);
+        self.masses.resize(segments + 1, (0.0, 0.0, Vec3::z()));
+    }
+
+    /// `M_i⁻¹ F_i` [m/s²] of node `i`.
+    #[inline(always)]
+    pub fn acceleration(&self, node: usize) -> Vec3 {
+        let (a, b, q) = self.masses[node];
+        let force = self.total[node];
+        (force - q * (b / (a + b) * q.dot(&force))) / a
+    }
+
+    /// `(M_i − m_i E) a` \[N]: the force that accelerates the water node `i` carries with it.
+    #[inline(always)]
+    pub fn added_mass_force(&self, node: usize, mass: f64, acceleration: &Vec3) -> Vec3 {
+        let (a, b, q) = self.masses[node];
+        acceleration * (a - mass) + q * (b * q.dot(acceleration))
+    }
+}
+
+/// The forces on every node of `line` at `nodes` in the water's `flow` at each node (empty:
+/// none), into `out`. The end nodes get their segment, weight and seabed forces only: they move
+/// with their bodies, whose own water loads they share.
+pub fn evaluate(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut NodeForces) {
+    let n = line.segments;
+    out.resize(n);
+    out.potential = 0.0;
+    let (x, v) = (&nodes.positions, &nodes.velocities);
+    for node in 0..=n {
+        out.total[node] = Vec3::zeros();
+        out.unbooked[node] = Vec3::zeros();
+    }
+    let mut previous = Vec3::z();
+    for i in 0..n {
+        let delta = x[i + 1] - x[i];
+        let stretched = delta.norm();
+        let q = if stretched > 0.0 { delta / stretched } else { previous };
+        previous = q;
+        let strain = stretched / line.segment - 1.0;
+        let rate = q.dot(&(v[i + 1] - v[i])) / line.segment;
+        let elastic = line.ea * strain.max(0.0);
+        let damping = line.ba * rate;
+        out.tensions[i] = elastic + damping;
+        if strain > 0.0 {
+            out.potential += 0.5 * line.ea * line.segment * strain * strain;
+        }
+        out.total[i] += q * (elastic + damping);
+        out.total[i + 1] -= q * (elastic + damping);
+        out.unbooked[i] += q * damping;
+        out.unbooked[i + 1] -= q * damping;
+    }
+    let g = line.gravity.norm();
+    for node in 0..=n {
+        let share = line.share(node);
+        let mass = line.mass_per_length * share;
+        let position = &x[node];
+        let height = position.dot(&line.up);
+        out.total[node] += line.gravity * mass;
+        out.potential += mass * g * height;
+        let tangent = tangent(x, node, n);
+        let submerged = line.submerged(position);
+        let displaced = line.density * line.displaced_area * share;
+        let mut matrix = (mass, 0.0, tangent);
+        if let Some(level) = line.water_level {
+            // The buoyancy's potential −ρ A_d l_i g min(h − h_w, 0) is continuous at the surface.
+            out.potential -= displaced * g * (height - level).min(0.0);
+        }
+        if submerged {
+            out.total[node] += line.up * (displaced * g);
+            let interior = node != 0 && node != n;
+            if interior {
+                let p = &line.parameters;
+                matrix = (
+                    mass + displaced * p.added_mass_normal,
+                    displaced * (p.added_mass_tangential - p.added_mass_normal),
+                    tangent,
+                );
+                if let Some((water_velocity, water_acceleration)) = flow.get(node) {
+                    let water = water_forces(line, share, &tangent, &(water_velocity - v[node]), water_acceleration);
+                    out.total[node] += water;
+                    out.unbooked[node] += water;
+                }
+            }
+        }
+        if let Some(seabed) = &line.seabed {
+            let depth = seabed.elevation - height;
+            if depth > 0.0 {
+                let p = &line.parameters;
+                let area = line.bearing * share;
+                let sinking = v[node].dot(&line.up);
+                out.potential += 0.5 * p.seabed_stiffness * area * depth * depth;
+                out.total[node] += line.up * (p.seabed_stiffness * area * depth);
+                let damping = -line.up * (p.seabed_damping * area * sinking);
+                let normal = (p.seabed_stiffness * depth - p.seabed_damping * sinking).max(0.0) * area;
+                let sliding = v[node] - line.up * sinking;
+                let speed = sliding.norm();
+                let friction = if speed > 0.0 {
+                    -sliding * (seabed.line_friction * normal * (speed / p.friction_speed).tanh() / speed)
+                } else {
+                    Vec3::zeros()
+                };
+                out.total[node] += damping + friction;
+                out.unbooked[node] += damping + friction;
+            }
+        }
+        out.masses[node] = matrix;
+    }
+}
+
+/// Drag and the waves' inertia \[N] on a node of length share `share` with tangent `tangent`,
+/// relative velocity `relative` = u − v and water acceleration `acceleration`.
+#[inline(always)]
+fn water_forces(line: &Discrete, share: f64, tangent: &Vec3, relative: &Vec3, acceleration: &Vec3) -> Vec3 {
+    let p = &line.parameters;
+    let along = tangent * tangent.dot(relative);
+    let across = relative - along;
+    let half_rho = 0.5 * line.density;
+    let drag = across * (half_rho * p.drag_normal * line.diameter * share * across.norm())
+        + along * (half_rho * p.drag_tangential * std::f64::consts::PI * line.diameter * share * along.norm());
+    let accel_along = tangent * tangent.dot(acceleration);
+    let accel_across = acceleration - accel_along;
+    let displaced = line.density * line.displaced_area * share;
+    let inertia =
+        (accel_across * (1.0 + p.added_mass_normal) + accel_along * (1.0 + p.added_mass_tangential)) * displaced;
+    drag + inertia
+}
+
+/// The unit tangent at node `node` of `n + 1`: along `r_{i+1} − r_{i−1}`, an end's along its
+/// segment.
+#[inline(always)]
+fn tangent(x: &[Vec3], node: usize, n: usize) -> Vec3 {
+    let (a, b) = (node.saturating_sub(1), (node + 1).min(n));
+    (x[b] - x[a]).try_normalize(0.0).unwrap_or_else(Vec3::z)
+}

@@ -1,0 +1,221 @@
+//! What a run of a dynamic line remembers, and how it advances to the time of the next force
+//! evaluation (PHYSICS.md §8 "Time integration").
+//!
+//! The line keeps the nodes of the last *accepted* integrator step (`committed`, at `t_c`).
+//! An evaluation at `t ≥ t_c` with the ends at `p1`, `p2` starts again from them and steps the
+//! nodes to `t` in `K = ⌈(t − t_c)/h_s⌉` equal sub-steps of semi-implicit Euler
+//! (`v += h M⁻¹F`, `r += h v`; `h_s` a margin under the line's stable step,
+//! [`Discrete::substep`]), the ends moving on the straight path from where they were at `t_c`
+//! to `p1`, `p2` — the leapfrog's own path for the bodies over a step — and the water's
+//! kinematics held at each node's `t_c` position and mid-interval time. The bodies then feel
+//! each end node's force at `t`. Evaluating again at the same time or at a stage of a
+//! Runge–Kutta step starts from the same committed nodes, so an integrator may evaluate as
+//! often as it likes; the world commits the last evaluation when it accepts a step
+//! ([`LineRun::commit`]).
+//!
+//! Energy: the coupling's `potential` is the nodes' kinetic energy (structural mass) with the
+//! elastic, wet-weight and seabed energies; the work of everything else on the interior nodes
+//! (internal damping, drag, the waves' inertia, the added mass's reaction, the seabed's damping
+//! and friction) is summed over the sub-steps against the mid-step velocity `½(v_k + v_{k+1})`
+//! and reported as the interval's mean dissipated power.
+
+use super::Discrete;
+use super::nodes::{self, Flow, LineNodes, NodeForces};
+use super::statics;
+use crate::coupling::{Catenary, EndMotion};
+use crate::math::Vec3;
+use crate::surroundings::Surroundings;
+use crate::water::Water;
+
+/// A dynamic line whose nodes stopped being finite.
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+#[error("the dynamic line diverged at t = {time} s (node {node} not finite; its sub-step was {substep} s)")]
+pub struct LineError {
+    pub time: f64,
+    pub node: usize,
+    pub substep: f64,
+}
+
+/// What a run of one dynamic line remembers.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LineRun {
+    /// Index of the line's coupling in the system.
+    pub coupling: usize,
+    /// The nodes at the last accepted step (`None` before the first evaluation: the line then
+    /// starts at rest in its static equilibrium).
+    committed: Option<LineNodes>,
+    /// The mean dissipated power over the interval that led to `committed` \[W].
+    committed_power: f64,
+    /// The nodes at the last evaluation, and the forces on them there.
+    current: Option<LineNodes>,
+    forces: NodeForces,
+    /// The mean dissipated power over the last evaluation's interval \[W].
+    power: f64,
+    /// Sub-steps of the last evaluation's interval, and their length \[s].
+    substeps: u32,
+    substep: f64,
+    /// Scratch: the forces at a sub-step, the water's kinematics at each node.
+    scratch: NodeForces,
+    flow: Vec<Flow>,
+}
+
+/// What the line did at an evaluation, for its coupling's record.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LineOutcome {
+    /// Forces exerted on the end bodies \[N].
+    pub f1: Vec3,
+    pub f2: Vec3,
+    /// Kinetic, elastic, wet-weight and seabed energy \[J].
+    pub energy: f64,
+    /// Mean power taken out by damping, drag and the seabed over the interval \[W].
+    pub dissipated_power: f64,
+}
+
+impl LineRun {
+    /// A run of coupling `coupling`, which starts at rest at its first evaluation.
+    pub fn new(coupling: usize) -> Self {
+        Self {
+            coupling,
+            committed: None,
+            committed_power: 0.0,
+            current: None,
+            forces: NodeForces::default(),
+            power: 0.0,
+            substeps: 0,
+            substep: 0.0,
+            scratch: NodeForces::default(),
+            flow: Vec::new(),
+        }
+    }
+
+    /// The nodes at the last evaluation.
+    pub fn nodes(&self) -> Option<&LineNodes> {
+        self.current.as_ref()
+    }
+
+    /// The segment tensions at the last evaluation \[N].
+    pub fn tensions(&self) -> &[f64] {
+        &self.forces.tensions
+    }
+
+    /// Sub-steps of the last evaluation's interval and their length \[s].
+    pub fn substeps(&self) -> (u32, f64) {
+        (self.substeps, self.substep)
+    }
+
+    /// Keeps the last evaluation's nodes as the start of the next interval (the world calls it
+    /// when it accepts an integrator step).
+    pub fn commit(&mut self) {
+        if let Some(current) = &self.current {
+            match &mut self.committed {
+                Some(committed) => committed.clone_from(current),
+                None => self.committed = Some(current.clone()),
+            }
+            self.committed_power = self.power;
+        }
+    }
+
+    /// The line (`line`, constants `discrete`) at `time` \[s] with its ends at `ends`, in the
+    /// water `water` if any: steps the nodes from the committed ones and gives the end forces.
+    ///
+    /// # Errors
+    /// A node that is no longer finite.
+    pub fn advance(
+        &mut self,
+        line: &Catenary,
+        discrete: &Discrete,
+        surroundings: &Surroundings,
+        water: Option<&Water>,
+        ends: &[EndMotion; 2],
+        time: f64,
+    ) -> Result<LineOutcome, LineError> {
+        let committed = match self.committed.take() {
+            Some(committed) if committed.time <= time => committed,
+            _ => {
+                let (p1, p2) = (ends[0].position, ends[1].position);
+                self.committed_power = 0.0;
+                statics::solve(line, discrete, surroundings, &p1, &p2, time).nodes
+            }
+        };
+        let mut nodes = self.current.take().unwrap_or_else(|| committed.clone());
+        nodes.clone_from(&committed);
+        let start = committed.time;
+        self.committed = Some(committed);
+        let interval = time - start;
+        let n = discrete.segments;
+        if interval > 0.0 {
+            let substep = discrete.substep();
+            // At least one sub-step; the count is finite for a finite interval and a positive step.
+            let count = (interval / substep).ceil().clamp(1.0, f64::from(u32::MAX)) as u32;
+            let h = interval / f64::from(count);
+            self.fill_flow(water, &nodes, start + 0.5 * interval);
+            let work = self.step_nodes(discrete, &mut nodes, ends, count, h)?;
+            self.power = -work / interval;
+            (self.substeps, self.substep) = (count, h);
+        } else {
+            self.power = self.committed_power;
+            self.substeps = 0;
+        }
+        for (end, node) in [(0, 0), (1, n)] {
+            nodes.positions[node] = ends[end].position;
+            nodes.velocities[node] = ends[end].velocity;
+        }
+        nodes.time = time;
+        nodes::evaluate(discrete, &nodes, &self.flow, &mut self.forces);
+        let outcome = LineOutcome {
+            f1: self.forces.total[0],
+            f2: self.forces.total[n],
+            energy: self.forces.potential + nodes.kinetic_energy(discrete),
+            dissipated_power: self.power,
+        };
+        self.current = Some(nodes);
+        Ok(outcome)
+    }
+
+    /// The water's velocity and acceleration at each node at `time` (none without water).
+    fn fill_flow(&mut self, water: Option<&Water>, nodes: &LineNodes, time: f64) {
+        self.flow.clear();
+        if let Some(water) = water {
+            self.flow.extend(nodes.positions.iter().map(|p| water.flow(p, time)));
+        }
+    }
+
+    /// `count` sub-steps of `h` \[s] from `nodes`, the ends moving straight from where they are
+    /// to `ends`; returns the work of the forces without potential on the interior nodes \[J].
+    fn step_nodes(
+        &mut self,
+        line: &Discrete,
+        nodes: &mut LineNodes,
+        ends: &[EndMotion; 2],
+        count: u32,
+        h: f64,
+    ) -> Result<f64, LineError> {
+        let n = line.segments;
+        let interval = h * f64::from(count);
+        let from = [nodes.positions[0], nodes.positions[n]];
+        let speed = [(ends[0].position - from[0]) / interval, (ends[1].position - from[1]) / interval];
+        let mut work = 0.0;
+        for k in 0..count {
+            let elapsed = h * f64::from(k);
+            for (end, node) in [(0, 0), (1, n)] {
+                nodes.positions[node] = from[end] + speed[end] * elapsed;
+                nodes.velocities[node] = speed[end];
+            }
+            nodes::evaluate(line, nodes, &self.flow, &mut self.scratch);
+            for i in 1..n {
+                let acceleration = self.scratch.acceleration(i);
+                let before = nodes.velocities[i];
+                let after = before + acceleration * h;
+                let mass = line.mass_per_length * line.share(i);
+                let unbooked = self.scratch.unbooked[i] - self.scratch.added_mass_force(i, mass, &acceleration);
+                work += h * 0.5 * (before + after).dot(&unbooked);
+                nodes.velocities[i] = after;
+                nodes.positions[i] += after * h;
+                if !(nodes.positions[i].iter().all(|c| c.is_finite()) && after.iter().all(|c| c.is_finite())) {
+                    return Err(LineError { time: nodes.time + elapsed + h, node: i, substep: h });
+                }
+            }
+        }
+        Ok(work)
+    }
+}

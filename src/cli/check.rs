@@ -3,7 +3,8 @@
 use std::fmt::Write as _;
 use tether_physics::body::Support;
 use tether_physics::coupling::contact::Opposing;
-use tether_physics::coupling::{Contact, CouplingKind, ElasticLaw, Endpoint};
+use tether_physics::coupling::lumped_line::Discrete;
+use tether_physics::coupling::{Catenary, Contact, CouplingKind, ElasticLaw, Endpoint, LineModel, LumpedMass};
 use tether_physics::math::{Mat3, Vec3};
 use tether_physics::stability;
 use tether_physics::water::WaveSpec;
@@ -78,6 +79,9 @@ fn report(world: &World, label: &str) -> String {
                         line.displaced_area,
                         line.submerged_mass_per_length(fluid) * world.gravity().norm()
                     );
+                }
+                if let LineModel::Dynamic(parameters) = &line.model {
+                    dynamic_line_report(&mut out, world, index, line, parameters);
                 }
                 if let Some(state) = world.line_state(index) {
                     let (t1, t2) = state.end_tensions();
@@ -370,4 +374,38 @@ fn law(l: &ElasticLaw) -> String {
             )
         }
     }
+}
+
+/// A dynamic line's segments, damping, drag and added mass, its own stable time steps (axial,
+/// seabed) and the sub-step it takes, and its end forces at t = 0 (PHYSICS.md §8).
+fn dynamic_line_report(out: &mut String, world: &World, index: usize, line: &Catenary, parameters: &LumpedMass) {
+    let system = world.system();
+    let water = system.water().map(|stage| stage.water.level());
+    let discrete = Discrete::new(line, parameters, system.surroundings(), water);
+    let limits = discrete.limits();
+    let _ = writeln!(
+        out,
+        "  dynamic: N = {} segments of {:.6} m, BA = {:.6} N·s, C_dn {} C_dt {} C_an {} C_at {}",
+        discrete.segments,
+        discrete.segment,
+        discrete.ba,
+        parameters.drag_normal,
+        parameters.drag_tangential,
+        parameters.added_mass_normal,
+        parameters.added_mass_tangential
+    );
+    let seabed = if limits.seabed.is_finite() { format!("{:.6e} s", limits.seabed) } else { "none".to_string() };
+    let _ = writeln!(
+        out,
+        "  line's own stable step: axial {:.6e} s, seabed {seabed}; it sub-steps by {:.6e} s",
+        limits.axial,
+        discrete.substep()
+    );
+    let forces = &world.coupling_forces()[index];
+    let _ = writeln!(
+        out,
+        "  at rest in its discrete equilibrium: end tensions {:.6} / {:.6} N",
+        forces.f1.norm(),
+        forces.f2.norm()
+    );
 }

@@ -49,6 +49,11 @@ pub struct StudyArgs {
     /// Runs measured at once (default: every core; each run's CPU time is its own thread's).
     #[arg(long)]
     jobs: Option<NonZeroUsize>,
+    /// Study the scene's line models instead (PHYSICS.md §8): quasi-static and dynamic at
+    /// N = 10, 20, 40, 80 against dynamic N = 160, by peak and minimum fairlead tension over the
+    /// second half of the run and CPU per simulated second; writes `lines.md`.
+    #[arg(long)]
+    line_models: bool,
 }
 
 /// `dopri45:1e-12`, `rk4:1e-5` or `closed-form`.
@@ -73,6 +78,9 @@ fn parse_reference(text: &str) -> Result<Reference, String> {
 
 pub fn run(args: &StudyArgs) -> anyhow::Result<()> {
     let scene = super::load(&args.scene)?;
+    if args.line_models {
+        return line_models(args, &scene);
+    }
     let integrators = if args.integrators.is_empty() { Integrator::ALL.to_vec() } else { args.integrators.clone() };
     let dts = if args.dts.is_empty() {
         let largest = args.dt_max.unwrap_or(4.0 * scene.file.dt);
@@ -119,4 +127,21 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<()> {
     }
     study::chart::write(&result, &directory.join("study.png"))?;
     super::print(&format!("{table}\nwritten: {0}/study.csv, {0}/study.md, {0}/study.png\n", directory.display()))
+}
+
+/// `tether study SCENE --line-models`: the line-model study, printed and written to `lines.md`.
+fn line_models(args: &StudyArgs, scene: &tether_scene::Scene) -> anyhow::Result<()> {
+    let duration = args.duration.unwrap_or(scene.file.duration);
+    if !(duration.is_finite() && duration > 0.0) {
+        bail!("--duration must be a positive number of seconds, got {duration}");
+    }
+    let runner = Runner::new(args.jobs.unwrap_or_else(all_cores));
+    let result = study::lines::run(&runner, scene, duration, |line| eprintln!("{line}"))?;
+    let stem = args.scene.file_stem().map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());
+    let directory = args.output.clone().unwrap_or_else(|| PathBuf::from(format!("study-{stem}")));
+    std::fs::create_dir_all(&directory).with_context(|| format!("cannot create {}", directory.display()))?;
+    let table = study::lines::markdown(&result);
+    let path = directory.join("lines.md");
+    std::fs::write(&path, &table).with_context(|| format!("cannot write {}", path.display()))?;
+    super::print(&format!("{table}\nwritten: {}\n", path.display()))
 }

@@ -14,6 +14,7 @@ use rerun::external::egui::emath::Numeric;
 use std::fmt::Display;
 use tether_scene::SceneFile;
 use tether_scene::file::{CouplingDef, LawDef};
+use tether_scene::line_model::{DampingDef, LineModelDef};
 
 /// What the tuning panel asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -75,11 +76,12 @@ fn coupling_knobs(ui: &mut egui::Ui, index: usize, def: &mut CouplingDef) -> boo
             CouplingDef::SpringDamper { law, damping, .. } => {
                 law_knobs(ui, law) | knob(ui, "damping k_d", damping, "N·s/m")
             }
-            CouplingDef::Catenary { mass_per_length, length, stiffness, displaced_area, .. } => {
+            CouplingDef::Catenary { mass_per_length, length, stiffness, displaced_area, model, .. } => {
                 knob(ui, "mass per length λ0", mass_per_length, "kg/m")
                     | knob(ui, "length L_eq", length, "m")
                     | knob(ui, "stiffness D", stiffness, "N/m")
                     | knob(ui, "displaced area A_d", displaced_area, "m²")
+                    | line_model_knobs(ui, model)
             }
             CouplingDef::Contact { stiffness, damping, range, friction, friction_sharpness, expected_area, .. } => {
                 let law = knob(ui, "stiffness k1", stiffness, "N/m³")
@@ -91,6 +93,59 @@ fn coupling_knobs(ui: &mut egui::Ui, index: usize, def: &mut CouplingDef) -> boo
             }
         })
         .inner
+}
+
+/// A line's model (PHYSICS.md §3 quasi-static, §8 dynamic): the switch, and a dynamic line's
+/// segments, internal damping, drag and added mass. Switched to dynamic, a line takes 20
+/// segments, ζ = 0.8 and a wire's coefficients (C_dn 1.2, C_dt 0.008, C_an 1, C_at 0), and
+/// starts from its quasi-static shape where it is.
+fn line_model_knobs(ui: &mut egui::Ui, model: &mut LineModelDef) -> bool {
+    let name = ui.label("line model");
+    let mut dynamic = !model.is_quasi_static();
+    let switched = ui.checkbox(&mut dynamic, "dynamic (lumped mass)").labelled_by(name.id).changed();
+    ui.label("");
+    ui.end_row();
+    if switched {
+        *model = if dynamic {
+            LineModelDef::Dynamic {
+                segments: 20,
+                damping: DampingDef::Ratio(0.8),
+                drag_normal: 1.2,
+                drag_tangential: 0.008,
+                added_mass_normal: 1.0,
+                added_mass_tangential: 0.0,
+                seabed_stiffness: tether_physics::coupling::LumpedMass::SEABED_STIFFNESS,
+                seabed_damping: tether_physics::coupling::LumpedMass::SEABED_DAMPING,
+                friction_speed: tether_physics::coupling::LumpedMass::FRICTION_SPEED,
+            }
+        } else {
+            LineModelDef::QuasiStatic
+        };
+    }
+    let edited = match model {
+        LineModelDef::QuasiStatic => false,
+        LineModelDef::Dynamic {
+            segments,
+            damping,
+            drag_normal,
+            drag_tangential,
+            added_mass_normal,
+            added_mass_tangential,
+            ..
+        } => {
+            let damping = match damping {
+                DampingDef::Ratio(zeta) => knob(ui, "damping ratio ζ", zeta, "–"),
+                DampingDef::Coefficient(ba) => knob(ui, "damping BA", ba, "N·s"),
+            };
+            knob(ui, "segments N", segments, "–")
+                | damping
+                | knob(ui, "drag C_dn", drag_normal, "–")
+                | knob(ui, "drag C_dt", drag_tangential, "–")
+                | knob(ui, "added mass C_an", added_mass_normal, "–")
+                | knob(ui, "added mass C_at", added_mass_tangential, "–")
+        }
+    };
+    switched | edited
 }
 
 /// The knobs of an elastic law (PHYSICS.md §2).

@@ -15,10 +15,12 @@
 //! The reference is a run of a fine integrator or, where the scene is a damped linear
 //! oscillator, its [`closed_form`].
 //!
-//! [`report`] writes the CSV and Markdown tables, [`chart`] the work-precision chart.
+//! [`report`] writes the CSV and Markdown tables, [`chart`] the work-precision chart; [`lines`]
+//! is the study of a scene's line models (quasi-static against dynamic at N segments).
 
 pub mod chart;
 pub mod closed_form;
+pub mod lines;
 pub mod report;
 
 use crate::runner::{Runner, thread_cpu_seconds};

@@ -36,6 +36,7 @@
 //!   waves'.
 
 use crate::body::{BodyFrame, BodyState};
+use crate::coupling::LineModel;
 use crate::coupling::contact::estimator::STEPS_PER_STOPPING_TIME;
 use crate::coupling::{Contact, CouplingKind, Endpoint};
 use crate::evaluation::Evaluation;
@@ -156,6 +157,24 @@ pub fn limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
                 let length = chord.norm();
                 let Some(d) = chord.try_normalize(0.0) else { continue };
                 oscillator_limit(integrator, spring.law.tangent_stiffness(length), spring.damping, along(&d))
+            }
+            CouplingKind::Catenary(line) if line.model != LineModel::QuasiStatic => {
+                // An end body is held by its first segment, a spring EA/l against the next node
+                // (PHYSICS.md §8): the bodies' step must resolve it.
+                let Some(nodes) = evaluation.line_run(index).and_then(|run| run.nodes()) else { continue };
+                let n = nodes.positions.len() - 1;
+                let stiffness = line.stiffness * n as f64;
+                let first = [
+                    (end1, nodes.positions[1] - nodes.positions[0]),
+                    (end2, nodes.positions[n - 1] - nodes.positions[n]),
+                ];
+                first
+                    .iter()
+                    .filter_map(|(end, along_segment)| {
+                        let d = along_segment.try_normalize(0.0)?;
+                        Some(oscillator_limit(integrator, stiffness, 0.0, inverse_mass_along(system, frames, end, &d)))
+                    })
+                    .fold(f64::INFINITY, f64::min)
             }
             CouplingKind::Catenary(_) => {
                 let Some(state) = evaluation.line_state(index) else { continue };

@@ -6,6 +6,7 @@
 
 pub use super::finite::Triple;
 use super::finite::{finite, finite_option, finite_pairs, finite_velocity_table, finite3};
+use super::line_model::LineModelDef;
 use super::water::{HydroDef, WaterDef};
 use serde::{Deserialize, Serialize};
 use tether_physics::integrator::{Integrator, Substeps};
@@ -296,7 +297,8 @@ pub enum CouplingDef {
     /// Elastic catenary line (PHYSICS.md §3, on the seabed §7): `mass_per_length` λ0 [kg/m]
     /// ≥ 0, unstretched `length` L_eq \[m] > 0, `stiffness` D [N/m] > 0 of the whole line
     /// (EA = D L_eq), `displaced_area` A_d \[m²] ≥ 0, its displaced volume per length: in water
-    /// it weighs `(λ0 − ρ A_d) g` per metre (default 0).
+    /// it weighs `(λ0 − ρ A_d) g` per metre (default 0); `model` `QuasiStatic` (default) or
+    /// `Dynamic(…)` (PHYSICS.md §8, [`LineModelDef`]).
     Catenary {
         name: String,
         end1: EndDef,
@@ -309,6 +311,8 @@ pub enum CouplingDef {
         stiffness: f64,
         #[serde(default, skip_serializing_if = "is_zero", deserialize_with = "finite")]
         displaced_area: f64,
+        #[serde(default, skip_serializing_if = "LineModelDef::is_quasi_static")]
+        model: LineModelDef,
     },
     /// Penalty contact with tanh friction (PHYSICS.md §4) between the faces of body `body`'s
     /// shape and `against`. Per unit face area: `stiffness` k1 [N/m³] > 0, `damping` k2

@@ -1,7 +1,10 @@
 //! Catenaries: `world/couplings/<name>` holds the line along its solved shape, 32 segments in 8
 //! bands coloured by tension (blue: the lowest tension along the line, red: the highest) every
-//! frame, its width static; `plots/catenary` holds the end tensions of every line, series
-//! `<name> end1` and `<name> end2` [N].
+//! frame, its width static; a dynamic line (PHYSICS.md §8) is drawn through its nodes, banded
+//! the same way by its segments' tensions. `plots/catenary` holds the end tensions of every
+//! line, series `<name> end1` and `<name> end2` [N], and for a dynamic line beside them the
+//! quasi-static catenary's for the same end positions, `<name> end1 quasi-static` and
+//! `<name> end2 quasi-static`: its dynamic amplification.
 //!
 //! A band is one strip of 4 segments with one colour: 40 points and 8 colours a frame, 576 bytes
 //! with the row's index, where 32 two-point strips took 1,116 — the file writer compresses every
@@ -13,8 +16,9 @@ use crate::frames::Frames;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;
-use tether_physics::coupling::CouplingKind;
-use tether_physics::coupling::catenary::LineState;
+use tether_physics::coupling::lumped_line::LineRun;
+use tether_physics::coupling::{Catenary, CouplingKind, LineModel};
+use tether_physics::math::Vec3;
 use tether_physics::world::World;
 
 /// Segments a line is drawn with.
@@ -27,6 +31,8 @@ const BANDS: usize = 8;
 struct Line {
     /// Coupling index in the world.
     index: usize,
+    /// Whether the line is dynamic: its plot then has the quasi-static tensions beside.
+    dynamic: bool,
     path: String,
     /// The strips' points and colours, frame after frame; `points_per_strip` says how many
     /// points each strip has, `strips_per_frame` how many strips each frame has.
@@ -50,9 +56,13 @@ impl Catenaries {
             .couplings()
             .iter()
             .enumerate()
-            .filter(|(_, coupling)| matches!(coupling.kind, CouplingKind::Catenary(_)))
-            .map(|(index, coupling)| Line {
+            .filter_map(|(index, coupling)| match &coupling.kind {
+                CouplingKind::Catenary(line) => Some((index, coupling, line.model != LineModel::QuasiStatic)),
+                CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => None,
+            })
+            .map(|(index, coupling, dynamic)| Line {
                 index,
+                dynamic,
                 path: paths::coupling(coupling),
                 points: Vec::new(),
                 points_per_strip: Vec::new(),
@@ -66,6 +76,11 @@ impl Catenaries {
     pub(super) fn len(&self) -> usize {
         self.lines.len()
     }
+
+    /// Series in the tension plot: two per line, four per dynamic line.
+    fn series(&self) -> usize {
+        self.lines.iter().map(|line| if line.dynamic { 4 } else { 2 }).sum()
+    }
 }
 
 impl Track for Catenaries {
@@ -76,7 +91,10 @@ impl Track for Catenaries {
         }
         let names = self.lines.iter().flat_map(|line| {
             let name = &world.couplings()[line.index].name;
+            let quasi_static = [format!("{name} end1 quasi-static"), format!("{name} end2 quasi-static")];
             [format!("{name} end1"), format!("{name} end2")]
+                .into_iter()
+                .chain(quasi_static.into_iter().filter(|_| line.dynamic))
         });
         stream.log_static(paths::CATENARY_PLOT, &rerun::SeriesLines::new().with_names(names))?;
         Ok(())
@@ -87,10 +105,16 @@ impl Track for Catenaries {
         for line in &mut self.lines {
             let forces = &world.coupling_forces()[line.index];
             let points_before = line.points.len();
-            let (strips, (t1, t2)) = match world.line_state(line.index) {
-                Some(state) => (shape(state, line), state.end_tensions()),
+            let run = world.evaluation().line_run(line.index);
+            let mut quasi_static = None;
+            let (strips, (t1, t2)) = match (run, world.line_state(line.index)) {
+                (Some(run), _) if run.nodes().is_some() => {
+                    quasi_static = Some(quasi_static_tensions(world, &world.couplings()[line.index], forces));
+                    (bands(&nodes_with_tensions(run), line), (forces.f1.norm(), forces.f2.norm()))
+                }
+                (_, Some(state)) => (bands(&state.sample(SEGMENTS), line), state.end_tensions()),
                 // Not solved yet: the chord, and the forces at the ends.
-                None => {
+                (_, None) => {
                     line.points.extend([f32x3(&forces.point1), f32x3(&forces.point2)]);
                     line.points_per_strip.push(2);
                     line.colors.push(rerun::Color::from_rgb(60, 90, 255));
@@ -99,7 +123,12 @@ impl Track for Catenaries {
             };
             line.strips_per_frame.push(strips);
             self.end_tensions.extend([t1, t2]);
-            bytes += (line.points.len() - points_before) * 3 * 4 + strips * (4 + 4) + 2 * 8;
+            if line.dynamic {
+                // Before the first evaluation, the dynamic line's own ends stand in.
+                self.end_tensions.extend(quasi_static.unwrap_or([t1, t2]));
+            }
+            let series = if line.dynamic { 4 } else { 2 };
+            bytes += (line.points.len() - points_before) * 3 * 4 + strips * (4 + 4) + series * 8;
         }
         bytes
     }
@@ -121,15 +150,44 @@ impl Track for Catenaries {
             send_chunk(stream, &line.path, frames.columns(), shape, sent)?;
             line.strips_per_frame.clear();
         }
-        let tensions = plot(std::mem::take(&mut self.end_tensions), 2 * self.lines.len());
+        let tensions = plot(std::mem::take(&mut self.end_tensions), self.series());
         send_chunk(stream, paths::CATENARY_PLOT, frames.columns(), vec![tensions], sent)
     }
 }
 
-/// Appends the bands of `state`'s shape to `line`, each coloured by its mean tension on a
-/// blue → red ramp between the lowest and highest tension along the line; returns how many.
-fn shape(state: &LineState, line: &mut Line) -> usize {
-    let points = state.sample(SEGMENTS);
+/// A dynamic line's nodes, each with the mean tension of its segments \[m, N].
+fn nodes_with_tensions(run: &LineRun) -> Vec<(Vec3, f64)> {
+    let (Some(nodes), tensions) = (run.nodes(), run.tensions()) else { return Vec::new() };
+    let last = tensions.len().saturating_sub(1);
+    nodes
+        .positions
+        .iter()
+        .enumerate()
+        .map(|(i, point)| (*point, 0.5 * (tensions[i.saturating_sub(1).min(last)] + tensions[i.min(last)])))
+        .collect()
+}
+
+/// The end tensions \[N] of `coupling`, a dynamic line, as the quasi-static catenary would
+/// have them at the same end positions (those of `forces`); zeros if it cannot be solved.
+fn quasi_static_tensions(
+    world: &World,
+    coupling: &tether_physics::coupling::Coupling,
+    forces: &tether_physics::coupling::CouplingForces,
+) -> [f64; 2] {
+    let CouplingKind::Catenary(line) = &coupling.kind else { return [0.0; 2] };
+    let quasi_static = Catenary { model: LineModel::QuasiStatic, ..line.clone() };
+    quasi_static
+        .solve(&forces.point1, &forces.point2, world.system().surroundings(), None)
+        .map_or([0.0; 2], |state| state.end_tensions().into())
+}
+
+/// Appends the bands of the line through `points` (each with its tension) to `line`, each
+/// coloured by its mean tension on a blue → red ramp between the lowest and highest tension
+/// along the line; returns how many.
+fn bands(points: &[(Vec3, f64)], line: &mut Line) -> usize {
+    if points.len() < 2 {
+        return 0;
+    }
     let (low, high) = points.iter().fold((f64::INFINITY, 0.0_f64), |(lo, hi), (_, t)| (lo.min(*t), hi.max(*t)));
     let span = (high - low).max(f64::MIN_POSITIVE);
     // Neighbouring bands share their end point; the last band takes what SEGMENTS / BANDS leaves.

@@ -30,7 +30,7 @@ pub mod solver;
 
 use super::ends::Endpoint;
 use super::forces::CouplingForces;
-use super::lumped_line::LineModel;
+use super::lumped_line::parameters::LineModel;
 use crate::body::{BodyFrame, Load};
 use crate::math::Vec3;
 use crate::parameter::{Bound, ParameterError, require};

@@ -1,8 +1,8 @@
 //! One dynamic line in its surroundings: the constants its nodes and segments share, and how
 //! short its own time step must be (PHYSICS.md §8 "Discretisation", "Stable time step").
 
-use super::LumpedMass;
-use crate::coupling::Catenary;
+use super::parameters::LumpedMass;
+use crate::coupling::catenary::Catenary;
 use crate::math::Vec3;
 use crate::seabed::Seabed;
 use crate::surroundings::Surroundings;

@@ -11,7 +11,7 @@
 //! `M_i = m_i E + ρ A_d l_i [C_an (E − q̂q̂ᵀ) + C_at q̂q̂ᵀ]` under water: `a E + b q̂q̂ᵀ`,
 //! inverted as `(E − b/(a + b) q̂q̂ᵀ)/a`.
 
-use super::Discrete;
+use super::discrete::Discrete;
 use crate::math::Vec3;
 
 /// Where a line's nodes are and how fast they move, at `time`.

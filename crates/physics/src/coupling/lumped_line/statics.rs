@@ -10,9 +10,9 @@
 //! block-Thomas solve, shortened by halves until it lowers the line's potential energy (which
 //! the equilibrium minimises) or its largest residual force.
 
-use super::Discrete;
+use super::discrete::Discrete;
 use super::nodes::{self, LineNodes, NodeForces};
-use crate::coupling::Catenary;
+use crate::coupling::catenary::Catenary;
 use crate::math::{Mat3, Vec3};
 use crate::surroundings::Surroundings;
 
@@ -84,7 +84,7 @@ fn first_guess(line: &Catenary, segments: usize, surroundings: &Surroundings, p1
         seabed: surroundings.seabed.map(|seabed| crate::seabed::Seabed { line_friction: 0.0, ..seabed }),
         ..*surroundings
     };
-    let static_line = Catenary { model: super::LineModel::QuasiStatic, ..line.clone() };
+    let static_line = Catenary { model: super::parameters::LineModel::QuasiStatic, ..line.clone() };
     match static_line.solve(p1, p2, &frictionless, None) {
         Ok(state) => state.sample(segments).into_iter().map(|(point, _)| point).collect(),
         Err(_) => (0..=segments).map(|i| p1 + (p2 - p1) * (i as f64 / segments as f64)).collect(),

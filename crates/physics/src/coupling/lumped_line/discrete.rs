@@ -89,7 +89,7 @@ impl Discrete {
         self.water_level.is_some_and(|level| position.dot(&self.up) < level)
     }
 
-    /// The line's stable time steps \[s] under the semi-implicit Euler it is stepped by
+    /// The line's stable time steps \[s] under the velocity Verlet it is stepped by
     /// (`2/(√(ω² + β²) + β)` for a mode `ω` damped at rate `β`, PHYSICS.md §8): the axial one
     /// of its highest mode, `ω = 2√(EA/(λ0 l²))`, `β = 2 BA/(λ0 l²)` (the transverse modes,
     /// `ω = 2√(T/(λ0 l l_s))`, are slower while `T < EA`); and the seabed's,

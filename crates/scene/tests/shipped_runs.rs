@@ -132,6 +132,12 @@ const BOUNDS: &[Bounds] = &[
         ],
         balance_budget: 3e-3,
     },
+    // OC3-Hywind pushed at 0.5 m/s in surge from its equilibrium (G at x = −0.005 m, z = −78.0005 m).
+    Bounds {
+        scene: "oc3_hywind.ron",
+        regions: &[region("spar", [0.0, 0.0, 0.0], [0.0, 0.0, 0.0])],
+        balance_budget: 0.0,
+    },
     // The closed form's envelope: |x − 1| ≤ 0.01 m. Measured drift 2.3e-6 J of the 5 mJ the
     // first-order damper takes.
     Bounds {

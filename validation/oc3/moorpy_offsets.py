@@ -66,18 +66,27 @@ def tether_curve(binary, to, steps, out):
 
 
 def moorpy_system():
-    """The OC3 mooring in MoorPy, with the spar as a free body carrying its weight and buoyancy."""
+    """The OC3 mooring in MoorPy, with the spar as a free body carrying its weight and buoyancy.
+
+    The body's reference point is G, as Tether's offsets hold G: the weight acts there, the
+    buoyancy at the metacentre (MoorPy's hydrostatics: `ρ g V` at `rM` gives the pitch and roll
+    restoring `ρ g V z_M − m g z_G`), and MoorPy's waterplane term `−ρ g A_wp z_ref`, written
+    for a reference point on the waterline, is shifted to G by a constant external force."""
     import numpy as np
     import moorpy as mp
 
     ms = mp.System(depth=DEPTH, rho=RHO, g=G)
-    ms.addLineType("main", LINE["d"], LINE["mass"], LINE["EA"])
-    body = ms.addBody(0, np.zeros(6), m=MASS, v=VOLUME, rCG=[X_G, 0, Z_G], AWP=AWP, rM=[0, 0, Z_M])
+    # The line type by its properties (its weight in water from d_vol, m, ρ and g: 698.094 N/m).
+    ms.setLineType(name="main", lineType=dict(d_vol=LINE["d"], m=LINE["mass"], EA=LINE["EA"], w=None))
+    f6 = np.zeros(6)
+    f6[2] = RHO * G * AWP * Z_G
+    body = ms.addBody(0, [X_G, 0, Z_G, 0, 0, 0], m=MASS, v=VOLUME, rCG=[0, 0, 0], AWP=AWP,
+                      rM=[-X_G, 0, Z_M - Z_G], f6Ext=f6)
     for k in range(3):
         a = 2 * math.pi * k / 3
         anchor = ms.addPoint(1, [ANCHOR_R * math.cos(a), ANCHOR_R * math.sin(a), -DEPTH])
-        fair_rel = [FAIRLEAD_R * math.cos(a), FAIRLEAD_R * math.sin(a), FAIRLEAD_Z]
-        fair = ms.addPoint(1, fair_rel)
+        fair_rel = [FAIRLEAD_R * math.cos(a) - X_G, FAIRLEAD_R * math.sin(a), FAIRLEAD_Z - Z_G]
+        fair = ms.addPoint(1, [fair_rel[0] + X_G, fair_rel[1], FAIRLEAD_Z])
         body.attachPoint(fair.number, fair_rel)
         ms.addLine(LINE["length"], "main", pointA=anchor.number, pointB=fair.number)
     ms.initialize()
@@ -85,27 +94,21 @@ def moorpy_system():
 
 
 def moorpy_curve(offsets):
-    """MoorPy's curve at Tether's offsets (from MoorPy's own equilibrium): restoring force of the
-    lines in surge [N] and fairlead tensions [N], every other direction settled."""
-    import numpy as np
-
+    """MoorPy's curve at Tether's offsets of G from MoorPy's own equilibrium: the lines'
+    restoring force in surge [N] and fairlead tensions [N], every other direction settled."""
     ms, body = moorpy_system()
-    ms.solveEquilibrium()
-    x0 = body.r6[0]
+    ms.solveEquilibrium(tol=1e-6)
     equilibrium = body.r6.copy()
-    body.DOFs = [1, 2, 3, 4, 5]
-    body.nDOF = 5
     out = []
     for dx in offsets:
         r6 = equilibrium.copy()
-        r6[0] = x0 + dx
+        r6[0] += dx
         body.setPosition(r6)
-        ms.solveEquilibrium()
+        body.DOFs, body.nDOF = [1, 2, 3, 4, 5], 5  # surge held
+        ms.solveEquilibrium(tol=1e-6)
+        body.DOFs, body.nDOF = [0, 1, 2, 3, 4, 5], 6
         surge = body.getForces(lines_only=True)[0]
-        tensions = [line.TB for line in ms.lineList]
-        out.append((dx, -surge, tensions))
-    body.DOFs = [0, 1, 2, 3, 4, 5]
-    body.nDOF = 6
+        out.append((dx, -surge, [line.TB for line in ms.lineList], body.r6.copy()))
     return equilibrium, out
 
 
@@ -126,18 +129,18 @@ def main():
 
     tether = tether_curve(binary, args.to, args.steps, out)
     equilibrium, moorpy = moorpy_curve([row[0] for row in tether])
-    print(f"MoorPy equilibrium: surge {equilibrium[0]:.4f} m, heave {equilibrium[2]:.4f} m, "
+    print(f"MoorPy equilibrium: G at x = {equilibrium[0]:.4f} m, z = {equilibrium[2]:.4f} m, "
           f"pitch {math.degrees(equilibrium[4]):.4f}°")
     print(f"restoring: Tether's less its yaw springs' {YAW_SPRING:.2f} N/m in surge (not a line)\n")
     head = f"{'offset m':>9} {'Tether kN':>11} {'MoorPy kN':>11} {'diff %':>8} | " \
-           f"{'T1 Tether':>10} {'T1 MoorPy':>10} {'T2 Tether':>10} {'T2 MoorPy':>10}  (fairlead kN)"
+           f"{'1 Tether':>9} {'1 MoorPy':>9} {'2 Tether':>9} {'2 MoorPy':>9}  (fairlead kN; line3 = line2)"
     print(head)
     rows = []
-    for (dx, restoring, t_tether), (_, r_moorpy, t_moorpy) in zip(tether, moorpy):
+    for (dx, restoring, t_tether), (_, r_moorpy, t_moorpy, _) in zip(tether, moorpy):
         lines_only = restoring - YAW_SPRING * dx
         diff = 100 * (lines_only - r_moorpy) / r_moorpy if abs(r_moorpy) > 1.0 else float("nan")
         print(f"{dx:9.2f} {lines_only / 1e3:11.2f} {r_moorpy / 1e3:11.2f} {diff:8.3f} | "
-              f"{t_tether[0] / 1e3:10.2f} {t_moorpy[0] / 1e3:10.2f} {t_tether[1] / 1e3:10.2f} {t_moorpy[1] / 1e3:10.2f}")
+              f"{t_tether[0] / 1e3:9.2f} {t_moorpy[0] / 1e3:9.2f} {t_tether[1] / 1e3:9.2f} {t_moorpy[1] / 1e3:9.2f}")
         rows.append([dx, lines_only, r_moorpy, *t_tether, *t_moorpy])
     with open(out / "oc3_offsets.csv", "w", newline="") as f:
         w = csv.writer(f)

@@ -33,7 +33,7 @@ fn assert_near(what: &str, value: f64, expected: f64, tolerance: f64) {
     assert!(error.abs() <= tolerance, "{what}: {value:.6e} against {expected:.6e} ({:+.3} %)", 100.0 * error);
 }
 
-/// The mooring at rest, against Jonkman 2010 §5 (Eqs. 5-2 and 5-3: four significant figures,
+/// The mooring at rest, against Jonkman 2010 §5 (the preload and Eq. 5-3: four significant figures,
 /// so rounding alone is up to 0.04 %): the lines' total vertical pull 1,607,000 N (buoyancy
 /// less the full system's weight) and their linearised stiffness in surge (41,180 N/m), heave
 /// (11,940 N/m) and yaw (11,560,000 N·m/rad, beside the added 98,340,000 N·m/rad of the delta
@@ -52,6 +52,14 @@ fn the_mooring_at_rest_matches_the_published_preload_and_stiffness() {
     }
     let k = solved.body_stiffness(0);
     let water = &solved.evaluation.water()[0];
+    eprintln!(
+        "preload {pull:.0} N; fairlead {:.0} N; stiffness surge {:.1} N/m (less the springs), sway {:.1} N/m, heave {:.1} N/m (less ρgA), yaw {:.0} N·m/rad (less the springs)",
+        fairlead(0),
+        k[(0, 0)] - YAW_SPRING_SURGE,
+        k[(1, 1)],
+        k[(2, 2)] - RHO * G * water.waterplane_area,
+        k[(5, 5)] - YAW_SPRING
+    );
     // Surge (x) also feels the yaw springs; sway (y) only the lines.
     assert_near("surge stiffness [N/m]", k[(0, 0)] - YAW_SPRING_SURGE, 41_180.0, 1e-3);
     assert_near("sway stiffness [N/m]", k[(1, 1)], 41_180.0, 1e-3);
@@ -78,9 +86,17 @@ fn period(samples: &[(f64, f64)], cycles: usize) -> f64 {
     (up[up.len() - 1] - up[0]) / (up.len() - 1) as f64
 }
 
+/// What a free-decay run reads from the spar's state, given its state at rest.
+type Observe = fn(&BodyState, &BodyState) -> f64;
+
 /// A free-decay run of the spar released at rest from its equilibrium displaced by `amount`
 /// along `direction`, for `duration` [s]: `observe(state, rest)` after every step.
-fn decay(direction: Direction, amount: f64, duration: f64, observe: fn(&BodyState, &BodyState) -> f64) -> Vec<(f64, f64)> {
+fn decay(
+    direction: Direction,
+    amount: f64,
+    duration: f64,
+    observe: fn(&BodyState, &BodyState) -> f64,
+) -> Vec<(f64, f64)> {
     let mut scene = spar();
     let rest = solve(&scene).states;
     let mut start = rest.clone();
@@ -119,7 +135,7 @@ fn one_dof_period(direction: Direction) -> f64 {
 }
 
 /// Free decay in surge (10 m), heave (2 m), pitch (3°) and yaw (5°): the periods read from the
-/// runs against the full system's natural frequencies of Jonkman 2010 §7 (surge 0.0080 Hz,
+/// runs against the full system's natural frequencies of Jonkman 2010's model verification (surge 0.0080 Hz,
 /// heave 0.0324 Hz, pitch 0.0343 Hz, yaw 0.1210 Hz: three significant figures, so up to 0.6 %
 /// of rounding in surge, 0.15 % in the others).
 ///
@@ -133,16 +149,59 @@ fn one_dof_period(direction: Direction) -> f64 {
 /// 6 % damping lengthen it, and 0.1 % or less in the others): the run is the model it declares.
 #[test]
 fn free_decay_periods_match_the_published_natural_frequencies() {
-    let cases: [(Direction, f64, f64, f64, f64, fn(&BodyState, &BodyState) -> f64); 4] = [
-        (Direction::X, 10.0, 700.0, 0.0080, 0.015, |s, r| s.position.x - r.position.x),
-        (Direction::Z, 2.0, 200.0, 0.0324, 0.015, |s, r| s.position.z - r.position.z),
-        (Direction::Pitch, 3f64.to_radians(), 200.0, 0.0343, 0.06, |s, r| turned(s, r, 1)),
-        (Direction::Yaw, 5f64.to_radians(), 60.0, 0.1210, 0.015, |s, r| turned(s, r, 2)),
+    /// A direction's release and its published frequency [Hz], with the tolerance on it.
+    struct Case {
+        direction: Direction,
+        amount: f64,
+        duration: f64,
+        published_hz: f64,
+        tolerance: f64,
+        observe: Observe,
+    }
+    let cases = [
+        Case {
+            direction: Direction::X,
+            amount: 10.0,
+            duration: 700.0,
+            published_hz: 0.0080,
+            tolerance: 0.015,
+            observe: |s, r| s.position.x - r.position.x,
+        },
+        Case {
+            direction: Direction::Z,
+            amount: 2.0,
+            duration: 200.0,
+            published_hz: 0.0324,
+            tolerance: 0.015,
+            observe: |s, r| s.position.z - r.position.z,
+        },
+        Case {
+            direction: Direction::Pitch,
+            amount: 3f64.to_radians(),
+            duration: 200.0,
+            published_hz: 0.0343,
+            tolerance: 0.06,
+            observe: |s, r| turned(s, r, 1),
+        },
+        Case {
+            direction: Direction::Yaw,
+            amount: 5f64.to_radians(),
+            duration: 60.0,
+            published_hz: 0.1210,
+            tolerance: 0.015,
+            observe: |s, r| turned(s, r, 2),
+        },
     ];
-    for (direction, amount, duration, published_hz, tolerance, observe) in cases {
+    for Case { direction, amount, duration, published_hz, tolerance, observe } in cases {
         let measured = period(&decay(direction, amount, duration, observe), 3);
         let name = direction.name();
+        // The figures docs/oc3-hywind.md states (`-- --nocapture` prints them).
+        let one_dof = one_dof_period(direction);
+        eprintln!(
+            "{name}: period {measured:.3} s, published {:.3} s, 2π√((M + A)/K) {one_dof:.3} s",
+            1.0 / published_hz
+        );
         assert_near(&format!("{name} period against Jonkman 2010 [s]"), measured, 1.0 / published_hz, tolerance);
-        assert_near(&format!("{name} period against 2π√((M + A)/K) [s]"), measured, one_dof_period(direction), 0.01);
+        assert_near(&format!("{name} period against 2π√((M + A)/K) [s]"), measured, one_dof, 0.01);
     }
 }

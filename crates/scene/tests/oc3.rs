@@ -8,7 +8,7 @@ use tether_test_support as common;
 
 use std::f64::consts::PI;
 use tether_physics::body::BodyState;
-use tether_physics::statics::{Direction, Equilibrium, Settings, dofs::displace, equilibrium};
+use tether_physics::statics::{Direction, Dof, Equilibrium, Settings, dofs::displace, equilibrium, offsets};
 use tether_scene::Scene;
 
 const RHO: f64 = 1025.0;
@@ -203,5 +203,39 @@ fn free_decay_periods_match_the_published_natural_frequencies() {
         );
         assert_near(&format!("{name} period against Jonkman 2010 [s]"), measured, 1.0 / published_hz, tolerance);
         assert_near(&format!("{name} period against 2π√((M + A)/K) [s]"), measured, one_dof, 0.01);
+    }
+}
+
+/// MoorPy's figures for the same lines and body (`validation/oc3/moorpy_offsets.py`, MoorPy
+/// 1.3.0, its equilibrium solved to 1e-6): at rest the fairlead tension 911.09 kN and G at
+/// x = −0.0048 m, z = −78.0006 m; held 10 m and 30 m downstream in surge (G), the lines pull back
+/// with 379.44 kN and 1,186.35 kN, line1's fairlead at 697.99 and 462.04 kN. Tether's within
+/// 0.02 % (measured 0.001 % and 0.011 %: the two tools' hydrostatics as the spar heaves and
+/// pitches, not the lines) and 0.2 mm.
+#[test]
+fn the_surge_offset_curve_matches_moorpy() {
+    let scene = spar();
+    let system = scene.world.system();
+    let solved = solve(&scene);
+    let fairlead = |evaluation: &tether_physics::evaluation::Evaluation, i: usize| {
+        evaluation.line_state(i).expect("a catenary").end_tensions().1
+    };
+    assert_near("fairlead tension at rest [N]", fairlead(&solved.evaluation, 0), 911_090.0, 2e-5);
+    let g = solved.states[0].position;
+    assert!((g.x + 0.0048).abs() < 2e-4 && (g.z + 78.0006).abs() < 2e-4, "{g}");
+    let dof = Dof { body: 0, direction: Direction::X };
+    let curve = offsets::curve(system, &solved, dof, 30.0, 3, &Settings::default()).expect("a curve to 30 m");
+    for (point, restoring, line1) in
+        [(&curve.points[1], 379_440.0, 697_990.0), (&curve.points[3], 1_186_350.0, 462_040.0)]
+    {
+        // The restoring force of the lines: the curve's, less the yaw springs' 2 k x in surge.
+        let lines = -point.load - YAW_SPRING_SURGE * point.offset;
+        assert_near(&format!("restoring force at {} m [N]", point.offset), lines, restoring, 2e-4);
+        assert_near(
+            &format!("line1's fairlead at {} m [N]", point.offset),
+            fairlead(&point.evaluation, 0),
+            line1,
+            2e-4,
+        );
     }
 }

@@ -138,8 +138,8 @@ def main():
     rows = []
     for (dx, restoring, t_tether), (_, r_moorpy, t_moorpy, _) in zip(tether, moorpy):
         lines_only = restoring - YAW_SPRING * dx
-        diff = 100 * (lines_only - r_moorpy) / r_moorpy if abs(r_moorpy) > 1.0 else float("nan")
-        print(f"{dx:9.2f} {lines_only / 1e3:11.2f} {r_moorpy / 1e3:11.2f} {diff:8.3f} | "
+        diff = f"{100 * (lines_only - r_moorpy) / r_moorpy:8.3f}" if abs(r_moorpy) > 1.0 else f"{'—':>8}"
+        print(f"{dx:9.2f} {lines_only / 1e3:11.2f} {r_moorpy / 1e3:11.2f} {diff} | "
               f"{t_tether[0] / 1e3:9.2f} {t_moorpy[0] / 1e3:9.2f} {t_tether[1] / 1e3:9.2f} {t_moorpy[1] / 1e3:9.2f}")
         rows.append([dx, lines_only, r_moorpy, *t_tether, *t_moorpy])
     with open(out / "oc3_offsets.csv", "w", newline="") as f:

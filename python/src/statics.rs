@@ -44,7 +44,9 @@ pub fn offsets(py: Python<'_>, scene: &Scene, body: &str, direction: &str, to: f
     };
     let dof = Dof { body: index, direction };
     if !Dofs::of(system, &[]).free().contains(&dof) {
-        return Err(value_error(format!("{label}: body \"{body}\" cannot move in {direction}: its support holds it there")));
+        return Err(value_error(format!(
+            "{label}: body \"{body}\" cannot move in {direction}: its support holds it there"
+        )));
     }
     let solved = py
         .detach(|| {

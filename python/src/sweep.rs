@@ -51,9 +51,8 @@ pub fn run_sweep(
         .map_err(runtime_error)?
         .map_err(value_error)?;
     let cancel = Arc::new(AtomicBool::new(false));
-    let runner = Runner::new(jobs)
-        .with_case_timeout(Duration::from_secs_f64(case_timeout))
-        .with_cancel(Arc::clone(&cancel));
+    let runner =
+        Runner::new(jobs).with_case_timeout(Duration::from_secs_f64(case_timeout)).with_cancel(Arc::clone(&cancel));
     let options = Options { runner, shard: None, resume: false, record: None };
     let dir = output.clone();
     let worker = std::thread::spawn(move || caught(|| sweep::run(&plan, &dir, &options, |_| {})));
@@ -75,7 +74,10 @@ pub fn run_sweep(
         .map_err(runtime_error)?
         .map_err(|e: SweepError| value_error(e))?;
     if report.interrupted || report.written.is_none() {
-        return Err(runtime_error(format!("the sweep into {} was interrupted: its results were not written", output.display())));
+        return Err(runtime_error(format!(
+            "the sweep into {} was interrupted: its results were not written",
+            output.display()
+        )));
     }
     Ok(output.join("results.parquet"))
 }
@@ -86,7 +88,8 @@ pub fn run_sweep(
 pub fn read_parquet<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Bound<'py, PyDict>> {
     let failed = |e: &dyn std::fmt::Display| value_error(format!("{}: {e}", path.display()));
     let file = std::fs::File::open(&path).map_err(|e| failed(&e))?;
-    let reader = ParquetRecordBatchReaderBuilder::try_new(file).map_err(|e| failed(&e))?.build().map_err(|e| failed(&e))?;
+    let reader =
+        ParquetRecordBatchReaderBuilder::try_new(file).map_err(|e| failed(&e))?.build().map_err(|e| failed(&e))?;
     let schema = reader.schema();
     let mut columns: Vec<Column> = schema
         .fields()
@@ -97,7 +100,9 @@ pub fn read_parquet<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Bound<'py, 
             DataType::Int64 => Ok(Column::Signed(Vec::new())),
             DataType::Boolean => Ok(Column::Flag(Vec::new())),
             DataType::Utf8 => Ok(Column::Text(Vec::new())),
-            other => Err(failed(&format!("column `{}` has type {other}, which this reader does not read", field.name()))),
+            other => {
+                Err(failed(&format!("column `{}` has type {other}, which this reader does not read", field.name())))
+            }
         })
         .collect::<PyResult<_>>()?;
     for batch in reader {
@@ -108,8 +113,12 @@ pub fn read_parquet<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Bound<'py, 
                     let array = array.as_primitive::<Float64Type>();
                     values.extend(array.iter().map(|x| x.unwrap_or(f64::NAN)));
                 }
-                Column::Unsigned(values) => values.extend(array.as_primitive::<UInt64Type>().iter().map(Option::unwrap_or_default)),
-                Column::Signed(values) => values.extend(array.as_primitive::<Int64Type>().iter().map(Option::unwrap_or_default)),
+                Column::Unsigned(values) => {
+                    values.extend(array.as_primitive::<UInt64Type>().iter().map(Option::unwrap_or_default))
+                }
+                Column::Signed(values) => {
+                    values.extend(array.as_primitive::<Int64Type>().iter().map(Option::unwrap_or_default))
+                }
                 Column::Flag(values) => values.extend(array.as_boolean().iter().map(Option::unwrap_or_default)),
                 Column::Text(values) => values.extend(array.as_string::<i32>().iter().map(|s| s.map(str::to_string))),
             }

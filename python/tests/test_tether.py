@@ -34,13 +34,17 @@ def test_spring_mass_follows_its_closed_form(repo):
     # dt = 1 ms, ω0 dt = 0.01: the integrator's phase error over 8 periods is ~1e-4 of the 1 cm
     # amplitude; a wrong stiffness or damping is off by millimetres.
     np.testing.assert_allclose(x, closed_form(run.time), atol=2e-5)
-    # The spring's tension is k·stretch + c·stretch rate (positive in tension).
+    # The spring's tension is k·stretch + c·stretch rate (positive in tension). The force was
+    # evaluated with the leapfrog's velocity half a step behind the sampled one: c·a·dt/2 ≤
+    # 1 · 100 · 0.01 · 5e-4 = 5e-4 N apart; a damping 10 % off would be 1e-2 N off.
     v = run.velocity[:, 0, 0]
-    np.testing.assert_allclose(run.tension[:, 0], 100.0 * x + 1.0 * v, atol=1e-9)
+    np.testing.assert_allclose(run.tension[:, 0], 100.0 * x + 1.0 * v, atol=6e-4)
     # Energy: what the damper took plus what is left is what the spring held at the start.
     e = run.energy
     assert e["elastic"][0] == pytest.approx(0.5 * 100.0 * 0.01**2, rel=1e-12)
-    np.testing.assert_allclose(e["kinetic"] + e["elastic"] + e["dissipated"], e["elastic"][0], rtol=1e-4)
+    # The leapfrog's energy, from its half-step velocities, wobbles by O((ω0 dt)²) = 1e-4 around
+    # the exact balance: 1e-3 of the budget; booking the damper's work twice would be off by 30 %.
+    np.testing.assert_allclose(e["kinetic"] + e["elastic"] + e["dissipated"], e["elastic"][0], rtol=1e-3)
 
 
 def test_a_set_parameter_changes_the_motion_as_its_closed_form_says(repo):
@@ -108,9 +112,9 @@ def test_offset_curve_equals_the_clis_csv(repo, cli, tmp_path):
     assert list(curve) == [h.strip('"') for h in header]
     for i, name in enumerate(curve):
         np.testing.assert_allclose(curve[name], rows[:, i], rtol=1e-9, atol=1e-9, err_msg=name)
-    # The restoring force grows with the offset and opposes it.
+    # Nothing to restore at equilibrium; the pull back (restoring = −load) grows with the offset.
     restoring = curve["restoring [N]"]
-    assert restoring[0] == pytest.approx(0.0, abs=1e-3) and np.all(np.diff(restoring) < 0)
+    assert restoring[0] == pytest.approx(0.0, abs=1e-3) and np.all(np.diff(restoring) > 0)
 
 
 SPEC = """Sweep(
@@ -126,7 +130,7 @@ SPEC = """Sweep(
 
 def test_a_sweeps_table_equals_the_clis_parquet(repo, cli, tmp_path):
     spec = tmp_path / "spec.ron"
-    spec.write_text(SPEC.format(scene=repo / SPRING, values="[50.0, 100.0, 200.0]"))
+    spec.write_text(SPEC.format(scene=repo / SPRING, values="List([50.0, 100.0, 200.0])"))
     cli("sweep", spec, "-o", tmp_path / "cli", "--jobs", "1")
     expected = pq.read_table(tmp_path / "cli" / "results.parquet")
     table = tether.sweep(spec, jobs=1, table="arrow")
@@ -143,8 +147,9 @@ def test_a_sweeps_table_equals_the_clis_parquet(repo, cli, tmp_path):
         if name != "cpu_s":
             assert list(columns[name]) == expected.column(name).to_pylist(), name
     assert columns["case"].dtype == np.uint64 and columns["max_x"].dtype == np.float64
-    # The stiffer the spring, the sooner it turns back: the largest x is the start's, 1.01 m.
-    np.testing.assert_allclose(columns["max_x"], 1.01, atol=1e-12)
+    # Released at rest 1 cm out, the mass never goes farther: the largest x is the start's 1.01 m
+    # (within the first step's move, k·x0·dt²/m = 1e-6 m).
+    np.testing.assert_allclose(columns["max_x"], 1.01, atol=2e-6)
 
 
 def first_error_line(done):
@@ -172,7 +177,7 @@ def test_a_broken_scene_raises_the_clis_text(repo, cli, tmp_path):
 
 def test_a_refused_parameter_raises_the_sweeps_text(repo, cli, tmp_path):
     spec = tmp_path / "spec.ron"
-    spec.write_text(SPEC.format(scene=repo / SPRING, values="[-5.0]"))
+    spec.write_text(SPEC.format(scene=repo / SPRING, values="List([-5.0])"))
     done = cli("sweep", spec, "-o", tmp_path / "out", check=False)
     assert done.returncode != 0
     sim = tether.load(repo / SPRING)
@@ -208,7 +213,7 @@ def test_a_refused_parameter_raises_the_sweeps_text(repo, cli, tmp_path):
         (lambda s: s.offsets("nobody", "x", 1.0), ValueError, r'no body "nobody" \(bodies: mass\)$'),
         (lambda s: s.offsets("mass", "x", 0.0), ValueError, r"^`to` must be a non-zero number of m, got 0$"),
         (lambda s: s.record("/nonexistent-dir/out.rrd", 0.1), ValueError, r"^cannot write /nonexistent-dir/out.rrd"),
-        (lambda s: s.step(-1), OverflowError, r""),
+        (lambda s: s.step(-1), OverflowError, r"negative"),
     ],
 )
 def test_bad_input_raises_one_line(repo, call, error, pattern):

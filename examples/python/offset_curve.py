@@ -3,6 +3,9 @@ equilibrium along x, the lines settled at each offset) and each line's tension, 
 
     pip install ./python matplotlib
     python examples/python/offset_curve.py            # writes offset_curve.png
+
+Past about 20 m the lines ahead lift off the seabed up to their anchors and the curve stiffens;
+mooring2 and mooring3 lie symmetric about x: their curves coincide.
 """
 
 from pathlib import Path

@@ -1,6 +1,7 @@
 """The moored buoy released off its rest position: each mooring line's tension over 60 s of
 simulated time, sampled at 20 Hz, with matplotlib; then the same run with stiffer lines, set by
-the sweep's parameter path.
+the sweep's parameter path. mooring2 and mooring3 lie symmetric about the buoy's path (x): their
+curves coincide.
 
     pip install ./python matplotlib
     python examples/python/tension_series.py          # writes tension_series.png

@@ -148,7 +148,7 @@ impl Simulation {
     fn step(&mut self, py: Python<'_>, n: u64) -> PyResult<()> {
         if n == 1 {
             // The one-step call's fixed cost is the figure to keep small: no slicing.
-            return self.scene.world.step().map_err(runtime_error);
+            return guarded(|| self.scene.world.step().map_err(runtime_error));
         }
         guarded(|| advance(py, &mut self.scene.world, n, |_, _| {}))
     }

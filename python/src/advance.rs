@@ -70,7 +70,7 @@ fn slice(world: &mut World, count: u64, done: &mut u64, after: &mut impl FnMut(u
         world.step().map_err(|e| e.to_string())?;
         *done += 1;
         after(*done, world);
-        if *done % CLOCK_EVERY == 0 && start.elapsed() > SLICE {
+        if done.is_multiple_of(CLOCK_EVERY) && start.elapsed() > SLICE {
             break;
         }
     }

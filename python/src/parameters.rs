@@ -36,10 +36,10 @@ pub fn get<'py>(py: Python<'py>, scene: &Scene, path: &str) -> PyResult<Bound<'p
 /// integers, as the sweep writes them).
 pub fn data(path: &str, value: &Bound<'_, PyAny>) -> PyResult<Value> {
     if value.is_instance_of::<PyBool>() {
-        return Ok(Value::Bool(value.extract::<bool>().map_err(|e| -> PyErr { e.into() })?));
+        return Ok(Value::Bool(value.extract::<bool>()?));
     }
     if value.is_instance_of::<PyString>() {
-        return Ok(Value::String(value.extract::<String>().map_err(|e| -> PyErr { e.into() })?));
+        return Ok(Value::String(value.extract::<String>()?));
     }
     let Ok(x) = value.extract::<f64>() else {
         let kind = value.get_type().name().map_or_else(|_| "?".to_string(), |n| n.to_string());

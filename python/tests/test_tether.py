@@ -237,7 +237,7 @@ def test_a_run_in_a_thread_lets_another_thread_progress(repo):
     done = threading.Event()
 
     def run():
-        sim.run(200.0, rate=1.0)
+        sim.run(1000.0, rate=1.0)  # 5e5 steps: a second or more
         done.set()
 
     worker = threading.Thread(target=run)
@@ -248,9 +248,11 @@ def test_a_run_in_a_thread_lets_another_thread_progress(repo):
         time.sleep(0.001)
     worker.join()
     elapsed = time.perf_counter() - started
-    assert elapsed > 0.3, f"the run is long enough to tell ({elapsed:.3f} s)"
-    # With the GIL held throughout, the loop would tick once or twice; released, every ms or so.
-    assert len(ticks) > 0.2 * elapsed / 0.001, f"{len(ticks)} ticks in {elapsed:.3f} s"
+    assert elapsed > 0.2, f"the run is long enough to tell ({elapsed:.3f} s)"
+    # The loop ticks only until the run is done. With the GIL held throughout the run (one
+    # call), it would tick once or twice; released, every millisecond or so — fewer on a loaded
+    # machine, never as few as 20.
+    assert len(ticks) >= 20, f"{len(ticks)} ticks in {elapsed:.3f} s"
 
 
 CTRL_C = """

@@ -49,3 +49,14 @@ ensure_rerun_cli() {
     export PATH="$venv/bin:$PATH"
     rerun analytics disable >/dev/null 2>&1 || true
 }
+
+# The Python module's build and test tools (maturin, pytest, numpy, pyarrow for the sweep's table,
+# pandas), in their own virtual environment ($TETHER_PY_VENV, default beside the rerun one).
+ensure_python_venv() {
+    export TETHER_PY_VENV="${TETHER_PY_VENV:-${TETHER_VENV:-${XDG_CACHE_HOME:-$HOME/.cache}/tether/rerun-venv}-python}"
+    if ! "$TETHER_PY_VENV/bin/python" -c "import maturin, pytest, numpy, pyarrow, pandas" 2>/dev/null; then
+        echo "installing maturin, pytest, numpy, pyarrow, pandas into $TETHER_PY_VENV" >&2
+        python3 -m venv "$TETHER_PY_VENV"
+        "$TETHER_PY_VENV/bin/pip" install --quiet "maturin>=1.5,<2" pytest numpy pyarrow pandas
+    fi
+}

@@ -1,4 +1,4 @@
-//! `tether equilibrium SCENE [--write OUT.ron]`: the static equilibrium of every body that
+//! `tether equilibrium SCENE [--write OUT.ron] [--json]`: the static equilibrium of every body that
 //! responds to forces (PHYSICS.md §7): poses, tensions, grounded lengths and
 //! touchdowns, each body's 6 × 6 stiffness; optionally the scene starting there.
 
@@ -6,7 +6,7 @@ use anyhow::Context as _;
 use clap::Args;
 use std::path::PathBuf;
 use std::time::Instant;
-use tether::statics::report;
+use tether::statics::{data, report};
 use tether_physics::statics::{Settings, equilibrium};
 use tether_scene as scene;
 
@@ -18,6 +18,10 @@ pub struct EquilibriumArgs {
     /// comments are not kept).
     #[arg(long, value_name = "OUT.ron")]
     write: Option<PathBuf>,
+    /// Print the equilibrium as JSON (the Python module's `equilibrium()` reads the same data):
+    /// positions [m], quaternions [w, x, y, z], stiffness [SI], tensions [N].
+    #[arg(long)]
+    json: bool,
 }
 
 pub fn run(args: &EquilibriumArgs) -> anyhow::Result<()> {
@@ -28,7 +32,12 @@ pub fn run(args: &EquilibriumArgs) -> anyhow::Result<()> {
     let clock = Instant::now();
     let solved = equilibrium::solve(system, start, &[], &Settings::default()).with_context(|| label.to_string())?;
     let elapsed = clock.elapsed();
-    super::print(&format!("{label}: {}", report::equilibrium(system, &solved, start, elapsed)))?;
+    if args.json {
+        let data = data::equilibrium(system, &solved, start);
+        super::print(&(serde_json::to_string_pretty(&data)? + "\n"))?;
+    } else {
+        super::print(&format!("{label}: {}", report::equilibrium(system, &solved, start, elapsed)))?;
+    }
     if let Some(out) = &args.write {
         let mut placed = scene::pose::with_poses(&loaded.file, loaded.bodies.bodies(), &solved.states);
         let folder = |p: &std::path::Path| {

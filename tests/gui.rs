@@ -15,7 +15,7 @@ use std::sync::{Arc, LazyLock};
 use std::time::{Duration, Instant};
 use tether::gui::panel::ControlPanel;
 use tether::gui::stream::Sinks;
-use tether_physics::coupling::{CouplingKind, ElasticLaw};
+use tether_physics::coupling::{CouplingKind, ElasticLaw, LineModel};
 use tether_physics::statics::{Settings, equilibrium};
 use tether_physics::world::World;
 
@@ -397,4 +397,43 @@ fn statics_panel_tunes_the_seabed_jumps_to_equilibrium_and_draws_the_offset_curv
     });
     harness.run_steps(2);
     harness.get_by_label("body \"buoy\": restoring force against offset in x");
+}
+
+/// A dry rope between a world point and a ball, quasi-static as written.
+const ROPE: &str = r#"Scene(dt: 1e-3, bodies: [Body(name: "ball",
+    master: Node(position: (6.0, 0.0, 2.0), mass: 100.0, inertia: Inertia(xx: 1.0, yy: 1.0, zz: 1.0)),
+    shape: Sphere(radius: 0.2))],
+  couplings: [Catenary(name: "rope", end1: World((0.0, 0.0, 10.0)), end2: Body(body: "ball"),
+    mass_per_length: 2.0, length: 10.0, stiffness: 2.0e5)])"#;
+
+fn line_model(world: &World) -> LineModel {
+    match &world.couplings()[0].kind {
+        CouplingKind::Catenary(line) => line.model,
+        kind => panic!("not a line: {kind:?}"),
+    }
+}
+
+#[test]
+fn a_line_switches_to_dynamic_live_and_a_bad_segment_count_is_refused() {
+    let dir = scenes_folder(&[("rope.ron", ROPE)]);
+    let mut harness = harness(panel(dir.path()));
+    open_from_list(&mut harness, "rope.ron");
+    assert_eq!(line_model(&world(&harness)), LineModel::QuasiStatic);
+
+    harness.get_by_label("dynamic (lumped mass)").click();
+    until(&mut harness, "the switch", |p| p.log().any(|l| l.text.starts_with("coupling \"rope\" applied")));
+    let LineModel::Dynamic(model) = line_model(&world(&harness)) else { panic!("still quasi-static") };
+    assert_eq!(model.segments, 20, "a switched line takes 20 segments");
+
+    set_knob(&mut harness, "segments N", 0.0);
+    harness.get_by_label_contains("Refused: coupling \"rope\": segments must be at least 1, got 0");
+    set_knob(&mut harness, "segments N", 8.0);
+    until(&mut harness, "8 segments", |p| {
+        p.simulation()
+            .snapshot(PATIENCE)
+            .is_some_and(|w| matches!(line_model(&w), LineModel::Dynamic(m) if m.segments == 8))
+    });
+    let world = world(&harness);
+    let nodes = world.evaluation().line_run(0).and_then(|run| run.nodes()).expect("the line has nodes");
+    assert_eq!(nodes.positions.len(), 9, "8 segments, 9 nodes");
 }

@@ -12,7 +12,7 @@ use super::mesh_file;
 use super::source::ItemKind;
 use std::path::Path;
 use std::sync::Arc;
-use tether_physics::body::{BodyState, PrescribedMotion, RigidBody, Shape, Support, VelocityProfile};
+use tether_physics::body::{BodyState, Harmonic, PrescribedMotion, RigidBody, Shape, Support, VelocityProfile};
 use tether_physics::coupling::contact::{ContactLaw, Opposing, Plane};
 use tether_physics::coupling::{Catenary, Contact, Coupling, CouplingKind, ElasticLaw, Endpoint, SpringDamper};
 use tether_physics::integrator::{Timing, Tolerances};
@@ -436,6 +436,9 @@ fn build_support(def: &SupportDef, at: &ItemAt) -> Result<Support, Problem> {
                     }
                     VelocityProfile::Table(points.iter().map(|(t, v)| (*t, vec3(*v))).collect())
                 }
+                VelocityDef::Harmonic { amplitude, period, phase } => VelocityProfile::Harmonic(
+                    Harmonic::new(vec3(*amplitude), *period, vec3(*phase)).map_err(|error| at.refused(&error))?,
+                ),
             };
             Support::Kinematic(PrescribedMotion { velocity, angular_velocity: vec3(*angular_velocity) })
         }

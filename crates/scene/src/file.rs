@@ -192,10 +192,22 @@ pub enum SupportDef {
 
 /// A prescribed velocity [m/s], world.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub enum VelocityDef {
     Constant(#[serde(deserialize_with = "finite3")] Triple),
     /// `(t [s], (vx, vy, vz) [m/s])`, t strictly increasing; linear between, held beyond.
     Table(#[serde(deserialize_with = "finite_velocity_table")] Vec<(f64, Triple)>),
+    /// Per world axis `x(t) = x0 + A sin(2π t / T + φ)` (PHYSICS.md §1 [BC section]): amplitude
+    /// `A` \[m], one period `T` \[s] (> 0), phase `φ` \[rad] (default 0); the body starts at its
+    /// master position, so `x0 = position − A sin φ`. Checked by the physics' `Harmonic::new`.
+    Harmonic {
+        #[serde(deserialize_with = "finite3")]
+        amplitude: Triple,
+        #[serde(deserialize_with = "finite")]
+        period: f64,
+        #[serde(default, deserialize_with = "finite3")]
+        phase: Triple,
+    },
 }
 
 /// Display shape in the body's reference frame \[m].

@@ -161,3 +161,33 @@ fn missing_file_is_an_error_not_a_panic() {
     let error = scene::load(Path::new("no/such/scene.ron")).err().unwrap().to_string();
     assert!(error.starts_with("no/such/scene.ron:1:1: cannot read scene file"), "{error}");
 }
+
+/// The box driven harmonically: `support` with `motion` in its `Harmonic(…)`, on line 7.
+fn harmonic(motion: &str) -> (&'static str, String) {
+    let edit =
+        format!("support: Kinematic(velocity: Harmonic({motion})),\n            shape: Box(size: (1.0, 1.0, 1.0)),");
+    ("shape: Box(size: (1.0, 1.0, 1.0)),", edit)
+}
+
+#[test]
+fn harmonic_motion_with_a_bad_value() {
+    let good = GOOD.replacen(harmonic("").0, &harmonic("amplitude: (2.0, 0.0, 0.0), period: 10.0").1, 1);
+    common::scene(&good);
+    let cases = [
+        ("amplitude: (2.0, 0.0, 0.0), period: 0.0", "bad.ron:7:79: body \"box\": period must be > 0 s, got 0"),
+        ("amplitude: (2.0, 0.0, 0.0), period: -10", "bad.ron:7:79: body \"box\": period must be > 0 s, got -10"),
+        ("amplitude: (2.0, NaN, 0.0), period: 10.0", "bad.ron:7:77: body \"box\": number must be finite, got NaN"),
+        (
+            "amplitude: (2.0, 0.0, 0.0), period: 10.0, phase: (0.0, 0.0, inf)",
+            "bad.ron:7:115: body \"box\": number must be finite, got inf",
+        ),
+        (
+            "amplitude: (2.0, 0.0, 0.0)",
+            "bad.ron:7:77: body \"box\": Unexpected missing field named `period` in `Harmonic`",
+        ),
+    ];
+    for (motion, expected) in cases {
+        let (from, to) = harmonic(motion);
+        assert_error((from, &to), expected);
+    }
+}

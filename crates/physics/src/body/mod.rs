@@ -21,7 +21,7 @@ use crate::math::Vec3;
 pub use load::Load;
 use nalgebra::Isometry3;
 pub use state::{Acceleration, BodyFrame, BodyState};
-pub use support::{PrescribedMotion, Support, VelocityProfile};
+pub use support::{Harmonic, PrescribedMotion, Support, VelocityProfile};
 
 /// Display and contact shape in the body's reference frame \[m].
 #[derive(Debug, Clone, PartialEq)]

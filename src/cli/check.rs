@@ -404,7 +404,7 @@ fn dynamic_line_report(out: &mut String, world: &World, index: usize, line: &Cat
     let forces = &world.coupling_forces()[index];
     let _ = writeln!(
         out,
-        "  at rest in its discrete equilibrium: end tensions {:.6} / {:.6} N",
+        "  at t = 0 (the nodes at rest in their discrete equilibrium): end forces {:.6} / {:.6} N",
         forces.f1.norm(),
         forces.f2.norm()
     );

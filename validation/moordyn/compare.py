@@ -30,6 +30,7 @@ import argparse
 import csv
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -223,6 +224,8 @@ def extremes(t, values, start: float = SECOND_HALF) -> tuple[float, float]:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--segments", default="10,20,40,80,160", help="MoorDyn's segment counts N (comma-separated)")
+    parser.add_argument("--vary-segments", action="store_true",
+                        help="run Tether's scene once per N, its dynamic line's `segments` set to N")
     parser.add_argument("--scene", default="scenes/chain_forced_surge.ron",
                         help="Tether's scene, relative to the repository; with '{n}', one file per N")
     parser.add_argument("--line-model", default="quasi-static",
@@ -257,8 +260,16 @@ def main() -> None:
         if not binary.exists():
             raise SystemExit(f"no tether binary at {binary}: `cargo build --release --no-default-features` "
                              "(or pass --tether)")
-        for n in segments if "{n}" in args.scene else [None]:
+        for n in segments if ("{n}" in args.scene or args.vary_segments) else [None]:
             scene = REPO / args.scene.replace("{n}", str(n))
+            if args.vary_segments:
+                # The scene's dynamic line at N segments, written beside the outputs.
+                text = scene.read_text()
+                if "segments:" not in text:
+                    sys.exit(f"--vary-segments: {scene} declares no dynamic line (no `segments:`)")
+                varied = out / f"{scene.stem}_n{n}.ron"
+                varied.write_text(re.sub(r"segments: *\d+", f"segments: {n}", text))
+                scene = varied
             rrd = out / (f"tether_n{n}.rrd" if n else "tether.rrd")
             run_tether(binary, scene, rrd, args.record_arg)
             tether[n] = read_tether(rrd, args.entity, args.series)

@@ -3,7 +3,7 @@
 use std::fmt::Write as _;
 use tether_physics::body::Support;
 use tether_physics::coupling::contact::Opposing;
-use tether_physics::coupling::lumped_line::Discrete;
+use tether_physics::coupling::lumped_line::{Discrete, statics};
 use tether_physics::coupling::{Catenary, Contact, CouplingKind, ElasticLaw, Endpoint, LineModel, LumpedMass};
 use tether_physics::math::{Mat3, Vec3};
 use tether_physics::stability;
@@ -402,6 +402,15 @@ fn dynamic_line_report(out: &mut String, world: &World, index: usize, line: &Cat
         discrete.substep()
     );
     let forces = &world.coupling_forces()[index];
+    let started = std::time::Instant::now();
+    let shape = statics::solve(line, &discrete, system.surroundings(), &forces.point1, &forces.point2, 0.0);
+    let _ = writeln!(
+        out,
+        "  initial shape: Newton on the discrete statics, {} iterations, largest residual {:.3e} N, {:.3} ms",
+        shape.iterations,
+        shape.residual,
+        started.elapsed().as_secs_f64() * 1e3
+    );
     let _ = writeln!(
         out,
         "  at t = 0 (the nodes at rest in their discrete equilibrium): end forces {:.6} / {:.6} N",

@@ -2,7 +2,7 @@
 //! bands coloured by tension (blue: the lowest tension along the line, red: the highest) every
 //! frame, its width static; a dynamic line (PHYSICS.md §8) is drawn through its nodes, banded
 //! the same way by its segments' tensions. `plots/catenary` holds the end tensions of every
-//! line, series `<name> end1` and `<name> end2` [N], and for a dynamic line beside them the
+//! line, series `<name> end1` and `<name> end2` \[N], and for a dynamic line beside them the
 //! quasi-static catenary's for the same end positions, `<name> end1 quasi-static` and
 //! `<name> end2 quasi-static`: its dynamic amplification.
 //!

@@ -53,7 +53,7 @@ pub struct NodeForces {
     pub unbooked: Vec<Vec3>,
     /// Segment tensions `EA max(ε, 0) + BA ε̇` \[N].
     pub tensions: Vec<f64>,
-    /// Node mass matrices as `(a, b, q̂)`: `M = a E + b q̂q̂ᵀ` [kg].
+    /// Node mass matrices as `(a, b, q̂)`: `M = a E + b q̂q̂ᵀ` \[kg].
     pub masses: Vec<(f64, f64, Vec3)>,
     /// Elastic `Σ ½ EA l ε²` over taut segments, wet weight and seabed `Σ ½ k_b d l_i δ²` \[J].
     pub potential: f64,

@@ -77,6 +77,7 @@ fn axial_modes_are_the_discrete_closed_form() {
             * (ea / (lambda * segment * segment)).sqrt()
             * (f64::from(mode) * std::f64::consts::PI / (2.0 * f64::from(n))).sin();
         let got = omega[mode as usize - 1];
+        eprintln!("axial mode {mode}: {got} rad/s, closed form {expected} ({:+.2e})", got / expected - 1.0);
         assert!((got / expected - 1.0).abs() < 1e-3, "mode {mode}: {got} rad/s, closed form {expected}");
     }
 }
@@ -93,6 +94,7 @@ fn transverse_modes_are_the_taut_string_s() {
             * (tension / (lambda * segment * stretched)).sqrt()
             * (f64::from(mode) * std::f64::consts::PI / (2.0 * f64::from(n))).sin();
         let got = omega[mode as usize - 1];
+        eprintln!("transverse mode {mode}: {got} rad/s, closed form {expected} ({:+.2e})", got / expected - 1.0);
         assert!((got / expected - 1.0).abs() < 1e-3, "mode {mode}: {got} rad/s, closed form {expected}");
     }
 }
@@ -126,6 +128,7 @@ fn an_axial_step_travels_at_the_wave_speed() {
             break t;
         }
     };
+    eprintln!("axial step: arrives after {arrival} s, L/c = {wave_time} s ({:+.2e})", arrival / wave_time - 1.0);
     assert!((arrival / wave_time - 1.0).abs() < 0.02, "arrival {arrival} s, L/c = {wave_time} s");
 }
 
@@ -171,6 +174,7 @@ fn end_force_errors(seabed: Option<Seabed>, p2: V, counts: &[u32]) -> Vec<f64> {
 fn a_hanging_line_converges_to_the_catenary_at_second_order() {
     let errors = end_force_errors(None, V::new(200.0, 0.0, 60.0), &[10, 20, 40, 80]);
     let orders: Vec<f64> = errors.windows(2).map(|pair| (pair[0] / pair[1]).log2()).collect();
+    eprintln!("hanging: end force errors {errors:?} N, orders {orders:?}");
     for order in &orders {
         assert!((1.8..=2.2).contains(order), "orders {orders:?} (errors {errors:?} N)");
     }
@@ -186,6 +190,7 @@ fn a_grounded_line_converges_to_the_grounded_catenary_at_second_order() {
     let errors = end_force_errors(Some(seabed), V::new(237.0, 0.0, -1.0), &counts);
     let scaled: Vec<f64> = counts.iter().zip(&errors).map(|(&n, e)| e * f64::from(n * n)).collect();
     let (low, high) = scaled.iter().fold((f64::INFINITY, 0.0_f64), |(l, h), &v| (l.min(v), h.max(v)));
+    eprintln!("grounded: end force errors {errors:?} N, N² e {scaled:?}");
     assert!(high / low < 4.0, "N² e = {scaled:?}");
     let x: Vec<f64> = counts.iter().map(|&n| f64::from(n).log2()).collect();
     let y: Vec<f64> = errors.iter().map(|e| e.log2()).collect();
@@ -235,5 +240,6 @@ fn a_taut_line_in_a_current_bows_as_a_loaded_string() {
     let tension = run.tensions()[20];
     let load = 0.5 * rho * drag * diameter * speed * speed;
     let expected = load * length * length / (8.0 * tension);
+    eprintln!("current: mid-span {mid} m, f L²/(8 T0) = {expected} m ({:+.2e})", mid / expected - 1.0);
     assert!((mid / expected - 1.0).abs() < 0.02, "mid-span {mid} m, f L²/(8 T0) = {expected} m (T0 = {tension} N)");
 }

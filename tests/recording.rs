@@ -307,7 +307,7 @@ fn recorded_contact_forces_are_the_faces_sums() {
 /// a calm sea's surface once.
 #[test]
 fn the_water_is_recorded() {
-    // dt = 2 ms, 10 Hz: a frame every 50 steps, 0 to 1000: 21.
+    // dt = 50 ms, 10 Hz: a frame every 2 steps, 0 to 40: 21.
     let (_dir, out) = record("scenes/moored_buoy.ron", &["--duration", "2", "--log-hz", "10"]);
     let rows = rows_per_entity(&out);
     for entity in
@@ -320,14 +320,14 @@ fn the_water_is_recorded() {
     let mut world = tether_scene::load(&common::repo("scenes/moored_buoy.ron")).unwrap().world;
     let start = world.state(0).position.z;
     assert_eq!(motion[&0][1], 0.0, "no heave at t = 0");
-    while world.steps() < 1000 {
+    while world.steps() < 40 {
         world.step().unwrap();
     }
     let heave = world.state(0).position.z - start;
     assert!(
-        (motion[&1000][1] - heave).abs() <= 1e-12 * start.abs().max(1.0),
+        (motion[&40][1] - heave).abs() <= 1e-12 * start.abs().max(1.0),
         "heave {} logged, {heave} m in the world",
-        motion[&1000][1]
+        motion[&40][1]
     );
     assert!(heave.abs() > 1e-3, "the buoy moved in the waves: {heave} m");
 
@@ -339,13 +339,13 @@ fn the_water_is_recorded() {
 }
 
 /// The moored buoy's chains on the seabed: each line's grounded part and touchdown are drawn and
-/// the grounded lengths plotted every frame (one series per line), and mooring1's plotted `L_B` is the world's at steps 1000,
-/// 2000 and 3000 (t = 2, 4, 6 s, the buoy swinging back from its push).
+/// the grounded lengths plotted every frame (one series per line), and mooring1's plotted `L_B` is the world's at steps 40,
+/// 80 and 120 (t = 2, 4, 6 s, the buoy swinging back from its push).
 #[test]
 fn grounded_lines_are_drawn_marked_and_their_grounded_length_plotted() {
     let (_dir, out) = record("scenes/moored_buoy.ron", &["--duration", "6", "--log-hz", "10"]);
     let rows = rows_per_entity(&out);
-    // dt = 2 ms, 10 Hz: a frame every 50 steps, 0 to 3000.
+    // dt = 50 ms, 10 Hz: a frame every 2 steps, 0 to 120.
     for line in ["mooring1", "mooring2", "mooring3"] {
         for entity in [format!("/world/seabed/grounded/{line}"), format!("/world/seabed/touchdowns/{line}")] {
             assert_eq!(rows.get(&entity), Some(&61), "{entity}: {rows:?}");
@@ -355,7 +355,7 @@ fn grounded_lines_are_drawn_marked_and_their_grounded_length_plotted() {
     let grounded = scalars_by_step(&out, "/plots/seabed");
     let mut world = tether_scene::load(&common::repo("scenes/moored_buoy.ron")).unwrap().world;
     let mut lengths = Vec::new();
-    for step in [1000, 2000, 3000] {
+    for step in [40, 80, 120] {
         while world.steps() < step {
             world.step().unwrap();
         }

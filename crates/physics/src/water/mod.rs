@@ -11,7 +11,8 @@
 //!    ([`environment`], [`waves`]); each triangle clipped at `p = 0` and `p` integrated exactly
 //!    over its wet part ([`pressure`]): hydrostatics and Froude–Krylov;
 //! 2. *Morison*: drag, damping and rotational drag from the flow relative to the body at its
-//!    drag centre, scaled by the wetted fraction ([`morison`]; current from [`current`]);
+//!    drag centre, the drag scaled by the wetted fraction, the declared dampers in full
+//!    ([`morison`]; current from [`current`]);
 //! 3. *added mass*: the fluid's inertia (and the diffraction force `M_a u̇`) as a reaction that
 //!    turns the total load into the one the rigid-body equations need, so that every
 //!    integrator solves `(m E + M_a) γ = F + M_a u̇` without knowing of it ([`added_mass`]);

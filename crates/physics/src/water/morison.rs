@@ -3,10 +3,14 @@
 //!
 //! In the body axes `b_j` (the scene's reference axes, carried by the body), with the relative
 //! flow at the drag centre `u_r = U + u − (v_G + ω × r_c)` [m/s] and the wetted fraction `w`:
-//! - drag `F_d = w Σ_j (½ ρ C_dj A_j |u_r·b_j| + c_j) (u_r·b_j) b_j` \[N], at the drag centre,
+//! - drag `F_d = Σ_j (w ½ ρ C_dj A_j |u_r·b_j| + c_j) (u_r·b_j) b_j` \[N], at the drag centre,
 //!   with the linear damping `c_j` [N·s/m] beside the quadratic drag;
-//! - rotational drag `M_d = −w Σ_j (C_rj |ω_j| + d_j) ω_j b_j` [N·m], `ω_j = ω·b_j`, with the
+//! - rotational drag `M_d = −Σ_j (w C_rj |ω_j| + d_j) ω_j b_j` [N·m], `ω_j = ω·b_j`, with the
 //!   rotational drag `C_rj` [N·m·s²] and the rotational damping `d_j` [N·m·s].
+//!
+//! Only the drag-like terms (`C_dj`, `C_rj`: loads on the wetted surface) scale with `w`; the
+//! declared dampers `c_j`, `d_j` act in full whenever the body is wet (`w > 0`; the stage skips a
+//! dry body), as the coefficients the user asked for (PHYSICS.md §6, Morison loads per body).
 //!
 //! The drag areas `A_j` default to the hull's projected areas `½ Σ A_f |n_f·b_j|`; the drag
 //! centre to G. The added-mass coefficients are applied by [`super::added_mass`].
@@ -24,9 +28,9 @@ pub struct HydroSpec {
     pub drag_areas: Option<Vec3>,
     /// `C_rj` [N·m·s²] ≥ 0.
     pub rotational_drag: Vec3,
-    /// `c_j` [N·s/m] ≥ 0.
+    /// `c_j` [N·s/m] ≥ 0, in full while the body is wet (not scaled by the wetted fraction).
     pub linear_damping: Vec3,
-    /// `d_j` [N·m·s] ≥ 0.
+    /// `d_j` [N·m·s] ≥ 0, in full while the body is wet (not scaled by the wetted fraction).
     pub rotational_damping: Vec3,
     /// `C_aj` [–] ≥ 0: added mass `w ρ V C_aj` along each axis.
     pub added_mass: Vec3,
@@ -110,24 +114,24 @@ impl Hydro {
         let along = self.axes.tr_mul(&relative);
         let s = &self.spec;
         let drag = Vec3::from_fn(|j, _| {
-            wetted * (0.5 * density * s.drag[j] * self.drag_areas[j] * along[j].abs() + s.linear_damping[j]) * along[j]
+            (wetted * 0.5 * density * s.drag[j] * self.drag_areas[j] * along[j].abs() + s.linear_damping[j]) * along[j]
         });
         let spin = self.axes.tr_mul(&frame.angular_velocity);
         let turning =
-            Vec3::from_fn(|j, _| -wetted * (s.rotational_drag[j] * spin[j].abs() + s.rotational_damping[j]) * spin[j]);
+            Vec3::from_fn(|j, _| -(wetted * s.rotational_drag[j] * spin[j].abs() + s.rotational_damping[j]) * spin[j]);
         let force = frame.rotation * (self.axes * drag);
         Load { force, moment: arm.cross(&force) + frame.rotation * (self.axes * turning) }
     }
 
-    /// The linearised drag along each body axis, `w (ρ C_dj A_j s + c_j)` [N·s/m], and about
-    /// each, `w (2 C_rj |ω_j| + d_j)` [N·m·s], for a relative flow speed of at most `speed`
+    /// The linearised drag along each body axis, `w ρ C_dj A_j s + c_j` [N·s/m], and about
+    /// each, `2 w C_rj |ω_j| + d_j` [N·m·s], for a relative flow speed of at most `speed`
     /// [m/s]: the dampers the stable time step sees.
     pub fn linearised(&self, frame: &BodyFrame, speed: f64, density: f64, wetted: f64) -> (Vec3, Vec3) {
         let spin = self.axes.tr_mul(&frame.angular_velocity);
         let s = &self.spec;
         (
-            Vec3::from_fn(|j, _| wetted * (density * s.drag[j] * self.drag_areas[j] * speed + s.linear_damping[j])),
-            Vec3::from_fn(|j, _| wetted * (2.0 * s.rotational_drag[j] * spin[j].abs() + s.rotational_damping[j])),
+            Vec3::from_fn(|j, _| wetted * density * s.drag[j] * self.drag_areas[j] * speed + s.linear_damping[j]),
+            Vec3::from_fn(|j, _| 2.0 * wetted * s.rotational_drag[j] * spin[j].abs() + s.rotational_damping[j]),
         )
     }
 }

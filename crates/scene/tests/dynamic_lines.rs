@@ -4,16 +4,19 @@
 
 use tether_test_support as common;
 
-/// `scenes/moored_buoy.ron` with its three chains dynamic at `segments` and time step `dt`.
-fn dynamic_buoy(segments: u32, dt: f64) -> String {
+/// `scenes/moored_buoy.ron` with its three chains dynamic at `segments`, stepped by `integrator`
+/// at time step `dt`.
+fn dynamic_buoy(segments: u32, integrator: &str, dt: f64) -> String {
     let text = std::fs::read_to_string(common::repo("scenes/moored_buoy.ron")).unwrap();
     let dynamic = format!(
-        "displaced_area: 0.003298, model: Dynamic(segments: {segments}, damping: Ratio(0.8), drag_normal: 2.4, \
+        "model: Dynamic(segments: {segments}, damping: Ratio(0.8), drag_normal: 2.4, \
          drag_tangential: 1.15, added_mass_normal: 1.0, added_mass_tangential: 0.5),"
     );
-    let text = text.replace("displaced_area: 0.003298,", &dynamic);
+    let text = text
+        .replace("model: QuasiStatic,", &dynamic)
+        .replace("integrator: rk4,", &format!("integrator: {integrator},"));
     let text = regex_dt(&text, dt);
-    assert_eq!(text.matches("Dynamic(").count(), 3, "three chains made dynamic");
+    assert_eq!(text.matches(&dynamic).count(), 3, "three chains made dynamic");
     text
 }
 
@@ -30,7 +33,7 @@ fn regex_dt(text: &str, dt: f64) -> String {
 /// partitioned exchange with the buoy, first order in the bodies' step).
 #[test]
 fn the_moored_buoy_on_dynamic_chains_keeps_its_energy_balance() {
-    let mut scene = common::scene(&dynamic_buoy(20, 0.0025));
+    let mut scene = common::scene(&dynamic_buoy(20, "leapfrog", 0.0025));
     let world = &mut scene.world;
     let start = world.energy();
     let mut worst: f64 = 0.0;
@@ -44,9 +47,16 @@ fn the_moored_buoy_on_dynamic_chains_keeps_its_energy_balance() {
     assert!(worst < 1e-4 * exchanged.max(1.0), "balance drift {worst} J of {exchanged} J exchanged");
 }
 
+/// `text` with the first `from` after its `couplings:` replaced by `to` (the comment above
+/// quotes the same fields).
+fn in_couplings(text: &str, from: &str, to: &str) -> String {
+    let start = text.find("couplings:").expect("a scene with couplings");
+    format!("{}{}", &text[..start], text[start..].replacen(from, to, 1))
+}
+
 #[test]
 fn each_bad_dynamic_value_is_refused_at_its_place() {
-    let good = dynamic_buoy(20, 0.01);
+    let good = dynamic_buoy(20, "leapfrog", 0.01);
     common::scene(&good);
     for (edit, expected) in [
         ("segments: 20", "segments must be at least 1, got 0"),
@@ -60,14 +70,14 @@ fn each_bad_dynamic_value_is_refused_at_its_place() {
             "drag_normal: 2.4" => "drag_normal: -1.0",
             _ => "added_mass_tangential: -0.5",
         };
-        let error = common::error_of(&good.replacen(edit, bad, 1));
+        let error = common::error_of(&in_couplings(&good, edit, bad));
         assert!(
             error.starts_with("bad.ron:") && error.contains("coupling \"mooring1\"") && error.ends_with(expected),
             "{error}"
         );
         assert_eq!(error.lines().count(), 1, "{error}");
     }
-    let error = common::error_of(&good.replacen("segments: 20", "segments: 20000", 1));
+    let error = common::error_of(&in_couplings(&good, "segments: 20", "segments: 20000"));
     assert!(error.ends_with("segments must be at most 10000, got 20000"), "{error}");
 }
 

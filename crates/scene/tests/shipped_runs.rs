@@ -76,12 +76,14 @@ const BOUNDS: &[Bounds] = &[
         ],
         balance_budget: 28.0,
     },
-    // The fairlead's harmonic surge, x = 2 sin(2πt/10) m, exactly (a kinematic body). Measured drift
-    // 0.352 J: the leapfrog books the driver's work by the trapezoid rule at 10 ms steps.
+    // The fairlead driven 2 m at 10 s on the dynamic chain (N = 40): the driver puts in 0.96 MJ
+    // over 60 s, the line's drag and damping take it out; measured drift 250 J (2.6e-4), first
+    // order in the step (123 J at 5 ms, 58 J at 2.5 ms): the partitioned exchange between the
+    // kinematic body and the line's sub-steps (PHYSICS.md §8).
     Bounds {
         scene: "chain_forced_surge.ron",
         regions: &[region("fairlead", [-2.0 - 1e-9, -1e-9, -1.0 - 1e-9], [2.0 + 1e-9, 1e-9, -1.0 + 1e-9])],
-        balance_budget: 0.53,
+        balance_budget: 375.0,
     },
     // Released straight, bounded by the slack it can take up; measured drift 0.0107 J (the
     // springs' first-order dampers) of the 28 J it dissipates.

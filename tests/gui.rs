@@ -44,6 +44,14 @@ fn harness(panel: ControlPanel) -> Harness<'static, ControlPanel> {
         .build_ui_state(|ui, panel: &mut ControlPanel| panel.ui(ui, None), panel)
 }
 
+/// A harness tall enough for every row of the shipped scenes' list above the panels below it
+/// (a button scrolled out of view takes no click).
+fn tall_harness(panel: ControlPanel) -> Harness<'static, ControlPanel> {
+    Harness::builder()
+        .with_size([440.0, 1600.0])
+        .build_ui_state(|ui, panel: &mut ControlPanel| panel.ui(ui, None), panel)
+}
+
 /// Runs frames until `done` holds for the panel, or fails after [`PATIENCE`].
 fn until(harness: &mut Harness<'_, ControlPanel>, what: &str, done: impl Fn(&ControlPanel) -> bool) {
     let start = Instant::now();
@@ -285,7 +293,7 @@ fn the_panel_renders_on_the_cpu_like_its_snapshot() {
 /// (from the default impact) go into them with one click.
 #[test]
 fn contact_knobs_and_the_estimator_tune_the_running_contact() {
-    let mut harness = harness(panel(&repo("scenes")));
+    let mut harness = tall_harness(panel(&repo("scenes")));
     open_from_list(&mut harness, "box_drop.ron");
     set_knob(&mut harness, "stiffness k1", 2.5e8);
     until(&mut harness, "the applied message", |p| p.log().any(|l| l.text.contains("applied")));

@@ -248,3 +248,30 @@ fn a_scene_without_a_closed_form_is_refused() {
     let why = Oscillator::of_scene(&tether_scene::parse(&text, &polynomial.path).unwrap()).unwrap_err();
     assert_eq!(why, "body \"mass\" must be free along exactly one axis, it is along 2");
 }
+
+/// The line-model study on the driven chain over 5 s (statistics over 2.5–5 s, where the
+/// fairlead reaches 2 m away at t = 2.5 s): the quasi-static peak is the catenary's at
+/// x = +2 m (54.15 kN, validation/moordyn's closed form), the dynamic lines' peaks converge to
+/// the reference's, each run costs its CPU, and a scene without lines is refused.
+#[test]
+fn the_line_model_study_measures_peaks_against_the_finest_line() {
+    let scene = tether_scene::load(&common::repo("scenes/chain_forced_surge.ron")).unwrap();
+    let runner = tether::runner::Runner::new(std::num::NonZeroUsize::new(2).unwrap());
+    let result = study::lines::run(&runner, &scene, 5.0, |_| {}).unwrap();
+    let peak = |setting: study::lines::LineSetting| {
+        result.runs.iter().find(|run| run.setting == setting).map(|run| run.lines[0].peak).unwrap()
+    };
+    let quasi_static = peak(study::lines::LineSetting::QuasiStatic);
+    assert!((quasi_static / 54_150.0 - 1.0).abs() < 2e-3, "quasi-static peak {quasi_static} N");
+    let reference = result.reference.lines[0].peak;
+    let errors: Vec<f64> = study::lines::SEGMENTS
+        .iter()
+        .map(|&n| (peak(study::lines::LineSetting::Dynamic(n)) / reference - 1.0).abs())
+        .collect();
+    assert!(errors[3] < errors[0] && errors[3] < 0.01, "peak errors at N = 10 … 80: {errors:?}");
+    assert!(result.runs.iter().all(|run| run.cpu_per_second > 0.0));
+    let table = study::lines::markdown(&result);
+    assert!(table.contains("| quasi-static | chain |") && table.contains("| dynamic N = 160 | chain |"), "{table}");
+    let spring = spring_mass();
+    assert!(matches!(study::lines::run(&runner, &spring, 1.0, |_| {}), Err(study::lines::LineStudyError::NoLines)));
+}

@@ -106,21 +106,7 @@ fn line_model_knobs(ui: &mut egui::Ui, model: &mut LineModelDef) -> bool {
     ui.label("");
     ui.end_row();
     if switched {
-        *model = if dynamic {
-            LineModelDef::Dynamic {
-                segments: 20,
-                damping: DampingDef::Ratio(0.8),
-                drag_normal: 1.2,
-                drag_tangential: 0.008,
-                added_mass_normal: 1.0,
-                added_mass_tangential: 0.0,
-                seabed_stiffness: tether_physics::coupling::LumpedMass::SEABED_STIFFNESS,
-                seabed_damping: tether_physics::coupling::LumpedMass::SEABED_DAMPING,
-                friction_speed: tether_physics::coupling::LumpedMass::FRICTION_SPEED,
-            }
-        } else {
-            LineModelDef::QuasiStatic
-        };
+        *model = if dynamic { LineModelDef::wire(20) } else { LineModelDef::QuasiStatic };
     }
     let edited = match model {
         LineModelDef::QuasiStatic => false,

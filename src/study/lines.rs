@@ -11,7 +11,7 @@
 use crate::runner::{Runner, thread_cpu_seconds};
 use tether_physics::world::World;
 use tether_scene::file::CouplingDef;
-use tether_scene::line_model::{DampingDef, LineModelDef};
+use tether_scene::line_model::LineModelDef;
 use tether_scene::{Scene, SceneError};
 
 /// Segment counts of the dynamic runs, and of the reference.
@@ -156,43 +156,9 @@ fn record_extremes(world: &World, lines: &[(usize, String)], extremes: &mut [(f6
 
 /// The model of a line declared `declared`, as `setting` runs it.
 fn modelled(declared: LineModelDef, setting: LineSetting) -> LineModelDef {
-    match (setting, declared) {
-        (LineSetting::QuasiStatic, _) => LineModelDef::QuasiStatic,
-        (LineSetting::Dynamic(n), LineModelDef::Dynamic { segments: _, .. }) => match declared {
-            LineModelDef::Dynamic {
-                damping,
-                drag_normal,
-                drag_tangential,
-                added_mass_normal,
-                added_mass_tangential,
-                seabed_stiffness,
-                seabed_damping,
-                friction_speed,
-                ..
-            } => LineModelDef::Dynamic {
-                segments: n,
-                damping,
-                drag_normal,
-                drag_tangential,
-                added_mass_normal,
-                added_mass_tangential,
-                seabed_stiffness,
-                seabed_damping,
-                friction_speed,
-            },
-            LineModelDef::QuasiStatic => declared,
-        },
-        (LineSetting::Dynamic(n), LineModelDef::QuasiStatic) => LineModelDef::Dynamic {
-            segments: n,
-            damping: DampingDef::Ratio(0.8),
-            drag_normal: 1.2,
-            drag_tangential: 0.008,
-            added_mass_normal: 1.0,
-            added_mass_tangential: 0.0,
-            seabed_stiffness: tether_physics::coupling::LumpedMass::SEABED_STIFFNESS,
-            seabed_damping: tether_physics::coupling::LumpedMass::SEABED_DAMPING,
-            friction_speed: tether_physics::coupling::LumpedMass::FRICTION_SPEED,
-        },
+    match setting {
+        LineSetting::QuasiStatic => LineModelDef::QuasiStatic,
+        LineSetting::Dynamic(n) => declared.dynamic_with(n),
     }
 }
 

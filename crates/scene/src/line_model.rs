@@ -67,6 +67,34 @@ fn friction_speed() -> f64 {
 }
 
 impl LineModelDef {
+    /// A dynamic line of `segments` with a wire's coefficients (C_dn 1.2, C_dt 0.008, C_an 1,
+    /// C_at 0), ζ = 0.8 and MoorDyn's seabed: what a quasi-static line becomes when switched.
+    pub fn wire(segments: u32) -> Self {
+        Self::Dynamic {
+            segments,
+            damping: DampingDef::Ratio(0.8),
+            drag_normal: 1.2,
+            drag_tangential: 0.008,
+            added_mass_normal: 1.0,
+            added_mass_tangential: 0.0,
+            seabed_stiffness: LumpedMass::SEABED_STIFFNESS,
+            seabed_damping: LumpedMass::SEABED_DAMPING,
+            friction_speed: LumpedMass::FRICTION_SPEED,
+        }
+    }
+
+    /// The model dynamic at `count` segments: a dynamic one keeps its other values, a
+    /// quasi-static one becomes [`LineModelDef::wire`].
+    pub fn dynamic_with(mut self, count: u32) -> Self {
+        match &mut self {
+            Self::Dynamic { segments, .. } => {
+                *segments = count;
+                self
+            }
+            Self::QuasiStatic => Self::wire(count),
+        }
+    }
+
     /// Whether this is the default, quasi-static model (left out when a file is written).
     pub fn is_quasi_static(&self) -> bool {
         *self == Self::QuasiStatic

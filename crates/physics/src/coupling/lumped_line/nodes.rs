@@ -85,8 +85,8 @@ impl NodeForces {
 }
 
 /// The forces on every node of `line` at `nodes` in the water's `flow` at each node (empty:
-/// none), into `out`. The end nodes get their segment, weight and seabed forces only: they move
-/// with their bodies, whose own water loads they share.
+/// none), into `out`. The end nodes move with their bodies and pass them everything, their
+/// half segment's drag included (as MoorDyn's coupled points); only their inertia is left out.
 pub fn evaluate(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut NodeForces) {
     let n = line.segments;
     out.resize(n);
@@ -133,19 +133,16 @@ pub fn evaluate(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut Nod
         }
         if submerged {
             out.total[node] += line.up * (displaced * g);
-            let interior = node != 0 && node != n;
-            if interior {
-                let p = &line.parameters;
-                matrix = (
-                    mass + displaced * p.added_mass_normal,
-                    displaced * (p.added_mass_tangential - p.added_mass_normal),
-                    tangent,
-                );
-                if let Some((water_velocity, water_acceleration)) = flow.get(node) {
-                    let water = water_forces(line, share, &tangent, &(water_velocity - v[node]), water_acceleration);
-                    out.total[node] += water;
-                    out.unbooked[node] += water;
-                }
+            let p = &line.parameters;
+            matrix = (
+                mass + displaced * p.added_mass_normal,
+                displaced * (p.added_mass_tangential - p.added_mass_normal),
+                tangent,
+            );
+            if let Some((water_velocity, water_acceleration)) = flow.get(node) {
+                let water = water_forces(line, share, &tangent, &(water_velocity - v[node]), water_acceleration);
+                out.total[node] += water;
+                out.unbooked[node] += water;
             }
         }
         if let Some(seabed) = &line.seabed {

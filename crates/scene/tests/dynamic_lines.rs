@@ -118,4 +118,3 @@ fn a_conservative_dynamic_line_keeps_its_energy_at_second_order() {
     let order = (coarse / fine).log2();
     assert!((1.8..3.0).contains(&order), "order {order}: {coarse} J at 1 ms, {fine} J at 0.5 ms");
 }
-

@@ -1,6 +1,7 @@
 //! The frames a recorder holds before it sends them: each one's simulated time and world step,
 //! the recording's two timelines (`sim_time` [s] and `step`).
 
+use crate::rerun;
 use rerun::log::TimeColumn;
 use std::cell::OnceCell;
 use tether_physics::world::World;

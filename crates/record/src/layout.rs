@@ -4,6 +4,7 @@
 //! body's motion in the water); the `sim_time` timeline; the viewer's own side panels folded,
 //! room being short beside the control panel.
 
+use crate::rerun;
 use crate::paths;
 use rerun::RecordingStream;
 use rerun::blueprint::components::PanelState;

@@ -40,6 +40,7 @@ pub mod layout;
 pub mod paths;
 
 mod columns;
+mod rerun;
 mod frames;
 mod stats;
 mod tracks;

@@ -25,6 +25,7 @@ mod springs;
 mod tension;
 mod water;
 
+use crate::rerun;
 use crate::RecordError;
 use crate::frames::Frames;
 use crate::stats::{KindStats, ROW_INDEX_BYTES};

@@ -1,6 +1,7 @@
 //! Tension: `plots/tension` holds every coupling's tension [N], one series each named after it
 //! (positive in tension; a catenary's is its larger end tension, a contact's its normal force).
 
+use crate::rerun;
 use super::{Settings, Track, send_chunk};
 use crate::columns::plot;
 use crate::frames::Frames;

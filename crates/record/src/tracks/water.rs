@@ -17,6 +17,7 @@
 //! - `plots/water/<body>/angles`: its roll and pitch (the turn since t = 0 about the world x and
 //!   y axes) [deg].
 
+use crate::rerun;
 use super::{Settings, Track, f32x3, of_entity, send_chunk};
 use crate::columns::{column, floats, plot};
 use crate::frames::Frames;

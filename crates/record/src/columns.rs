@@ -6,8 +6,8 @@
 //! chain100) — as much as a sixth of a step. The arrays have the components' own Arrow
 //! datatypes; the tests build each column both ways and compare them.
 
-use crate::rerun;
 use crate::RecordError;
+use crate::rerun;
 use rerun::external::arrow::array::{ArrayRef, FixedSizeListArray, Float32Array, Float64Array, ListArray, UInt32Array};
 use rerun::external::arrow::buffer::OffsetBuffer;
 use rerun::external::arrow::datatypes::{DataType, Field};

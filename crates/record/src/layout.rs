@@ -4,8 +4,8 @@
 //! body's motion in the water); the `sim_time` timeline; the viewer's own side panels folded,
 //! room being short beside the control panel.
 
-use crate::rerun;
 use crate::paths;
+use crate::rerun;
 use rerun::RecordingStream;
 use rerun::blueprint::components::PanelState;
 use rerun::blueprint::{

@@ -40,8 +40,8 @@ pub mod layout;
 pub mod paths;
 
 mod columns;
-mod rerun;
 mod frames;
+mod rerun;
 mod stats;
 mod tracks;
 

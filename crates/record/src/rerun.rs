@@ -12,6 +12,6 @@
 
 pub use re_sdk::*;
 pub use re_sdk_types::archetypes::*;
-pub use re_sdk_types::{components, datatypes};
 pub use re_sdk_types::components::{Color, Radius};
 pub use re_sdk_types::datatypes::Quaternion;
+pub use re_sdk_types::{components, datatypes};

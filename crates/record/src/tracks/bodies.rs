@@ -3,10 +3,10 @@
 //! `…/nodes` the static slave nodes (principal frame). One entity per body, so that a body is
 //! picked and selected in the viewer by its own path.
 
-use crate::rerun;
 use super::{Settings, Track, f32x3, of_entity, send_chunk, xyzw};
 use crate::columns::{column, floats};
 use crate::frames::Frames;
+use crate::rerun;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;

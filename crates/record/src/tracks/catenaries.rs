@@ -10,10 +10,10 @@
 //! with the row's index, where 32 two-point strips took 1,116 — the file writer compresses every
 //! byte, and a line's tension changes smoothly along it.
 
-use crate::rerun;
 use super::{Settings, Track, f32x3, send_chunk};
 use crate::columns::{colors, column, plot, strips};
 use crate::frames::Frames;
+use crate::rerun;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;

@@ -2,10 +2,10 @@
 //! `|Σ f_t|` [N], series `<name> normal` and `<name> friction`, as the step summed them (the
 //! faces are not evaluated again).
 
-use crate::rerun;
 use super::{Settings, Track, send_chunk};
 use crate::columns::plot;
 use crate::frames::Frames;
+use crate::rerun;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;

@@ -1,10 +1,10 @@
 //! Energy: `plots/energy` holds the energy balance (PHYSICS.md §5) [J], series `kinetic`,
 //! `gravity`, `elastic`, `dissipated`, `external_work`, `total` and `balance`, in one plot.
 
-use crate::rerun;
 use super::{Settings, Track, send_chunk};
 use crate::columns::plot;
 use crate::frames::Frames;
+use crate::rerun;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;

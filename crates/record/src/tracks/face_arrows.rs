@@ -5,10 +5,10 @@
 //! faces evaluated again, which the step does not keep, and they are the costliest entity of a
 //! recording: a contact's arrows are drawn only where asked for.
 
-use crate::rerun;
 use super::{Settings, Track, f32x3, send_chunk};
 use crate::columns::{column, floats};
 use crate::frames::Frames;
+use crate::rerun;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;

@@ -25,9 +25,9 @@ mod springs;
 mod tension;
 mod water;
 
-use crate::rerun;
 use crate::RecordError;
 use crate::frames::Frames;
+use crate::rerun;
 use crate::stats::{KindStats, ROW_INDEX_BYTES};
 use face_arrows::DrawnFaces;
 use rerun::external::arrow::array::Array as _;

@@ -9,10 +9,10 @@
 //! - `plots/seabed`: every line's grounded length `L_B` [m], a series named after the line (its
 //!   anchor and fairlead tensions are in `plots/catenary`).
 
-use crate::rerun;
 use super::{Settings, Track, f32x3, send_chunk};
 use crate::columns::{column, floats, plot, strips};
 use crate::frames::Frames;
+use crate::rerun;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;

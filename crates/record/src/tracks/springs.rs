@@ -3,10 +3,10 @@
 //! couplings' names. One entity for all of them: a chain of a hundred springs costs one row
 //! per frame, not a hundred.
 
-use crate::rerun;
 use super::{Settings, Track, f32x3, send_chunk};
 use crate::columns::{column, strips};
 use crate::frames::Frames;
+use crate::rerun;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;

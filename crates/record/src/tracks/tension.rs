@@ -1,10 +1,10 @@
 //! Tension: `plots/tension` holds every coupling's tension [N], one series each named after it
 //! (positive in tension; a catenary's is its larger end tension, a contact's its normal force).
 
-use crate::rerun;
 use super::{Settings, Track, send_chunk};
 use crate::columns::plot;
 use crate::frames::Frames;
+use crate::rerun;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;

@@ -17,10 +17,10 @@
 //! - `plots/water/<body>/angles`: its roll and pitch (the turn since t = 0 about the world x and
 //!   y axes) [deg].
 
-use crate::rerun;
 use super::{Settings, Track, f32x3, of_entity, send_chunk};
 use crate::columns::{column, floats, plot};
 use crate::frames::Frames;
+use crate::rerun;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;

@@ -145,19 +145,21 @@ impl Store {
         Ok(entries.filter_map(Result::ok).all(|e| e.file_name().to_string_lossy().starts_with(".sweep.json.")))
     }
 
-    /// Creates the directory and its manifest (unless it has one: another shard's).
+    /// Creates the directory, its manifest (unless it has one: another shard's), then its runs
+    /// folder — in that order, because shards start at the same time: another shard's
+    /// [`Store::check`] must find the directory empty (but for a temporary manifest) or holding
+    /// the manifest, never holding a runs folder without one.
     ///
     /// # Errors
     /// A directory or file that cannot be written.
     pub fn create(&self, manifest: &Manifest) -> Result<(), SweepError> {
-        for dir in [self.dir.clone(), self.path(RUNS)] {
-            fs::create_dir_all(&dir).map_err(|e| io(&dir, "cannot create", &e))?;
-        }
+        fs::create_dir_all(&self.dir).map_err(|e| io(&self.dir, "cannot create", &e))?;
         if self.manifest()?.is_none() {
             let text = serde_json::to_string_pretty(manifest).map_err(|e| SweepError::Directory(e.to_string()))?;
             write_atomically(&self.path(MANIFEST), text.as_bytes())?;
         }
-        Ok(())
+        let runs = self.path(RUNS);
+        fs::create_dir_all(&runs).map_err(|e| io(&runs, "cannot create", &e))
     }
 
     /// The run files, sorted.
@@ -267,7 +269,8 @@ fn complete_length(file: &mut File) -> std::io::Result<u64> {
 }
 
 /// Calls `each(row, position)` for every whole row of the run file at `path`, checking its
-/// header; a torn last line is left out.
+/// header; a torn last line is left out, and a file without a whole line (its header being
+/// written) has no rows.
 ///
 /// # Errors
 /// A file that cannot be read, a header of other columns, a row that does not read.
@@ -279,6 +282,10 @@ pub fn for_each_row(
     let fail = |line: u64, message: String| SweepError::Directory(format!("{}:{line}: {message}", path.display()));
     let mut file = File::open(path).map_err(|e| io(path, "cannot open", &e))?;
     let complete = complete_length(&mut file).map_err(|e| io(path, "cannot read", &e))?;
+    if complete == 0 {
+        // Not even its header yet: a file another shard has just created.
+        return Ok(());
+    }
     file.seek(SeekFrom::Start(0)).map_err(|e| io(path, "cannot read", &e))?;
     let mut reader = csv::Reader::from_reader(file.take(complete));
     let header = reader.headers().map_err(|e| fail(1, e.to_string()))?.clone();

@@ -118,25 +118,28 @@ impl Store {
     /// Checks, touching nothing, that this directory can take the sweep `manifest`: it is
     /// absent or empty, or it holds the same sweep. Returns which cases have a row already.
     ///
+    /// Another shard may be creating the directory meanwhile, and [`Store::create`] writes the
+    /// manifest before anything else: a directory found not empty without a manifest is looked
+    /// at once more, since the manifest may have appeared between the two looks.
+    ///
     /// # Errors
     /// A directory that holds another sweep, or files that are not a sweep's.
     pub fn check(&self, manifest: &Manifest) -> Result<Vec<bool>, SweepError> {
         let dir = self.dir.display();
-        match self.manifest()? {
-            Some(found) => {
-                if let Some(why) = found.differs_from(manifest) {
-                    return Err(SweepError::Directory(format!(
-                        "{dir} holds another sweep's results ({why}; spec {}): choose another directory",
-                        found.spec_path.display()
-                    )));
-                }
-                self.done_cases(manifest)
-            }
-            None if self.dir.exists() && !self.is_empty()? => Err(SweepError::Directory(format!(
-                "{dir} is not empty and holds no sweep: choose a new or empty directory"
-            ))),
-            None => Ok(vec![false; manifest.cases]),
+        let found = match self.manifest()? {
+            Some(found) => found,
+            None if !self.dir.exists() || self.is_empty()? => return Ok(vec![false; manifest.cases]),
+            None => self.manifest()?.ok_or_else(|| {
+                SweepError::Directory(format!("{dir} is not empty and holds no sweep: choose a new or empty directory"))
+            })?,
+        };
+        if let Some(why) = found.differs_from(manifest) {
+            return Err(SweepError::Directory(format!(
+                "{dir} holds another sweep's results ({why}; spec {}): choose another directory",
+                found.spec_path.display()
+            )));
         }
+        self.done_cases(manifest)
     }
 
     /// Whether the directory has nothing in it but another run's temporary manifest.

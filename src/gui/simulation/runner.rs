@@ -27,6 +27,11 @@ pub const TICK: Duration = Duration::from_millis(16);
 /// Share of a tick the thread may spend stepping.
 const BUDGET: Duration = Duration::from_millis(12);
 
+/// Wall time over which the status's speed (×real time, steps/s) is measured: many ticks, so
+/// that a step longer than a tick (RK4 at 50 ms: one step every third tick) reads as its
+/// average, not as ×3 and ×0 in turn.
+const PACE_WINDOW: Duration = Duration::from_millis(500);
+
 /// Runs the thread until the GUI's handle drops: commands, steps, status.
 pub(super) fn run(sinks: Sinks, reports: Sender<Report>, wake: Wake, inbox: &Receiver<Command>) {
     Runner::new(sinks, reports, wake).run(inbox);
@@ -37,6 +42,37 @@ pub(super) fn run(sinks: Sinks, reports: Sender<Report>, wake: Wake, inbox: &Rec
 struct Anchor {
     wall: Instant,
     sim: f64,
+}
+
+/// Simulated seconds, world steps and wall time, summed tick by tick over [`PACE_WINDOW`]; the
+/// status shows the last full window (while the first fills, the sums so far).
+#[derive(Debug, Clone, Copy)]
+struct Pace {
+    sums: (f64, u64, Duration),
+    shown: (f64, u64, Duration),
+    filled: bool,
+}
+
+impl Pace {
+    fn new() -> Self {
+        Self { sums: (0.0, 0, Duration::ZERO), shown: (0.0, 0, TICK), filled: false }
+    }
+
+    /// Adds a tick that advanced `advanced` [s] in `steps` over `wall`.
+    fn add(&mut self, advanced: f64, steps: u64, wall: Duration) {
+        let (sum_advanced, sum_steps, sum_wall) = &mut self.sums;
+        *sum_advanced += advanced;
+        *sum_steps += steps;
+        *sum_wall += wall;
+        let full = *sum_wall >= PACE_WINDOW;
+        if full || !self.filled {
+            self.shown = self.sums;
+        }
+        if full {
+            self.filled = true;
+            self.sums = (0.0, 0, Duration::ZERO);
+        }
+    }
 }
 
 /// The thread's state.
@@ -50,8 +86,8 @@ struct Runner {
     speed: Speed,
     anchor: Anchor,
     initial_balance: f64,
-    /// Simulated seconds and steps of the last tick, and the wall time since the tick before.
-    last_tick: (f64, u64, Duration),
+    /// How fast the run went, over the last [`PACE_WINDOW`].
+    pace: Pace,
     last_advance: Instant,
 }
 
@@ -67,7 +103,7 @@ impl Runner {
             speed: Speed::Factor(1.0),
             anchor: Anchor { wall: Instant::now(), sim: 0.0 },
             initial_balance: 0.0,
-            last_tick: (0.0, 0, TICK),
+            pace: Pace::new(),
             last_advance: Instant::now(),
         }
     }
@@ -156,6 +192,7 @@ impl Runner {
     fn restart_clock(&mut self) {
         self.anchor = Anchor { wall: Instant::now(), sim: self.world_time() };
         self.last_advance = Instant::now();
+        self.pace = Pace::new();
     }
 
     fn world_time(&self) -> f64 {
@@ -185,7 +222,7 @@ impl Runner {
             self.anchor = Anchor { wall: Instant::now(), sim: self.world_time() };
         }
         let advanced = self.world_time() - t0;
-        self.last_tick = (advanced, self.world_steps() - steps0, since_last);
+        self.pace.add(advanced, self.world_steps() - steps0, since_last);
         self.recording.pace(advanced);
     }
 
@@ -378,7 +415,7 @@ impl Runner {
 
     fn send_status(&self) {
         let Some(run) = &self.run else { return };
-        let (advanced, steps, wall) = self.last_tick;
+        let (advanced, steps, wall) = self.pace.shown;
         let state = RunState {
             label: run.label.clone(),
             running: self.running,
@@ -389,5 +426,31 @@ impl Runner {
             wall: wall.as_secs_f64(),
         };
         self.report(Report::Status(Box::new(status::status(&run.world, &state))));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{PACE_WINDOW, Pace, TICK};
+
+    /// RK4 at 50 ms at ×1: one step every third 16 ms tick. Each tick alone reads ×3.1 or ×0;
+    /// the window reads the average: 11 steps of 50 ms in 32 ticks of 16 ms, ×1.07.
+    #[test]
+    fn a_step_longer_than_a_tick_reads_as_its_average() {
+        let mut pace = Pace::new();
+        pace.add(0.05, 1, TICK);
+        assert_eq!(pace.shown, (0.05, 1, TICK), "while the first window fills: the sums so far");
+        for tick in 1..33 {
+            let steps = u64::from(tick % 3 == 0);
+            pace.add(0.05 * steps as f64, steps, TICK);
+        }
+        let (advanced, steps, wall) = pace.shown;
+        assert_eq!(wall, TICK * 32, "the window closes at its first tick past {PACE_WINDOW:?}");
+        assert_eq!(steps, 11);
+        assert!((advanced / wall.as_secs_f64() - 0.55 / 0.512).abs() < 1e-12, "×{}", advanced / wall.as_secs_f64());
+        // The next window's ticks are summed apart; the full window stays shown until they fill.
+        pace.add(0.05, 1, TICK);
+        assert_eq!(pace.shown.1, 11);
+        assert_eq!(pace.sums, (0.05, 1, TICK * 2));
     }
 }

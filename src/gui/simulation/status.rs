@@ -39,7 +39,8 @@ pub struct Status {
     /// What the contact estimator needs of each contact.
     pub contacts: Vec<ContactStatus>,
     pub bodies: Vec<BodyStatus>,
-    /// Simulated seconds per wall second, and world steps per wall second, over the last tick.
+    /// Simulated seconds per wall second, and world steps per wall second, over the last half
+    /// second.
     pub rate: f64,
     pub steps_per_second: f64,
 }
@@ -76,7 +77,8 @@ pub struct RunState {
     pub failure: Option<String>,
     /// `balance()` at the start of the recording [J].
     pub initial_balance: f64,
-    /// Simulated seconds and world steps over the last tick, and the tick's wall time [s].
+    /// Simulated seconds and world steps over the last half second of wall time, and that wall
+    /// time [s] (the runner's pace window).
     pub advanced: f64,
     pub steps: u64,
     pub wall: f64,

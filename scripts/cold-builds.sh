@@ -8,8 +8,8 @@
 #                                             # (/var/tmp); BUILD: headless, full, wheel (all)
 #
 # Measure on an idle machine: wall seconds depend on what else runs, and on a virtual machine
-# whose cores are shared so do CPU seconds (the headless build of e20d843 took 1,727 CPU s beside
-# four other builds, 967 s alone). The crates are downloaded first (`cargo fetch`) so that the
+# whose cores are shared so do CPU seconds (the headless build took 1,727 CPU s beside four other
+# builds on 2026-11-25, 967 s alone at e20d843 on 2026-11-27). The crates are downloaded first (`cargo fetch`) so that the
 # network is not timed.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -45,17 +45,17 @@ struct Anchor {
 }
 
 /// Simulated seconds, world steps and wall time, summed tick by tick over [`PACE_WINDOW`]; the
-/// status shows the last full window (while the first fills, the sums so far).
+/// status shows the last full window (while the first fills, the sums so far: a shown wall time
+/// under the window is the first one filling).
 #[derive(Debug, Clone, Copy)]
 struct Pace {
     sums: (f64, u64, Duration),
     shown: (f64, u64, Duration),
-    filled: bool,
 }
 
 impl Pace {
     fn new() -> Self {
-        Self { sums: (0.0, 0, Duration::ZERO), shown: (0.0, 0, TICK), filled: false }
+        Self { sums: (0.0, 0, Duration::ZERO), shown: (0.0, 0, TICK) }
     }
 
     /// Adds a tick that advanced `advanced` [s] in `steps` over `wall`.
@@ -65,11 +65,11 @@ impl Pace {
         *sum_steps += steps;
         *sum_wall += wall;
         let full = *sum_wall >= PACE_WINDOW;
-        if full || !self.filled {
+        let first_filling = self.shown.2 < PACE_WINDOW;
+        if full || first_filling {
             self.shown = self.sums;
         }
         if full {
-            self.filled = true;
             self.sums = (0.0, 0, Duration::ZERO);
         }
     }

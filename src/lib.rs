@@ -9,8 +9,10 @@
 //! feature (on by default); without it the library and the binary are headless.
 
 pub mod chart_style;
+pub mod fit;
 #[cfg(feature = "gui")]
 pub mod gui;
+pub mod quantity;
 pub mod runner;
 pub mod statics;
 pub mod study;

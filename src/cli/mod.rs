@@ -3,6 +3,7 @@
 mod check;
 mod equilibrium;
 mod estimate_contact;
+mod fit;
 mod forces;
 mod gui;
 mod offsets;
@@ -49,6 +50,11 @@ enum Command {
     /// to results.csv, results.parquet, summary.md and charts. `tether sweep merge DIR` joins
     /// the shards' rows.
     Sweep(sweep::SweepArgs),
+    /// Fit the scene's parameters (by the sweep's value paths) to a measured record — CSV,
+    /// Parquet or a recording — by bounded least squares; print the fitted values with their 95 %
+    /// intervals and what the data cannot determine; write the report, a chart per signal, the
+    /// fitted run's recording and the fitted scene.
+    Fit(fit::FitArgs),
     /// Print the forces of the initial state.
     Forces {
         /// Scene file (.ron).
@@ -86,6 +92,10 @@ pub fn run(cli: Cli) -> anyhow::Result<u8> {
         Command::Study(args) => study::run(&args).map(|()| 0),
         Command::Equilibrium(args) => equilibrium::run(&args).map(|()| 0),
         Command::Offsets(args) => offsets::run(&args).map(|()| 0),
+        Command::Fit(args) => fit::run(&args).map(|outcome| match outcome {
+            fit::Outcome::Finished => 0,
+            fit::Outcome::Interrupted => INTERRUPTED,
+        }),
         Command::Sweep(args) => sweep::run(&args).map(|outcome| match outcome {
             sweep::Outcome::Finished => 0,
             sweep::Outcome::Interrupted => INTERRUPTED,

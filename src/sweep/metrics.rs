@@ -20,9 +20,10 @@
 //! A declared metric is a quantity reduced over the run (from its `after` time on):
 //! `Metric(name: "heave", of: Position("buoy", Z), take: MaxAbs, after: 5.0)`.
 
+use crate::quantity::{Probe, Quantity, Readings};
 use serde::Deserialize;
-use tether_physics::body::{BodyState, Support};
-use tether_physics::math::{Rotation, Vec3};
+use tether_physics::body::Support;
+use tether_physics::math::Vec3;
 use tether_physics::world::World;
 
 /// At most this many positions per body are kept for the settle time (evenly spaced in steps).
@@ -39,49 +40,6 @@ pub struct MetricDef {
     /// Start of the window it is taken over [s] (default 0: the whole run).
     #[serde(default)]
     pub after: f64,
-}
-
-/// A quantity of a run at one instant.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
-pub enum Quantity {
-    /// A coupling's scalar force [N].
-    Tension(String),
-    /// The distance between a coupling's ends [m].
-    Length(String),
-    /// A coordinate of a body's G, world [m].
-    Position(String, Axis),
-    /// A component of a body's velocity of G, world [m/s].
-    Velocity(String, Axis),
-    /// `|v_G|` [m/s].
-    Speed(String),
-    /// `|ω|` [rad/s].
-    AngularSpeed(String),
-    /// `|x_G(t) − x_G(0)|` [m].
-    Excursion(String),
-    /// The angle of `q(0)⁻¹ q(t)` [rad].
-    Rotation(String),
-    /// A part of the energy account, PHYSICS.md §5 [J].
-    Energy(EnergyPart),
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
-pub enum Axis {
-    X,
-    Y,
-    Z,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
-pub enum EnergyPart {
-    Kinetic,
-    Gravity,
-    Elastic,
-    Dissipated,
-    ExternalWork,
-    /// kinetic + gravity + elastic.
-    Total,
-    /// total + dissipated − external work.
-    Balance,
 }
 
 /// How a quantity's history becomes one number.
@@ -121,46 +79,6 @@ enum Measure {
     Reduced { probe: Probe, reduction: Reduction, after: f64 },
     SettleTime,
     EnergyError,
-}
-
-/// A quantity with its body or coupling by index.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Probe {
-    Tension(usize),
-    Length(usize),
-    Position(usize, Axis),
-    Velocity(usize, Axis),
-    Speed(usize),
-    AngularSpeed(usize),
-    Excursion(usize),
-    Rotation(usize),
-    Energy(EnergyPart),
-}
-
-impl Probe {
-    /// The body whose state it reads.
-    fn body(self) -> Option<usize> {
-        match self {
-            Self::Position(b, _)
-            | Self::Velocity(b, _)
-            | Self::Speed(b)
-            | Self::AngularSpeed(b)
-            | Self::Excursion(b)
-            | Self::Rotation(b) => Some(b),
-            Self::Tension(_) | Self::Length(_) | Self::Energy(_) => None,
-        }
-    }
-
-    fn unit(self) -> &'static str {
-        match self {
-            Self::Tension(_) => "N",
-            Self::Length(_) | Self::Position(..) | Self::Excursion(_) => "m",
-            Self::Velocity(..) | Self::Speed(_) => "m/s",
-            Self::AngularSpeed(_) => "rad/s",
-            Self::Rotation(_) => "rad",
-            Self::Energy(_) => "J",
-        }
-    }
 }
 
 impl Metric {
@@ -206,7 +124,7 @@ impl Metric {
         metrics.push(Self { name: "energy_error".into(), unit: "–", measure: Measure::EnergyError });
         for def in declared {
             let fail = |message: String| RefusedMetric { name: def.name.clone(), message };
-            let probe = probe(world, &def.of).map_err(fail)?;
+            let probe = Probe::find(world, &def.of).map_err(fail)?;
             if !(def.after.is_finite() && def.after >= 0.0) {
                 return Err(fail(format!("`after` must be a time ≥ 0 s, got {}", def.after)));
             }
@@ -231,36 +149,6 @@ fn reduced(name: String, probe: Probe, reduction: Reduction, after: f64) -> Metr
 /// Whether a body with this support can move under forces.
 fn moves(support: &Support) -> bool {
     !matches!(support, Support::Kinematic(_) | Support::Fixed { translation: [true, true, true], rotation: true })
-}
-
-/// The probe of `quantity` in `world`, its names resolved.
-fn probe(world: &World, quantity: &Quantity) -> Result<Probe, String> {
-    let body = |name: &str| {
-        world.bodies().iter().position(|b| b.name == name).ok_or_else(|| {
-            let names: Vec<&str> = world.bodies().iter().map(|b| b.name.as_str()).collect();
-            format!("the scene has no body \"{name}\" (bodies: {})", names.join(", "))
-        })
-    };
-    let coupling = |name: &str| {
-        world.couplings().iter().position(|c| c.name == name).ok_or_else(|| {
-            let names: Vec<&str> = world.couplings().iter().map(|c| c.name.as_str()).collect();
-            format!(
-                "the scene has no coupling \"{name}\" (couplings: {})",
-                if names.is_empty() { "none".into() } else { names.join(", ") }
-            )
-        })
-    };
-    Ok(match quantity {
-        Quantity::Tension(name) => Probe::Tension(coupling(name)?),
-        Quantity::Length(name) => Probe::Length(coupling(name)?),
-        Quantity::Position(name, axis) => Probe::Position(body(name)?, *axis),
-        Quantity::Velocity(name, axis) => Probe::Velocity(body(name)?, *axis),
-        Quantity::Speed(name) => Probe::Speed(body(name)?),
-        Quantity::AngularSpeed(name) => Probe::AngularSpeed(body(name)?),
-        Quantity::Excursion(name) => Probe::Excursion(body(name)?),
-        Quantity::Rotation(name) => Probe::Rotation(body(name)?),
-        Quantity::Energy(part) => Probe::Energy(*part),
-    })
 }
 
 /// Running statistics of one quantity.
@@ -320,11 +208,8 @@ pub struct Observer<'m> {
     tallies: Vec<Tally>,
     /// Half a world step [s]: a sample at `after − half_step` is in the window.
     half_step: f64,
-    /// Each body's G and orientation at t = 0.
-    start: Vec<(Vec3, Rotation)>,
-    /// The synchronised state of each body a probe reads, this step.
-    states: Vec<Option<BodyState>>,
-    read: Vec<usize>,
+    /// The bodies' states the probes read, and their poses at t = 0.
+    readings: Readings,
     /// Energy balance at t = 0, its largest drift, and the largest kinetic + |elastic| [J].
     balance0: f64,
     drift: f64,
@@ -346,16 +231,14 @@ impl<'m> Observer<'m> {
     /// the t = 0 sample.
     pub fn new(metrics: &'m [Metric], world: &World, steps: u64) -> Self {
         let bodies = world.bodies().len();
-        let mut read: Vec<usize> = metrics
+        let probes: Vec<Probe> = metrics
             .iter()
             .filter_map(|m| match m.measure {
-                Measure::Reduced { probe, .. } => probe.body(),
-                _ => None,
+                Measure::Reduced { probe, .. } => Some(probe),
+                Measure::SettleTime | Measure::EnergyError => None,
             })
             .collect();
-        read.sort_unstable();
-        read.dedup();
-        let start = (0..bodies).map(|i| world.state(i)).map(|s| (s.position, s.orientation)).collect();
+        let readings = Readings::new(world, &probes);
         let moving: Vec<usize> = (0..bodies).filter(|&i| moves(&world.bodies()[i].support)).collect();
         let stride = steps.div_ceil(SETTLE_SAMPLES).max(1);
         let capacity = (steps / stride + 2) as usize;
@@ -370,9 +253,7 @@ impl<'m> Observer<'m> {
             metrics,
             tallies: vec![Tally::default(); metrics.len()],
             half_step: 0.5 * world.dt(),
-            start,
-            states: vec![None; bodies],
-            read,
+            readings,
             balance0: energy.balance(),
             drift: 0.0,
             peak_energy: 0.0,
@@ -384,15 +265,13 @@ impl<'m> Observer<'m> {
 
     /// Takes the sample of `world` after a world step.
     pub fn observe(&mut self, world: &World) {
-        for &body in &self.read {
-            self.states[body] = Some(world.state(body));
-        }
+        self.readings.update(world);
         let time = world.time();
         for (metric, tally) in self.metrics.iter().zip(&mut self.tallies) {
             if let Measure::Reduced { probe, after, .. } = metric.measure
                 && time + self.half_step >= after
             {
-                tally.add(value(probe, world, &self.states, &self.start));
+                tally.add(self.readings.value(probe, world));
             }
         }
         let energy = world.energy();
@@ -451,43 +330,6 @@ impl SettleTrack {
         match (0..self.times.len()).rev().find(|&k| distance(k) > limit) {
             Some(last_outside) => self.times.get(last_outside + 1).copied().unwrap_or(self.times[last_outside]),
             None => 0.0,
-        }
-    }
-}
-
-/// The probe's value now.
-fn value(probe: Probe, world: &World, states: &[Option<BodyState>], start: &[(Vec3, Rotation)]) -> f64 {
-    let state = |b: usize| states[b].as_ref();
-    let axis = |v: &Vec3, a: Axis| match a {
-        Axis::X => v.x,
-        Axis::Y => v.y,
-        Axis::Z => v.z,
-    };
-    // Bodies a probe reads were read this step (`Observer::read`).
-    let body = |b: usize, f: &dyn Fn(&BodyState) -> f64| state(b).map_or(0.0, f);
-    match probe {
-        Probe::Tension(c) => world.coupling_forces()[c].tension,
-        Probe::Length(c) => {
-            let forces = &world.coupling_forces()[c];
-            (forces.point2 - forces.point1).norm()
-        }
-        Probe::Position(b, a) => body(b, &|s| axis(&s.position, a)),
-        Probe::Velocity(b, a) => body(b, &|s| axis(&s.velocity, a)),
-        Probe::Speed(b) => body(b, &|s| s.velocity.norm()),
-        Probe::AngularSpeed(b) => body(b, &|s| s.angular_velocity.norm()),
-        Probe::Excursion(b) => body(b, &|s| (s.position - start[b].0).norm()),
-        Probe::Rotation(b) => body(b, &|s| (start[b].1.inverse() * s.orientation).angle()),
-        Probe::Energy(part) => {
-            let e = world.energy();
-            match part {
-                EnergyPart::Kinetic => e.kinetic,
-                EnergyPart::Gravity => e.gravity,
-                EnergyPart::Elastic => e.elastic,
-                EnergyPart::Dissipated => e.dissipated,
-                EnergyPart::ExternalWork => e.external_work,
-                EnergyPart::Total => e.total(),
-                EnergyPart::Balance => e.balance(),
-            }
         }
     }
 }

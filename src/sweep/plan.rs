@@ -12,7 +12,7 @@ use super::design::Cases;
 use super::error::{Stage, SweepError, unless_cancelled};
 use super::factor::{Factor, Values};
 use super::metrics::{Metric, MetricDef, RefusedMetric};
-use super::spec::{Design, Level, SpecText};
+use super::spec::{Design, Level, SpecFile, SpecText};
 use super::table::{CASE_COLUMN, Columns, FactorColumn, MetricColumn, OUTCOME_COLUMNS};
 use crate::runner::Runner;
 use serde_json::Value;
@@ -77,7 +77,7 @@ impl Plan {
         max_cases: usize,
     ) -> Result<Self, SweepError> {
         let spec = SpecText { path: spec_path, text: &spec_text };
-        let file = spec.parse()?;
+        let file: SpecFile = spec.parse()?;
         let (scene_path, scene_text) = match scene {
             Some(given) => given,
             None => {

@@ -183,11 +183,11 @@ pub struct SpecText<'a> {
 }
 
 impl SpecText<'_> {
-    /// Parses the spec.
+    /// Parses the spec (a sweep's [`SpecFile`], or another spec in its style: a fit's).
     ///
     /// # Errors
     /// A syntax error or a value of the wrong type, at its line and column.
-    pub fn parse(&self) -> Result<SpecFile, SpecError> {
+    pub fn parse<T: serde::de::DeserializeOwned>(&self) -> Result<T, SpecError> {
         let options = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
         options.from_str(self.text).map_err(|e| SpecError {
             path: self.path.display().to_string(),

@@ -21,7 +21,7 @@ use serde_json::{Map, Value};
 
 /// One step down the tree.
 #[derive(Debug, Clone, PartialEq, Eq)]
-enum Step {
+pub enum Step {
     /// A field of a struct, or an enum's variant.
     Key(String),
     /// An item of a list.
@@ -91,6 +91,17 @@ impl ValuePath {
             }
         };
         Ok(Self { text: text.to_string(), steps, into_variant })
+    }
+
+    /// The steps down the scene's data, as found: a field or an enum's variant, or a list's item
+    /// (a named item as its index). The fit writes a value back into the scene's text by them.
+    pub fn steps(&self) -> &[Step] {
+        &self.steps
+    }
+
+    /// Whether the path ends inside an enum of one number (`Fixed(4)`).
+    pub fn into_variant(&self) -> bool {
+        self.into_variant
     }
 
     /// The value at the path in `tree`, if the tree has one there (not a section or field the

@@ -72,15 +72,15 @@ pub(crate) fn colors(values: impl IntoIterator<Item = rerun::Color>) -> ArrayRef
 ///
 /// # Errors
 /// Columns whose lengths differ from the times'.
-pub(crate) fn send(
+pub(crate) fn send<const TIMELINES: usize>(
     stream: &RecordingStream,
     path: &str,
-    times: [TimeColumn; 2],
+    times: [TimeColumn; TIMELINES],
     columns: Vec<SerializedComponentColumn>,
 ) -> Result<(), RecordError> {
     let first = RowId::new();
-    let row_ids: Vec<RowId> =
-        std::iter::successors(Some(first), |row| Some(row.next())).take(times[0].num_rows()).collect();
+    let rows = times.first().map_or(0, TimeColumn::num_rows);
+    let row_ids: Vec<RowId> = std::iter::successors(Some(first), |row| Some(row.next())).take(rows).collect();
     let timelines = times.into_iter().map(|time| (*time.timeline().name(), time)).collect();
     let components = columns.into_iter().map(|column| (column.descriptor, column.list_array)).collect();
     let chunk =

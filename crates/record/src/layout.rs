@@ -17,8 +17,18 @@ use tether_physics::world::World;
 
 /// The layout of a run of `world`.
 pub fn layout(world: &World) -> Blueprint {
+    layout_with_fits(world, &[])
+}
+
+/// The layout of a run of `world` with a fit's plot for each measured column of `columns`
+/// (record and model, [`crate::comparison`]) at the top of the plots.
+pub fn layout_with_fits(world: &World, columns: &[&str]) -> Blueprint {
     let couplings = world.couplings();
-    let mut plots: Vec<ContainerLike> = vec![TimeSeriesView::new("energy [J]").with_origin(paths::ENERGY).into()];
+    let mut plots: Vec<ContainerLike> = columns
+        .iter()
+        .map(|column| TimeSeriesView::new(format!("fit: {column}")).with_origin(paths::fit_plot(column)).into())
+        .collect();
+    plots.push(TimeSeriesView::new("energy [J]").with_origin(paths::ENERGY).into());
     if !couplings.is_empty() {
         plots.push(TimeSeriesView::new("tension [N]").with_origin(paths::TENSION).into());
     }
@@ -64,8 +74,18 @@ pub fn layout(world: &World) -> Blueprint {
 
 /// Sends `world`'s [`layout`] to the viewer behind `stream` (nothing for a disabled stream).
 pub fn send_layout(stream: &RecordingStream, world: &World) -> rerun::RecordingStreamResult<()> {
+    send_layout_with_fits(stream, world, &[])
+}
+
+/// Sends `world`'s [`layout_with_fits`] to the viewer behind `stream` (nothing for a disabled
+/// stream).
+pub fn send_layout_with_fits(
+    stream: &RecordingStream,
+    world: &World,
+    columns: &[&str],
+) -> rerun::RecordingStreamResult<()> {
     if !stream.is_enabled() {
         return Ok(());
     }
-    layout(world).send(stream, BlueprintActivation { make_active: true, make_default: true })
+    layout_with_fits(world, columns).send(stream, BlueprintActivation { make_active: true, make_default: true })
 }

@@ -36,6 +36,7 @@
 //! instructions a chunk whatever its size, and about 30 a byte of Arrow data (LZ4 compression 27
 //! of them). Hence few chunks, few bytes; see the README's "Recording speed".
 
+pub mod comparison;
 pub mod layout;
 pub mod paths;
 
@@ -127,6 +128,11 @@ impl Recorder {
         // The static rows are all the batcher ever holds (frames go as columns): out they go.
         stream.flush_async()?;
         Ok(Self { stream, frames: Frames::default(), tracks, settings, buffered: 0, stats: RecordStats::default() })
+    }
+
+    /// The stream it logs to (to log beside the frames: a fit's measured series).
+    pub fn stream(&self) -> &RecordingStream {
+        &self.stream
     }
 
     /// Changes which face arrows are drawn from the next frame on.

@@ -19,6 +19,7 @@
 //! | `world/seabed/plane` | the seabed of a scene without water |
 //! | `world/seabed/grounded/<line>`, `world/seabed/touchdowns/<line>` | a line's part on the bottom, its touchdowns |
 //! | `plots/seabed` | every line's grounded length, a series named after it |
+//! | `plots/fit/<column>/record`, `…/model` | a measured signal and the model's beside it (a fit) |
 
 use tether_physics::coupling::{Coupling, CouplingKind};
 
@@ -48,6 +49,24 @@ pub const WATER_PLOTS: &str = "plots/water";
 pub const SEABED_PLANE: &str = "world/seabed/plane";
 /// Every line's grounded length, a series each.
 pub const SEABED_PLOT: &str = "plots/seabed";
+
+/// The fit's plots, one per measured signal.
+pub const FIT_PLOTS: &str = "plots/fit";
+/// A fit plot's measured series.
+pub const FIT_RECORD: &str = "record";
+/// A fit plot's model series.
+pub const FIT_MODEL: &str = "model";
+
+/// `plots/fit/<column>`: a measured signal's plot (a `/` in the column's name becomes `_`, so
+/// that the column stays one entity).
+pub fn fit_plot(column: &str) -> String {
+    format!("{FIT_PLOTS}/{}", column.replace('/', "_"))
+}
+
+/// `plots/fit/<column>/<series>`.
+pub fn fit_series(column: &str, series: &str) -> String {
+    format!("{}/{series}", fit_plot(column))
+}
 
 /// `world/seabed/grounded/<line>`: the part of a line on the bottom.
 pub fn grounded_line(line: &str) -> String {

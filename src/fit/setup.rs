@@ -1,0 +1,245 @@
+//! A fit made ready: the spec read, its scene and record loaded, every name, path, bound and
+//! weight checked against them before any run (docs/calibration.md, "The spec"). Each problem is
+//! one line placed in the spec (`fit.ron:line:col: …`), or naming the record's file and line.
+
+use super::measured::Record;
+use super::model::{Model, Signal};
+use super::parameter::{Parameter, Target};
+use super::spec::{FitFile, Window};
+use crate::quantity::Probe;
+use crate::sweep::spec::{SpecError, SpecText};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+
+/// Why a fit cannot run.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SetupError {
+    /// A problem placed in the spec file.
+    #[error("{0}")]
+    Spec(#[from] SpecError),
+    /// The scene, or the record, cannot be read (the message names the file and line).
+    #[error("{0}")]
+    File(String),
+}
+
+/// Everything a fit needs, checked.
+#[derive(Debug, Clone)]
+pub struct Setup {
+    pub spec_path: PathBuf,
+    pub spec_text: String,
+    pub record_path: PathBuf,
+    pub model: Model,
+    pub max_iterations: u32,
+}
+
+impl Setup {
+    /// Reads the spec at `spec_path`, its scene and its record.
+    ///
+    /// # Errors
+    /// See [`SetupError`].
+    pub fn load(spec_path: &Path) -> Result<Self, SetupError> {
+        let spec_text = std::fs::read_to_string(spec_path)
+            .map_err(|e| SetupError::File(format!("{}: cannot read the fit spec: {e}", spec_path.display())))?;
+        let spec = SpecText { path: spec_path, text: &spec_text };
+        let file: FitFile = spec.parse()?;
+        Self::new(&file, spec_path, &spec_text, None)
+    }
+
+    /// The fit `file` (whose text, for placing problems, is `spec_text` at `spec_path`; paths in
+    /// it are relative to `spec_path`'s folder). `scene` gives the scene's path and text when
+    /// the caller holds them (the window's scene), else the file's scene is read.
+    ///
+    /// # Errors
+    /// See [`SetupError`].
+    pub fn new(
+        file: &FitFile,
+        spec_path: &Path,
+        spec_text: &str,
+        scene: Option<(PathBuf, String)>,
+    ) -> Result<Self, SetupError> {
+        let spec = SpecText { path: spec_path, text: spec_text };
+        let directory = spec_path.parent().unwrap_or(Path::new("."));
+        let (scene_path, scene_text) = match scene {
+            Some(given) => given,
+            None => {
+                let path = directory.join(&file.scene);
+                let text = std::fs::read_to_string(&path).map_err(|e| {
+                    spec.error_at(&file.scene, "scene", format!("cannot read the scene {}: {e}", path.display()))
+                })?;
+                (path, text)
+            }
+        };
+        let scene = tether_scene::parse(&scene_text, &scene_path).map_err(|e| SetupError::File(e.to_string()))?;
+        let mut base = serde_json::to_value(&scene.file)
+            .map_err(|e| spec.error_at(&file.scene, "scene", format!("the scene's data cannot be addressed: {e}")))?;
+        let record_path = directory.join(&file.record);
+        if !record_path.is_file() {
+            return Err(spec
+                .error_at(&file.record, "record", format!("no record file {}", record_path.display()))
+                .into());
+        }
+        let record = Record::read(&record_path, file.time_column.as_deref()).map_err(SetupError::File)?;
+        let mut parameters = Vec::new();
+        for def in &file.parameters {
+            let first = def.path.paths().first().map_or("", String::as_str);
+            let parameter = Parameter::new(def, &base).map_err(|m| spec.error_at(first, "parameters", m))?;
+            check_values(&parameter, &base, &scene_text, &scene_path)
+                .map_err(|m| spec.error_after(first, "from", m))?;
+            parameters.push(parameter);
+        }
+        if let Some(shift) = &file.time_shift {
+            parameters.push(Parameter::time_shift(shift).map_err(|m| spec.error_at("", "time_shift", m))?);
+        }
+        if parameters.is_empty() {
+            return Err(spec.error_at("", "parameters", "no parameter to fit: name at least one").into());
+        }
+        let names: Vec<&str> = parameters.iter().map(|p| p.name.as_str()).collect();
+        if let Some(twice) = names.iter().enumerate().find(|(i, n)| names[..*i].contains(n)).map(|(_, n)| *n) {
+            return Err(spec.error_at(twice, "parameters", format!("parameter `{twice}` is fitted twice")).into());
+        }
+        let (shift_from, shift_to) =
+            parameters.iter().find(|p| p.target == Target::TimeShift).map_or((0.0, 0.0), |p| (p.from, p.to));
+        for def in &file.signals {
+            record.series(&def.column).map_err(|m| spec.error_at(&def.column, "signals", m))?;
+        }
+        let window = window(
+            file.window,
+            &record,
+            &file.signals.iter().map(|s| s.column.as_str()).collect::<Vec<_>>(),
+            scene.file.duration,
+            shift_from,
+        )
+        .map_err(|m| spec.error_at("", if file.window.is_some() { "window" } else { "record" }, m))?;
+        let mut signals = Vec::new();
+        for def in &file.signals {
+            let series = record.series(&def.column).map_err(|m| spec.error_at(&def.column, "signals", m))?;
+            let probe = Probe::find(&scene.world, &def.of)
+                .map_err(|m| spec.error_after(&def.column, "of", format!("signal \"{}\": {m}", def.column)))?;
+            let (times, measured): (Vec<f64>, Vec<f64>) = series
+                .times
+                .iter()
+                .zip(&series.values)
+                .filter(|(t, _)| **t >= window.from && **t <= window.to)
+                .map(|(t, v)| (*t, *v))
+                .unzip();
+            if times.len() < 2 {
+                let message = format!(
+                    "signal \"{}\" has {} sample(s) in the window {} to {} s: nothing to fit to",
+                    def.column,
+                    times.len(),
+                    window.from,
+                    window.to
+                );
+                return Err(spec.error_at(&def.column, "signals", message).into());
+            }
+            let weight = weight(def.weight, &measured)
+                .map_err(|m| spec.error_after(&def.column, "weight", format!("signal \"{}\": {m}", def.column)))?;
+            signals.push(Signal {
+                column: def.column.clone(),
+                quantity: def.of.clone(),
+                unit: probe.unit(),
+                weight,
+                times,
+                measured,
+            });
+        }
+        if signals.is_empty() {
+            return Err(spec.error_at("", "signals", "no signal to fit to: map at least one column").into());
+        }
+        let samples: usize = signals.iter().map(|s| s.times.len()).sum();
+        if samples <= parameters.len() {
+            let message = format!("{samples} samples cannot fit {} parameters", parameters.len());
+            return Err(spec.error_at("", "signals", message).into());
+        }
+        let end_time = window.to + shift_to.max(0.0);
+        base["duration"] = Value::from(end_time.max(scene.file.dt));
+        let model = Model { scene_path, scene_text, base, parameters, signals, end_time };
+        Ok(Self {
+            spec_path: spec_path.to_path_buf(),
+            spec_text: spec_text.to_string(),
+            record_path,
+            model,
+            max_iterations: file.max_iterations,
+        })
+    }
+
+    /// The start values of the parameters.
+    pub fn start(&self) -> Vec<f64> {
+        self.model.parameters.iter().map(|p| p.start).collect()
+    }
+}
+
+/// The scene loader's word on each parameter's bounds and start (its validation owns the
+/// knob's valid range).
+fn check_values(parameter: &Parameter, base: &Value, scene_text: &str, scene_path: &Path) -> Result<(), String> {
+    for (label, value) in [("from", parameter.from), ("to", parameter.to), ("start", parameter.start)] {
+        let mut tree = base.clone();
+        parameter.set(&mut tree, value);
+        let built =
+            serde_json::from_value::<tether_scene::SceneFile>(tree).map_err(|e| e.to_string()).and_then(|file| {
+                tether_scene::build_variant(scene_text, scene_path, file).map(drop).map_err(|e| e.to_string())
+            });
+        if let Err(message) = built {
+            return Err(format!("parameter `{}` {label} = {value}: {message}", parameter.name));
+        }
+    }
+    Ok(())
+}
+
+/// The record's times compared: `given`, or every time of the signals' columns the scene's run
+/// (0 to `duration`) covers; `shift_from` (≤ 0 moves the model earlier) must not reach before
+/// t = 0.
+fn window(
+    given: Option<Window>,
+    record: &Record,
+    columns: &[&str],
+    duration: f64,
+    shift_from: f64,
+) -> Result<Window, String> {
+    let (first, last) = columns
+        .iter()
+        .filter_map(|c| record.series(c).ok())
+        .filter_map(|s| Some((*s.times.first()?, *s.times.last()?)))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (f, l)| (a.min(f), b.max(l)));
+    let window = match given {
+        Some(w) => {
+            if !(w.from.is_finite() && w.to.is_finite() && w.from < w.to && w.from >= 0.0) {
+                return Err(format!("the window must run forwards from t ≥ 0 s, got {} to {} s", w.from, w.to));
+            }
+            w
+        }
+        None => Window { from: first.max(-shift_from.min(0.0)).max(0.0), to: last.min(duration) },
+    };
+    if !(window.from < window.to) || window.to < first || window.from > last {
+        return Err(format!(
+            "no time overlap: the record spans {first} to {last} s, the model runs 0 to {} s{}",
+            if given.is_some() { window.to } else { duration },
+            if given.is_some() { format!(", the window is {} to {} s", window.from, window.to) } else { String::new() }
+        ));
+    }
+    if window.from + shift_from < 0.0 {
+        return Err(format!(
+            "the time shift may reach {shift_from} s, before the model's t = 0 at the window's start {} s: start the window at {} s or later",
+            window.from, -shift_from
+        ));
+    }
+    Ok(window)
+}
+
+/// A signal's weight: `given` (finite, > 0), or 1 / the standard deviation of `measured`.
+fn weight(given: Option<f64>, measured: &[f64]) -> Result<f64, String> {
+    match given {
+        Some(w) if w.is_finite() && w > 0.0 => Ok(w),
+        Some(w) => Err(format!("weight must be a finite number > 0, got {w}")),
+        None => {
+            let n = measured.len() as f64;
+            let mean = measured.iter().sum::<f64>() / n;
+            let deviation = (measured.iter().map(|y| (y - mean).powi(2)).sum::<f64>() / n).sqrt();
+            if deviation > 0.0 {
+                Ok(1.0 / deviation)
+            } else {
+                Err(format!("the column is constant ({mean}) in the window: give it a `weight`"))
+            }
+        }
+    }
+}

@@ -161,7 +161,9 @@ pub fn fit(setup: &Setup, runner: &Runner, mut progress: impl FnMut(&Progress)) 
     // The start and the optimum run once more, side by side, for the report's curves (the
     // solver keeps residuals, not runs); both ran before, so they run again.
     let start_values: Vec<f64> = model.parameters.iter().map(|p| p.start).collect();
-    let (start_run, trajectory) = twice(model, runner, &start_values, &values)?;
+    // After a Ctrl-C too (a partial fit is still reported): on threads of their own, without
+    // the cancelled flag.
+    let (start_run, trajectory) = twice(model, &Runner::new(runner.jobs()), &start_values, &values)?;
     let signals = signal_fits(model, (&start_run, model.shift(&start_values)), (&trajectory, model.shift(&values)));
     Ok(Outcome {
         parameters,

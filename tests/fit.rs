@@ -391,6 +391,13 @@ fn the_command_writes_the_report_and_the_fitted_scene() {
         let path = out.join(file);
         assert!(path.metadata().map(|m| m.len() > 100).unwrap_or(false), "{}", path.display());
     }
+    // The recording of the fitted run holds the record beside the model, in a plot of their own.
+    let recording = tether::fit::measured::Record::read(&out.join("fitted.rrd"), None).unwrap();
+    let record = recording.series("plots/fit/x/record/record").unwrap();
+    assert_eq!(record.times.len(), 501);
+    let model = recording.series("plots/fit/x/model/model").unwrap();
+    assert_eq!(model.times.len(), 5001, "every world step of the fitted run");
+    assert!(recording.series("world/bodies/mass/x").is_ok());
     let fitted = std::fs::read_to_string(&scene_out).unwrap();
     assert!(fitted.starts_with("// Fitted by `tether fit`"), "{fitted}");
     assert!(fitted.contains("// Spring-mass-damper: m = 1 kg"), "the scene's own comments are kept");

@@ -31,7 +31,7 @@ pub fn log_styles(stream: &RecordingStream, column: &str) -> Result<(), RecordEr
     Ok(())
 }
 
-/// Sends `values` at `times` [s] as `column`'s `series` ([`paths::FIT_RECORD`] or
+/// Sends `values` at `times` \[s] as `column`'s `series` ([`paths::FIT_RECORD`] or
 /// [`paths::FIT_MODEL`]), one chunk; a model series sent again replaces the one before at the
 /// same times (the viewer shows the latest row at each time).
 ///

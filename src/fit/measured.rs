@@ -201,10 +201,7 @@ fn arrow_cast_f64(column: &arrow_array::ArrayRef) -> Result<arrow_array::ArrayRe
         DataType::Int32 => as_f64(column.as_primitive::<Int32Type>().iter().map(|v| v.map(f64::from)).collect()),
         other => return Err(format!("is {other}, not a number")),
     })
-    .map(|a| {
-        debug_assert!(a.as_primitive_opt::<Float64Type>().is_some());
-        a
-    })
+    .inspect(|a| debug_assert!(a.as_primitive_opt::<Float64Type>().is_some()))
 }
 
 #[cfg(test)]

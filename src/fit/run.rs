@@ -80,7 +80,7 @@ impl Outcome {
 /// Why a fit stopped without a result.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum RunError {
-    #[error("{0}")]
+    #[error(transparent)]
     Solve(#[from] SolveError),
 }
 

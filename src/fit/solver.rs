@@ -391,8 +391,12 @@ fn jacobian_from(
         let mut h = difference_step(point[j]);
         let moved = match column {
             Ok(moved) => moved,
-            Err(_) => {
+            Err(message) => {
                 h = -h;
+                if !(0.0..=1.0).contains(&(point[j] + h)) {
+                    // The other side is outside the box: no difference within the bounds.
+                    return Err(SolveError::Derivative { parameter: j, message });
+                }
                 let mut other = point.to_vec();
                 other[j] += h;
                 *evaluations += 1;

@@ -496,3 +496,18 @@ fn ctrl_c_keeps_the_best_point_as_a_partial_result() {
     let fitted = std::fs::read_to_string(&scene_out).unwrap();
     assert!(fitted.lines().next().is_some_and(|l| l.contains("PARTIAL")), "{fitted}");
 }
+
+/// A fit is deterministic: the same spec and record give the same values, bit for bit, on one
+/// thread and on two.
+#[test]
+fn the_same_fit_on_one_and_two_threads_is_the_same() {
+    let dir = tempfile::tempdir().unwrap();
+    let spec = spring_record(dir.path(), 11);
+    let setup = Setup::load(&spec).unwrap_or_else(|e| panic!("{e}"));
+    let one = run::fit(&setup, &Runner::new(NonZeroUsize::MIN), |_| {}).unwrap();
+    let two = run::fit(&setup, &runner(), |_| {}).unwrap();
+    assert_eq!(one.values, two.values);
+    assert_eq!(one.runs, two.runs);
+    let bits = |o: &Outcome| o.parameters.iter().map(|p| p.standard_error.map(f64::to_bits)).collect::<Vec<_>>();
+    assert_eq!(bits(&one), bits(&two));
+}

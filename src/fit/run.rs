@@ -113,10 +113,6 @@ impl Problem for Residuals<'_> {
         self.runner.cancelled()
     }
 
-    fn slots(&self) -> usize {
-        self.runner.jobs().get()
-    }
-
     fn series(&self) -> Vec<usize> {
         self.model.signals.iter().map(|s| s.times.len()).collect()
     }

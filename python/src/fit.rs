@@ -5,11 +5,12 @@
 //! bytes for numpy.
 //!
 //! The fit runs on its own thread while the caller's thread waits with the GIL released,
-//! running Python's signal handlers every [`POLL`]. Ctrl-C sets the runner's cancel flag: the
+//! running Python's signal handlers ([`crate::background`]). Ctrl-C sets the runner's cancel flag: the
 //! solver stops at the best point so far, which is returned as the result, said to be partial
 //! (ending `Cancelled`), as the command line writes it; only a Ctrl-C before the start point
 //! was evaluated raises `KeyboardInterrupt`, there being no result yet.
 
+use crate::background;
 use crate::errors::{caught, runtime_error, value_error};
 use crate::samples::bytes;
 use pyo3::prelude::*;
@@ -17,17 +18,13 @@ use pyo3::types::{PyDict, PyList};
 use std::num::NonZeroUsize;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::time::Duration;
+use std::sync::atomic::AtomicBool;
 use tether::fit::output::{self, utc_now};
 use tether::fit::report;
 use tether::fit::run::{self, Outcome, RunError};
 use tether::fit::setup::Setup;
 use tether::fit::solver::SolveError;
 use tether::runner::Runner;
-
-/// How often the waiting thread looks at Python's signals.
-const POLL: Duration = Duration::from_millis(50);
 
 /// Fits the spec at `spec` (or the spec `text`, labelled `spec`, its paths relative to `spec`'s
 /// folder) on `jobs` threads (None: every core). `output`: a folder for the command line's files
@@ -70,33 +67,21 @@ pub fn run_fit<'py>(
     }
     let cancel = Arc::new(AtomicBool::new(false));
     let runner = Runner::new(jobs).with_cancel(Arc::clone(&cancel));
-    let worker = std::thread::spawn(move || caught(|| fit_and_write(setup, &runner, output, write_scene)));
-    let mut interrupt = None;
-    while !worker.is_finished() {
-        py.detach(|| std::thread::sleep(POLL));
-        if let Err(signal) = py.check_signals() {
-            cancel.store(true, Ordering::SeqCst);
-            interrupt = Some(signal);
-            break;
-        }
-    }
-    let done = py
-        .detach(|| worker.join())
-        .map_err(|_| runtime_error("the fit's thread stopped unexpectedly"))?
-        .map_err(runtime_error)?;
-    let done = match done {
-        Ok(done) => done,
-        Err(Failure::Run(RunError::Solve(SolveError::Cancelled))) if interrupt.is_some() => {
-            return Err(interrupt.expect("checked"));
-        }
-        Err(Failure::Run(e)) => return Err(runtime_error(e)),
-        Err(Failure::Write(message)) => return Err(value_error(message)),
+    let (joined, interrupt) =
+        background::run(py, &cancel, move || caught(|| fit_and_write(setup, &runner, output, write_scene)));
+    let done = joined.map_err(|_| runtime_error("the fit's thread stopped unexpectedly"))?.map_err(runtime_error)?;
+    let interrupted = interrupt.is_some();
+    let done = match (done, interrupt) {
+        (Ok(done), _) => done,
+        (Err(Failure::Run(RunError::Solve(SolveError::Cancelled))), Some(signal)) => return Err(signal),
+        (Err(Failure::Run(e)), _) => return Err(runtime_error(e)),
+        (Err(Failure::Write(message)), _) => return Err(value_error(message)),
     };
     let dict = PyDict::new(py);
     dict.set_item("report", done.report)?;
     dict.set_item("table", done.table)?;
     dict.set_item("spec", &done.setup.spec_text)?;
-    dict.set_item("interrupted", interrupt.is_some())?;
+    dict.set_item("interrupted", interrupted)?;
     let signals = PyList::empty(py);
     for (signal, fit) in done.setup.model.signals.iter().zip(&done.outcome.signals) {
         let arrays = PyDict::new(py);

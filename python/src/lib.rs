@@ -11,6 +11,7 @@
 //! caught at the boundary and raised as `RuntimeError`; it never unwinds into the interpreter.
 
 mod advance;
+mod background;
 mod errors;
 mod fit;
 mod parameters;

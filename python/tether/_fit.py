@@ -58,8 +58,8 @@ class FitResult:
       picks one);
     - ``runs``: model runs; ``wall_seconds``;
     - ``status``: ``"converged"`` or ``"partial"`` (out of iterations, or stopped by Ctrl-C);
-      ``ending``: ``"cost_converged"``, ``"step_converged"``, ``"gradient_converged"``,
-      ``"iteration_limit"`` or ``"cancelled"``; ``interrupted``: True after Ctrl-C;
+      ``ending``: ``"cost_converged"``, ``"step_converged"``, ``"within_noise"``,
+      ``"gradient_converged"``, ``"iteration_limit"`` or ``"cancelled"``; ``interrupted``: True after Ctrl-C;
     - ``spec``: the fit spec's text (what ``tether fit`` would run); ``report``: the table
       ``tether fit`` prints (also ``str(result)``); ``json``: the whole report as a dict,
       including the files written.

@@ -391,6 +391,13 @@ fn the_command_writes_the_report_and_the_fitted_scene() {
         let path = out.join(file);
         assert!(path.metadata().map(|m| m.len() > 100).unwrap_or(false), "{}", path.display());
     }
+    // The recording of the fitted run holds the record beside the model, in a plot of their own.
+    let recording = tether::fit::measured::Record::read(&out.join("fitted.rrd"), None).unwrap();
+    let record = recording.series("plots/fit/x/record/record").unwrap();
+    assert_eq!(record.times.len(), 501);
+    let model = recording.series("plots/fit/x/model/model").unwrap();
+    assert_eq!(model.times.len(), 5001, "every world step of the fitted run");
+    assert!(recording.series("world/bodies/mass/x").is_ok());
     let fitted = std::fs::read_to_string(&scene_out).unwrap();
     assert!(fitted.starts_with("// Fitted by `tether fit`"), "{fitted}");
     assert!(fitted.contains("// Spring-mass-damper: m = 1 kg"), "the scene's own comments are kept");
@@ -398,4 +405,111 @@ fn the_command_writes_the_report_and_the_fitted_scene() {
     let stiffness =
         fitted.split("stiffness: ").nth(1).and_then(|s| s.split(',').next()).and_then(|s| s.trim().parse::<f64>().ok());
     assert!(stiffness.is_some_and(|s| (s - k).abs() < 1e-4 * k), "{stiffness:?} against {k}");
+}
+
+/// A fit to another recording: `spring_mass` with k = 120 N/m recorded by `tether record`, the
+/// scene (k = 100) fitted to its `world/bodies/mass/x` (stored as f32, so 1e-7 relative).
+#[test]
+fn a_recording_is_a_record() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = common::repo("scenes/spring_mass.ron");
+    let stiff = dir.path().join("stiff.ron");
+    std::fs::write(&stiff, std::fs::read_to_string(&scene).unwrap().replace("stiffness: 100.0", "stiffness: 120.0"))
+        .unwrap();
+    let recording = dir.path().join("stiff.rrd");
+    let run = Command::new(env!("CARGO_BIN_EXE_tether"))
+        .args(["record", stiff.to_str().unwrap(), "-o", recording.to_str().unwrap(), "--log-hz", "100"])
+        .output()
+        .unwrap();
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    let spec = dir.path().join("fit.ron");
+    std::fs::write(
+        &spec,
+        format!(
+            r#"Fit(
+    scene: "{}",
+    record: "stiff.rrd",
+    signals: [Signal(column: "world/bodies/mass/x", of: Position("mass", X))],
+    parameters: [Parameter(path: "couplings.spring.law.stiffness", from: 50.0, to: 200.0)],
+)"#,
+            scene.display()
+        ),
+    )
+    .unwrap();
+    let outcome = fit(&spec);
+    let k = outcome.parameters[0].value;
+    eprintln!("fitted to a recording: k = {k} (truth 120), {} samples", outcome.signals[0].samples);
+    assert!((k - 120.0).abs() < 1e-3 * 120.0, "k = {k}");
+    assert_eq!(outcome.signals[0].samples, 501);
+}
+
+/// A trial the model cannot run (a spring so stiff that the step diverges) is an error with the
+/// health check's message, which the solver takes as a rejected step (`solver` tests), never a
+/// panic or a NaN residual.
+#[test]
+fn a_diverging_trial_is_refused_with_its_message() {
+    let dir = bad_input_folder();
+    let spec = dir.path().join("fit.ron");
+    std::fs::write(
+        &spec,
+        spec_text(
+            "x.csv",
+            "x",
+            r#"Position("mass", X)"#,
+            r#"Parameter(path: "couplings.spring.law.stiffness", from: 50.0, to: 1e9, scale: Log)"#,
+            "",
+        ),
+    )
+    .unwrap();
+    let setup = Setup::load(&spec).unwrap_or_else(|e| panic!("{e}"));
+    let (results, runs) = setup.model.evaluate(&[vec![100.0], vec![1e9]], &runner());
+    assert_eq!(runs, 2);
+    assert!(results[0].as_ref().is_ok_and(|r| r.iter().all(|x| x.is_finite())));
+    let refused = results[1].as_ref().unwrap_err();
+    assert!(refused.contains("diverged") || refused.contains("stable"), "{refused}");
+}
+
+/// Ctrl-C (SIGINT) during a fit: the best point so far is written as the result, said to be
+/// partial, with exit code 130.
+#[test]
+fn ctrl_c_keeps_the_best_point_as_a_partial_result() {
+    use std::io::{BufRead, BufReader};
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let scene_out = dir.path().join("chain.fitted.ron");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_tether"))
+        .args([
+            "fit",
+            common::repo("validation/calibration/chain_cdn.ron").to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "--scene-out",
+            scene_out.to_str().unwrap(),
+            "--jobs",
+            "1",
+        ])
+        .stderr(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let stderr = BufReader::new(child.stderr.take().unwrap());
+    let mut seen = Vec::new();
+    for line in stderr.lines() {
+        let line = line.unwrap();
+        let first_iteration = line.starts_with("iteration 1:");
+        seen.push(line);
+        if first_iteration {
+            // SAFETY: kill with a valid pid and signal has no memory effects.
+            unsafe { libc::kill(child.id() as i32, libc::SIGINT) };
+            break;
+        }
+    }
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(130), "{seen:?}");
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("report.json")).unwrap()).unwrap();
+    assert_eq!(report["status"], "partial");
+    assert_eq!(report["ending"], "cancelled");
+    let fitted = std::fs::read_to_string(&scene_out).unwrap();
+    assert!(fitted.lines().next().is_some_and(|l| l.contains("PARTIAL")), "{fitted}");
 }

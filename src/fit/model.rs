@@ -124,7 +124,7 @@ impl Model {
             world.step().map_err(|e| e.to_string())?;
             take(&world, &mut readings)?;
             count += 1;
-            if count % 64 == 0 {
+            if count.is_multiple_of(64) {
                 match watch.check() {
                     Ok(()) => {}
                     Err(Stop::Cancelled) => return Err("cancelled".into()),

@@ -77,16 +77,20 @@ pub fn text(model: &Model, outcome: &Outcome) -> String {
             combination(model, direction)
         );
     }
+    let u = &outcome.uncertainty;
     let _ = writeln!(
         out,
         "\nresidual σ (weighted) {:.4e} over {} degrees of freedom; lag-1 autocorrelation of the residuals {:.3}{}",
-        outcome.uncertainty.variance.sqrt(),
-        outcome.uncertainty.degrees_of_freedom,
-        outcome.residual_autocorrelation,
-        if outcome.residual_autocorrelation > 0.5 {
-            " (mostly model error, not noise: the intervals are too narrow)"
+        u.variance.sqrt() / u.inflation,
+        u.degrees_of_freedom,
+        u.autocorrelation,
+        if u.inflation > 1.05 {
+            format!(
+                " (correlated: the residual is partly model error, not noise alone; the intervals are widened ×{:.2} for it)",
+                u.inflation
+            )
         } else {
-            ""
+            String::new()
         }
     );
     let _ = writeln!(out, "\n| signal | samples | weight | RMS at start | RMS fitted |");
@@ -113,6 +117,7 @@ fn ending_text(outcome: &Outcome) -> &'static str {
     match outcome.ending {
         Ending::CostConverged => "the cost stopped falling",
         Ending::StepConverged => "the step vanished",
+        Ending::WithinNoise => "the next step is under a tenth of a standard error",
         Ending::GradientConverged => "the gradient vanished",
         Ending::IterationLimit => "out of iterations",
         Ending::Cancelled => "stopped by Ctrl-C",
@@ -156,10 +161,11 @@ pub fn json(model: &Model, outcome: &Outcome, files: &[(String, String)]) -> Val
             "relative_direction": d,
             "reads": combination(model, d),
         })).collect::<Vec<_>>(),
-        "residual_sigma": outcome.uncertainty.variance.sqrt(),
+        "residual_sigma": outcome.uncertainty.variance.sqrt() / outcome.uncertainty.inflation,
         "degrees_of_freedom": outcome.uncertainty.degrees_of_freedom,
         "t_quantile_975": outcome.uncertainty.t_quantile,
-        "residual_lag1_autocorrelation": outcome.residual_autocorrelation,
+        "residual_lag1_autocorrelation": outcome.uncertainty.autocorrelation,
+        "interval_widening": outcome.uncertainty.inflation,
         "iterations": outcome.iterations.iter().map(|i| json!({
             "iteration": i.iteration,
             "cost": i.cost,

@@ -5,9 +5,9 @@
 use super::model::{Model, Trajectory};
 use super::parameter::Parameter;
 use super::setup::Setup;
-use super::solver::{self, Ending, Iteration, Problem, Settings, SolveError};
+use super::solver::{self, DIFFERENCE_STEP, Ending, Iteration, Problem, Settings, SolveError};
 use super::uncertainty::{self, Uncertainty};
-use crate::runner::{Runner, Watch};
+use crate::runner::Runner;
 use std::time::Instant;
 
 /// Where a fit is, after each iteration (the window moves its knobs to `values`).
@@ -65,10 +65,6 @@ pub struct Outcome {
     /// Model runs, and the wall time of the whole fit [s].
     pub runs: usize,
     pub wall_seconds: f64,
-    /// Lag-1 autocorrelation of the weighted residuals at the optimum, within each signal: near
-    /// 0 for white measurement noise (the intervals are honest); near 1 when the residual is
-    /// mostly model error (the intervals are too narrow).
-    pub residual_autocorrelation: f64,
     /// The fitted run, every signal at every world step.
     pub trajectory: Trajectory,
     pub values: Vec<f64>,
@@ -116,6 +112,14 @@ impl Problem for Residuals<'_> {
     fn cancelled(&self) -> bool {
         self.runner.cancelled()
     }
+
+    fn slots(&self) -> usize {
+        self.runner.jobs().get()
+    }
+
+    fn series(&self) -> Vec<usize> {
+        self.model.signals.iter().map(|s| s.times.len()).collect()
+    }
 }
 
 /// Fits `setup` on `runner`'s threads; `progress` hears of the start and of every iteration.
@@ -144,16 +148,23 @@ pub fn fit(setup: &Setup, runner: &Runner, mut progress: impl FnMut(&Progress)) 
     })?;
     let values = problem.values(&solution.point);
     let scaling: Vec<_> = model.parameters.iter().zip(&solution.point).map(|(p, z)| p.scaling(*z)).collect();
-    let uncertainty = uncertainty::estimate(&solution.residuals, &solution.jacobian, &scaling);
+    // A point on a bound has no other side within the box to difference from: the forward
+    // Jacobian stands there.
+    let inside = solution.point.iter().all(|z| *z > DIFFERENCE_STEP && *z < 1.0 - DIFFERENCE_STEP);
+    let jacobian = if inside && !runner.cancelled() {
+        solver::central_jacobian(&problem, &solution).unwrap_or_else(|_| solution.jacobian.clone())
+    } else {
+        solution.jacobian.clone()
+    };
+    let uncertainty = uncertainty::estimate(&solution.residuals, &jacobian, &scaling, &problem.series());
     let parameters = fitted(&model.parameters, &solution.point, &values, &uncertainty);
-    // The start and the optimum run once more for the report's curves (the solver keeps
-    // residuals, not the runs).
-    let watch = Watch::unlimited();
+    // The start and the optimum run once more, side by side, for the report's curves (the
+    // solver keeps residuals, not runs); both ran before, so they run again.
     let start_values: Vec<f64> = model.parameters.iter().map(|p| p.start).collect();
-    let start_run = model.run(&start_values, &watch).map_err(SolveError::Start)?;
-    let trajectory = model.run(&values, &watch).map_err(SolveError::Start)?;
+    // After a Ctrl-C too (a partial fit is still reported): on threads of their own, without
+    // the cancelled flag.
+    let (start_run, trajectory) = twice(model, &Runner::new(runner.jobs()), &start_values, &values)?;
     let signals = signal_fits(model, (&start_run, model.shift(&start_values)), (&trajectory, model.shift(&values)));
-    let residual_autocorrelation = autocorrelation(model, &solution.residuals);
     Ok(Outcome {
         parameters,
         uncertainty,
@@ -162,10 +173,29 @@ pub fn fit(setup: &Setup, runner: &Runner, mut progress: impl FnMut(&Progress)) 
         ending: solution.ending,
         runs: problem.runs.get() + 2,
         wall_seconds: started.elapsed().as_secs_f64(),
-        residual_autocorrelation,
         trajectory,
         values,
     })
+}
+
+/// The runs at `first` and `second`, on two of `runner`'s threads.
+fn twice(model: &Model, runner: &Runner, first: &[f64], second: &[f64]) -> Result<(Trajectory, Trajectory), RunError> {
+    let points = [first, second];
+    let mut runs: [Option<Result<Trajectory, String>>; 2] = [None, None];
+    let gathered = runner.run(
+        0..2usize,
+        |&k, watch| model.run(points[k], watch),
+        |k, run| {
+            runs[k] = Some(run);
+            Ok::<(), ()>(())
+        },
+    );
+    debug_assert!(gathered.is_ok(), "the gathering closure never fails");
+    let [a, b] = runs;
+    let take = |run: Option<Result<Trajectory, String>>| {
+        run.unwrap_or_else(|| Err("cancelled".into())).map_err(SolveError::Start)
+    };
+    Ok((take(a)?, take(b)?))
 }
 
 fn fitted(parameters: &[Parameter], point: &[f64], values: &[f64], uncertainty: &Uncertainty) -> Vec<Fitted> {
@@ -207,17 +237,4 @@ fn signal_fits(model: &Model, start: (&Trajectory, f64), fitted: (&Trajectory, f
             fitted: after,
         })
         .collect()
-}
-
-/// Lag-1 autocorrelation of the residuals, pairs taken within each signal.
-fn autocorrelation(model: &Model, residuals: &nalgebra::DVector<f64>) -> f64 {
-    let mut offset = 0;
-    let (mut product, mut square) = (0.0, 0.0);
-    for signal in &model.signals {
-        let r = &residuals.as_slice()[offset..offset + signal.times.len()];
-        product += r.windows(2).map(|w| w[0] * w[1]).sum::<f64>();
-        square += r.iter().map(|x| x * x).sum::<f64>();
-        offset += signal.times.len();
-    }
-    if square > 0.0 { product / square } else { 0.0 }
 }

@@ -40,9 +40,18 @@ impl Setup {
     pub fn load(spec_path: &Path) -> Result<Self, SetupError> {
         let spec_text = std::fs::read_to_string(spec_path)
             .map_err(|e| SetupError::File(format!("{}: cannot read the fit spec: {e}", spec_path.display())))?;
-        let spec = SpecText { path: spec_path, text: &spec_text };
+        Self::from_text(spec_path, &spec_text)
+    }
+
+    /// The fit spec `spec_text`, labelled `spec_path` in messages; the paths in it are relative
+    /// to `spec_path`'s folder (a spec made in Python or the window, not read from a file).
+    ///
+    /// # Errors
+    /// See [`SetupError`].
+    pub fn from_text(spec_path: &Path, spec_text: &str) -> Result<Self, SetupError> {
+        let spec = SpecText { path: spec_path, text: spec_text };
         let file: FitFile = spec.parse()?;
-        Self::new(&file, spec_path, &spec_text, None)
+        Self::new(&file, spec_path, spec_text, None)
     }
 
     /// The fit `file` (whose text, for placing problems, is `spec_text` at `spec_path`; paths in

@@ -5,13 +5,17 @@
 //! `1e-9 × its largest entry` so that a direction the data hardly see is still damped), projects
 //! `z + δ` into the box, and accepts the step when the cost falls, with Nielsen's update of `λ`
 //! from the gain ratio `ρ = (F(z) − F(z + δ)) / (L(0) − L(δ))` (`L` the linear model of `r`). The
-//! Jacobian is by forward differences, `h = 1e-5` of the box (backwards at the upper bound): its
+//! Jacobian is by forward differences, `h = 1e-4` of the box (backwards at the upper bound): its
 //! columns' points are evaluated in one batch with the trial point (the Jacobian at a trial is
-//! ready the moment it is accepted), so a problem can run each batch on every core.
+//! ready the moment it is accepted), so a problem can run each batch on every core; the batch's
+//! idle slots, if any, try the same step more damped.
 //!
 //! A trial the problem cannot evaluate (a simulation that diverges or is refused) is a rejected
 //! step: `λ` grows and the solve goes on. The solve stops when the relative fall of the cost, the
-//! step or the projected gradient is below its tolerance, at `max_iterations`, or when the problem
+//! step or the projected gradient is below its tolerance, when the next step would move the
+//! parameters by under a tenth of a standard error (`‖J δ‖ < 0.1 σ`: a simulation's own
+//! roughness at that scale, a dynamic line's say, would otherwise keep it taking steps the data
+//! cannot tell apart), at `max_iterations`, or when the problem
 //! says it is cancelled; the best point so far is always the result.
 //!
 //! Considered instead: the `levenberg-marquardt` crate (MINPACK's LM on nalgebra 0.34, the
@@ -19,10 +23,11 @@
 //! point, and ends the solve when an evaluation fails; a rejected trial here must be a step
 //! refused, not an end, and the progress of each iteration must reach the window.
 
+use super::uncertainty::{inflation, lag1};
 use nalgebra::{DMatrix, DVector};
 
 /// Forward-difference step, as a fraction of the unit box.
-pub const DIFFERENCE_STEP: f64 = 1e-5;
+pub const DIFFERENCE_STEP: f64 = 1e-4;
 
 /// What the solver minimises `½ ‖r(z)‖²` of.
 pub trait Problem {
@@ -38,6 +43,17 @@ pub trait Problem {
     fn cancelled(&self) -> bool {
         false
     }
+
+    /// How many points a batch evaluates at once (the threads it runs on).
+    fn slots(&self) -> usize {
+        1
+    }
+
+    /// The lengths of the consecutive series the residuals are made of (one per signal; empty:
+    /// one series), for their autocorrelation.
+    fn series(&self) -> Vec<usize> {
+        Vec::new()
+    }
 }
 
 /// Tolerances and limits.
@@ -48,13 +64,24 @@ pub struct Settings {
     pub cost_tolerance: f64,
     /// Stop when the step is shorter than this (unit box).
     pub step_tolerance: f64,
+    /// Stop when the next step would move the parameters by less than this many standard errors
+    /// (`‖J δ‖ / σ`, `σ² = ‖r‖² / (m − n)` widened for the residuals' autocorrelation as the
+    /// intervals are: the step's length in the metric of the parameters' covariance): the point
+    /// is then as good as the data can tell.
+    pub noise_tolerance: f64,
     /// Stop when the projected gradient's largest component is below this × the cost.
     pub gradient_tolerance: f64,
 }
 
 impl Default for Settings {
     fn default() -> Self {
-        Self { max_iterations: 50, cost_tolerance: 1e-10, step_tolerance: 1e-9, gradient_tolerance: 1e-12 }
+        Self {
+            max_iterations: 50,
+            cost_tolerance: 1e-10,
+            step_tolerance: 1e-9,
+            noise_tolerance: 0.1,
+            gradient_tolerance: 1e-12,
+        }
     }
 }
 
@@ -85,6 +112,8 @@ pub enum Ending {
     CostConverged,
     /// The step shrank below its tolerance.
     StepConverged,
+    /// The next step would move the parameters by less than a tenth of a standard error.
+    WithinNoise,
     /// The projected gradient vanished.
     GradientConverged,
     /// `max_iterations` were taken.
@@ -97,7 +126,7 @@ impl Ending {
     /// Whether the solve reached a minimum (not stopped short of one).
     pub fn converged(self) -> bool {
         match self {
-            Self::CostConverged | Self::StepConverged | Self::GradientConverged => true,
+            Self::CostConverged | Self::StepConverged | Self::WithinNoise | Self::GradientConverged => true,
             Self::IterationLimit | Self::Cancelled => false,
         }
     }
@@ -146,7 +175,7 @@ pub fn solve(
     let n = problem.parameters();
     let mut point: Vec<f64> = start.iter().map(|z| z.clamp(0.0, 1.0)).collect();
     let mut evaluations = 0;
-    let mut batch = with_differences(&point);
+    let batch = with_differences(&point);
     let results = problem.residuals(&batch);
     evaluations += batch.len();
     if problem.cancelled() {
@@ -160,11 +189,17 @@ pub fn solve(
     let mut jacobian = jacobian_from(problem, &point, &residuals, columns, &mut evaluations)?;
     let mut cost = half_square(&residuals);
     let mut damping = 1e-3;
-    let mut growth = 2.0;
+    let mut growth: f64 = 2.0;
     let mut iterations =
         vec![Iteration { number: 0, cost, point: point.clone(), damping, accepted: true, refused: None, evaluations }];
     report(&iterations[0]);
     let mut ending = Ending::IterationLimit;
+    // A batch of the trial and its differences leaves `idle` of the problem's slots unused: they
+    // take the same step more damped (λ·ν, λ·ν², …), so that a rejected trial often has an
+    // accepted sibling at no extra wall time.
+    let slots = problem.slots().max(1);
+    let lengths = problem.series();
+    let idle = (slots - (n + 1) % slots) % slots;
     for number in 1..=settings.max_iterations {
         if problem.cancelled() {
             ending = Ending::Cancelled;
@@ -175,54 +210,94 @@ pub fn solve(
             ending = Ending::GradientConverged;
             break;
         }
-        let step = damped_step(&jacobian, &gradient, damping, &held(&point, &gradient));
-        let trial: Vec<f64> = point.iter().zip(step.iter()).map(|(z, d)| (z + d).clamp(0.0, 1.0)).collect();
-        let taken = DVector::from_iterator(n, trial.iter().zip(&point).map(|(t, z)| t - z));
+        let on_bounds = held(&point, &gradient);
+        let dampings: Vec<f64> = (0..=idle).map(|k| damping * growth.powi(k as i32)).collect();
+        let candidates: Vec<(Vec<f64>, DVector<f64>)> = dampings
+            .iter()
+            .map(|&lambda| {
+                let step = damped_step(&jacobian, &gradient, lambda, &on_bounds);
+                let trial: Vec<f64> = point.iter().zip(step.iter()).map(|(z, d)| (z + d).clamp(0.0, 1.0)).collect();
+                let taken = DVector::from_iterator(n, trial.iter().zip(&point).map(|(t, z)| t - z));
+                (trial, taken)
+            })
+            .collect();
+        let taken = &candidates[0].1;
         if taken.norm() < settings.step_tolerance {
             ending = Ending::StepConverged;
             break;
         }
-        batch = with_differences(&trial);
-        let results = problem.residuals(&batch);
+        let freedom = residuals.len().saturating_sub(n).max(1) as f64;
+        let sigma = (2.0 * cost / freedom).sqrt() * inflation(lag1(residuals.as_slice(), &lengths));
+        if (&jacobian * taken).norm() < settings.noise_tolerance * sigma {
+            ending = Ending::WithinNoise;
+            break;
+        }
+        let mut batch = with_differences(&candidates[0].0);
+        batch.extend(candidates[1..].iter().map(|(trial, _)| trial.clone()));
+        let mut results = problem.residuals(&batch);
         evaluations += batch.len();
-        if problem.cancelled() {
+        if problem.cancelled() || results.len() != batch.len() {
             ending = Ending::Cancelled;
             break;
         }
-        let mut results = results.into_iter();
-        let trial_residuals = results.next().ok_or(SolveError::Cancelled)?;
-        let (accepted, refused) = match trial_residuals {
-            Err(message) => (false, Some(message)),
-            Ok(trial_residuals) => {
-                let trial_residuals = DVector::from_vec(trial_residuals);
-                let trial_cost = half_square(&trial_residuals);
-                let predicted = -(gradient.dot(&taken)) - 0.5 * (&jacobian * &taken).norm_squared();
-                let gain = (cost - trial_cost) / predicted.max(f64::MIN_POSITIVE);
-                if trial_cost < cost && trial_cost.is_finite() {
-                    let fall = cost - trial_cost;
-                    let columns: Vec<Result<Vec<f64>, String>> = results.collect();
-                    jacobian = jacobian_from(problem, &trial, &trial_residuals, columns, &mut evaluations)?;
-                    residuals = trial_residuals;
-                    point = trial;
-                    cost = trial_cost;
-                    damping *= (1.0 - (2.0 * gain - 1.0).powi(3)).max(1.0 / 3.0);
-                    growth = 2.0;
-                    if fall <= settings.cost_tolerance * cost.max(f64::MIN_POSITIVE) {
-                        ending = Ending::CostConverged;
-                        push(&mut iterations, &mut report, number, cost, &point, damping, (true, None), evaluations);
-                        break;
+        let siblings = results.split_off(n + 1);
+        let columns = results.split_off(1);
+        // `with_differences` puts the trial first.
+        let first = results.pop().ok_or(SolveError::Cancelled)?;
+        let mut refused = None;
+        let mut best: Option<(usize, DVector<f64>, f64)> = None;
+        for (k, result) in std::iter::once(first).chain(siblings).enumerate() {
+            match result {
+                Err(message) => {
+                    refused.get_or_insert(message);
+                }
+                Ok(values) => {
+                    let values = DVector::from_vec(values);
+                    let trial_cost = half_square(&values);
+                    let better = best.as_ref().is_none_or(|(_, _, c)| trial_cost < *c);
+                    if trial_cost.is_finite() && trial_cost < cost && better {
+                        best = Some((k, values, trial_cost));
                     }
-                    (true, None)
-                } else {
-                    (false, None)
                 }
             }
-        };
-        if !accepted {
-            damping *= growth;
+        }
+        let accepted = best.is_some();
+        if let Some((k, trial_residuals, trial_cost)) = best {
+            let (trial, taken) = &candidates[k];
+            let predicted = -(gradient.dot(taken)) - 0.5 * (&jacobian * taken).norm_squared();
+            let gain = (cost - trial_cost) / predicted.max(f64::MIN_POSITIVE);
+            let columns = if k == 0 {
+                columns
+            } else {
+                evaluations += n;
+                problem.residuals(&with_differences(trial)[1..])
+            };
+            jacobian = jacobian_from(problem, trial, &trial_residuals, columns, &mut evaluations)?;
+            let fall = cost - trial_cost;
+            residuals = trial_residuals;
+            point.clone_from(trial);
+            cost = trial_cost;
+            damping = dampings[k] * (1.0 - (2.0 * gain - 1.0).powi(3)).max(1.0 / 3.0);
+            growth = 2.0;
+            if fall <= settings.cost_tolerance * cost.max(f64::MIN_POSITIVE) {
+                ending = Ending::CostConverged;
+                push(&mut iterations, &mut report, number, cost, &point, damping, (true, None), evaluations);
+                break;
+            }
+        } else {
+            damping = dampings[idle] * growth;
             growth *= 2.0;
         }
-        push(&mut iterations, &mut report, number, cost, &point, damping, (accepted, refused), evaluations);
+        push(
+            &mut iterations,
+            &mut report,
+            number,
+            cost,
+            &point,
+            damping,
+            (accepted, refused.filter(|_| !accepted)),
+            evaluations,
+        );
         if damping > 1e16 {
             // No step however short lowers the cost: the point is a minimum to the precision
             // the model's residuals have.
@@ -247,6 +322,37 @@ fn push(
     let iteration = Iteration { number, cost, point: point.to_vec(), damping, accepted, refused, evaluations };
     report(&iteration);
     iterations.push(iteration);
+}
+
+/// The Jacobian of `solution` again by central differences (`±h`, the other side of each
+/// forward difference evaluated now, in one batch): the statistics at the optimum need it
+/// accurate to `O(h²)`, since a forward difference's `½ h ∂²r/∂z²` would show the data
+/// information along a direction they do not determine (a curved valley's floor).
+///
+/// # Errors
+/// An opposite point the model cannot run (the forward difference's Jacobian is then kept by
+/// the caller, or the solve is cancelled).
+pub fn central_jacobian(problem: &impl Problem, solution: &Solution) -> Result<DMatrix<f64>, SolveError> {
+    let point = &solution.point;
+    let opposite: Vec<Vec<f64>> = (0..point.len())
+        .map(|j| {
+            let mut moved = point.clone();
+            moved[j] -= difference_step(point[j]);
+            moved
+        })
+        .collect();
+    let results = problem.residuals(&opposite);
+    let mut jacobian = solution.jacobian.clone();
+    for (j, result) in results.into_iter().enumerate() {
+        let h = difference_step(point[j]);
+        let back = result.map_err(|message| SolveError::Derivative { parameter: j, message })?;
+        // The forward point is r + h J_j (the forward difference's definition).
+        for (i, b) in back.iter().enumerate() {
+            let forward = solution.residuals[i] + h * solution.jacobian[(i, j)];
+            jacobian[(i, j)] = (forward - b) / (2.0 * h);
+        }
+    }
+    Ok(jacobian)
 }
 
 /// `½ ‖r‖²`.

@@ -14,9 +14,13 @@
 //! parameter that moves along one (`|v_kj| > 0.05`) gets no interval: the data fix only the
 //! combinations orthogonal to it, which the report names.
 //!
-//! The intervals assume independent residuals. Samples of a time series with white measurement
-//! noise are; residuals that are mostly model error are correlated, and the intervals come out
-//! too narrow (the residuals' autocorrelation in the report says which case a fit is in).
+//! The textbook intervals assume independent residuals. Samples of a time series with white
+//! measurement noise are; residuals that are mostly model error are correlated, and would make
+//! the intervals too narrow. So `σ²` is widened for the residuals' lag-1 autocorrelation `ρ`
+//! (within each signal): an AR(1) series of `m` samples carries the information of
+//! `m (1 − ρ)/(1 + ρ)` independent ones, so `σ²` is multiplied by `(1 + ρ)/(1 − ρ)` when `ρ > 0`
+//! (capped at `ρ = 0.98`). White noise gives `ρ ≈ 0` and the textbook intervals; the report
+//! gives `ρ` and the factor.
 
 use nalgebra::{DMatrix, DVector};
 
@@ -34,8 +38,13 @@ pub const UNDETERMINED_RELATIVE: f64 = 0.5;
 /// The statistics of a fit at its optimum.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Uncertainty {
-    /// Residual variance `σ²` (weighted), and its degrees of freedom `m − n`.
+    /// Residual variance `σ²` (weighted, widened by `inflation²`), and its degrees of freedom
+    /// `m − n`.
     pub variance: f64,
+    /// The residuals' lag-1 autocorrelation within each signal, and the factor `σ` was widened
+    /// by for it, `√((1 + ρ)/(1 − ρ))` (1 when `ρ ≤ 0`).
+    pub autocorrelation: f64,
+    pub inflation: f64,
     pub degrees_of_freedom: usize,
     /// `t₀.₉₇₅` for those degrees of freedom.
     pub t_quantile: f64,
@@ -59,12 +68,42 @@ pub struct Scaling {
     pub reference: f64,
 }
 
-/// The uncertainty of a fit with weighted residuals `residuals` and Jacobian `jacobian` (`∂r/∂z`
-/// in the unit box) at parameters scaled by `scaling`.
-pub fn estimate(residuals: &DVector<f64>, jacobian: &DMatrix<f64>, scaling: &[Scaling]) -> Uncertainty {
+/// Lag-1 autocorrelation of `residuals`, pairs taken within each of the consecutive series of
+/// `lengths` (one series when empty).
+pub fn lag1(residuals: &[f64], lengths: &[usize]) -> f64 {
+    let whole = [residuals.len()];
+    let lengths = if lengths.is_empty() { &whole[..] } else { lengths };
+    let (mut product, mut square, mut offset) = (0.0, 0.0, 0);
+    for &length in lengths {
+        let r = &residuals[offset..(offset + length).min(residuals.len())];
+        product += r.windows(2).map(|w| w[0] * w[1]).sum::<f64>();
+        square += r.iter().map(|x| x * x).sum::<f64>();
+        offset += length;
+    }
+    if square > 0.0 { product / square } else { 0.0 }
+}
+
+/// `√((1 + ρ)/(1 − ρ))` for `ρ > 0` (capped at 0.98), else 1: how much wider correlated
+/// residuals make `σ`.
+pub fn inflation(rho: f64) -> f64 {
+    let rho = rho.clamp(0.0, 0.98);
+    ((1.0 + rho) / (1.0 - rho)).sqrt()
+}
+
+/// The uncertainty of a fit with weighted residuals `residuals` (the consecutive series of
+/// `lengths`, one per signal) and Jacobian `jacobian` (`∂r/∂z` in the unit box) at parameters
+/// scaled by `scaling`.
+pub fn estimate(
+    residuals: &DVector<f64>,
+    jacobian: &DMatrix<f64>,
+    scaling: &[Scaling],
+    lengths: &[usize],
+) -> Uncertainty {
     let (m, n) = jacobian.shape();
     let degrees_of_freedom = m.saturating_sub(n).max(1);
-    let variance = residuals.norm_squared() / degrees_of_freedom as f64;
+    let autocorrelation = lag1(residuals.as_slice(), lengths);
+    let inflation = inflation(autocorrelation);
+    let variance = residuals.norm_squared() / degrees_of_freedom as f64 * inflation * inflation;
     let sigma = variance.sqrt();
     let t = student_t_975(degrees_of_freedom as f64);
     let svd = jacobian.clone().svd(false, true);
@@ -106,6 +145,8 @@ pub fn estimate(residuals: &DVector<f64>, jacobian: &DMatrix<f64>, scaling: &[Sc
     let undetermined = undetermined.iter().map(|v| relative_direction(v, scaling)).collect();
     Uncertainty {
         variance,
+        autocorrelation,
+        inflation,
         degrees_of_freedom,
         t_quantile: t,
         standard_errors,
@@ -153,6 +194,19 @@ pub fn student_t_975(nu: f64) -> f64 {
 mod tests {
     use super::*;
 
+    /// An AR(1) series with ρ = 0.5 is widened by √3; pairs are not taken across signals.
+    #[test]
+    fn correlated_residuals_widen_sigma() {
+        let series: Vec<f64> = (0..2000).map(|i| 0.5_f64.powi(i % 40)).collect();
+        let rho = lag1(&series, &[]);
+        // Each block 1, ½, ¼, …: Σ r_k r_{k+1} = ½ Σ r_k² but for the last term.
+        assert!((rho - 0.5).abs() < 1e-3, "{rho}");
+        // Two signals of one sample each: no pair.
+        assert_eq!(lag1(&[1.0, 1.0], &[1, 1]), 0.0);
+        assert!((inflation(0.5) - 3f64.sqrt()).abs() < 1e-12);
+        assert_eq!(inflation(-0.3), 1.0);
+    }
+
     /// Against tabulated quantiles (any statistics table).
     #[test]
     fn student_t_quantiles() {
@@ -168,11 +222,13 @@ mod tests {
         let x: Vec<f64> = (0..20).map(f64::from).collect();
         // Residuals with a known sum of squares, orthogonal to the columns (1, x) is not needed:
         // σ² = ‖r‖²/(m − n) whatever they are.
+        // Alternating residuals: ρ < 0, so σ is not widened.
         let residuals = DVector::from_fn(20, |i, _| if i % 2 == 0 { 0.1 } else { -0.1 });
         let jacobian = DMatrix::from_fn(20, 2, |i, j| if j == 0 { 1.0 } else { x[i] });
         // Sizes large against the errors: no direction undetermined by the relative rule.
         let unit = [Scaling { value: 100.0, derivative: 1.0, reference: 100.0 }; 2];
-        let u = estimate(&residuals, &jacobian, &unit);
+        let u = estimate(&residuals, &jacobian, &unit, &[]);
+        assert_eq!(u.inflation, 1.0);
         let variance = 0.2 / 18.0;
         assert!((u.variance - variance).abs() < 1e-15);
         // (JᵀJ)⁻¹ for (1, x): Sxx = Σ(x − x̄)² = 665; var(b) = σ²/Sxx; var(a) = σ² Σx²/(m Sxx).
@@ -196,7 +252,7 @@ mod tests {
             if j == 0 { c } else { 2.0 * c }
         });
         let unit = [Scaling { value: 1.0, derivative: 1.0, reference: 1.0 }; 2];
-        let u = estimate(&residuals, &jacobian, &unit);
+        let u = estimate(&residuals, &jacobian, &unit, &[30]);
         assert_eq!(u.undetermined.len(), 1);
         // The null direction of (1, 2) columns is (2, −1)/√5.
         let v = &u.undetermined[0];

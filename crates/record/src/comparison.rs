@@ -32,7 +32,7 @@ pub fn log_styles(stream: &RecordingStream, column: &str) -> Result<(), RecordEr
     Ok(())
 }
 
-/// Sends `values` at `times` [s] as `column`'s `series` ([`paths::FIT_RECORD`] or
+/// Sends `values` at `times` \[s] as `column`'s `series` ([`paths::FIT_RECORD`] or
 /// [`paths::FIT_MODEL`]), one chunk. A series sent again at the same times does not replace the
 /// one before: the viewer's time series keep every row and draw the rows at one time as their
 /// min–max (two curves become a band between them; a `Clear` does not remove them either,

@@ -658,6 +658,7 @@ fn status(summary: &Summary) -> String {
     let why = match summary.ending {
         Ending::CostConverged => "the cost stopped falling",
         Ending::StepConverged => "no step lowers the cost",
+        Ending::WithinNoise => "the next step is under a tenth of a standard error",
         Ending::GradientConverged => "the gradient vanished",
         Ending::IterationLimit => "out of iterations",
         Ending::Cancelled => "stopped",
@@ -753,11 +754,16 @@ fn choices_ui(
         ui.label("Each column is the model signal:");
         for (index, (column, of)) in record.columns.iter().zip(&mut draft.mapping).enumerate() {
             let shown = of.as_ref().map_or_else(|| "not used".to_string(), signal_label);
-            egui::ComboBox::new(("fit column", index), column).selected_text(shown).show_ui(ui, |ui| {
-                ui.selectable_value(of, None, "not used");
-                for signal in signals {
-                    ui.selectable_value(of, Some(signal.clone()), signal_label(signal));
-                }
+            ui.horizontal(|ui| {
+                let name = ui.label(column);
+                let choice =
+                    egui::ComboBox::from_id_salt(("fit column", index)).selected_text(shown).show_ui(ui, |ui| {
+                        ui.selectable_value(&mut *of, None, "not used");
+                        for signal in signals {
+                            ui.selectable_value(&mut *of, Some(signal.clone()), signal_label(signal));
+                        }
+                    });
+                choice.response.labelled_by(name.id);
             });
         }
     }

@@ -16,6 +16,16 @@ pub const RECORD_COLOUR: rerun::Color = rerun::Color(rerun::datatypes::Rgba32::f
 /// The model series' colour.
 pub const MODEL_COLOUR: rerun::Color = rerun::Color(rerun::datatypes::Rgba32::from_rgb(31, 119, 180));
 
+/// The measured samples' marker size and the model line's width [UI points]: small points on a
+/// wider line, so that a record sampled densely still shows the model under it (points of 2 on a
+/// line of 2 hid it entirely, checked in the 0.36.3 viewer).
+pub const RECORD_MARKER: f32 = 1.0;
+pub const MODEL_WIDTH: f32 = 3.0;
+
+/// An earlier iteration's model curve: the model's colour, faded.
+pub const EARLIER_COLOUR: rerun::Color =
+    rerun::Color(rerun::datatypes::Rgba32::from_unmultiplied_rgba(31, 119, 180, 110));
+
 /// Logs the series' styles of `column`'s plot, once (static).
 ///
 /// # Errors
@@ -23,11 +33,14 @@ pub const MODEL_COLOUR: rerun::Color = rerun::Color(rerun::datatypes::Rgba32::fr
 pub fn log_styles(stream: &RecordingStream, column: &str) -> Result<(), RecordError> {
     stream.log_static(
         paths::fit_series(column, paths::FIT_RECORD),
-        &rerun::SeriesPoints::new().with_names(["record"]).with_colors([RECORD_COLOUR]).with_marker_sizes([2.0]),
+        &rerun::SeriesPoints::new()
+            .with_names(["record"])
+            .with_colors([RECORD_COLOUR])
+            .with_marker_sizes([RECORD_MARKER]),
     )?;
     stream.log_static(
         paths::fit_series(column, paths::FIT_MODEL),
-        &rerun::SeriesLines::new().with_names(["model"]).with_colors([MODEL_COLOUR]).with_widths([2.0]),
+        &rerun::SeriesLines::new().with_names(["model"]).with_colors([MODEL_COLOUR]).with_widths([MODEL_WIDTH]),
     )?;
     Ok(())
 }
@@ -57,12 +70,15 @@ pub fn send_series(
 
 /// Sends `column`'s model curve number `draft` of a fit in progress (0, 1, 2… within one
 /// recording) as `plots/fit/<column>/model/<draft>`, with the model's style, and hides curve
-/// `draft − 1`, so that the plot shows the record and the latest curve only.
+/// `draft − 1`, so that the plot shows the record and the latest curve.
 ///
-/// Hiding is a static NaN logged on the earlier curve's entity: static data shadows an entity's
-/// temporal data in every query, the viewer's time series included, and a NaN draws nothing
-/// (the legend keeps one "model"). Checked in the 0.36.3 viewer; neither a second series at the
-/// same times nor a `Clear` takes the first one away ([`send_series`]).
+/// The earlier curve is hidden by its style, logged again (static, the latest wins) as a faded
+/// series named "earlier iterations" that is not visible: the legend keeps one hollow entry of
+/// that name, which shows every earlier curve when clicked. Checked in the 0.36.3 viewer, where
+/// neither a second series at the same times nor a `Clear` takes the first one away
+/// ([`send_series`]), and a static NaN over it hides it but is reported as an error (a time
+/// series cannot plot static data). Curves under one name share their legend entry: hidden
+/// under "model", the latest would be hidden too.
 ///
 /// # Errors
 /// The stream fails, or `times` and `values` differ in length.
@@ -76,12 +92,19 @@ pub fn send_model_draft(
     let series = format!("{}/{draft}", paths::FIT_MODEL);
     stream.log_static(
         paths::fit_series(column, &series),
-        &rerun::SeriesLines::new().with_names(["model"]).with_colors([MODEL_COLOUR]).with_widths([2.0]),
+        &rerun::SeriesLines::new().with_names(["model"]).with_colors([MODEL_COLOUR]).with_widths([MODEL_WIDTH]),
     )?;
     send_series(stream, column, &series, times, values)?;
     if let Some(before) = draft.checked_sub(1) {
-        let hidden = format!("{}/{before}", paths::FIT_MODEL);
-        stream.log_static(paths::fit_series(column, &hidden), &rerun::Scalars::new([f64::NAN]))?;
+        let earlier = format!("{}/{before}", paths::FIT_MODEL);
+        stream.log_static(
+            paths::fit_series(column, &earlier),
+            &rerun::SeriesLines::new()
+                .with_names(["earlier iterations"])
+                .with_colors([EARLIER_COLOUR])
+                .with_widths([1.0])
+                .with_visible_series([false]),
+        )?;
     }
     Ok(())
 }

@@ -54,6 +54,11 @@ fn simulate(
     samples
 }
 
+/// Writes a fit spec of `scene` and the spec's other fields `rest` to `spec`.
+fn write_spec(spec: &Path, scene: &Path, rest: &str) {
+    std::fs::write(spec, format!("Fit(\n    scene: \"{}\",\n{rest}\n)", scene.display())).unwrap();
+}
+
 fn fit(spec: &Path) -> Outcome {
     let setup = Setup::load(spec).unwrap_or_else(|e| panic!("{e}"));
     run::fit(&setup, &runner(), |_| {}).unwrap_or_else(|e| panic!("{e}"))
@@ -73,23 +78,19 @@ fn spring_record(dir: &Path, seed: u64) -> PathBuf {
     let record = dir.join(format!("decay-{seed}.csv"));
     write_csv(&record, "t,x", &rows);
     let spec = dir.join(format!("fit-{seed}.ron"));
-    std::fs::write(
+    write_spec(
         &spec,
-        format!(
-            r#"Fit(
-    scene: "{}",
-    record: "{}",
+        &scene,
+        &format!(
+            r#"    record: "{}",
     signals: [Signal(column: "x", of: Position("mass", X))],
     parameters: [
         Parameter(path: "couplings.spring.law.stiffness", from: 50.0, to: 200.0),
         Parameter(path: "couplings.spring.damping", from: 0.1, to: 10.0, scale: Log),
-    ],
-)"#,
-            scene.display(),
+    ],"#,
             record.display()
         ),
-    )
-    .unwrap();
+    );
     spec
 }
 
@@ -181,22 +182,16 @@ fn heave_decay_damping_recovered_from_an_independent_solution() {
     let record = dir.path().join("heave.csv");
     write_csv(&record, "time,heave", &rows);
     let spec = dir.path().join("heave.ron");
-    std::fs::write(
+    write_spec(
         &spec,
-        format!(
-            r#"Fit(
-    scene: "{}",
-    record: "heave.csv",
+        &common::repo("examples/calibration/heave_box.ron"),
+        r#"    record: "heave.csv",
     signals: [Signal(column: "heave", of: Position("box", Z))],
     parameters: [
         Parameter(path: "bodies.box.hydro.linear_damping.2", from: 1e4, to: 1e6, scale: Log),
         Parameter(path: "bodies.box.hydro.drag.2", from: 0.1, to: 10.0, scale: Log),
-    ],
-)"#,
-            common::repo("examples/calibration/heave_box.ron").display()
-        ),
-    )
-    .unwrap();
+    ],"#,
+    );
     let outcome = fit(&spec);
     let (fitted_c, fitted_cd) = (outcome.parameters[0].value, outcome.parameters[1].value);
     eprintln!("heave decay: c = {fitted_c:.1} (truth {c}), C_d = {fitted_cd:.4} (truth {cd}), {} runs", outcome.runs);
@@ -232,22 +227,16 @@ fn springs_in_series_are_reported_not_identifiable() {
     let rows: Vec<(f64, Vec<f64>)> = samples.iter().map(|(t, x)| (*t, vec![x + 1e-3 * normal(&mut rng)])).collect();
     write_csv(&dir.path().join("end.csv"), "t,x", &rows);
     let spec = dir.path().join("series.ron");
-    std::fs::write(
+    write_spec(
         &spec,
-        format!(
-            r#"Fit(
-    scene: "{}",
-    record: "end.csv",
+        &scene,
+        r#"    record: "end.csv",
     signals: [Signal(column: "x", of: Position("mass", X))],
     parameters: [
         Parameter(path: "couplings.k1.law.stiffness", from: 100.0, to: 3000.0, scale: Log, start: 350.0),
         Parameter(path: "couplings.k2.law.stiffness", from: 100.0, to: 3000.0, scale: Log, start: 550.0),
-    ],
-)"#,
-            scene.display()
-        ),
-    )
-    .unwrap();
+    ],"#,
+    );
     let outcome = fit(&spec);
     let (k1, k2) = (outcome.parameters[0].value, outcome.parameters[1].value);
     let series = k1 * k2 / (k1 + k2);
@@ -423,19 +412,13 @@ fn a_recording_is_a_record() {
         .unwrap();
     assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
     let spec = dir.path().join("fit.ron");
-    std::fs::write(
+    write_spec(
         &spec,
-        format!(
-            r#"Fit(
-    scene: "{}",
-    record: "stiff.rrd",
+        &scene,
+        r#"    record: "stiff.rrd",
     signals: [Signal(column: "world/bodies/mass/x", of: Position("mass", X))],
-    parameters: [Parameter(path: "couplings.spring.law.stiffness", from: 50.0, to: 200.0)],
-)"#,
-            scene.display()
-        ),
-    )
-    .unwrap();
+    parameters: [Parameter(path: "couplings.spring.law.stiffness", from: 50.0, to: 200.0)],"#,
+    );
     let outcome = fit(&spec);
     let k = outcome.parameters[0].value;
     eprintln!("fitted to a recording: k = {k} (truth 120), {} samples", outcome.signals[0].samples);
@@ -512,4 +495,19 @@ fn ctrl_c_keeps_the_best_point_as_a_partial_result() {
     assert_eq!(report["ending"], "cancelled");
     let fitted = std::fs::read_to_string(&scene_out).unwrap();
     assert!(fitted.lines().next().is_some_and(|l| l.contains("PARTIAL")), "{fitted}");
+}
+
+/// A fit is deterministic: the same spec and record give the same values, bit for bit, on one
+/// thread and on two.
+#[test]
+fn the_same_fit_on_one_and_two_threads_is_the_same() {
+    let dir = tempfile::tempdir().unwrap();
+    let spec = spring_record(dir.path(), 11);
+    let setup = Setup::load(&spec).unwrap_or_else(|e| panic!("{e}"));
+    let one = run::fit(&setup, &Runner::new(NonZeroUsize::MIN), |_| {}).unwrap();
+    let two = run::fit(&setup, &runner(), |_| {}).unwrap();
+    assert_eq!(one.values, two.values);
+    assert_eq!(one.runs, two.runs);
+    let bits = |o: &Outcome| o.parameters.iter().map(|p| p.standard_error.map(f64::to_bits)).collect::<Vec<_>>();
+    assert_eq!(bits(&one), bits(&two));
 }

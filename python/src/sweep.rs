@@ -3,10 +3,11 @@
 //! pyarrow.
 //!
 //! The sweep runs on its own thread while the caller's thread waits with the GIL released,
-//! running Python's signal handlers every [`POLL`]: Ctrl-C sets the runner's cancel flag,
+//! running Python's signal handlers ([`crate::background`]): Ctrl-C sets the runner's cancel flag,
 //! which stops the sweep within a case's step (the finished rows are kept), then raises
 //! `KeyboardInterrupt`.
 
+use crate::background;
 use crate::errors::{caught, runtime_error, value_error};
 use arrow_array::RecordBatchReader as _;
 use arrow_array::cast::AsArray;
@@ -18,14 +19,11 @@ use pyo3::types::{PyBytes, PyDict, PyList};
 use std::num::NonZeroUsize;
 use std::path::PathBuf;
 use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::AtomicBool;
 use std::time::Duration;
 use tether::runner::Runner;
 use tether::sweep::design::DEFAULT_MAX_CASES;
 use tether::sweep::{self, Options, Plan, SweepError};
-
-/// How often the waiting thread looks at Python's signals.
-const POLL: Duration = Duration::from_millis(50);
 
 /// Runs the sweep spec `spec` into the directory `output` on `jobs` threads (None: every core);
 /// returns the path of its `results.parquet`.
@@ -55,17 +53,8 @@ pub fn run_sweep(
         Runner::new(jobs).with_case_timeout(Duration::from_secs_f64(case_timeout)).with_cancel(Arc::clone(&cancel));
     let options = Options { runner, shard: None, resume: false, record: None };
     let dir = output.clone();
-    let worker = std::thread::spawn(move || caught(|| sweep::run(&plan, &dir, &options, |_| {})));
-    let mut interrupt = None;
-    while !worker.is_finished() {
-        py.detach(|| std::thread::sleep(POLL));
-        if let Err(signal) = py.check_signals() {
-            cancel.store(true, Ordering::SeqCst);
-            interrupt = Some(signal);
-            break;
-        }
-    }
-    let outcome = py.detach(|| worker.join());
+    let (outcome, interrupt) =
+        background::run(py, &cancel, move || caught(|| sweep::run(&plan, &dir, &options, |_| {})));
     if let Some(signal) = interrupt {
         return Err(signal);
     }

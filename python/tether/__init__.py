@@ -1,7 +1,8 @@
 """Tether from Python: coupled rigid bodies, springs, catenaries and contact.
 
 Load a scene, read and set its parameters by the sweep's paths, step or run it into numpy arrays,
-solve its statics, run sweeps and record runs to Rerun files::
+solve its statics, run sweeps, fit its parameters to a measured record and record runs to Rerun
+files::
 
     import tether
     sim = tether.load("scenes/spring_mass.ron")
@@ -26,8 +27,21 @@ from typing import Any, Dict, List, Optional, Union
 import numpy as np
 
 from . import _tether
+from ._fit import FitResult, FitSignal, fit, fit_spec
 
-__all__ = ["Simulation", "Trajectory", "Equilibrium", "load", "from_ron", "sweep", "__version__"]
+__all__ = [
+    "Simulation",
+    "Trajectory",
+    "Equilibrium",
+    "FitResult",
+    "FitSignal",
+    "load",
+    "from_ron",
+    "sweep",
+    "fit",
+    "fit_spec",
+    "__version__",
+]
 __version__: str = _tether.__version__
 
 PathLike = Union[str, "os.PathLike[str]"]

@@ -1,7 +1,7 @@
 """Type stubs of the native module (Rust, PyO3); use it through the `tether` package."""
 
 import os
-from typing import Dict, List, Optional, Tuple, Union
+from typing import Any, Dict, List, Optional, Tuple, Union
 
 __version__: str
 
@@ -69,3 +69,15 @@ def run_sweep(
 
 def read_parquet(path: _Path) -> Dict[str, Tuple[str, Union[bytes, List[Optional[str]]]]]:
     """A Parquet file's columns: (numpy dtype, bytes) or ("str", list)."""
+
+def run_fit(
+    spec: _Path,
+    text: Optional[str] = None,
+    jobs: Optional[int] = None,
+    output: Optional[_Path] = None,
+    write_scene: Optional[_Path] = None,
+) -> Dict[str, Any]:
+    """Fits the spec file `spec` (or the spec `text`, labelled `spec`, its paths relative to
+    `spec`'s folder) as `tether fit` does; `{"report": JSON text, "table": the printed table,
+    "spec": the spec's text, "signals": [{"times", "measured", "start", "fitted": float64
+    bytearray}], "interrupted": bool}`."""

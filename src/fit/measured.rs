@@ -7,16 +7,8 @@
 //! each with the file and line (CSV) or row (Parquet): a time that is not a number or does not
 //! increase, a value that is not a number, NaN or infinite.
 
+use super::series::Series;
 use std::path::{Path, PathBuf};
-
-/// One measured signal.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Series {
-    pub name: String,
-    /// Sample times [s], increasing.
-    pub times: Vec<f64>,
-    pub values: Vec<f64>,
-}
 
 /// Every signal of a record.
 #[derive(Debug, Clone, PartialEq)]

@@ -6,7 +6,8 @@
 //! The way through:
 //! - [`spec`]: the fit spec file (RON, in the sweep spec's style): scene, record, signals,
 //!   parameters by the sweep's value paths, window, time shift;
-//! - [`measured`]: the record (CSV, Parquet; a Tether recording by [`recording_input`]);
+//! - [`measured`]: the record (CSV, Parquet; a Tether recording by [`recording_input`]), each
+//!   signal a [`series`];
 //! - [`parameter`]: a parameter's bounds, scale and map to the solver's unit box;
 //! - [`setup`]: all of it checked against the scene and the record before any run;
 //! - [`model`]: one run of the scene with a set of values, its signals at the record's times,
@@ -25,6 +26,7 @@ pub mod parameter;
 pub mod recording_input;
 pub mod report;
 pub mod run;
+pub mod series;
 pub mod setup;
 pub mod solver;
 pub mod spec;

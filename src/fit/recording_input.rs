@@ -18,7 +18,7 @@
 //! gathered from all of them and sorted by time; of samples at the same time, the last in the
 //! file is kept.
 
-use super::measured::Series;
+use super::series::Series;
 use arrow_array::cast::AsArray as _;
 use arrow_array::types::{Float32Type, Float64Type};
 use arrow_array::{Array, ArrayRef, ListArray};

@@ -80,7 +80,7 @@ impl Outcome {
 /// Why a fit stopped without a result.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum RunError {
-    #[error("{0}")]
+    #[error(transparent)]
     Solve(#[from] SolveError),
 }
 
@@ -111,10 +111,6 @@ impl Problem for Residuals<'_> {
 
     fn cancelled(&self) -> bool {
         self.runner.cancelled()
-    }
-
-    fn slots(&self) -> usize {
-        self.runner.jobs().get()
     }
 
     fn series(&self) -> Vec<usize> {

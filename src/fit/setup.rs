@@ -15,7 +15,7 @@ use std::path::{Path, PathBuf};
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SetupError {
     /// A problem placed in the spec file.
-    #[error("{0}")]
+    #[error(transparent)]
     Spec(#[from] SpecError),
     /// The scene, or the record, cannot be read (the message names the file and line).
     #[error("{0}")]

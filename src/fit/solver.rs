@@ -7,8 +7,8 @@
 //! from the gain ratio `ρ = (F(z) − F(z + δ)) / (L(0) − L(δ))` (`L` the linear model of `r`). The
 //! Jacobian is by forward differences, `h = 1e-4` of the box (backwards at the upper bound): its
 //! columns' points are evaluated in one batch with the trial point (the Jacobian at a trial is
-//! ready the moment it is accepted), so a problem can run each batch on every core; the batch's
-//! idle slots, if any, try the same step more damped.
+//! ready the moment it is accepted), so a problem can run each batch on every core. The batches
+//! do not depend on how many threads run them: the same spec gives the same result anywhere.
 //!
 //! A trial the problem cannot evaluate (a simulation that diverges or is refused) is a rejected
 //! step: `λ` grows and the solve goes on. The solve stops when the relative fall of the cost, the
@@ -42,11 +42,6 @@ pub trait Problem {
     /// Whether the solve must stop now (Ctrl-C, the window's Stop).
     fn cancelled(&self) -> bool {
         false
-    }
-
-    /// How many points a batch evaluates at once (the threads it runs on).
-    fn slots(&self) -> usize {
-        1
     }
 
     /// The lengths of the consecutive series the residuals are made of (one per signal; empty:
@@ -194,12 +189,7 @@ pub fn solve(
         vec![Iteration { number: 0, cost, point: point.clone(), damping, accepted: true, refused: None, evaluations }];
     report(&iterations[0]);
     let mut ending = Ending::IterationLimit;
-    // A batch of the trial and its differences leaves `idle` of the problem's slots unused: they
-    // take the same step more damped (λ·ν, λ·ν², …), so that a rejected trial often has an
-    // accepted sibling at no extra wall time.
-    let slots = problem.slots().max(1);
     let lengths = problem.series();
-    let idle = (slots - (n + 1) % slots) % slots;
     for number in 1..=settings.max_iterations {
         if problem.cancelled() {
             ending = Ending::Cancelled;
@@ -210,94 +200,59 @@ pub fn solve(
             ending = Ending::GradientConverged;
             break;
         }
-        let on_bounds = held(&point, &gradient);
-        let dampings: Vec<f64> = (0..=idle).map(|k| damping * growth.powi(k as i32)).collect();
-        let candidates: Vec<(Vec<f64>, DVector<f64>)> = dampings
-            .iter()
-            .map(|&lambda| {
-                let step = damped_step(&jacobian, &gradient, lambda, &on_bounds);
-                let trial: Vec<f64> = point.iter().zip(step.iter()).map(|(z, d)| (z + d).clamp(0.0, 1.0)).collect();
-                let taken = DVector::from_iterator(n, trial.iter().zip(&point).map(|(t, z)| t - z));
-                (trial, taken)
-            })
-            .collect();
-        let taken = &candidates[0].1;
+        let step = damped_step(&jacobian, &gradient, damping, &held(&point, &gradient));
+        let trial: Vec<f64> = point.iter().zip(step.iter()).map(|(z, d)| (z + d).clamp(0.0, 1.0)).collect();
+        let taken = DVector::from_iterator(n, trial.iter().zip(&point).map(|(t, z)| t - z));
         if taken.norm() < settings.step_tolerance {
             ending = Ending::StepConverged;
             break;
         }
         let freedom = residuals.len().saturating_sub(n).max(1) as f64;
         let sigma = (2.0 * cost / freedom).sqrt() * inflation(lag1(residuals.as_slice(), &lengths));
-        if (&jacobian * taken).norm() < settings.noise_tolerance * sigma {
+        if (&jacobian * &taken).norm() < settings.noise_tolerance * sigma {
             ending = Ending::WithinNoise;
             break;
         }
-        let mut batch = with_differences(&candidates[0].0);
-        batch.extend(candidates[1..].iter().map(|(trial, _)| trial.clone()));
+        let batch = with_differences(&trial);
         let mut results = problem.residuals(&batch);
         evaluations += batch.len();
         if problem.cancelled() || results.len() != batch.len() {
             ending = Ending::Cancelled;
             break;
         }
-        let siblings = results.split_off(n + 1);
         let columns = results.split_off(1);
         // `with_differences` puts the trial first.
-        let first = results.pop().ok_or(SolveError::Cancelled)?;
-        let mut refused = None;
-        let mut best: Option<(usize, DVector<f64>, f64)> = None;
-        for (k, result) in std::iter::once(first).chain(siblings).enumerate() {
-            match result {
-                Err(message) => {
-                    refused.get_or_insert(message);
-                }
-                Ok(values) => {
-                    let values = DVector::from_vec(values);
-                    let trial_cost = half_square(&values);
-                    let better = best.as_ref().is_none_or(|(_, _, c)| trial_cost < *c);
-                    if trial_cost.is_finite() && trial_cost < cost && better {
-                        best = Some((k, values, trial_cost));
+        let (accepted, refused) = match results.pop().ok_or(SolveError::Cancelled)? {
+            Err(message) => (false, Some(message)),
+            Ok(values) => {
+                let trial_residuals = DVector::from_vec(values);
+                let trial_cost = half_square(&trial_residuals);
+                if trial_cost.is_finite() && trial_cost < cost {
+                    let predicted = -(gradient.dot(&taken)) - 0.5 * (&jacobian * &taken).norm_squared();
+                    let gain = (cost - trial_cost) / predicted.max(f64::MIN_POSITIVE);
+                    jacobian = jacobian_from(problem, &trial, &trial_residuals, columns, &mut evaluations)?;
+                    let fall = cost - trial_cost;
+                    residuals = trial_residuals;
+                    point = trial;
+                    cost = trial_cost;
+                    damping *= (1.0 - (2.0 * gain - 1.0).powi(3)).max(1.0 / 3.0);
+                    growth = 2.0;
+                    if fall <= settings.cost_tolerance * cost.max(f64::MIN_POSITIVE) {
+                        ending = Ending::CostConverged;
+                        push(&mut iterations, &mut report, number, cost, &point, damping, (true, None), evaluations);
+                        break;
                     }
+                    (true, None)
+                } else {
+                    (false, None)
                 }
             }
-        }
-        let accepted = best.is_some();
-        if let Some((k, trial_residuals, trial_cost)) = best {
-            let (trial, taken) = &candidates[k];
-            let predicted = -(gradient.dot(taken)) - 0.5 * (&jacobian * taken).norm_squared();
-            let gain = (cost - trial_cost) / predicted.max(f64::MIN_POSITIVE);
-            let columns = if k == 0 {
-                columns
-            } else {
-                evaluations += n;
-                problem.residuals(&with_differences(trial)[1..])
-            };
-            jacobian = jacobian_from(problem, trial, &trial_residuals, columns, &mut evaluations)?;
-            let fall = cost - trial_cost;
-            residuals = trial_residuals;
-            point.clone_from(trial);
-            cost = trial_cost;
-            damping = dampings[k] * (1.0 - (2.0 * gain - 1.0).powi(3)).max(1.0 / 3.0);
-            growth = 2.0;
-            if fall <= settings.cost_tolerance * cost.max(f64::MIN_POSITIVE) {
-                ending = Ending::CostConverged;
-                push(&mut iterations, &mut report, number, cost, &point, damping, (true, None), evaluations);
-                break;
-            }
-        } else {
-            damping = dampings[idle] * growth;
+        };
+        if !accepted {
+            damping *= growth;
             growth *= 2.0;
         }
-        push(
-            &mut iterations,
-            &mut report,
-            number,
-            cost,
-            &point,
-            damping,
-            (accepted, refused.filter(|_| !accepted)),
-            evaluations,
-        );
+        push(&mut iterations, &mut report, number, cost, &point, damping, (accepted, refused), evaluations);
         if damping > 1e16 {
             // No step however short lowers the cost: the point is a minimum to the precision
             // the model's residuals have.
@@ -391,8 +346,12 @@ fn jacobian_from(
         let mut h = difference_step(point[j]);
         let moved = match column {
             Ok(moved) => moved,
-            Err(_) => {
+            Err(message) => {
                 h = -h;
+                if !(0.0..=1.0).contains(&(point[j] + h)) {
+                    // The other side is outside the box: no difference within the bounds.
+                    return Err(SolveError::Derivative { parameter: j, message });
+                }
                 let mut other = point.to_vec();
                 other[j] += h;
                 *evaluations += 1;

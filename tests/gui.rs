@@ -13,6 +13,7 @@ use rerun::external::egui::{self, accesskit};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, LazyLock};
 use std::time::{Duration, Instant};
+use tether::fit::report::number;
 use tether::gui::panel::ControlPanel;
 use tether::gui::stream::Sinks;
 use tether_physics::coupling::{CouplingKind, ElasticLaw, LineModel};
@@ -444,4 +445,144 @@ fn a_line_switches_to_dynamic_live_and_a_bad_segment_count_is_refused() {
     let world = world(&harness);
     let nodes = world.evaluation().line_run(0).and_then(|run| run.nodes()).expect("the line has nodes");
     assert_eq!(nodes.positions.len(), 9, "8 segments, 9 nodes");
+}
+
+/// The spring of [`SPRING`] with stiffness `k` N/m, its x sampled every 10 ms for 2 s with
+/// uniform noise of ±0.2 mm (0.2 % of the 0.1 m amplitude, seeded), as a CSV file
+/// `spring_k.csv` (columns `t`, `x_measured`) in `dir`.
+fn spring_record(dir: &Path, k: f64) -> PathBuf {
+    use rand::{Rng as _, SeedableRng as _};
+    let mut noise = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+    let path = dir.join("spring_k.csv");
+    let text = SPRING.replace("stiffness: 100.0", &format!("stiffness: {k:?}"));
+    let mut world = tether_scene::parse(&text, &path).unwrap().world;
+    let mut csv = String::from("t,x_measured\n");
+    for step in 0..=2000 {
+        if step > 0 {
+            world.step().unwrap();
+        }
+        if step % 10 == 0 {
+            let x = world.state(0).position.x + 2e-4 * (2.0 * noise.random::<f64>() - 1.0);
+            csv += &format!("{:.6},{x:.12e}\n", world.time());
+        }
+    }
+    std::fs::write(&path, csv).unwrap();
+    path
+}
+
+/// The fit panel opened, `record` read into it and its column mapped to the body's x.
+fn fit_panel_with_record(harness: &mut Harness<'_, ControlPanel>, record: &Path) {
+    harness.state_mut().open_record(record);
+    harness.get_by_label("Fit to a record").click();
+    harness.run_steps(2);
+    harness.get_by_label("x_measured").click();
+    harness.run_steps(2);
+    harness.get_by_label("m: position x [m]").click();
+    harness.run_steps(2);
+}
+
+/// The fit panel on the spring against a record made with k = 130 N/m (the file says 100): the
+/// column mapped, the stiffness ticked (bounds prefilled around 100), Fit pressed. The fit ends
+/// with k within 0.5 % of 130, the running world's spring has the fitted value, its 95 %
+/// interval is shown beside the knob; Revert puts the file's 100 N/m back in the running world.
+#[test]
+fn a_fit_moves_the_running_stiffness_to_the_record_and_revert_puts_the_file_back() {
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
+    let truth = 130.0;
+    let record = spring_record(dir.path(), truth);
+    let shown = dir.path().join("shown.rrd");
+    let sinks = Sinks::new(vec![Sinks::file(&shown).unwrap()]);
+    let panel = ControlPanel::new(sinks, Arc::new(|| {}), dir.path().to_path_buf()).unwrap();
+    let mut harness = tall_harness(panel);
+    open_from_list(&mut harness, "spring.ron");
+    fit_panel_with_record(&mut harness, &record);
+    harness.get_by_label("spring: stiffness k").click();
+    harness.run_steps(2);
+    harness.get_by_label("Fit").click();
+    until(&mut harness, "the fit to end", |p| p.fit().session.as_ref().is_some_and(|s| s.result.is_some()));
+    let session = harness.state().fit().session.as_ref().unwrap();
+    let summary = session.result.clone().unwrap().unwrap_or_else(|e| panic!("the fit failed: {e}"));
+    let fitted = &summary.parameters[0];
+    println!(
+        "fitted k = {} N/m, interval {:?}, {} iterations, {} runs",
+        fitted.value, fitted.interval, summary.iterations, summary.runs
+    );
+    assert!(summary.ending.converged(), "{:?}", summary.ending);
+    assert!((fitted.value - truth).abs() < 5e-3 * truth, "k = {}", fitted.value);
+    assert!(session.costs.len() >= 2, "the cost of the start and of each accepted iteration: {:?}", session.costs);
+    until(&mut harness, "the fitted k in the running world", |p| {
+        p.simulation().snapshot(PATIENCE).is_some_and(|w| spring_stiffness(&w) == fitted.value)
+    });
+    harness.run_steps(2);
+    let (lo, hi) = fitted.interval.expect("the data determine k");
+    assert!(lo < fitted.value && fitted.value < hi);
+    let interval = format!("(95 % {} … {}) N/m", number(lo), number(hi));
+    assert!(harness.query_all_by_label_contains(&interval).count() == 1, "the interval beside the knob: {interval}");
+    assert!(harness.query_by_label_contains("spring •").is_some(), "the fitted coupling is marked as tuned");
+
+    harness.get_by_label("Revert").click();
+    until(&mut harness, "the file's k in the running world", |p| {
+        p.simulation().snapshot(PATIENCE).is_some_and(|w| spring_stiffness(&w) == 100.0)
+    });
+    assert!(harness.state().scene().is_some_and(|s| s.tuned == s.file));
+
+    // What the viewer was sent: the record's samples once, a model curve per accepted
+    // iteration, each but the last hidden by its style logged again (the viewer draws the
+    // latest alone).
+    let drawn = harness.state().fit().session.as_ref().map_or(0, |s| s.costs.len());
+    drop(harness);
+    let stores = common::x11::stores(&shown);
+    let chunks: Vec<_> = stores.values().flat_map(|store| store.iter_physical_chunks().cloned()).collect();
+    let rows = |entity: &str, fixed: bool| -> usize {
+        let of = chunks.iter().filter(|c| c.entity_path().to_string() == entity && c.is_static() == fixed);
+        of.map(|c| c.num_rows()).sum()
+    };
+    assert_eq!(rows("/plots/fit/x_measured/record", false), 201, "the record's samples, once");
+    for curve in 0..drawn {
+        let entity = format!("/plots/fit/x_measured/model/{curve}");
+        assert!(rows(&entity, false) > 1000, "{entity}: the model's curve at every world step");
+        let hidden = chunks.iter().any(|c| {
+            c.entity_path().to_string() == entity
+                && c.is_static()
+                && c.component_descriptors().any(|d| d.component.as_str() == "SeriesLines:visible_series")
+        });
+        assert_eq!(hidden, curve + 1 < drawn, "{entity}: its style says hidden once replaced");
+    }
+    assert_eq!(rows(&format!("/plots/fit/x_measured/model/{drawn}"), false), 0, "one curve per accepted iteration");
+}
+
+/// Bad choices are refused in one line and nothing runs: no column mapped; a negative bound on a
+/// log scale; the same bound on a linear scale, which the scene loader refuses with its message.
+#[test]
+fn a_fit_with_bad_choices_is_refused_with_one_line() {
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
+    let record = spring_record(dir.path(), 130.0);
+    let mut harness = harness(panel(dir.path()));
+    open_from_list(&mut harness, "spring.ron");
+    harness.state_mut().open_record(&record);
+    harness.get_by_label("Fit to a record").click();
+    harness.run_steps(2);
+    harness.get_by_label("spring: stiffness k").click();
+    harness.run_steps(2);
+    harness.get_by_label("Fit").click();
+    harness.run_steps(2);
+    harness.get_by_label("no column mapped: choose the model signal of at least one column");
+
+    harness.get_by_label("x_measured").click();
+    harness.run_steps(2);
+    harness.get_by_label("m: position x [m]").click();
+    harness.run_steps(2);
+    set_knob(&mut harness, "spring: stiffness k from", -50.0);
+    harness.get_by_label("Fit").click();
+    harness.run_steps(2);
+    harness.get_by_label_contains("a Log scale needs bounds > 0, got from -50");
+    harness.get_by_label("log").click();
+    harness.run_steps(2);
+    harness.get_by_label("Fit").click();
+    harness.run_steps(2);
+    let refusal = harness.state().fit().refusal.clone().unwrap_or_default();
+    assert!(refusal.contains("from = -50") && refusal.contains("stiffness must be ≥ 0 N/m, got -50"), "{refusal}");
+    harness.get_by_label(&refusal);
+    assert!(harness.state().fit().session.is_none(), "nothing ran");
+    assert_eq!(spring_stiffness(&world(&harness)), 100.0);
 }

@@ -11,6 +11,8 @@ pub enum Purpose {
     OpenScene,
     OpenRecording,
     SaveScene,
+    /// A measured record for the fit panel.
+    OpenRecord,
 }
 
 /// At most one dialog at a time.
@@ -38,6 +40,10 @@ impl Dialogs {
             let path = match purpose {
                 Purpose::OpenScene => dialog.add_filter("Tether scene", &["ron"]).pick_file(),
                 Purpose::OpenRecording => dialog.add_filter("Rerun recording", &["rrd"]).pick_file(),
+                Purpose::OpenRecord => dialog
+                    .add_filter("Measured record", &["csv", "parquet", "rrd"])
+                    .add_filter("Any file", &["*"])
+                    .pick_file(),
                 Purpose::SaveScene => {
                     dialog.add_filter("Tether scene", &["ron"]).set_file_name("tuned.ron").save_file()
                 }

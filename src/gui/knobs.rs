@@ -49,6 +49,14 @@ impl<D: Clone + PartialEq + 'static, R: 'static> Knobs<D, R> {
         &mut self.knobs
     }
 
+    /// Knob `index` shows what `file` says (a fit's values; then [`tune`](Self::tune) it).
+    pub fn show(&mut self, index: usize, file: &SceneFile) {
+        let value = (self.group.values)(file).into_iter().nth(index);
+        if let (Some(knob), Some(value)) = (self.knobs.get_mut(index), value) {
+            knob.draft = value;
+        }
+    }
+
     /// Checks knob `index`'s draft with the scene builder, in `tuned` with its other values: an
     /// accepted value goes into `tuned` and comes back as the command that applies it; a
     /// refused one stays in its knob with the reason, `tuned` untouched.

@@ -15,6 +15,9 @@
 //!   - [`water`]: waves, current, density, each floating body's coefficients, live;
 //!   - [`statics`]: the seabed's line friction, live; the equilibrium button; a body's offset
 //!     curve;
+//!   - [`fit`]: a measured record's columns mapped to model signals, knobs ticked with their
+//!     bounds, `tether fit` run in the background, the knobs and the viewer's curves following
+//!     each iteration, the intervals at the end;
 //!   - [`sweep_table`]: a sweep directory's cases, sortable, a case loaded in one click (drawn
 //!     below the viewer when a sweep is open);
 //! - [`simulation`]: the thread that owns the world;
@@ -24,6 +27,7 @@
 pub mod app;
 pub mod contact_estimator;
 pub mod dialogs;
+pub mod fit;
 pub mod indicators;
 pub mod knobs;
 pub mod open_scene;

@@ -1,11 +1,13 @@
 //! The scene being run and tuned, with no egui in it: what its file says, what is tuned, its
 //! knobs (what they show and why a value was refused, [`Knobs`]); loading it, checking a tuned
-//! value with the scene builder, reverting to the file and saving as RON. The panel draws it and
-//! sends the simulation what it accepts.
+//! value with the scene builder, reverting to the file and saving as RON; values set by their
+//! value paths (a fit's). The panel draws it and sends the simulation what it accepts.
 
 use super::knobs::{Group, Knobs};
 use super::simulation::{Command, Run, Wake};
 use super::watch::FileWatch;
+use crate::sweep::value_path::ValuePath;
+use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 use tether_physics::integrator::Timing;
@@ -175,6 +177,76 @@ impl OpenScene {
             KnobId::Water => knobs.water.tune(0, tuned, bodies),
             KnobId::Hydro(index) => knobs.hydro.tune(index, tuned, bodies),
         }
+    }
+
+    /// The values at value paths `values` (the sweep's paths, `couplings.spring.law.stiffness`),
+    /// each in the knob named with it, set in the tuned scene and checked by the scene builder as
+    /// edits of those knobs: the commands that apply what it accepts (a refused value stays in
+    /// its knob with the reason).
+    ///
+    /// # Errors
+    /// A path that leads nowhere in the tuned scene, or a value its data does not take; nothing
+    /// is changed then.
+    pub fn set_values(&mut self, values: &[(KnobId, &str, f64)]) -> Result<Vec<Command>, String> {
+        let mut tree = serde_json::to_value(&self.tuned).map_err(|e| e.to_string())?;
+        for (_, path, value) in values {
+            ValuePath::find(&tree, path)?.set(&mut tree, Value::from(*value));
+        }
+        let candidate: SceneFile = serde_json::from_value(tree).map_err(|e| e.to_string())?;
+        let mut knobs: Vec<KnobId> = Vec::new();
+        for (knob, _, _) in values {
+            if !knobs.contains(knob) {
+                knobs.push(*knob);
+            }
+        }
+        Ok(knobs.into_iter().filter_map(|knob| self.show_and_tune(knob, &candidate)).collect())
+    }
+
+    /// The values at value paths `paths` (each in the knob named with it) back to what the file
+    /// says, the scene's other tuned values kept; a knob whose file value has no such path (a
+    /// line switched to dynamic since) goes back to the file whole. Returns the commands that
+    /// apply them.
+    pub fn revert_values(&mut self, paths: &[(KnobId, &str)]) -> Vec<Command> {
+        let file = serde_json::to_value(&self.file).unwrap_or(Value::Null);
+        let number = |path: &str| ValuePath::find(&file, path).ok()?.get(&file)?.as_f64();
+        let (mut values, mut whole) = (Vec::new(), Vec::new());
+        for &(knob, path) in paths {
+            match number(path) {
+                Some(value) => values.push((knob, path, value)),
+                None if !whole.contains(&knob) => whole.push(knob),
+                None => {}
+            }
+        }
+        let values: Vec<_> = values.into_iter().filter(|(knob, _, _)| !whole.contains(knob)).collect();
+        // The file's own values: its paths lead to them, and its data takes them.
+        let mut commands = self.set_values(&values).unwrap_or_default();
+        let file = self.file.clone();
+        commands.extend(whole.into_iter().filter_map(|knob| self.show_and_tune(knob, &file)));
+        commands
+    }
+
+    /// Knob `knob` shows what `file` says, checked as an edit.
+    fn show_and_tune(&mut self, knob: KnobId, file: &SceneFile) -> Option<Command> {
+        match knob {
+            KnobId::Coupling(index) => self.knobs.couplings.show(index, file),
+            KnobId::Water => self.knobs.water.show(0, file),
+            KnobId::Hydro(index) => self.knobs.hydro.show(index, file),
+        }
+        self.tune(knob)
+    }
+
+    /// The scene as it runs, for a fit: its path and text — the file's, or, once tuned, the tuned
+    /// scene as RON labelled `<file> (as tuned)` in the file's folder (meshes are found there).
+    ///
+    /// # Errors
+    /// The tuned scene cannot be written as RON.
+    pub fn as_run(&self) -> Result<(PathBuf, String), String> {
+        if self.tuned == self.file {
+            return Ok((self.path.clone(), self.text.clone()));
+        }
+        let text = scene::to_ron(&self.tuned).map_err(|e| e.to_string())?;
+        let name = self.path.file_name().map_or_else(|| "scene".into(), |n| n.to_string_lossy().into_owned());
+        Ok((self.path.with_file_name(format!("{name} (as tuned)")), text))
     }
 
     /// Every knob back to what the file says; returns the knobs to [`tune`](Self::tune) again

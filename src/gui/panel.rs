@@ -7,6 +7,7 @@
 
 use super::contact_estimator::{self, ImpactDraft, UseEstimate};
 use super::dialogs::{Dialogs, Purpose};
+use super::fit::{self, Decision, FitAction, FitDraft, FitUpdate};
 use super::indicators::{self, EnergyHistory};
 use super::knobs::Knob;
 use super::open_scene::{KnobId, OnDisk, OpenScene};
@@ -78,6 +79,8 @@ pub struct ControlPanel {
     sweep: Option<SweepTable>,
     /// The statics panel's knobs and last offset curve.
     statics: StaticsDraft,
+    /// The fit panel's record, choices and fit.
+    fit: FitDraft,
 }
 
 impl ControlPanel {
@@ -102,6 +105,7 @@ impl ControlPanel {
             impact: ImpactDraft::default(),
             sweep: None,
             statics: StaticsDraft::new(None),
+            fit: FitDraft::default(),
         })
     }
 
@@ -172,6 +176,23 @@ impl ControlPanel {
         }
     }
 
+    /// Opens the measured record at `path` in the fit panel (CSV, Parquet or a recording); a
+    /// file that cannot be read is refused there with its file and line.
+    pub fn open_record(&mut self, path: &Path) {
+        match self.fit.open_record(path) {
+            Ok(record) => {
+                let text = format!("opened record {} ({} columns)", path.display(), record.columns.len());
+                self.note(text);
+            }
+            Err(error) => self.fit.refusal = Some(error),
+        }
+    }
+
+    /// The fit panel's state (tests look into it).
+    pub fn fit(&self) -> &FitDraft {
+        &self.fit
+    }
+
     /// The open sweep (tests look into it).
     pub fn sweep(&self) -> Option<&SweepTable> {
         self.sweep.as_ref()
@@ -222,6 +243,7 @@ impl ControlPanel {
         self.timing = TimingDraft::from_file(&loaded.scene.tuned);
         self.history = EnergyHistory::default();
         self.statics = StaticsDraft::new(loaded.scene.tuned.seabed.as_ref().map(|s| s.line_friction));
+        self.fit.scene_changed();
         self.scene = Some(loaded.scene);
         self.simulation.send(Command::Load(Box::new(loaded.run)));
         self.simulation.send(Command::SetSpeed(self.settings.speed));
@@ -266,6 +288,7 @@ impl ControlPanel {
             self.tuning_ui(ui);
             self.water_ui(ui);
             self.statics_ui(ui, selected);
+            self.fit_ui(ui);
             ui.separator();
             self.log_ui(ui);
         });
@@ -274,8 +297,9 @@ impl ControlPanel {
         }
     }
 
-    /// Takes the simulation's reports.
+    /// Takes the simulation's reports and the fit's news.
     fn receive(&mut self) {
+        self.receive_fit();
         for report in self.simulation.drain() {
             match report {
                 Report::Status(status) => {
@@ -322,6 +346,7 @@ impl ControlPanel {
             Purpose::OpenScene => self.open_scene(&path),
             Purpose::OpenRecording => self.recordings_to_open.push(path),
             Purpose::SaveScene => self.save_as(&path),
+            Purpose::OpenRecord => self.open_record(&path),
         }
     }
 
@@ -480,6 +505,79 @@ impl ControlPanel {
             };
             self.simulation.send(command);
         }
+    }
+
+    /// The fit panel: the record, its columns' signals, the knobs to fit, the fit running or
+    /// done.
+    fn fit_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(open) = &self.scene else { return };
+        let fittables = fit::fittables(&open.tuned);
+        let signals = fit::signals(&open.tuned);
+        let folder = open.path.parent().map(Path::to_path_buf).unwrap_or_default();
+        for action in fit::ui(ui, &mut self.fit, &fittables, &signals) {
+            match action {
+                FitAction::BrowseRecord => self.dialogs.open(Purpose::OpenRecord, &folder, self.wake.clone()),
+                FitAction::Start => self.start_fit(&fittables),
+                FitAction::Stop => self.fit.stop(),
+                FitAction::Apply => self.end_fit(Decision::Kept),
+                FitAction::Revert => self.end_fit(Decision::Reverted),
+            }
+        }
+    }
+
+    /// Starts the fit chosen in the fit panel on the scene as it runs, its record drawn in the
+    /// viewer; a bad choice is refused there in one line and nothing runs.
+    fn start_fit(&mut self, fittables: &[fit::Fittable]) {
+        let Some(open) = &self.scene else { return };
+        let launched = self
+            .fit
+            .prepare(open, fittables)
+            .and_then(|(setup, targets)| self.fit.launch(setup, targets, self.wake.clone()));
+        match launched {
+            Ok(measured) => self.simulation.send(Command::ShowFit(measured)),
+            Err(refusal) => self.fit.refusal = Some(refusal),
+        }
+    }
+
+    /// Takes the fit's news: the fitted knobs moved (as edits: the running simulation follows),
+    /// the model's curves redrawn, a line in the log at the end.
+    fn receive_fit(&mut self) {
+        for update in self.fit.poll() {
+            match update {
+                FitUpdate::Values(values) => self.set_values(&values),
+                FitUpdate::Curves(curves) => self.simulation.send(Command::FitModel(curves)),
+                FitUpdate::Ended { text, error: false } => self.note(text),
+                FitUpdate::Ended { text, error: true } => self.note_error(text),
+            }
+        }
+    }
+
+    /// Values at value paths into their knobs, checked and applied as edits.
+    fn set_values(&mut self, values: &[(KnobId, String, f64)]) {
+        let Some(open) = &mut self.scene else { return };
+        let values: Vec<(KnobId, &str, f64)> = values.iter().map(|(k, p, v)| (*k, p.as_str(), *v)).collect();
+        match open.set_values(&values) {
+            Ok(commands) => commands.into_iter().for_each(|command| self.simulation.send(command)),
+            Err(error) => self.note_error(format!("the fitted values cannot be set: {error}")),
+        }
+    }
+
+    /// The fit's values kept (they are running, tuned), or its knobs back to the file's values.
+    fn end_fit(&mut self, decision: Decision) {
+        let (Some(open), Some(session)) = (&mut self.scene, &mut self.fit.session) else { return };
+        session.decision = Some(decision);
+        let labels: Vec<&str> = session.targets.iter().map(|t| t.label.as_str()).collect();
+        let line = match decision {
+            Decision::Kept => format!("kept the fitted {}", labels.join(", ")),
+            Decision::Reverted => {
+                let paths: Vec<(KnobId, &str)> = session.targets.iter().map(|t| (t.knob, t.path.as_str())).collect();
+                for command in open.revert_values(&paths) {
+                    self.simulation.send(command);
+                }
+                format!("{} back to the file's values", labels.join(", "))
+            }
+        };
+        self.note(line);
     }
 
     /// Has what knob `knob` shows checked by the scene builder (same checks and messages as

@@ -1,5 +1,5 @@
 //! How the viewer lays out a run: the 3D scene large on the left, the plots stacked on the
-//! right (energy; tension when there are couplings; the catenaries' end tensions, their
+//! right (a fit's plots first, twice as tall as the others; energy; tension when there are couplings; the catenaries' end tensions, their
 //! grounded lengths on a seabed, and the contacts' forces when there are any; each floating
 //! body's motion in the water); the `sim_time` timeline; the viewer's own side panels folded,
 //! room being short beside the control panel.
@@ -66,7 +66,10 @@ pub fn layout_with_fits(world: &World, columns: &[&str]) -> Blueprint {
         }
     }
     let scene: ContainerLike = Spatial3DView::new("scene").with_origin(paths::WORLD).into();
-    Blueprint::new(Horizontal::new([scene, Vertical::new(plots).into()]).with_column_shares([3.0, 2.0]))
+    // A fit's plots are what a fit is watched by: twice the height of the others.
+    let shares: Vec<f32> = (0..plots.len()).map(|i| if i < columns.len() { 2.0 } else { 1.0 }).collect();
+    let plots = if columns.is_empty() { Vertical::new(plots) } else { Vertical::new(plots).with_row_shares(shares) };
+    Blueprint::new(Horizontal::new([scene, plots.into()]).with_column_shares([3.0, 2.0]))
         .with_blueprint_panel(BlueprintPanel::from_state(PanelState::Collapsed))
         .with_selection_panel(SelectionPanel::from_state(PanelState::Collapsed))
         .with_time_panel(TimePanel::new().with_timeline("sim_time"))

@@ -14,7 +14,7 @@ mod runner;
 pub mod status;
 
 use super::stream::Sinks;
-pub use protocol::{Command, OffsetCurve, Report, Run, Speed};
+pub use protocol::{Command, Curve, OffsetCurve, Report, Run, Speed};
 pub use runner::TICK;
 pub use status::{BodyStatus, ContactStatus, Status};
 use std::sync::Arc;

@@ -66,7 +66,13 @@ pub enum Command {
         to: f64,
         steps: u32,
     },
-    /// A new scene, paused at t = 0.
+    /// A fit's plots from now on, in this run's recording and the next ones of the same scene:
+    /// each measured column's series (the record, drawn once), a plot each.
+    ShowFit(Vec<Curve>),
+    /// The model's curve of each measured column at the fit's latest values, drawn in place of
+    /// the last ones.
+    FitModel(Vec<Curve>),
+    /// A new scene, paused at t = 0 (a fit's plots are dropped).
     Load(Box<Run>),
     /// A copy of the running world, for inspection (tests, tools).
     Snapshot(Sender<Option<World>>),
@@ -82,6 +88,16 @@ pub enum Report {
     Error(String),
     /// An offset curve asked for with [`Command::OffsetCurve`].
     OffsetCurve(OffsetCurve),
+}
+
+/// One series of a fit's plot: a measured column's samples, or the model's signal for it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Curve {
+    /// The measured column the plot is named after.
+    pub column: String,
+    /// Times [s] and values [the signal's unit].
+    pub times: Vec<f64>,
+    pub values: Vec<f64>,
 }
 
 /// A body's offset curve, as the panel draws it.

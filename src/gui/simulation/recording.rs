@@ -3,11 +3,17 @@
 //! [`FLUSH_EVERY`] while it runs ([`Recording::flush`]: the frames since the last send go as one
 //! chunk per entity; paused, at once), finished when the run ends. The sinks outlive the runs
 //! ([`Sinks`]).
+//!
+//! While a fit is shown ([`Recording::show_fit`]), each recording of the scene lays out a plot
+//! per measured column beside the others, with the record's samples and the model's latest
+//! curve in it ([`tether_record::comparison`]).
 
+use super::protocol::Curve;
 use crate::gui::stream::Sinks;
+use rerun::RecordingStream;
 use std::time::{Duration, Instant};
 use tether_physics::world::World;
-use tether_record::{FaceArrows, Recorder};
+use tether_record::{FaceArrows, Recorder, comparison, layout, paths};
 
 /// Frames logged per second of simulated time, as `tether record`'s default.
 const LOG_HZ: f64 = 60.0;
@@ -37,6 +43,16 @@ pub(super) struct Recording {
     face_arrows: bool,
     /// When the buffered frames were last sent.
     last_flush: Instant,
+    /// The fit shown, if any.
+    fit: Option<FitPlots>,
+}
+
+/// A fit's plots: the record of each measured column, the model's latest curve of each.
+struct FitPlots {
+    measured: Vec<Curve>,
+    model: Vec<Curve>,
+    /// Model curves drawn in the current recording (the next one's number).
+    drawn: u32,
 }
 
 impl Recording {
@@ -48,6 +64,7 @@ impl Recording {
             period: 1.0 / LOG_HZ,
             face_arrows: false,
             last_flush: Instant::now(),
+            fit: None,
         }
     }
 
@@ -56,9 +73,40 @@ impl Recording {
     pub(super) fn start(&mut self, label: &str, world: &World) -> Result<(), String> {
         self.finish()?;
         let stream = self.sinks.stream(label).map_err(|e| format!("recording: {e}"))?;
-        tether_record::layout::send_layout(&stream, world).map_err(|e| format!("recording: {e}"))?;
+        match &mut self.fit {
+            None => layout::send_layout(&stream, world).map_err(|e| format!("recording: {e}"))?,
+            Some(fit) => {
+                fit.drawn = 0;
+                fit.draw(&stream, world)?;
+            }
+        }
         self.recorder = Some(Recorder::new(stream, world, &self.arrows()).map_err(|e| format!("recording: {e}"))?);
         self.log(world)
+    }
+
+    /// Shows a fit from now on: a plot per measured column of `measured` with its samples, in
+    /// this recording of `world` and the next ones, until [`Recording::drop_fit`].
+    pub(super) fn show_fit(&mut self, world: &World, measured: Vec<Curve>) -> Result<(), String> {
+        let fit = self.fit.insert(FitPlots { measured, model: Vec::new(), drawn: 0 });
+        match &self.recorder {
+            Some(recorder) => fit.draw(recorder.stream(), world),
+            None => Ok(()),
+        }
+    }
+
+    /// The model's curves at the fit's latest values, in place of the last ones.
+    pub(super) fn fit_model(&mut self, model: Vec<Curve>) -> Result<(), String> {
+        let Some(fit) = &mut self.fit else { return Ok(()) };
+        fit.model = model;
+        match &self.recorder {
+            Some(recorder) => fit.draw_model(recorder.stream()),
+            None => Ok(()),
+        }
+    }
+
+    /// No fit shown from the next recording on (a new scene).
+    pub(super) fn drop_fit(&mut self) {
+        self.fit = None;
     }
 
     /// Draws the contacts' face forces (`on`) or not, from the next frame on, in the run of
@@ -116,5 +164,34 @@ impl Recording {
             Some(recorder) => recorder.finish().map(|_| ()).map_err(|e| format!("recording: {e}")),
             None => Ok(()),
         }
+    }
+}
+
+impl FitPlots {
+    /// The layout with the fit's plots, the record's samples and the model's latest curves, into
+    /// `stream` (a recording of `world`).
+    fn draw(&mut self, stream: &RecordingStream, world: &World) -> Result<(), String> {
+        let fail = |e: &dyn std::fmt::Display| format!("recording the fit: {e}");
+        let columns: Vec<&str> = self.measured.iter().map(|c| c.column.as_str()).collect();
+        layout::send_layout_with_fits(stream, world, &columns).map_err(|e| fail(&e))?;
+        for curve in &self.measured {
+            comparison::log_styles(stream, &curve.column).map_err(|e| fail(&e))?;
+            comparison::send_series(stream, &curve.column, paths::FIT_RECORD, &curve.times, &curve.values)
+                .map_err(|e| fail(&e))?;
+        }
+        self.draw_model(stream)
+    }
+
+    /// The model's latest curves into `stream`, hiding the ones drawn before.
+    fn draw_model(&mut self, stream: &RecordingStream) -> Result<(), String> {
+        if self.model.is_empty() {
+            return Ok(());
+        }
+        for curve in &self.model {
+            comparison::send_model_draft(stream, &curve.column, self.drawn, &curve.times, &curve.values)
+                .map_err(|e| format!("recording the fit: {e}"))?;
+        }
+        self.drawn += 1;
+        Ok(())
     }
 }

@@ -165,6 +165,15 @@ impl Runner {
             Command::OffsetCurve { body, direction, to, steps } => {
                 self.offset_curve(Dof { body, direction }, to, steps)
             }
+            Command::ShowFit(measured) => {
+                let Some(run) = &self.run else { return };
+                let shown = self.recording.show_fit(&run.world, measured);
+                self.report_failure(shown);
+            }
+            Command::FitModel(model) => {
+                let drawn = self.recording.fit_model(model);
+                self.report_failure(drawn);
+            }
             Command::Load(run) => self.load(*run),
             Command::Snapshot(reply) => {
                 reply.send(self.run.as_ref().map(|run| run.world.clone())).ok();
@@ -273,6 +282,7 @@ impl Runner {
     fn load(&mut self, run: Run) {
         let label = run.label.clone();
         self.run = Some(run);
+        self.recording.drop_fit();
         self.running = false;
         self.failure = None;
         self.start_recording();

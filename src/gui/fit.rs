@@ -1,0 +1,958 @@
+//! The fit panel (docs/window.md, "Fit"; docs/calibration.md): a measured record opened, each of
+//! its columns mapped to a model signal or left out, the knobs to fit ticked with their bounds
+//! (prefilled around the value now), and `tether fit` run on the scene as the window holds it, on
+//! a thread of its own. After every accepted iteration the fitted knobs move to the new values
+//! in the running simulation and the model's curves are drawn again beside the record's in the
+//! viewer; at the end each fitted knob shows its value and 95 % interval. "Apply" keeps the
+//! values, "Revert" puts the file's back.
+//!
+//! The state ([`FitDraft`]) and what is fittable ([`fittables`], [`signals`]) have no egui in
+//! them; [`ui`] draws them and returns [`FitAction`]s, which the panel carries out, and the panel
+//! takes the fit's news as [`FitUpdate`]s ([`FitDraft::poll`]).
+//!
+//! The matches over the scene's coupling kinds, elastic laws, line models, waves and quantities
+//! are exhaustive: a new kind does not compile until it says what can be fitted in it.
+
+use super::open_scene::{KnobId, OpenScene};
+use super::simulation::{Curve, Wake};
+use crate::fit::measured::Record;
+use crate::fit::report::number;
+use crate::fit::run::{self, Fitted, Outcome, Progress};
+use crate::fit::setup::{Setup, SetupError};
+use crate::fit::solver::Ending;
+use crate::fit::spec::{FitFile, ParameterDef, Scale, SignalDef, Window};
+use crate::quantity::{Axis, End, EnergyPart, Quantity, Turn};
+use crate::runner::{Runner, all_cores};
+use crate::sweep::spec::PathsDef;
+use rerun::external::egui;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{self, Receiver, TryRecvError};
+use tether_scene::SceneFile;
+use tether_scene::file::{CouplingDef, LawDef};
+use tether_scene::line_model::{DampingDef, LineModelDef};
+use tether_scene::water::{HydroDef, WaterDef, WavesDef};
+
+/// Points of a model curve sent to the viewer at most (a run's every world step, thinned).
+const CURVE_POINTS: usize = 4000;
+
+/// A value of the scene a fit can move: the knob it is edited in, its value path (the sweep's,
+/// `couplings.spring.law.stiffness`), what the panel calls it, its unit and its value now.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Fittable {
+    pub knob: KnobId,
+    pub path: String,
+    /// `spring: stiffness k`.
+    pub label: String,
+    pub unit: &'static str,
+    pub value: f64,
+}
+
+/// The values of `file` a fit can move: every number the tuning and water panels tune (a
+/// spring's law and damping, a line's λ0, L_eq, D, A_d and a dynamic line's damping, drag and
+/// added mass, a contact's law; the waves, current and density; each floating body's drag,
+/// added mass and linear damping). Counts (a line's segments) are left out.
+pub fn fittables(file: &SceneFile) -> Vec<Fittable> {
+    let mut found = Vec::new();
+    for (index, def) in file.couplings.iter().enumerate() {
+        let mut section = Section::new(&mut found, KnobId::Coupling(index), "couplings", def.name());
+        coupling_values(&mut section, def);
+    }
+    if let Some(water) = &file.water {
+        water_values(
+            &mut Section { found: &mut found, knob: KnobId::Water, path: "water".into(), name: "water" },
+            water,
+        );
+    }
+    for (index, body) in file.bodies.iter().enumerate() {
+        if let Some(hydro) = &body.hydro {
+            hydro_values(&mut Section::new(&mut found, KnobId::Hydro(index), "bodies", &body.name), hydro);
+        }
+    }
+    found
+}
+
+/// Where the values found go, and the knob, path and name they are found under.
+struct Section<'a> {
+    found: &'a mut Vec<Fittable>,
+    knob: KnobId,
+    path: String,
+    name: &'a str,
+}
+
+impl<'a> Section<'a> {
+    fn new(found: &'a mut Vec<Fittable>, knob: KnobId, list: &str, name: &'a str) -> Self {
+        Self { found, knob, path: format!("{list}.{name}"), name }
+    }
+
+    fn add(&mut self, field: &str, label: &str, unit: &'static str, value: f64) {
+        self.found.push(Fittable {
+            knob: self.knob,
+            path: format!("{}.{field}", self.path),
+            label: format!("{}: {label}", self.name),
+            unit,
+            value,
+        });
+    }
+}
+
+fn coupling_values(section: &mut Section, def: &CouplingDef) {
+    match def {
+        CouplingDef::SpringDamper { law, damping, .. } => {
+            law_values(section, law);
+            section.add("damping", "damping k_d", "N·s/m", *damping);
+        }
+        CouplingDef::Catenary { mass_per_length, length, stiffness, displaced_area, model, .. } => {
+            section.add("mass_per_length", "mass per length λ0", "kg/m", *mass_per_length);
+            section.add("length", "length L_eq", "m", *length);
+            section.add("stiffness", "stiffness D", "N/m", *stiffness);
+            section.add("displaced_area", "displaced area A_d", "m²", *displaced_area);
+            match model {
+                LineModelDef::QuasiStatic => {}
+                LineModelDef::Dynamic {
+                    damping,
+                    drag_normal,
+                    drag_tangential,
+                    added_mass_normal,
+                    added_mass_tangential,
+                    ..
+                } => {
+                    match damping {
+                        DampingDef::Ratio(zeta) => section.add("model.damping", "damping ratio ζ", "–", *zeta),
+                        DampingDef::Coefficient(ba) => section.add("model.damping", "damping BA", "N·s", *ba),
+                    }
+                    section.add("model.drag_normal", "drag C_dn", "–", *drag_normal);
+                    section.add("model.drag_tangential", "drag C_dt", "–", *drag_tangential);
+                    section.add("model.added_mass_normal", "added mass C_an", "–", *added_mass_normal);
+                    section.add("model.added_mass_tangential", "added mass C_at", "–", *added_mass_tangential);
+                }
+            }
+        }
+        CouplingDef::Contact { stiffness, damping, range, friction, friction_sharpness, expected_area, .. } => {
+            section.add("stiffness", "stiffness k1", "N/m³", *stiffness);
+            section.add("damping", "damping k2", "N·s/m³", *damping);
+            section.add("range", "range d0", "m", *range);
+            section.add("friction", "friction μ", "–", *friction);
+            section.add("friction_sharpness", "friction sharpness k_t", "s/m", *friction_sharpness);
+            if let Some(area) = expected_area {
+                section.add("expected_area", "expected area A", "m²", *area);
+            }
+        }
+    }
+}
+
+fn law_values(section: &mut Section, law: &LawDef) {
+    let points = |section: &mut Section, points: &[(f64, f64)], symbol: &str, unit: &'static str| {
+        for (row, (_, y)) in points.iter().enumerate() {
+            section.add(&format!("law.points.{row}.1"), &format!("point {} {symbol}", row + 1), unit, *y);
+        }
+    };
+    match law {
+        LawDef::Linear { stiffness, rest_length } => {
+            section.add("law.stiffness", "stiffness k", "N/m", *stiffness);
+            section.add("law.rest_length", "rest length x0", "m", *rest_length);
+        }
+        LawDef::Polynomial { a, b, c, rest_length } => {
+            section.add("law.a", "a", "N/m", *a);
+            section.add("law.b", "b", "N/m²", *b);
+            section.add("law.c", "c", "N/m³", *c);
+            section.add("law.rest_length", "rest length x0", "m", *rest_length);
+        }
+        LawDef::ForceCurve { points: table } => points(section, table, "f", "N"),
+        LawDef::StiffnessCurve { points: table, rest_length } => {
+            points(section, table, "k", "N/m");
+            section.add("law.rest_length", "rest length x0", "m", *rest_length);
+        }
+        LawDef::ReferenceForce { points: table, reference_length, reference_force, rest_length } => {
+            points(section, table, "k", "N/m");
+            section.add("law.reference_length", "reference length x_r", "m", *reference_length);
+            section.add("law.reference_force", "reference force f_r", "N", *reference_force);
+            section.add("law.rest_length", "rest length x0", "m", *rest_length);
+        }
+    }
+}
+
+fn water_values(section: &mut Section, water: &WaterDef) {
+    match &water.waves {
+        WavesDef::Calm => {}
+        WavesDef::Regular { height, period, heading_deg, .. } => {
+            section.add("waves.height", "wave height H", "m", *height);
+            section.add("waves.period", "wave period T", "s", *period);
+            section.add("waves.heading_deg", "wave heading", "°", *heading_deg);
+        }
+        WavesDef::Jonswap { hs, tp, heading_deg, .. } => {
+            section.add("waves.hs", "significant height Hs", "m", *hs);
+            section.add("waves.tp", "peak period Tp", "s", *tp);
+            section.add("waves.heading_deg", "wave heading", "°", *heading_deg);
+        }
+    }
+    if let Some(current) = &water.current {
+        section.add("current.speed", "current speed", "m/s", current.speed);
+        section.add("current.heading_deg", "current heading", "°", current.heading_deg);
+    }
+    section.add("density", "density ρ", "kg/m³", water.density);
+}
+
+fn hydro_values(section: &mut Section, hydro: &HydroDef) {
+    section.path += ".hydro";
+    for (axis, name) in ["x", "y", "z"].iter().enumerate() {
+        section.add(&format!("drag.{axis}"), &format!("drag C_d {name}"), "–", hydro.drag[axis]);
+    }
+    for (axis, name) in ["x", "y", "z"].iter().enumerate() {
+        section.add(&format!("added_mass.{axis}"), &format!("added mass C_a {name}"), "–", hydro.added_mass[axis]);
+    }
+    for (axis, name) in ["x", "y", "z"].iter().enumerate() {
+        let label = format!("linear damping {name}");
+        section.add(&format!("linear_damping.{axis}"), &label, "N·s/m", hydro.linear_damping[axis]);
+    }
+}
+
+/// The model signals a measured column can be: each body's position, velocity and roll, pitch,
+/// yaw; each coupling's tension (a contact's normal force), a spring's or line's length, a line's
+/// end tensions.
+pub fn signals(file: &SceneFile) -> Vec<Quantity> {
+    let mut signals = Vec::new();
+    for body in &file.bodies {
+        let name = || body.name.clone();
+        signals.extend([Axis::X, Axis::Y, Axis::Z].map(|axis| Quantity::Position(name(), axis)));
+        signals.extend([Axis::X, Axis::Y, Axis::Z].map(|axis| Quantity::Velocity(name(), axis)));
+        signals.extend([Turn::Roll, Turn::Pitch, Turn::Yaw].map(|turn| Quantity::Angle(name(), turn)));
+    }
+    for def in &file.couplings {
+        let name = || def.name().to_string();
+        match def {
+            CouplingDef::SpringDamper { .. } => signals.extend([Quantity::Tension(name()), Quantity::Length(name())]),
+            CouplingDef::Catenary { .. } => signals.extend([
+                Quantity::Tension(name()),
+                Quantity::EndTension(name(), End::End1),
+                Quantity::EndTension(name(), End::End2),
+                Quantity::Length(name()),
+            ]),
+            CouplingDef::Contact { .. } => signals.push(Quantity::Tension(name())),
+        }
+    }
+    signals
+}
+
+/// A signal as the column choice shows it: `m: position x [m]`, `chain: end 2 tension [N]`.
+pub fn signal_label(quantity: &Quantity) -> String {
+    let axis = |axis: &Axis| match axis {
+        Axis::X => "x",
+        Axis::Y => "y",
+        Axis::Z => "z",
+    };
+    let end = |end: &End| match end {
+        End::End1 => "end 1",
+        End::End2 => "end 2",
+    };
+    match quantity {
+        Quantity::Tension(c) => format!("{c}: tension [N]"),
+        Quantity::EndTension(c, e) => format!("{c}: {} tension [N]", end(e)),
+        Quantity::EndForce(c, e, a) => format!("{c}: {} force {} [N]", end(e), axis(a)),
+        Quantity::Length(c) => format!("{c}: length [m]"),
+        Quantity::Position(b, a) => format!("{b}: position {} [m]", axis(a)),
+        Quantity::Velocity(b, a) => format!("{b}: velocity {} [m/s]", axis(a)),
+        Quantity::Angle(b, turn) => {
+            let turn = match turn {
+                Turn::Roll => "roll",
+                Turn::Pitch => "pitch",
+                Turn::Yaw => "yaw",
+            };
+            format!("{b}: {turn} [rad]")
+        }
+        Quantity::AngularVelocity(b, a) => format!("{b}: angular velocity {} [rad/s]", axis(a)),
+        Quantity::Speed(b) => format!("{b}: speed [m/s]"),
+        Quantity::AngularSpeed(b) => format!("{b}: angular speed [rad/s]"),
+        Quantity::Excursion(b) => format!("{b}: excursion [m]"),
+        Quantity::Rotation(b) => format!("{b}: rotation [rad]"),
+        Quantity::Energy(part) => {
+            let part = match part {
+                EnergyPart::Kinetic => "kinetic",
+                EnergyPart::Gravity => "gravity",
+                EnergyPart::Elastic => "elastic",
+                EnergyPart::Dissipated => "dissipated",
+                EnergyPart::ExternalWork => "external work",
+                EnergyPart::Total => "total",
+                EnergyPart::Balance => "balance",
+            };
+            format!("energy: {part} [J]")
+        }
+    }
+}
+
+/// A ticked knob's bounds and scale.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Bounds {
+    pub from: f64,
+    pub to: f64,
+    pub log: bool,
+}
+
+impl Bounds {
+    /// Around `value`: a third of it to three times it (on a log scale when it is > 0); −1 to 1
+    /// around 0.
+    pub fn around(value: f64) -> Self {
+        if value > 0.0 {
+            Self { from: value / 3.0, to: value * 3.0, log: true }
+        } else if value < 0.0 {
+            Self { from: value * 3.0, to: value / 3.0, log: false }
+        } else {
+            Self { from: -1.0, to: 1.0, log: false }
+        }
+    }
+}
+
+/// The record opened: its path, its columns (not the time column) and the times it spans [s].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Measured {
+    pub path: PathBuf,
+    pub columns: Vec<String>,
+    pub span: (f64, f64),
+}
+
+/// What the panel asks for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FitAction {
+    /// A file dialog for the record.
+    BrowseRecord,
+    /// Fit with the choices made.
+    Start,
+    Stop,
+    /// Keep the fitted values (they are running).
+    Apply,
+    /// The fitted knobs back to the file's values.
+    Revert,
+}
+
+/// What a fit running asks the panel to do.
+#[derive(Debug, Clone, PartialEq)]
+pub enum FitUpdate {
+    /// The fitted knobs to these values (`(knob, value path, value)`), as edits.
+    Values(Vec<(KnobId, String, f64)>),
+    /// The model's curves at them, in place of the last ones.
+    Curves(Vec<Curve>),
+    /// The fit ended: a line for the log (an error when it failed).
+    Ended { text: String, error: bool },
+}
+
+/// What became of a fit's values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Decision {
+    Kept,
+    Reverted,
+}
+
+/// What a fit gave: its parameters with their intervals, how it ended, what it cost.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Summary {
+    pub parameters: Vec<Fitted>,
+    pub ending: Ending,
+    pub iterations: u32,
+    pub runs: usize,
+    pub wall_seconds: f64,
+}
+
+/// A fit started from the panel: what it fits, where it is, how it ended.
+pub struct Session {
+    /// The knobs it fits, in the fit's parameter order (their values at the start).
+    pub targets: Vec<Fittable>,
+    worker: Option<Worker>,
+    /// `(iteration, cost)` of the start and of every accepted iteration.
+    pub costs: Vec<(u32, f64)>,
+    /// The last iteration heard of.
+    pub latest: Option<Progress>,
+    /// The values last sent to the knobs.
+    applied: Vec<f64>,
+    /// How it ended, once it has.
+    pub result: Option<Result<Summary, String>>,
+    pub decision: Option<Decision>,
+}
+
+/// The fit's thread, as the panel holds it; dropping it cancels the fit.
+struct Worker {
+    cancel: Arc<AtomicBool>,
+    events: Receiver<Event>,
+}
+
+impl Drop for Worker {
+    fn drop(&mut self) {
+        self.cancel.store(true, Ordering::SeqCst);
+    }
+}
+
+/// What the fit's thread says.
+enum Event {
+    /// An iteration, and the model's curves at its values when it was accepted.
+    Iteration(Progress, Option<Vec<Curve>>),
+    Done(Result<Box<Outcome>, String>),
+}
+
+/// The fit panel's state: the record and the choices made, the fit running or done.
+#[derive(Default)]
+pub struct FitDraft {
+    pub record: Option<Measured>,
+    /// The model signal of each of the record's columns (`None`: not used).
+    pub mapping: Vec<Option<Quantity>>,
+    /// The ticked knobs' bounds, by value path.
+    pub ticked: BTreeMap<String, Bounds>,
+    /// The record's times compared [s].
+    pub window: (f64, f64),
+    /// Why the last choices could not be fitted, or the record read.
+    pub refusal: Option<String>,
+    pub session: Option<Session>,
+}
+
+impl FitDraft {
+    /// Reads the record at `path` (CSV, Parquet, or a Tether recording) in place of the one
+    /// open; every column starts unused, the window spans the record.
+    ///
+    /// # Errors
+    /// The file cannot be read, or a value in it is refused (its file and line).
+    pub fn open_record(&mut self, path: &Path) -> Result<&Measured, String> {
+        let record = Record::read(path, None)?;
+        let span = record
+            .series
+            .iter()
+            .filter_map(|s| Some((*s.times.first()?, *s.times.last()?)))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (first, last)| (a.min(first), b.max(last)));
+        self.mapping = vec![None; record.series.len()];
+        self.window = if span.0 <= span.1 { (span.0.max(0.0), span.1) } else { (0.0, 0.0) };
+        self.refusal = None;
+        let columns = record.series.into_iter().map(|s| s.name).collect();
+        Ok(self.record.insert(Measured { path: path.to_path_buf(), columns, span }))
+    }
+
+    /// Ticks knob `fittable` with bounds around its value now, or unticks it.
+    pub fn tick(&mut self, fittable: &Fittable, on: bool) {
+        if on {
+            self.ticked.insert(fittable.path.clone(), Bounds::around(fittable.value));
+        } else {
+            self.ticked.remove(&fittable.path);
+        }
+    }
+
+    /// Whether a fit is running.
+    pub fn running(&self) -> bool {
+        self.session.as_ref().is_some_and(|s| s.worker.is_some())
+    }
+
+    /// A new scene: a fit running stops; the record, the columns' signals and the ticks stay.
+    pub fn scene_changed(&mut self) {
+        self.session = None;
+    }
+
+    /// The fit of `open` (the scene as it runs) with the choices made, checked by the fit's
+    /// setup, and the knobs it fits; `fittables` are the scene's. Why not, in one line.
+    ///
+    /// # Errors
+    /// No record, no knob ticked, or what the setup refuses (no column mapped, bounds inverted or
+    /// refused by the scene loader…).
+    pub fn prepare(&self, open: &OpenScene, fittables: &[Fittable]) -> Result<(Setup, Vec<Fittable>), String> {
+        let record = self.record.as_ref().ok_or("open a record first")?;
+        let targets: Vec<Fittable> = fittables.iter().filter(|f| self.ticked.contains_key(&f.path)).cloned().collect();
+        if targets.is_empty() {
+            return Err("no knob ticked: tick at least one knob to fit".into());
+        }
+        let parameters = targets
+            .iter()
+            .map(|f| {
+                let bounds = self.ticked[&f.path];
+                ParameterDef {
+                    name: Some(f.label.clone()),
+                    path: PathsDef::One(f.path.clone()),
+                    from: bounds.from,
+                    to: bounds.to,
+                    scale: if bounds.log { Scale::Log } else { Scale::Linear },
+                    start: None,
+                }
+            })
+            .collect();
+        let signals: Vec<SignalDef> = record
+            .columns
+            .iter()
+            .zip(&self.mapping)
+            .filter_map(|(column, of)| Some(SignalDef { column: column.clone(), of: of.clone()?, weight: None }))
+            .collect();
+        if signals.is_empty() {
+            return Err("no column mapped: choose the model signal of at least one column".into());
+        }
+        let (scene_path, scene_text) = open.as_run()?;
+        let file = FitFile {
+            scene: scene_path.display().to_string(),
+            record: record.path.display().to_string(),
+            time_column: None,
+            window: Some(Window { from: self.window.0, to: self.window.1 }),
+            signals,
+            parameters,
+            time_shift: None,
+            max_iterations: 50,
+        };
+        // Made here, not read: a problem is its message alone (no place in a file to show).
+        let label = scene_path.with_file_name("fit in the window");
+        let setup = Setup::new(&file, &label, "", Some((scene_path, scene_text))).map_err(|e| match e {
+            SetupError::Spec(error) => error.message,
+            SetupError::File(message) => message,
+        })?;
+        Ok((setup, targets))
+    }
+
+    /// Starts fitting `setup` (of `targets`) on a thread of its own; `wake` repaints when it has
+    /// news. Returns the record's series in the window, to draw once.
+    ///
+    /// # Errors
+    /// The thread cannot be started.
+    pub fn launch(&mut self, setup: Setup, targets: Vec<Fittable>, wake: Wake) -> Result<Vec<Curve>, String> {
+        let measured = setup
+            .model
+            .signals
+            .iter()
+            .map(|s| Curve { column: s.column.clone(), times: s.times.clone(), values: s.measured.clone() })
+            .collect();
+        let cancel = Arc::new(AtomicBool::new(false));
+        let (tell, events) = mpsc::channel();
+        let flag = Arc::clone(&cancel);
+        std::thread::Builder::new()
+            .name("fit".into())
+            .spawn(move || {
+                let runner = Runner::new(all_cores()).with_cancel(flag);
+                let send = |event: Event| {
+                    // The panel dropped its end: the fit was let go, nobody to tell.
+                    if tell.send(event).is_ok() {
+                        wake();
+                    }
+                };
+                let outcome = run::fit(&setup, &runner, |progress: &Progress| {
+                    let curves = if progress.accepted { model_curves(&setup, &runner, &progress.values) } else { None };
+                    send(Event::Iteration(progress.clone(), curves));
+                });
+                send(Event::Done(outcome.map(Box::new).map_err(|e| e.to_string())));
+            })
+            .map_err(|e| format!("cannot start the fit's thread: {e}"))?;
+        let applied = targets.iter().map(|t| t.value).collect();
+        self.session = Some(Session {
+            targets,
+            worker: Some(Worker { cancel, events }),
+            costs: Vec::new(),
+            latest: None,
+            applied,
+            result: None,
+            decision: None,
+        });
+        self.refusal = None;
+        Ok(measured)
+    }
+
+    /// Stops the fit running: it ends at the best point so far, said to be partial.
+    pub fn stop(&self) {
+        if let Some(worker) = self.session.as_ref().and_then(|s| s.worker.as_ref()) {
+            worker.cancel.store(true, Ordering::SeqCst);
+        }
+    }
+
+    /// The fit's news since the last call, as what the panel must do.
+    pub fn poll(&mut self) -> Vec<FitUpdate> {
+        let Some(session) = &mut self.session else { return Vec::new() };
+        let mut events = Vec::new();
+        if let Some(worker) = &session.worker {
+            loop {
+                match worker.events.try_recv() {
+                    Ok(done @ Event::Done(_)) => {
+                        events.push(done);
+                        break;
+                    }
+                    Ok(event) => events.push(event),
+                    Err(TryRecvError::Empty) => break,
+                    Err(TryRecvError::Disconnected) => {
+                        events.push(Event::Done(Err("the fit's thread stopped without a result".into())));
+                        break;
+                    }
+                }
+            }
+        }
+        let mut updates = Vec::new();
+        for event in events {
+            match event {
+                Event::Iteration(progress, curves) => {
+                    if progress.accepted {
+                        session.costs.push((progress.iteration, progress.cost));
+                        updates.extend(session.move_to(&progress.values));
+                    }
+                    updates.extend(curves.map(FitUpdate::Curves));
+                    session.latest = Some(progress);
+                }
+                Event::Done(result) => {
+                    session.worker = None;
+                    let (summary, line) = match result {
+                        Ok(outcome) => {
+                            updates.extend(session.move_to(&outcome.values));
+                            let summary = Summary {
+                                parameters: outcome.parameters.clone(),
+                                ending: outcome.ending,
+                                iterations: outcome.iterations.last().map_or(0, |p| p.iteration),
+                                runs: outcome.runs,
+                                wall_seconds: outcome.wall_seconds,
+                            };
+                            let line = format!("fit {}: {}", status(&summary), values_line(&summary));
+                            (Ok(summary), FitUpdate::Ended { text: line, error: false })
+                        }
+                        Err(message) => {
+                            let line = FitUpdate::Ended { text: format!("the fit failed: {message}"), error: true };
+                            (Err(message), line)
+                        }
+                    };
+                    session.result = Some(summary);
+                    updates.push(line);
+                }
+            }
+        }
+        updates
+    }
+}
+
+impl Session {
+    /// The knobs to `values`, unless they are there already.
+    fn move_to(&mut self, values: &[f64]) -> Option<FitUpdate> {
+        if values == self.applied.as_slice() {
+            return None;
+        }
+        self.applied = values.to_vec();
+        Some(FitUpdate::Values(self.targets.iter().zip(values).map(|(t, v)| (t.knob, t.path.clone(), *v)).collect()))
+    }
+}
+
+/// The model's curve of each signal at `values`, run on `runner` (a stopped fit stops it), its
+/// times moved back by the time shift so that it lies over the record; `None` if the run fails.
+fn model_curves(setup: &Setup, runner: &Runner, values: &[f64]) -> Option<Vec<Curve>> {
+    let model = &setup.model;
+    let mut trajectory = None;
+    let ran = runner.run(
+        std::iter::once(()),
+        |(), watch| model.run(values, watch),
+        |(), run| {
+            trajectory = Some(run);
+            Ok::<(), ()>(())
+        },
+    );
+    ran.ok()?;
+    let trajectory = trajectory?.ok()?;
+    let shift = model.shift(values);
+    let every = trajectory.times.len().div_ceil(CURVE_POINTS).max(1);
+    let times: Vec<f64> = trajectory.times.iter().step_by(every).map(|t| t - shift).collect();
+    let curves = model
+        .signals
+        .iter()
+        .enumerate()
+        .map(|(s, signal)| Curve {
+            column: signal.column.clone(),
+            times: times.clone(),
+            values: trajectory.series(s).into_iter().step_by(every).collect(),
+        })
+        .collect();
+    Some(curves)
+}
+
+/// `converged: the cost stopped falling after 6 iterations, 14 runs, 0.8 s`, or `partial: …`.
+fn status(summary: &Summary) -> String {
+    let why = match summary.ending {
+        Ending::CostConverged => "the cost stopped falling",
+        Ending::StepConverged => "no step lowers the cost",
+        Ending::WithinNoise => "the next step is under a tenth of a standard error",
+        Ending::GradientConverged => "the gradient vanished",
+        Ending::IterationLimit => "out of iterations",
+        Ending::Cancelled => "stopped",
+    };
+    format!(
+        "{}: {why} after {} iterations, {} runs, {:.1} s",
+        if summary.ending.converged() { "converged" } else { "partial" },
+        summary.iterations,
+        summary.runs,
+        summary.wall_seconds
+    )
+}
+
+/// `spring: stiffness k = 130.002 (95 % 129.9 … 130.1)` for each parameter.
+fn values_line(summary: &Summary) -> String {
+    let each: Vec<String> = summary.parameters.iter().map(|p| format!("{} = {}", p.name, interval_text(p))).collect();
+    each.join(", ")
+}
+
+/// `130.002 (95 % 129.9 … 130.1)`, or `… (not determined by the data)`.
+fn interval_text(fitted: &Fitted) -> String {
+    let interval = match fitted.interval {
+        Some((lo, hi)) => format!("95 % {} … {}", number(lo), number(hi)),
+        None => "not determined by the data".into(),
+    };
+    let bound = if fitted.at_bound { ", at a bound" } else { "" };
+    format!("{} ({interval}{bound})", number(fitted.value))
+}
+
+/// Draws the fit panel for a scene whose fittable values are `fittables` and whose signals are
+/// `signals`; returns what it asks for.
+pub fn ui(ui: &mut egui::Ui, draft: &mut FitDraft, fittables: &[Fittable], signals: &[Quantity]) -> Vec<FitAction> {
+    let mut actions = Vec::new();
+    egui::CollapsingHeader::new("Fit to a record").id_salt("fit").default_open(false).show(ui, |ui| {
+        let running = draft.running();
+        ui.add_enabled_ui(!running, |ui| choices_ui(ui, draft, fittables, signals, &mut actions));
+        ui.horizontal(|ui| {
+            if ui
+                .add_enabled(!running && draft.record.is_some(), egui::Button::new("Fit"))
+                .on_hover_text("Fit the ticked knobs to the record (tether fit), from their values now")
+                .clicked()
+            {
+                actions.push(FitAction::Start);
+            }
+            if ui
+                .add_enabled(running, egui::Button::new("Stop"))
+                .on_hover_text("End the fit at the best values so far")
+                .clicked()
+            {
+                actions.push(FitAction::Stop);
+            }
+        });
+        if let Some(refusal) = &draft.refusal {
+            ui.colored_label(ui.visuals().error_fg_color, refusal);
+        }
+        if let Some(session) = &draft.session {
+            session_ui(ui, session, &mut actions);
+        }
+    });
+    actions
+}
+
+/// The record, its columns' signals, the knobs and their bounds, the window.
+fn choices_ui(
+    ui: &mut egui::Ui,
+    draft: &mut FitDraft,
+    fittables: &[Fittable],
+    signals: &[Quantity],
+    actions: &mut Vec<FitAction>,
+) {
+    ui.horizontal(|ui| {
+        if ui.button("Open record…").on_hover_text("A measured record: CSV, Parquet or a Tether recording").clicked()
+        {
+            actions.push(FitAction::BrowseRecord);
+        }
+        match &draft.record {
+            Some(record) => {
+                let name = record.path.file_name().map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+                ui.label(format!(
+                    "{name}: {} column(s), {} to {} s",
+                    record.columns.len(),
+                    record.span.0,
+                    record.span.1
+                ))
+                .on_hover_text(record.path.display().to_string());
+            }
+            None => {
+                ui.weak("no record");
+            }
+        }
+    });
+    if let Some(record) = &draft.record {
+        ui.label("Each column is the model signal:");
+        for (index, (column, of)) in record.columns.iter().zip(&mut draft.mapping).enumerate() {
+            let shown = of.as_ref().map_or_else(|| "not used".to_string(), signal_label);
+            ui.horizontal(|ui| {
+                let name = ui.label(column);
+                let choice =
+                    egui::ComboBox::from_id_salt(("fit column", index)).selected_text(shown).show_ui(ui, |ui| {
+                        ui.selectable_value(&mut *of, None, "not used");
+                        for signal in signals {
+                            ui.selectable_value(&mut *of, Some(signal.clone()), signal_label(signal));
+                        }
+                    });
+                choice.response.labelled_by(name.id);
+            });
+        }
+    }
+    ui.label("Knobs to fit (bounds; the fit starts from the value now):");
+    for fittable in fittables {
+        let mut on = draft.ticked.contains_key(&fittable.path);
+        ui.horizontal(|ui| {
+            if ui.checkbox(&mut on, &fittable.label).changed() {
+                draft.tick(fittable, on);
+            }
+            ui.weak(format!("{} {}", number(fittable.value), fittable.unit));
+        });
+        if let Some(bounds) = draft.ticked.get_mut(&fittable.path) {
+            ui.horizontal(|ui| {
+                ui.add_space(24.0);
+                bound(ui, &mut bounds.from, "from", &format!("{} from", fittable.label));
+                bound(ui, &mut bounds.to, "to", &format!("{} to", fittable.label));
+                ui.label(fittable.unit);
+                ui.checkbox(&mut bounds.log, "log").on_hover_text("A log scale, for a value that spans decades");
+            });
+        }
+    }
+    ui.horizontal(|ui| {
+        ui.label("window");
+        bound(ui, &mut draft.window.0, "from", "window from");
+        bound(ui, &mut draft.window.1, "to", "window to");
+        ui.label("s");
+    });
+}
+
+/// A bound: a number after `prefix`, named `name` for screen readers (and tests).
+fn bound(ui: &mut egui::Ui, value: &mut f64, prefix: &str, name: &str) {
+    let speed = value.abs().max(1e-3) * 0.01;
+    let response = ui.add(egui::DragValue::new(value).speed(speed).max_decimals(6).prefix(format!("{prefix} ")));
+    ui.ctx().accesskit_node_builder(response.id, |node| node.set_label(name));
+}
+
+/// Where the fit is or how it ended; each fitted knob's value and interval; Apply, Revert.
+fn session_ui(ui: &mut egui::Ui, session: &Session, actions: &mut Vec<FitAction>) {
+    ui.separator();
+    match (&session.result, &session.latest) {
+        (None, None) => {
+            ui.label("fitting: the first runs…");
+        }
+        (None, Some(latest)) => {
+            ui.label(format!(
+                "fitting: iteration {}, cost {:.4e}, {} runs",
+                latest.iteration, latest.cost, latest.runs
+            ));
+        }
+        (Some(Ok(summary)), _) => {
+            ui.label(status(summary));
+        }
+        (Some(Err(message)), _) => {
+            ui.colored_label(ui.visuals().error_fg_color, format!("the fit failed: {message}"));
+        }
+    }
+    let fitted = match &session.result {
+        Some(Ok(summary)) => Some(&summary.parameters),
+        Some(Err(_)) | None => None,
+    };
+    egui::Grid::new("fit results").num_columns(2).show(ui, |ui| {
+        for (index, target) in session.targets.iter().enumerate() {
+            ui.label(&target.label);
+            match fitted.and_then(|parameters| parameters.get(index)) {
+                Some(parameter) => ui.label(format!("{} {}", interval_text(parameter), target.unit)),
+                None => {
+                    let now = session.applied.get(index).copied().unwrap_or(target.value);
+                    ui.label(format!("{} {} (from {})", number(now), target.unit, number(target.value)))
+                }
+            };
+            ui.end_row();
+        }
+    });
+    if session.costs.len() > 1 {
+        cost_plot(ui, &session.costs);
+    }
+    if session.result.is_some() {
+        match session.decision {
+            None => {
+                ui.horizontal(|ui| {
+                    if ui.button("Apply").on_hover_text("Keep the fitted values (they are running)").clicked() {
+                        actions.push(FitAction::Apply);
+                    }
+                    if ui.button("Revert").on_hover_text("The fitted knobs back to the scene file's values").clicked() {
+                        actions.push(FitAction::Revert);
+                    }
+                });
+            }
+            Some(Decision::Kept) => {
+                ui.weak("kept: the fitted values are the tuned ones (\"Save as…\" writes them)");
+            }
+            Some(Decision::Reverted) => {
+                ui.weak("reverted to the file's values");
+            }
+        }
+    }
+}
+
+/// The cost of each accepted iteration, on a log scale, in a framed box.
+fn cost_plot(ui: &mut egui::Ui, costs: &[(u32, f64)]) {
+    let first = costs.first().map_or(0.0, |c| c.1);
+    let last = costs.last().map_or(0.0, |c| c.1);
+    ui.label(format!("cost per iteration: {first:.3e} → {last:.3e} (log scale)"));
+    let (response, painter) =
+        ui.allocate_painter(egui::vec2(ui.available_width().max(200.0), 80.0), egui::Sense::hover());
+    let rect = response.rect.shrink(4.0);
+    painter.rect_stroke(rect, 2.0, ui.visuals().widgets.noninteractive.bg_stroke, egui::StrokeKind::Inside);
+    let points: Vec<(f64, f64)> =
+        costs.iter().filter(|c| c.1 > 0.0).map(|&(i, cost)| (f64::from(i), cost.log10())).collect();
+    let span = |values: &mut dyn Iterator<Item = f64>| {
+        values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)))
+    };
+    let (x0, x1) = span(&mut points.iter().map(|p| p.0));
+    let (y0, y1) = span(&mut points.iter().map(|p| p.1));
+    if !(x0.is_finite() && y0.is_finite()) {
+        return;
+    }
+    let fit = |v: f64, lo: f64, hi: f64| if hi > lo { (v - lo) / (hi - lo) } else { 0.5 };
+    let to_screen = |(x, y): (f64, f64)| {
+        egui::pos2(
+            rect.left() + rect.width() * fit(x, x0, x1) as f32,
+            rect.bottom() - rect.height() * fit(y, y0, y1) as f32,
+        )
+    };
+    let line: Vec<egui::Pos2> = points.iter().copied().map(to_screen).collect();
+    let stroke = egui::Stroke::new(2.0, ui.visuals().hyperlink_color);
+    for point in &line {
+        painter.circle_filled(*point, 2.5, stroke.color);
+    }
+    painter.add(egui::Shape::line(line, stroke));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sweep::value_path::ValuePath;
+
+    /// A float in waves on a spring, and a dynamic line, with every kind of value fittable.
+    const SCENE: &str = r#"Scene(dt: 0.01, water: Water(depth: 30.0, waves: Regular(height: 1.0, period: 6.0), current: Current(speed: 0.5)),
+        bodies: [Body(name: "float", master: Node(position: (0.0, 0.0, 0.0), mass: 1025.0, inertia: Inertia(xx: 300.0, yy: 300.0, zz: 300.0)),
+             shape: Box(size: (2.0, 2.0, 1.0)), hydro: Hydro(drag: (1.0, 1.0, 1.0), linear_damping: (0.0, 0.0, 50.0)))],
+        couplings: [
+            SpringDamper(name: "spring", end1: World((0.0, 0.0, -5.0)), end2: Body(body: "float"),
+                law: ForceCurve(points: [(0.0, 0.0), (1.0, 100.0)]), damping: 2.0),
+            Catenary(name: "line", end1: World((20.0, 0.0, -30.0)), end2: Body(body: "float"),
+                mass_per_length: 50.0, length: 40.0, stiffness: 1e8,
+                model: Dynamic(segments: 10, damping: Ratio(0.8), drag_normal: 1.2)),
+        ])"#;
+
+    /// Every fittable value's path leads to that value in the scene's data, and setting it there
+    /// through the open scene's knobs changes only it.
+    #[test]
+    fn every_fittable_path_leads_to_its_value() {
+        let file = tether_scene::parse(SCENE, Path::new("float.ron")).unwrap().file;
+        let tree = serde_json::to_value(&file).unwrap();
+        let found = fittables(&file);
+        assert!(found.len() > 20, "{} values", found.len());
+        for fittable in &found {
+            let path = ValuePath::find(&tree, &fittable.path).unwrap_or_else(|e| panic!("{}: {e}", fittable.label));
+            // A value the scene leaves to its default (A_d = 0 is not written) has no number.
+            if let Some(value) = path.get(&tree) {
+                assert_eq!(value.as_f64(), Some(fittable.value), "{} at {}", fittable.label, fittable.path);
+            }
+        }
+        let labels: Vec<&str> = found.iter().map(|f| f.label.as_str()).collect();
+        for expected in ["spring: point 2 f", "line: drag C_dn", "line: damping ratio ζ", "water: current speed"] {
+            assert!(labels.contains(&expected), "{expected} in {labels:?}");
+        }
+        let damping = found.iter().find(|f| f.label == "float: linear damping z").unwrap();
+        assert_eq!(
+            (damping.knob, damping.path.as_str(), damping.value),
+            (KnobId::Hydro(0), "bodies.float.hydro.linear_damping.2", 50.0)
+        );
+    }
+
+    #[test]
+    fn bounds_are_prefilled_around_the_value() {
+        assert_eq!(Bounds::around(90.0), Bounds { from: 30.0, to: 270.0, log: true });
+        assert_eq!(Bounds::around(-3.0), Bounds { from: -9.0, to: -1.0, log: false });
+        assert_eq!(Bounds::around(0.0), Bounds { from: -1.0, to: 1.0, log: false });
+    }
+
+    #[test]
+    fn each_body_and_coupling_offers_its_signals() {
+        let file = tether_scene::parse(SCENE, Path::new("float.ron")).unwrap().file;
+        let labels: Vec<String> = signals(&file).iter().map(signal_label).collect();
+        assert_eq!(labels.len(), 9 + 2 + 4);
+        assert_eq!(labels[2], "float: position z [m]");
+        assert!(labels.contains(&"line: end 2 tension [N]".to_string()), "{labels:?}");
+    }
+}

@@ -13,6 +13,7 @@
 //! The matches over the scene's coupling kinds, elastic laws, line models, waves and quantities
 //! are exhaustive: a new kind does not compile until it says what can be fitted in it.
 
+use super::line_plot::{self, Framed};
 use super::open_scene::{KnobId, OpenScene};
 use super::simulation::{Curve, Wake};
 use crate::fit::measured::Record;
@@ -868,28 +869,11 @@ fn cost_plot(ui: &mut egui::Ui, costs: &[(u32, f64)]) {
     let first = costs.first().map_or(0.0, |c| c.1);
     let last = costs.last().map_or(0.0, |c| c.1);
     ui.label(format!("cost per iteration: {first:.3e} → {last:.3e} (log scale)"));
-    let (response, painter) =
-        ui.allocate_painter(egui::vec2(ui.available_width().max(200.0), 80.0), egui::Sense::hover());
-    let rect = response.rect.shrink(4.0);
-    painter.rect_stroke(rect, 2.0, ui.visuals().widgets.noninteractive.bg_stroke, egui::StrokeKind::Inside);
     let points: Vec<(f64, f64)> =
         costs.iter().filter(|c| c.1 > 0.0).map(|&(i, cost)| (f64::from(i), cost.log10())).collect();
-    let span = |values: &mut dyn Iterator<Item = f64>| {
-        values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)))
-    };
-    let (x0, x1) = span(&mut points.iter().map(|p| p.0));
-    let (y0, y1) = span(&mut points.iter().map(|p| p.1));
-    if !(x0.is_finite() && y0.is_finite()) {
+    let Some(Framed { painter, line, .. }) = line_plot::frame(ui, &points, 80.0) else {
         return;
-    }
-    let fit = |v: f64, lo: f64, hi: f64| if hi > lo { (v - lo) / (hi - lo) } else { 0.5 };
-    let to_screen = |(x, y): (f64, f64)| {
-        egui::pos2(
-            rect.left() + rect.width() * fit(x, x0, x1) as f32,
-            rect.bottom() - rect.height() * fit(y, y0, y1) as f32,
-        )
     };
-    let line: Vec<egui::Pos2> = points.iter().copied().map(to_screen).collect();
     let stroke = egui::Stroke::new(2.0, ui.visuals().hyperlink_color);
     for point in &line {
         painter.circle_filled(*point, 2.5, stroke.color);

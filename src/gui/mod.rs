@@ -30,6 +30,7 @@ pub mod dialogs;
 pub mod fit;
 pub mod indicators;
 pub mod knobs;
+pub mod line_plot;
 pub mod open_scene;
 pub mod panel;
 pub mod run_controls;

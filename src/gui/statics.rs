@@ -3,6 +3,7 @@
 //! one selected in the viewer, or chosen here) drawn as the restoring force against the offset.
 //! A line's displaced area `A_d` is tuned with its other knobs ([`super::tuning`]).
 
+use super::line_plot::{self, Framed};
 use super::simulation::OffsetCurve;
 use super::tuning::knob;
 use rerun::external::egui;
@@ -130,26 +131,10 @@ pub fn ui(
 /// The curve as a line in a framed box, with its ranges written at the axes.
 fn plot(ui: &mut egui::Ui, curve: &OffsetCurve) {
     ui.label(format!("body \"{}\": restoring force against offset in {}", curve.body, curve.direction));
-    let (response, painter) =
-        ui.allocate_painter(egui::vec2(ui.available_width().max(200.0), 160.0), egui::Sense::hover());
-    let rect = response.rect.shrink(4.0);
-    painter.rect_stroke(rect, 2.0, ui.visuals().widgets.noninteractive.bg_stroke, egui::StrokeKind::Inside);
-    let span = |values: &mut dyn Iterator<Item = f64>| {
-        values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)))
-    };
-    let (x0, x1) = span(&mut curve.points.iter().map(|p| p.0));
-    let (y0, y1) = span(&mut curve.points.iter().map(|p| p.1));
-    if !(x0.is_finite() && y0.is_finite()) {
+    let Some(Framed { painter, rect, x: (x0, x1), y: (y0, y1), line }) = line_plot::frame(ui, &curve.points, 160.0)
+    else {
         return;
-    }
-    let fit = |v: f64, lo: f64, hi: f64| if hi > lo { (v - lo) / (hi - lo) } else { 0.5 };
-    let to_screen = |(x, y): (f64, f64)| {
-        egui::pos2(
-            rect.left() + rect.width() * fit(x, x0, x1) as f32,
-            rect.bottom() - rect.height() * fit(y, y0, y1) as f32,
-        )
     };
-    let line: Vec<egui::Pos2> = curve.points.iter().copied().map(to_screen).collect();
     painter.add(egui::Shape::line(line, egui::Stroke::new(2.0, ui.visuals().hyperlink_color)));
     let text = ui.visuals().text_color();
     let font = egui::FontId::proportional(11.0);

@@ -93,7 +93,7 @@ impl Model {
     ///
     /// # Errors
     /// As [`Model::run`].
-    pub fn run_world(&self, mut world: World, watch: &Watch<'_>) -> Result<Trajectory, String> {
+    fn run_world(&self, mut world: World, watch: &Watch<'_>) -> Result<Trajectory, String> {
         let probes = self
             .signals
             .iter()
@@ -155,6 +155,22 @@ impl Model {
             .collect()
     }
 
+    /// The runs at each parameter vector of `points`, in order, on `runner`'s threads; a run the
+    /// runner stopped before it started (cancelled) is an `Err` saying so.
+    pub fn runs(&self, points: &[&[f64]], runner: &Runner) -> Vec<Result<Trajectory, String>> {
+        let mut runs: Vec<Option<Result<Trajectory, String>>> = vec![None; points.len()];
+        let gathered = runner.run(
+            0..points.len(),
+            |&k, watch| self.run(points[k], watch),
+            |k, run| {
+                runs[k] = Some(run);
+                Ok::<(), ()>(())
+            },
+        );
+        debug_assert!(gathered.is_ok(), "the gathering closure never fails");
+        runs.into_iter().map(|run| run.unwrap_or_else(|| Err("cancelled".into()))).collect()
+    }
+
     /// The residuals at each parameter vector of `batch`, run on `runner`'s threads, and the
     /// number of runs: vectors that differ only in the time shift share one run.
     pub fn evaluate(&self, batch: &[Vec<f64>], runner: &Runner) -> (Vec<Result<Vec<f64>, String>>, usize) {
@@ -162,37 +178,28 @@ impl Model {
         let physical = |values: &[f64]| -> Vec<u64> {
             values.iter().enumerate().filter(|(i, _)| Some(*i) != shift_index).map(|(_, v)| v.to_bits()).collect()
         };
-        let mut runs: Vec<Vec<u64>> = Vec::new();
+        // Each distinct run's key and the first vector of the batch that asks for it.
+        let mut distinct: Vec<(Vec<u64>, &[f64])> = Vec::new();
         let mut run_of: Vec<usize> = Vec::with_capacity(batch.len());
         for values in batch {
             let key = physical(values);
-            let index = runs.iter().position(|r| *r == key).unwrap_or_else(|| {
-                runs.push(key);
-                runs.len() - 1
+            let index = distinct.iter().position(|(k, _)| *k == key).unwrap_or_else(|| {
+                distinct.push((key, values));
+                distinct.len() - 1
             });
             run_of.push(index);
         }
-        let firsts: Vec<usize> = (0..runs.len()).map(|r| run_of.iter().position(|&x| x == r).unwrap_or(0)).collect();
-        let mut trajectories: Vec<Option<Result<Trajectory, String>>> = vec![None; runs.len()];
-        let gathered = runner.run(
-            0..runs.len(),
-            |&r, watch| self.run(&batch[firsts[r]], watch),
-            |r, trajectory| {
-                trajectories[r] = Some(trajectory);
-                Ok::<(), ()>(())
-            },
-        );
-        debug_assert!(gathered.is_ok(), "the gathering closure never fails");
+        let points: Vec<&[f64]> = distinct.iter().map(|(_, values)| *values).collect();
+        let trajectories = self.runs(&points, runner);
         let results = batch
             .iter()
             .zip(&run_of)
             .map(|(values, &r)| match &trajectories[r] {
-                Some(Ok(trajectory)) => Ok(self.residuals(trajectory, self.shift(values))),
-                Some(Err(message)) => Err(message.clone()),
-                None => Err("cancelled".into()),
+                Ok(trajectory) => Ok(self.residuals(trajectory, self.shift(values))),
+                Err(message) => Err(message.clone()),
             })
             .collect();
-        (results, runs.len())
+        (results, points.len())
     }
 }
 

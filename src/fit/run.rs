@@ -159,7 +159,9 @@ pub fn fit(setup: &Setup, runner: &Runner, mut progress: impl FnMut(&Progress)) 
     let start_values: Vec<f64> = model.parameters.iter().map(|p| p.start).collect();
     // After a Ctrl-C too (a partial fit is still reported): on threads of their own, without
     // the cancelled flag.
-    let (start_run, trajectory) = twice(model, &Runner::new(runner.jobs()), &start_values, &values)?;
+    let mut runs = model.runs(&[&start_values, &values], &Runner::new(runner.jobs())).into_iter();
+    let mut next = || runs.next().unwrap_or_else(|| Err("cancelled".into())).map_err(SolveError::Start);
+    let (start_run, trajectory) = (next()?, next()?);
     let signals = signal_fits(model, (&start_run, model.shift(&start_values)), (&trajectory, model.shift(&values)));
     Ok(Outcome {
         parameters,
@@ -172,26 +174,6 @@ pub fn fit(setup: &Setup, runner: &Runner, mut progress: impl FnMut(&Progress)) 
         trajectory,
         values,
     })
-}
-
-/// The runs at `first` and `second`, on two of `runner`'s threads.
-fn twice(model: &Model, runner: &Runner, first: &[f64], second: &[f64]) -> Result<(Trajectory, Trajectory), RunError> {
-    let points = [first, second];
-    let mut runs: [Option<Result<Trajectory, String>>; 2] = [None, None];
-    let gathered = runner.run(
-        0..2usize,
-        |&k, watch| model.run(points[k], watch),
-        |k, run| {
-            runs[k] = Some(run);
-            Ok::<(), ()>(())
-        },
-    );
-    debug_assert!(gathered.is_ok(), "the gathering closure never fails");
-    let [a, b] = runs;
-    let take = |run: Option<Result<Trajectory, String>>| {
-        run.unwrap_or_else(|| Err("cancelled".into())).map_err(SolveError::Start)
-    };
-    Ok((take(a)?, take(b)?))
 }
 
 fn fitted(parameters: &[Parameter], point: &[f64], values: &[f64], uncertainty: &Uncertainty) -> Vec<Fitted> {

@@ -627,17 +627,7 @@ impl Session {
 /// times moved back by the time shift so that it lies over the record; `None` if the run fails.
 fn model_curves(setup: &Setup, runner: &Runner, values: &[f64]) -> Option<Vec<Curve>> {
     let model = &setup.model;
-    let mut trajectory = None;
-    let ran = runner.run(
-        std::iter::once(()),
-        |(), watch| model.run(values, watch),
-        |(), run| {
-            trajectory = Some(run);
-            Ok::<(), ()>(())
-        },
-    );
-    ran.ok()?;
-    let trajectory = trajectory?.ok()?;
+    let trajectory = model.runs(&[values], runner).pop()?.ok()?;
     let shift = model.shift(values);
     let every = trajectory.times.len().div_ceil(CURVE_POINTS).max(1);
     let times: Vec<f64> = trajectory.times.iter().step_by(every).map(|t| t - shift).collect();

@@ -9,8 +9,6 @@ use anyhow::Context as _;
 use clap::Args;
 use std::num::NonZeroUsize;
 use std::path::PathBuf;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
 use tether::fit::output::{self, utc_now};
 use tether::fit::report;
 use tether::fit::run::{self, Progress};
@@ -47,10 +45,7 @@ pub enum Outcome {
 }
 
 pub fn run(args: &FitArgs) -> anyhow::Result<Outcome> {
-    let cancel = Arc::new(AtomicBool::new(false));
-    let flag = Arc::clone(&cancel);
-    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
-        .context("installing the Ctrl-C / SIGTERM handler")?;
+    let cancel = super::cancel_on_ctrl_c()?;
     let setup = Setup::load(&args.spec)?;
     let runner = Runner::new(args.jobs.unwrap_or_else(tether::runner::all_cores)).with_cancel(cancel);
     let names: Vec<&str> = setup.model.parameters.iter().map(|p| p.name.as_str()).collect();

@@ -15,6 +15,8 @@ mod timing;
 use anyhow::Context as _;
 use clap::{Parser, Subcommand};
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use tether_scene::{self as scene, Scene};
 
 /// Coupled rigid bodies — springs, catenaries, contact — simulated, tuned live and recorded for
@@ -101,6 +103,16 @@ pub fn run(cli: Cli) -> anyhow::Result<u8> {
             sweep::Outcome::Interrupted => INTERRUPTED,
         }),
     }
+}
+
+/// A flag set by Ctrl-C or SIGTERM (the handler installed now, once per process): the long
+/// commands (record, sweep, fit) stop at it and keep what they finished.
+fn cancel_on_ctrl_c() -> anyhow::Result<Arc<AtomicBool>> {
+    let cancel = Arc::new(AtomicBool::new(false));
+    let flag = Arc::clone(&cancel);
+    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
+        .context("installing the Ctrl-C / SIGTERM handler")?;
+    Ok(cancel)
 }
 
 /// Loads a scene and prints its warnings to stderr.

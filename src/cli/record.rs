@@ -12,8 +12,7 @@ use anyhow::{Context as _, bail};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressState, ProgressStyle};
 use std::path::PathBuf;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::Ordering;
 use tether_physics::integrator::Integrator;
 use tether_physics::world::StepError;
 use tether_record::{ArrowedContacts, FaceArrows, FrameSchedule, Recorder};
@@ -130,10 +129,7 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     face_arrows.check(world)?;
     let mut recorder = Recorder::to_file(&args.output, world, &face_arrows)
         .with_context(|| format!("cannot write {}", args.output.display()))?;
-    let interrupted = Arc::new(AtomicBool::new(false));
-    let flag = Arc::clone(&interrupted);
-    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
-        .context("installing the Ctrl-C / SIGTERM handler")?;
+    let interrupted = super::cancel_on_ctrl_c()?;
 
     let mut stopwatch = super::timing::Stopwatch::start();
     stopwatch.recorder(|| recorder.log_frame(world))?;

@@ -5,13 +5,11 @@
 //! Ctrl-C or SIGTERM stops any stage — checking the cases, running them, writing the results —
 //! within a case's step or a row, keeping every finished row (exit code 130).
 
-use anyhow::{Context as _, bail};
+use anyhow::bail;
 use clap::{Args, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::num::NonZeroUsize;
 use std::path::PathBuf;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 use tether::runner::Runner;
 use tether::sweep::design::DEFAULT_MAX_CASES;
@@ -76,10 +74,7 @@ pub enum Outcome {
 
 pub fn run(args: &SweepArgs) -> anyhow::Result<Outcome> {
     // Installed first: every stage from the planning on stops at the flag.
-    let cancel = Arc::new(AtomicBool::new(false));
-    let flag = Arc::clone(&cancel);
-    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
-        .context("installing the Ctrl-C / SIGTERM handler")?;
+    let cancel = super::cancel_on_ctrl_c()?;
     if let Some(SweepCommand::Merge { dir, jobs }) = &args.command {
         let runner = Runner::new(jobs.unwrap_or_else(tether::runner::all_cores)).with_cancel(cancel);
         let written = match sweep::merge(dir, &runner) {

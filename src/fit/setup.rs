@@ -5,6 +5,7 @@
 use super::measured::Record;
 use super::model::{Model, Signal};
 use super::parameter::{Parameter, Target};
+use super::series::Series;
 use super::spec::{FitFile, Window};
 use crate::quantity::Probe;
 use crate::sweep::spec::{SpecError, SpecText};
@@ -108,20 +109,15 @@ impl Setup {
         }
         let (shift_from, shift_to) =
             parameters.iter().find(|p| p.target == Target::TimeShift).map_or((0.0, 0.0), |p| (p.from, p.to));
-        for def in &file.signals {
-            record.series(&def.column).map_err(|m| spec.error_at(&def.column, "signals", m))?;
-        }
-        let window = window(
-            file.window,
-            &record,
-            &file.signals.iter().map(|s| s.column.as_str()).collect::<Vec<_>>(),
-            scene.file.duration,
-            shift_from,
-        )
-        .map_err(|m| spec.error_at("", if file.window.is_some() { "window" } else { "record" }, m))?;
+        let columns = file
+            .signals
+            .iter()
+            .map(|def| record.series(&def.column).map_err(|m| spec.error_at(&def.column, "signals", m)))
+            .collect::<Result<Vec<_>, _>>()?;
+        let window = window(file.window, &columns, scene.file.duration, shift_from)
+            .map_err(|m| spec.error_at("", if file.window.is_some() { "window" } else { "record" }, m))?;
         let mut signals = Vec::new();
-        for def in &file.signals {
-            let series = record.series(&def.column).map_err(|m| spec.error_at(&def.column, "signals", m))?;
+        for (def, series) in file.signals.iter().zip(&columns) {
             let probe = Probe::find(&scene.world, &def.of)
                 .map_err(|m| spec.error_after(&def.column, "of", format!("signal \"{}\": {m}", def.column)))?;
             let (times, measured): (Vec<f64>, Vec<f64>) = series
@@ -195,19 +191,12 @@ fn check_values(parameter: &Parameter, base: &Value, scene_text: &str, scene_pat
     Ok(())
 }
 
-/// The record's times compared: `given`, or every time of the signals' columns the scene's run
+/// The record's times compared: `given`, or every time of the signals' `columns` the scene's run
 /// (0 to `duration`) covers; `shift_from` (≤ 0 moves the model earlier) must not reach before
 /// t = 0.
-fn window(
-    given: Option<Window>,
-    record: &Record,
-    columns: &[&str],
-    duration: f64,
-    shift_from: f64,
-) -> Result<Window, String> {
+fn window(given: Option<Window>, columns: &[&Series], duration: f64, shift_from: f64) -> Result<Window, String> {
     let (first, last) = columns
         .iter()
-        .filter_map(|c| record.series(c).ok())
         .filter_map(|s| Some((*s.times.first()?, *s.times.last()?)))
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (f, l)| (a.min(f), b.max(l)));
     let window = match given {

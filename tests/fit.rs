@@ -35,6 +35,14 @@ fn write_csv(path: &Path, header: &str, rows: &[(f64, Vec<f64>)]) {
     std::fs::write(path, text).unwrap();
 }
 
+/// Writes `samples` (t, x) as a CSV file `t,x` at `path`, each x with Gaussian noise of `sigma`
+/// drawn from `seed` in sample order.
+fn write_noisy_csv(path: &Path, samples: &[(f64, f64)], sigma: f64, seed: u64) {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let rows: Vec<(f64, Vec<f64>)> = samples.iter().map(|(t, x)| (*t, vec![x + sigma * normal(&mut rng)])).collect();
+    write_csv(path, "t,x", &rows);
+}
+
 /// Runs scene text `text` (labelled by `path`) and samples `probe(world)` every `every` steps.
 fn simulate(
     text: &str,
@@ -73,10 +81,8 @@ fn spring_record(dir: &Path, seed: u64) -> PathBuf {
         .replace("stiffness: 100.0", "stiffness: 120.0")
         .replace("damping: 1.0", "damping: 0.8");
     let samples = simulate(&text, &scene, 5000, 10, |w| w.state(0).position.x);
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let rows: Vec<(f64, Vec<f64>)> = samples.iter().map(|(t, x)| (*t, vec![x + 1e-4 * normal(&mut rng)])).collect();
     let record = dir.join(format!("decay-{seed}.csv"));
-    write_csv(&record, "t,x", &rows);
+    write_noisy_csv(&record, &samples, 1e-4, seed);
     let spec = dir.join(format!("fit-{seed}.ron"));
     write_spec(
         &spec,
@@ -223,9 +229,7 @@ fn springs_in_series_are_reported_not_identifiable() {
     let scene = common::here!("fixtures/fit/springs_in_series.ron");
     let text = std::fs::read_to_string(&scene).unwrap();
     let samples = simulate(&text, &scene, 6000, 20, |w| w.state(1).position.x);
-    let mut rng = ChaCha8Rng::seed_from_u64(7);
-    let rows: Vec<(f64, Vec<f64>)> = samples.iter().map(|(t, x)| (*t, vec![x + 1e-3 * normal(&mut rng)])).collect();
-    write_csv(&dir.path().join("end.csv"), "t,x", &rows);
+    write_noisy_csv(&dir.path().join("end.csv"), &samples, 1e-3, 7);
     let spec = dir.path().join("series.ron");
     write_spec(
         &spec,
@@ -523,14 +527,10 @@ fn an_initial_offset_and_a_time_shift_are_parameters_too() {
     let text =
         std::fs::read_to_string(&scene).unwrap().replace("position: (1.01, 0.0, 0.0)", "position: (1.012, 0.0, 0.0)");
     let samples = simulate(&text, &scene, 5000, 10, |w| w.state(0).position.x);
-    let mut rng = ChaCha8Rng::seed_from_u64(5);
     // The record's clock: sample k of the model (t_k) is the record's t_k − 0.05.
-    let rows: Vec<(f64, Vec<f64>)> = samples
-        .iter()
-        .filter(|(t, _)| *t >= 0.05 - 1e-9)
-        .map(|(t, x)| (t - 0.05, vec![x + 1e-5 * normal(&mut rng)]))
-        .collect();
-    write_csv(&dir.path().join("late.csv"), "t,x", &rows);
+    let late: Vec<(f64, f64)> =
+        samples.iter().filter(|(t, _)| *t >= 0.05 - 1e-9).map(|(t, x)| (t - 0.05, *x)).collect();
+    write_noisy_csv(&dir.path().join("late.csv"), &late, 1e-5, 5);
     let spec = dir.path().join("late.ron");
     write_spec(
         &spec,

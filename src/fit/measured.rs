@@ -254,6 +254,9 @@ mod tests {
         let backwards = csv_file("t,x\n0.0,1.0\n0.2,1.0\n0.1,1.0\n");
         let error = Record::read(backwards.path(), None).unwrap_err();
         assert!(error.contains(":4:") && error.contains("does not increase"), "{error}");
+        let short = csv_file("t,x\n0.0,1.0\n0.1\n");
+        let error = Record::read(short.path(), None).unwrap_err();
+        assert!(error.contains(":3:") && error.contains("cannot read the row"), "{error}");
         let text = csv_file("t,x\n0.0,one\n");
         let error = Record::read(text.path(), None).unwrap_err();
         assert!(error.contains(":2:") && error.contains("not a number"), "{error}");

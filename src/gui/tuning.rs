@@ -12,9 +12,9 @@ use super::knobs::Knob;
 use rerun::external::egui;
 use rerun::external::egui::emath::Numeric;
 use std::fmt::Display;
+use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass};
 use tether_scene::SceneFile;
 use tether_scene::file::{CouplingDef, LawDef};
-use tether_scene::line_model::{DampingDef, LineModelDef};
 
 /// What the tuning panel asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -99,36 +99,28 @@ fn coupling_knobs(ui: &mut egui::Ui, index: usize, def: &mut CouplingDef) -> boo
 /// segments, internal damping, drag and added mass. Switched to dynamic, a line takes 20
 /// segments, ζ = 0.8 and a wire's coefficients (C_dn 1.2, C_dt 0.008, C_an 1, C_at 0), and
 /// starts from its quasi-static shape where it is.
-fn line_model_knobs(ui: &mut egui::Ui, model: &mut LineModelDef) -> bool {
+fn line_model_knobs(ui: &mut egui::Ui, model: &mut LineModel) -> bool {
     let name = ui.label("line model");
     let mut dynamic = !model.is_quasi_static();
     let switched = ui.checkbox(&mut dynamic, "dynamic (lumped mass)").labelled_by(name.id).changed();
     ui.label("");
     ui.end_row();
     if switched {
-        *model = if dynamic { LineModelDef::wire(20) } else { LineModelDef::QuasiStatic };
+        *model = if dynamic { LineModel::Dynamic(LumpedMass::wire(20)) } else { LineModel::QuasiStatic };
     }
     let edited = match model {
-        LineModelDef::QuasiStatic => false,
-        LineModelDef::Dynamic {
-            segments,
-            damping,
-            drag_normal,
-            drag_tangential,
-            added_mass_normal,
-            added_mass_tangential,
-            ..
-        } => {
-            let damping = match damping {
-                DampingDef::Ratio(zeta) => knob(ui, "damping ratio ζ", zeta, "–"),
-                DampingDef::Coefficient(ba) => knob(ui, "damping BA", ba, "N·s"),
+        LineModel::QuasiStatic => false,
+        LineModel::Dynamic(line) => {
+            let damping = match &mut line.damping {
+                InternalDamping::Ratio(zeta) => knob(ui, "damping ratio ζ", zeta, "–"),
+                InternalDamping::Coefficient(ba) => knob(ui, "damping BA", ba, "N·s"),
             };
-            knob(ui, "segments N", segments, "–")
+            knob(ui, "segments N", &mut line.segments, "–")
                 | damping
-                | knob(ui, "drag C_dn", drag_normal, "–")
-                | knob(ui, "drag C_dt", drag_tangential, "–")
-                | knob(ui, "added mass C_an", added_mass_normal, "–")
-                | knob(ui, "added mass C_at", added_mass_tangential, "–")
+                | knob(ui, "drag C_dn", &mut line.drag_normal, "–")
+                | knob(ui, "drag C_dt", &mut line.drag_tangential, "–")
+                | knob(ui, "added mass C_an", &mut line.added_mass_normal, "–")
+                | knob(ui, "added mass C_at", &mut line.added_mass_tangential, "–")
         }
     };
     switched | edited

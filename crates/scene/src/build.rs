@@ -558,7 +558,7 @@ fn build_coupling(def: &CouplingDef, built: &mut Bodies, at: &ItemAt) -> Result<
         }
         CouplingDef::Catenary { end1, end2, mass_per_length, length, stiffness, displaced_area, model, .. } => {
             let (end1, end2) = build_ends(end1, end2, bodies, at)?;
-            let model = model.build().map_err(|e| at.refused(&e))?;
+            let model = model.checked().map_err(|e| at.refused(&e))?;
             let line = Catenary::new(end1, end2, *mass_per_length, *length, *stiffness)
                 .and_then(|line| line.with_displaced_area(*displaced_area))
                 .map_err(|e| at.refused(&e))?

@@ -6,9 +6,9 @@
 
 pub use super::finite::Triple;
 use super::finite::{finite, finite_option, finite_pairs, finite_velocity_table, finite3};
-use super::line_model::LineModelDef;
 use super::water::{HydroDef, WaterDef};
 use serde::{Deserialize, Serialize};
+use tether_physics::coupling::LineModel;
 use tether_physics::integrator::{Integrator, Substeps};
 
 /// A whole scene.
@@ -310,7 +310,7 @@ pub enum CouplingDef {
     /// ≥ 0, unstretched `length` L_eq \[m] > 0, `stiffness` D [N/m] > 0 of the whole line
     /// (EA = D L_eq), `displaced_area` A_d \[m²] ≥ 0, its displaced volume per length: in water
     /// it weighs `(λ0 − ρ A_d) g` per metre (default 0); `model` `QuasiStatic` (default) or
-    /// `Dynamic(…)` (PHYSICS.md §8, [`LineModelDef`]).
+    /// `Dynamic(…)` (PHYSICS.md §8, [`LineModel`]: the physics' own type).
     Catenary {
         name: String,
         end1: EndDef,
@@ -323,8 +323,8 @@ pub enum CouplingDef {
         stiffness: f64,
         #[serde(default, skip_serializing_if = "is_zero", deserialize_with = "finite")]
         displaced_area: f64,
-        #[serde(default, skip_serializing_if = "LineModelDef::is_quasi_static")]
-        model: LineModelDef,
+        #[serde(default, skip_serializing_if = "LineModel::is_quasi_static")]
+        model: LineModel,
     },
     /// Penalty contact with tanh friction (PHYSICS.md §4) between the faces of body `body`'s
     /// shape and `against`. Per unit face area: `stiffness` k1 [N/m³] > 0, `damping` k2

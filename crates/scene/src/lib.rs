@@ -6,7 +6,6 @@
 pub mod build;
 pub mod file;
 mod finite;
-pub mod line_model;
 pub mod mesh_file;
 pub mod pose;
 pub mod source;

@@ -47,3 +47,33 @@ fn a_tuned_catenary_is_saved_with_its_tuned_values() {
         other => panic!("not a catenary: {other:?}"),
     }
 }
+
+/// A dynamic line whose every value differs from the others and from its default is written
+/// and read back to the same physics model, field by field (the file form of
+/// `tether_physics::coupling::lumped_line::file_form` writes each field under its own name).
+#[test]
+fn a_dynamic_line_round_trips_each_of_its_values() {
+    use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass};
+    let mut loaded = scene::load(&repo("scenes/moored_buoy.ron")).unwrap();
+    let tuned = LumpedMass {
+        segments: 37,
+        damping: InternalDamping::Coefficient(1234.5),
+        drag_normal: 2.1,
+        drag_tangential: 0.3,
+        added_mass_normal: 0.9,
+        added_mass_tangential: 0.2,
+        seabed_stiffness: 4.0e6,
+        seabed_damping: 2.5e5,
+        friction_speed: 0.02,
+    };
+    if let scene::file::CouplingDef::Catenary { model, .. } = &mut loaded.file.couplings[0] {
+        *model = LineModel::Dynamic(tuned);
+    }
+    let text = scene::to_ron(&loaded.file).unwrap();
+    assert!(text.contains("model: Dynamic(\n"), "written with one pair of parentheses:\n{text}");
+    let again = scene::parse(&text, Path::new("saved.ron")).unwrap_or_else(|e| panic!("{e}\n{text}"));
+    match &again.file.couplings[0] {
+        scene::file::CouplingDef::Catenary { model, .. } => assert_eq!(*model, LineModel::Dynamic(tuned)),
+        other => panic!("not a catenary: {other:?}"),
+    }
+}

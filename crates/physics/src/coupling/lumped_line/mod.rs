@@ -15,6 +15,7 @@
 //! - [`run`]: what a run of the line remembers and how it advances to the next evaluation.
 
 pub mod discrete;
+pub mod file_form;
 pub mod nodes;
 pub mod parameters;
 pub mod run;

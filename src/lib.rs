@@ -13,6 +13,7 @@ pub mod fit;
 #[cfg(feature = "gui")]
 pub mod gui;
 pub mod quantity;
+pub mod run_length;
 pub mod runner;
 pub mod statics;
 pub mod study;

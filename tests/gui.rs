@@ -586,3 +586,22 @@ fn a_fit_with_bad_choices_is_refused_with_one_line() {
     assert!(harness.state().fit().session.is_none(), "nothing ran");
     assert_eq!(spring_stiffness(&world(&harness)), 100.0);
 }
+
+/// Play refuses a scene whose duration at its time step is past the run limit (the run-length
+/// check of `tether record`, `tether::run_length`): the spring at dt = 1e-12 s for its 10 s
+/// needs 10¹³ steps; the panel says so, names dt, and the run stays at t = 0.
+#[test]
+fn play_refuses_a_run_that_cannot_end() {
+    let endless = SPRING.replace("dt: 0.001,", "dt: 1e-12,\n    duration: 10.0,");
+    let dir = scenes_folder(&[("endless.ron", &endless)]);
+    let mut harness = harness(panel(dir.path()));
+    open_from_list(&mut harness, "endless.ron");
+    harness.key_press(egui::Key::Space);
+    until(&mut harness, "Play's refusal", |p| p.log().any(|line| line.error && line.text.contains("not started")));
+    let refusal = harness.state().log().find(|line| line.text.contains("not started")).unwrap().text.clone();
+    assert!(refusal.contains("the run needs 1.00e13 integrator steps, past the limit of 1e8"), "{refusal}");
+    assert!(refusal.contains("the time step dt = 1.000e-12 s is"), "{refusal}");
+    let status = harness.state().status().expect("the scene is loaded");
+    assert!(!status.running, "the run did not start");
+    assert_eq!(world(&harness).steps(), 0);
+}

@@ -173,3 +173,40 @@ fn empty_wrong_types_huge_and_negative_inputs_are_errors() {
         assert_eq!(error.lines().count(), 1, "{error}");
     }
 }
+
+/// A run whose step count (duration ÷ dt × sub-steps) is past `--max-steps` is refused before
+/// its first step, in one line naming the value that makes it long, with nothing written:
+/// `floating_box` at dt = 1e-12 s for 0.5 s needs 5·10¹¹ steps; `spring_mass` for 2 s at its
+/// own dt (10⁻³ s) needs 2,000, past a limit of 1,000 set by the flag, and runs under 2,000.
+#[test]
+fn a_run_past_the_step_limit_is_refused_before_it_starts() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("long.rrd");
+    let scene = common::repo("scenes/floating_box.ron");
+    let long = tether()
+        .args(["record", scene.to_str().unwrap(), "-o", out.to_str().unwrap(), "--duration", "0.5", "--dt", "1e-12"])
+        .output()
+        .unwrap();
+    assert_eq!(long.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&long.stderr);
+    let error: Vec<&str> = stderr.lines().filter(|l| l.starts_with("error:")).collect();
+    assert_eq!(error.len(), 1, "{stderr}");
+    assert!(error[0].contains("the run needs 5.00e11 integrator steps, past the limit of 1e8"), "{stderr}");
+    assert!(error[0].contains("the time step dt = 1.000e-12 s is"), "{stderr}");
+    assert!(error[0].contains(" days at the speed of its first steps"), "{stderr}");
+    assert!(!out.exists(), "nothing is written for a refused run");
+
+    let spring = common::repo("scenes/spring_mass.ron");
+    let record = |max_steps: &str| {
+        tether()
+            .args(["record", spring.to_str().unwrap(), "-o", out.to_str().unwrap(), "--duration", "2"])
+            .args(["--max-steps", max_steps])
+            .output()
+            .unwrap()
+    };
+    let refused = record("1000");
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert!(stderr.contains("the run needs 2.00e3 integrator steps, past the limit of 1e3"), "{stderr}");
+    assert!(stderr.contains("the duration 2 s at dt = 1.000e-3 s: shorten the duration"), "{stderr}");
+    assert!(record("2000").status.success());
+}

@@ -50,6 +50,9 @@ pub struct RecordArgs {
     /// each kind of entity.
     #[arg(long)]
     timing: bool,
+    /// Refuse a run of more integrator steps than this (duration ÷ dt × sub-steps).
+    #[arg(long, value_name = "N", default_value_t = tether::run_length::DEFAULT_MAX_STEPS)]
+    max_steps: u64,
 }
 
 /// How a recording run ended.
@@ -121,6 +124,8 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     }
     let duration = args.duration.unwrap_or(scene.file.duration);
     super::warn_if_unstable(&scene.world);
+    tether::run_length::check(&scene.world, duration, args.max_steps)
+        .map_err(|long| anyhow::anyhow!("{long} (or --max-steps N)"))?;
     let world = &mut scene.world;
     let dt = world.dt();
     let total_steps = (duration / dt).round().max(1.0) as u64;

@@ -137,7 +137,8 @@ impl OpenScene {
             bodies: loaded.bodies,
             watch,
         };
-        Ok(Loaded { scene, run: Run { label, world: loaded.world }, notes })
+        let run = Run { label, world: loaded.world, duration: scene.tuned.duration };
+        Ok(Loaded { scene, run, notes })
     }
 
     /// Loads the scene at `path` as its file says it, and runs `variant` of it (a sweep's
@@ -151,7 +152,8 @@ impl OpenScene {
         let case = scene::build_variant(&base.text, path, variant)?;
         notes.extend(case.warnings.iter().map(|w| format!("warning: {w}")));
         let scene = Self { knobs: SceneKnobs::of(&case.file), tuned: case.file, bodies: case.bodies, ..base };
-        Ok(Loaded { scene, run: Run { label, world: case.world }, notes })
+        let run = Run { label, world: case.world, duration: scene.tuned.duration };
+        Ok(Loaded { scene, run, notes })
     }
 
     /// What the file on disk is doing, once it has been quiet for `settle`.

@@ -20,10 +20,12 @@ pub enum Speed {
     Max,
 }
 
-/// A scene ready to run: its world and a label for recordings and messages.
+/// A scene ready to run: its world, a label for recordings and messages, and the scene's
+/// `duration` \[s], the run whose length Play checks first (`crate::run_length`).
 pub struct Run {
     pub label: String,
     pub world: World,
+    pub duration: f64,
 }
 
 /// What the GUI asks of the simulation thread.

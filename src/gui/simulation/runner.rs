@@ -13,6 +13,7 @@ use super::protocol::{Command, Report, Run, Speed};
 use super::recording::Recording;
 use super::status::{self, RunState};
 use crate::gui::stream::Sinks;
+use crate::run_length;
 use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender, TryRecvError};
 use std::time::{Duration, Instant};
 use tether_physics::coupling::Coupling;
@@ -188,8 +189,12 @@ impl Runner {
     }
 
     fn play(&mut self) {
-        if self.run.is_none() {
+        let Some(run) = &self.run else {
             return self.report(Report::Error("no scene loaded".into()));
+        };
+        if let Err(long) = run_length::check(&run.world, run.duration, run_length::DEFAULT_MAX_STEPS) {
+            return self
+                .report(Report::Error(format!("not started: the scene's {} s at this timing: {long}", run.duration)));
         }
         if let Some(failure) = &self.failure {
             return self.report(Report::Error(format!("the run stopped ({failure}): reset it first")));
@@ -305,16 +310,24 @@ impl Runner {
         self.report_failure(finished);
     }
 
+    /// The new time step, sub-steps and integrator; a running scene that the new timing makes
+    /// too long to end (`crate::run_length`) is paused, with Play's message.
     fn set_timing(&mut self, timing: Timing) {
         let Some(run) = &mut self.run else { return };
         let report = match run.world.set_timing(timing) {
-            Ok(()) => Report::Message(format!(
-                "dt = {:e} s, {} substep(s), {:?} from t = {:.4} s",
-                timing.dt,
-                run.world.substeps(),
-                timing.integrator.name(),
-                run.world.time()
-            )),
+            Ok(()) => match run_length::check(&run.world, run.duration, run_length::DEFAULT_MAX_STEPS) {
+                Err(long) if self.running => {
+                    self.running = false;
+                    Report::Error(format!("paused: the scene's {} s at this timing: {long}", run.duration))
+                }
+                _ => Report::Message(format!(
+                    "dt = {:e} s, {} substep(s), {:?} from t = {:.4} s",
+                    timing.dt,
+                    run.world.substeps(),
+                    timing.integrator.name(),
+                    run.world.time()
+                )),
+            },
             Err(error) => Report::Error(error.to_string()),
         };
         self.report(report);

@@ -12,6 +12,7 @@ pub mod chart_style;
 pub mod fit;
 #[cfg(feature = "gui")]
 pub mod gui;
+pub mod line_hint;
 pub mod quantity;
 pub mod run_length;
 pub mod runner;

@@ -253,3 +253,52 @@ fn forces_json_reports_the_catenary_solution() {
     assert_relative_eq!(f1[0], h, max_relative = 1e-12);
     assert_relative_eq!(f1[2], h * u1.sinh(), max_relative = 1e-9);
 }
+
+/// `chain_forced_surge`'s chain as a quasi-static catenary: its first transverse period is
+/// `2 (L − L_B) / √(T̄ / (λ0 + ρ A_d))` from the catenary's own state, 1.39 times shorter than the
+/// fairlead's 10 s — and the drag at the fairlead's `2 · 2π/10` m/s on the 0.0648 m chain is
+/// `½ · 1025 · 2.4 · 0.0648 · 1.2566² / (22.41 · g)` = 0.573 of its wet weight — so `tether check`
+/// suggests `Dynamic`, with the numbers; driven at a tenth of the amplitude over 200 s it holds;
+/// the dynamic line gets no hint.
+#[test]
+fn check_says_when_a_quasi_static_line_is_likely_wrong() {
+    let text = std::fs::read_to_string(common::repo("scenes/chain_forced_surge.ron")).unwrap();
+    let start = text.find("model: Dynamic(").unwrap();
+    let end = start + text[start..].find("),\n        ),").unwrap() + 1;
+    let quasi_static = format!("{}model: QuasiStatic{}", &text[..start], &text[end..]);
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("chain_qs.ron");
+    std::fs::write(&path, &quasi_static).unwrap();
+
+    let scene = tether_scene::parse(&quasi_static, &path).unwrap();
+    let state = scene.world.line_state(0).unwrap();
+    let (t1, t2) = state.end_tensions();
+    let speed = (0.5 * (t1 + t2) / (25.79 + 1025.0 * 0.003298)).sqrt();
+    let period = 2.0 * (250.0 - state.grounded_length()) / speed;
+    let measures = tether::line_hint::measures(&scene.world, 0).expect("a driven quasi-static line");
+    assert_relative_eq!(measures.transverse_period, period, max_relative = 1e-12);
+    assert!((7.0..7.5).contains(&period), "T₁ = {period} s");
+    let wet_weight = (25.79 - 1025.0 * 0.003298) * scene.world.gravity().norm();
+    let diameter = (4.0 * 0.003298 / std::f64::consts::PI).sqrt();
+    let drag = 0.5 * 1025.0 * 2.4 * diameter * (0.4 * std::f64::consts::PI).powi(2) / wet_weight;
+    assert_relative_eq!(measures.drag_ratio.unwrap(), drag, max_relative = 1e-12);
+    assert_relative_eq!(drag, 0.5727, max_relative = 1e-3);
+    assert!(measures.suggests_dynamic());
+    let out = tether(&["check", path.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let hint = format!("hint: likely wrong quasi-static: try Dynamic: first transverse period T₁ = {period:.3} s");
+    assert!(stdout.contains(&hint), "{stdout}");
+
+    let slow = quasi_static.replace(
+        "Harmonic(amplitude: (2.0, 0.0, 0.0), period: 10.0)",
+        "Harmonic(amplitude: (0.2, 0.0, 0.0), period: 200.0)",
+    );
+    let slow = tether_scene::parse(&slow, &path).unwrap();
+    let measures = tether::line_hint::measures(&slow.world, 0).unwrap();
+    assert!(!measures.suggests_dynamic(), "{measures}");
+    assert!(measures.to_string().starts_with("quasi-static holds"), "{measures}");
+
+    let dynamic = tether(&["check", common::repo("scenes/chain_forced_surge.ron").to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&dynamic.stdout);
+    assert!(!stdout.contains("transverse period"), "{stdout}");
+}

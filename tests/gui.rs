@@ -605,3 +605,33 @@ fn play_refuses_a_run_that_cannot_end() {
     assert!(!status.running, "the run did not start");
     assert_eq!(world(&harness).steps(), 0);
 }
+
+/// The quasi-static line hint of `tether check` beside the model switch: `chain_forced_surge`'s
+/// chain as a catenary, surged at 10 s against its first transverse period of 7.2 s, says
+/// "likely wrong quasi-static: try Dynamic" with the numbers under its switch; switched to
+/// dynamic, the hint goes.
+#[test]
+fn the_window_says_when_a_quasi_static_line_is_likely_wrong() {
+    let text = std::fs::read_to_string(repo("scenes/chain_forced_surge.ron")).unwrap();
+    let start = text.find("model: Dynamic(").unwrap();
+    let end = start + text[start..].find("),\n        ),").unwrap() + 1;
+    let quasi_static = format!("{}model: QuasiStatic{}", &text[..start], &text[end..]);
+    let dir = scenes_folder(&[("chain_qs.ron", &quasi_static)]);
+    let mut harness = tall_harness(panel(dir.path()));
+    open_from_list(&mut harness, "chain_qs.ron");
+    until(&mut harness, "the line's hint", |p| {
+        p.status().is_some_and(|s| s.line_hints.first().is_some_and(Option::is_some))
+    });
+    harness.run_steps(2);
+    let measures = harness.state().status().unwrap().line_hints[0].unwrap();
+    assert!(measures.suggests_dynamic());
+    let shown = measures.to_string();
+    assert!(shown.starts_with("likely wrong quasi-static: try Dynamic: first transverse period T₁ = 7."), "{shown}");
+    harness.get_by_label(&shown);
+
+    harness.get_by_label("dynamic (lumped mass)").click();
+    until(&mut harness, "the switch", |p| p.log().any(|l| l.text.starts_with("coupling \"chain\" applied")));
+    until(&mut harness, "the hint to go", |p| p.status().is_some_and(|s| s.line_hints[0].is_none()));
+    harness.run_steps(2);
+    assert!(harness.query_by_label_contains("likely wrong quasi-static").is_none());
+}

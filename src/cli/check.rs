@@ -83,6 +83,9 @@ fn report(world: &World, label: &str) -> String {
                 if let LineModel::Dynamic(parameters) = &line.model {
                     dynamic_line_report(&mut out, world, index, line, parameters);
                 }
+                if let Some(measures) = tether::line_hint::measures(world, index) {
+                    let _ = writeln!(out, "  {}{measures}", if measures.suggests_dynamic() { "hint: " } else { "" });
+                }
                 if let Some(state) = world.line_state(index) {
                     let (t1, t2) = state.end_tensions();
                     let _ = writeln!(

@@ -444,7 +444,8 @@ impl ControlPanel {
             ui.label("Open a scene to tune its couplings.");
             return;
         };
-        let actions = tuning::ui(ui, open.knobs.couplings.knobs_mut(), &open.file);
+        let hints = self.status.as_ref().map_or(&[][..], |s| s.line_hints.as_slice());
+        let actions = tuning::ui(ui, open.knobs.couplings.knobs_mut(), &open.file, hints);
         for action in actions {
             match action {
                 TuningAction::Edited(index) => self.tune(KnobId::Coupling(index)),

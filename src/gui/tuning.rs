@@ -9,6 +9,7 @@
 //! law does not compile until it has its knobs here.
 
 use super::knobs::Knob;
+use crate::line_hint::Measures;
 use rerun::external::egui;
 use rerun::external::egui::emath::Numeric;
 use std::fmt::Display;
@@ -26,8 +27,14 @@ pub enum TuningAction {
 }
 
 /// Draws a section per coupling with its knobs and why a value was refused; `file` is what the
-/// scene file says (edited couplings are marked).
-pub fn ui(ui: &mut egui::Ui, knobs: &mut [Knob<CouplingDef, impl Display>], file: &SceneFile) -> Vec<TuningAction> {
+/// scene file says (edited couplings are marked); `hints`, by coupling, what the running world
+/// says of each driven quasi-static line (`crate::line_hint`), shown under its model switch.
+pub fn ui(
+    ui: &mut egui::Ui,
+    knobs: &mut [Knob<CouplingDef, impl Display>],
+    file: &SceneFile,
+    hints: &[Option<Measures>],
+) -> Vec<TuningAction> {
     let mut actions = Vec::new();
     ui.horizontal(|ui| {
         ui.strong("Couplings");
@@ -52,6 +59,9 @@ pub fn ui(ui: &mut egui::Ui, knobs: &mut [Knob<CouplingDef, impl Display>], file
             if coupling_knobs(ui, index, draft) {
                 actions.push(TuningAction::Edited(index));
             }
+            if let Some(Some(measures)) = hints.get(index) {
+                line_hint(ui, measures);
+            }
             if let Some(refusal) = refusal {
                 ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refusal}"));
             }
@@ -65,6 +75,17 @@ fn kind_name(def: &CouplingDef) -> &'static str {
         CouplingDef::SpringDamper { .. } => "spring-damper",
         CouplingDef::Catenary { .. } => "catenary",
         CouplingDef::Contact { .. } => "contact",
+    }
+}
+
+/// A quasi-static line's measures against its fairlead, in the warning colour when they
+/// suggest `Dynamic`.
+fn line_hint(ui: &mut egui::Ui, measures: &Measures) {
+    let text = egui::RichText::new(measures.to_string()).small();
+    if measures.suggests_dynamic() {
+        ui.add(egui::Label::new(text.color(ui.visuals().warn_fg_color)).wrap());
+    } else {
+        ui.add(egui::Label::new(text.weak()).wrap());
     }
 }
 

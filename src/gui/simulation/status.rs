@@ -2,6 +2,7 @@
 //! steps, the contacts the estimator needs, the bodies' states. Built from the world by the
 //! simulation thread once per tick.
 
+use crate::line_hint::{self, Measures};
 use tether_physics::body::BodyState;
 use tether_physics::coupling::contact::Opposing;
 use tether_physics::coupling::{Coupling, CouplingKind};
@@ -30,6 +31,9 @@ pub struct Status {
     pub substeps: u32,
     /// Stable time step of every coupling [s] (`None`: nothing limits it), in scene order.
     pub coupling_limits: Vec<(String, Option<f64>)>,
+    /// Per coupling, in scene order: a driven quasi-static line's measures against its
+    /// fairlead (`crate::line_hint`: likely wrong quasi-static, or holds), `None` otherwise.
+    pub line_hints: Vec<Option<Measures>>,
     /// Stable time step set by the fastest spinning body, if any spins [s].
     pub rotation_limit: Option<(String, f64)>,
     /// Stable time step of each floating body under the water's stiffness and drag [s].
@@ -120,6 +124,7 @@ pub fn status(world: &World, run: &RunState) -> Status {
             .enumerate()
             .map(|(i, c)| (c.name.clone(), coupling_limit(i)))
             .collect(),
+        line_hints: (0..world.couplings().len()).map(|i| line_hint::measures(world, i)).collect(),
         rotation_limit,
         water_limits,
         impact_limits: world.impact_limits().iter().map(|l| (l.describe(world.system()), l.dt)).collect(),

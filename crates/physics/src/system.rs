@@ -354,20 +354,9 @@ impl System {
         self.step_lines(evaluation, time)
     }
 
-    /// [`System::apply_lines`] for a scene that has dynamic lines, built for the processor's
-    /// vector instructions ([`SupportedLevel::run`]: the nodes' forces, their kicks and the
-    /// waves' sums of [`crate::water::waves`] four components to a register).
+    /// [`System::apply_lines`] for a scene that has dynamic lines.
     #[inline(never)]
     fn step_lines(&self, evaluation: &mut Evaluation, time: f64) -> Result<(), EvaluationError> {
-        self.level.run(
-            #[inline(always)]
-            || self.step_lines_at_level(evaluation, time),
-        )
-    }
-
-    /// The body of [`System::step_lines`], inlined into each level's build.
-    #[inline(always)]
-    fn step_lines_at_level(&self, evaluation: &mut Evaluation, time: f64) -> Result<(), EvaluationError> {
         let Evaluation { frames, loads, forces, lines, .. } = evaluation;
         let water = self.water.as_ref().map(|stage| &stage.water);
         for run in lines.iter_mut() {

@@ -3,8 +3,7 @@
 //! forces of the portable build, to 1e-12 relative, on a fixed set of states that covers every
 //! path: plane contacts with friction (faces in range and out of it, one plane or the six walls
 //! of a domain box), a body–body contact, linear and progressive springs with dampers, and a
-//! catenary; on a barge in an irregular sea, the water's forces; and on `moored_buoy` with its
-//! chains dynamic in a JONSWAP sea, the dynamic lines' stage (nodes and the waves' sums).
+//! catenary; and on a barge in an irregular sea, the water's forces.
 //! On a processor without AVX2 there is only the portable build, and nothing to compare.
 
 use tether_test_support as common;
@@ -248,41 +247,6 @@ fn every_build_of_the_water_stage_gives_the_portable_forces() {
                 && close(a.submerged_volume, b.submerged_volume)
                 && close(a.power, b.power);
             assert!(same, "{level:?}, case {k}: {a:?} vs {b:?}");
-        }
-    }
-}
-
-/// The dynamic lines' stage is built per level too (the nodes' forces and kicks, the waves'
-/// harmonic sums four components to a register): `moored_buoy` with its three chains dynamic
-/// (N = 40, MoorDyn's chain) in a 50-component JONSWAP sea, 20 s at the scene's RK4 step, gives
-/// every build the portable build's states, to 1e-12 relative.
-#[test]
-fn every_build_of_the_lines_stage_runs_the_portable_motion() {
-    let text = std::fs::read_to_string(common::repo("scenes/moored_buoy.ron")).expect("a shipped scene");
-    let dynamic = "model: Dynamic(segments: 40, damping: Ratio(0.8), drag_normal: 2.4, drag_tangential: 1.15, \
-                   added_mass_normal: 1.0, added_mass_tangential: 0.5),";
-    let jonswap = "waves: Jonswap(hs: 2.5, tp: 9.0, gamma: 3.3, heading_deg: 0.0, components: 50, seed: 1)";
-    let text = text
-        .replace("model: QuasiStatic,", dynamic)
-        .replace("waves: Regular(height: 2.0, period: 8.0, heading_deg: 0.0)", jonswap);
-    assert!(text.contains(jonswap) && text.matches(dynamic).count() == 3);
-    let world = common::scene(&text).world;
-    let run = |level: Level| {
-        let mut system = world.system().clone();
-        assert!(system.use_level(level));
-        let mut world = World::new(system, world.timing()).expect("the scene starts");
-        while world.time() < 20.0 {
-            world.step().expect("a healthy run");
-        }
-        world.synchronized_states()
-    };
-    let portable = run(Level::Portable);
-    for level in Level::available().into_iter().filter(|&l| l != Level::Portable) {
-        for (i, (a, b)) in run(level).iter().zip(&portable).enumerate() {
-            let same = close_vectors(&a.position, &b.position)
-                && close_vectors(&a.velocity, &b.velocity)
-                && close_vectors(&a.angular_velocity, &b.angular_velocity);
-            assert!(same && a.orientation.angle_to(&b.orientation) <= 1e-12, "{level:?}, body {i}: {a:?} vs {b:?}");
         }
     }
 }

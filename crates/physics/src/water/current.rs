@@ -49,7 +49,6 @@ impl Current {
     }
 
     /// `U(z)` [m/s] at height `z` \[m] (unramped).
-    #[inline(always)]
     pub fn velocity(&self, z: f64) -> Vec3 {
         match (self.profile, self.depth) {
             (Profile::PowerLaw, Some(h)) => {

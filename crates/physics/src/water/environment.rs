@@ -169,7 +169,6 @@ impl Water {
     }
 
     /// `½ (1 − cos(π t/T_r))` before `T_r`, 1 after.
-    #[inline(always)]
     pub fn ramp(&self, time: f64) -> f64 {
         if time >= self.ramp {
             1.0
@@ -220,7 +219,6 @@ impl Water {
     }
 
     /// The waves' flow at `time` \[s] into `instant`, for [`Water::flow_at`] at many points.
-    #[inline(always)]
     pub fn flow_instant(&self, time: f64, instant: &mut FlowInstant) {
         self.sea.flow_instant(time, instant);
     }

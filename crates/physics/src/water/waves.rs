@@ -134,7 +134,6 @@ impl Sea {
     }
 
     /// `ε_i = e^{−2 k_i h}` (0 in deep water).
-    #[inline(always)]
     fn epsilon(&self, c: &WaveComponent) -> f64 {
         self.depth.map_or(0.0, |h| (-2.0 * c.wave_number * h).exp())
     }
@@ -157,7 +156,6 @@ impl Sea {
 
     /// The sea's flow at `time` \[s] into `instant`: `c_i = ω_i a_i e^{i(φ_i − ω_i t)}/(1 − ε_i)`
     /// and `d_i = ω_i c_i`, for [`Sea::kinematics_at`].
-    #[inline(always)]
     pub fn flow_instant(&self, time: f64, instant: &mut FlowInstant) {
         let padded = self.components.len().div_ceil(CHAINS) * CHAINS;
         let FlowInstant { velocity, acceleration } = instant;

@@ -87,7 +87,6 @@ impl NodeForces {
 /// The forces on every node of `line` at `nodes` in the water's `flow` at each node (empty:
 /// none), into `out`. The end nodes move with their bodies and pass them everything, their
 /// half segment's drag included (as MoorDyn's coupled points); only their inertia is left out.
-#[inline(always)]
 pub fn evaluate(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut NodeForces) {
     let n = line.segments;
     out.resize(n);

@@ -133,7 +133,6 @@ impl LineRun {
     ///
     /// # Errors
     /// A node that is no longer finite.
-    #[inline(always)]
     pub fn advance(
         &mut self,
         line: &Catenary,
@@ -187,23 +186,18 @@ impl LineRun {
     }
 
     /// The water's velocity and acceleration at each node at `time` (none without water).
-    #[inline(always)]
     fn fill_flow(&mut self, water: Option<&Water>, nodes: &LineNodes, time: f64) {
         let Some(water) = water else {
             self.flow.clear();
             return;
         };
         water.flow_instant(time, &mut self.sea);
-        self.flow.resize(nodes.positions.len(), (Vec3::zeros(), Vec3::zeros()));
-        // A plain loop, not `extend` over a map: the sums must inline into the vector build.
-        for (flow, position) in self.flow.iter_mut().zip(&nodes.positions) {
-            *flow = water.flow_at(&self.sea, position);
-        }
+        self.flow.clear();
+        self.flow.extend(nodes.positions.iter().map(|p| water.flow_at(&self.sea, p)));
     }
 
     /// `count` sub-steps of `h` \[s] from `nodes`, the ends moving straight from where they are
     /// to `ends`; returns the work of the forces without potential on the interior nodes \[J].
-    #[inline(always)]
     fn step_nodes(
         &mut self,
         line: &Discrete,
@@ -255,7 +249,6 @@ impl LineRun {
 
     /// `v ← v + τ M⁻¹F` on the interior nodes with the forces in the scratch; returns the work
     /// of the forces without potential over the kick, against the kick's mean velocity \[J].
-    #[inline(always)]
     fn half_kick(&self, line: &Discrete, nodes: &mut LineNodes, tau: f64) -> f64 {
         let mut work = 0.0;
         for i in 1..line.segments {

@@ -7,7 +7,7 @@
 use super::current::{Current, Profile};
 use super::dispersion::wavelength;
 use super::spectrum::Jonswap;
-use super::waves::{Sea, WaveComponent};
+use super::waves::{FlowInstant, Sea, WaveComponent};
 use crate::math::Vec3;
 use crate::parameter::{Bound, ParameterError, require};
 
@@ -199,6 +199,41 @@ impl Water {
         }
         let (waves, acceleration) =
             if self.sea.is_calm() { (Vec3::zeros(), Vec3::zeros()) } else { self.sea.kinematics(point, time) };
+        ((waves + self.current.velocity(point.z)) * ramp, acceleration * ramp)
+    }
+
+    /// The same water with its sea summed component by component, as before the harmonic sums
+    /// (a component of zero amplitude heading across the others makes it not harmonic).
+    #[cfg(test)]
+    pub(crate) fn summed_by_component(&self) -> Self {
+        let mut components = self.sea.components().to_vec();
+        let across = components.first().map_or(0.0, |c| c.heading) + std::f64::consts::FRAC_PI_2;
+        components.push(WaveComponent {
+            amplitude: 0.0,
+            frequency: 1.0,
+            wave_number: 0.1,
+            heading: across,
+            phase: 0.0,
+        });
+        Self { sea: Sea::new(components, self.spec.level, self.spec.depth), ..self.clone() }
+    }
+
+    /// The waves' flow at `time` \[s] into `instant`, for [`Water::flow_at`] at many points.
+    pub fn flow_instant(&self, time: f64, instant: &mut FlowInstant) {
+        self.sea.flow_instant(time, instant);
+    }
+
+    /// [`Water::flow`] at `point` at the time of `instant` ([`Water::flow_instant`]): the same
+    /// velocity and acceleration to round-off, the waves' sum taken by powers of one complex
+    /// number where the sea is harmonic ([`super::waves`]).
+    #[inline(always)]
+    pub fn flow_at(&self, instant: &FlowInstant, point: &Vec3) -> (Vec3, Vec3) {
+        let ramp = self.ramp(instant.time());
+        if ramp == 0.0 {
+            return (Vec3::zeros(), Vec3::zeros());
+        }
+        let (waves, acceleration) =
+            if self.sea.is_calm() { (Vec3::zeros(), Vec3::zeros()) } else { self.sea.kinematics_at(instant, point) };
         ((waves + self.current.velocity(point.z)) * ramp, acceleration * ramp)
     }
 }

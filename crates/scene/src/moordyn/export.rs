@@ -4,7 +4,7 @@
 //!
 //! | Tether | MoorDyn |
 //! |---|---|
-//! | `Catenary` (dynamic) | a line and a line type of its λ0, d = √(4 A_d/π), EA = D L, BA or −ζ, C_dn, C_an, C_dt, C_at |
+//! | `Catenary` (dynamic) | a line and a line type of its λ0, d = √(4 A_d/π) (a steel rod's when A_d = 0, [`diameter_of`]), EA = D L, BA or −ζ, C_dn, C_an, C_dt, C_at |
 //! | `Catenary` (quasi-static) | the same with `segments` (the export's flag) and the coefficients a line switched to dynamic gets ([`LineModelDef::wire`]) |
 //! | world end | a Fixed point (one per position) |
 //! | body with its rotation held, translation free | a Free point (the mapping's point mass, inverted) |
@@ -68,7 +68,8 @@ pub fn export(file: &SceneFile, bodies: &[RigidBody], source: &str, segments: u3
     let mut left_out = Vec::new();
     let mut seabed = None;
     for coupling in &file.couplings {
-        let CouplingDef::Catenary { name, end1, end2, mass_per_length, length, stiffness, displaced_area, model } = coupling
+        let CouplingDef::Catenary { name, end1, end2, mass_per_length, length, stiffness, displaced_area, model } =
+            coupling
         else {
             left_out.push(coupling.name().to_string());
             continue;
@@ -96,7 +97,7 @@ pub fn export(file: &SceneFile, bodies: &[RigidBody], source: &str, segments: u3
             DampingDef::Ratio(zeta) => -zeta,
             DampingDef::Coefficient(ba) => ba,
         };
-        let diameter = (4.0 * displaced_area / std::f64::consts::PI).sqrt();
+        let diameter = diameter_of(*displaced_area, *mass_per_length);
         let values = [
             diameter,
             *mass_per_length,
@@ -134,7 +135,8 @@ pub fn export(file: &SceneFile, bodies: &[RigidBody], source: &str, segments: u3
             let hull = hull_volume(&file.bodies[body]);
             let (mass, volume) = (point.values[0].max(0.0), point.values[1].max(0.0));
             let added = file.bodies[body].hydro.as_ref().map_or(0.0, |h| h.added_mass[0]);
-            point.values = [clean(mass), clean(volume), point.values[2], if volume > 0.0 { added * hull / volume } else { 0.0 }];
+            point.values =
+                [clean(mass), clean(volume), point.values[2], if volume > 0.0 { added * hull / volume } else { 0.0 }];
         }
     }
     let mut text = String::new();
@@ -145,6 +147,18 @@ pub fn export(file: &SceneFile, bodies: &[RigidBody], source: &str, segments: u3
     write_lines(&mut text, &lines, &types);
     write_options(&mut text, file, &lines, &types, seabed.unwrap_or((3.0e6, 3.0e5)));
     text
+}
+
+/// Density of the steel rod a line without a displaced area is written as \[kg/m³] (the rod
+/// Tether's seabed bears such a line on, PHYSICS.md §8 "Seabed width").
+pub const STEEL_DENSITY: f64 = 7850.0;
+
+/// MoorDyn's diameter `d = √(4 A_d/π)` \[m]; a line without a displaced area (a dry line) is
+/// written as a steel rod of its mass, `√(4 λ0/(π ρ_steel))`: MoorDyn's lines need `d > 0`
+/// (its drag and seabed divide by it), and in water that rod's buoyancy is then counted.
+pub fn diameter_of(displaced_area: f64, mass_per_length: f64) -> f64 {
+    let area = if displaced_area > 0.0 { displaced_area } else { mass_per_length / STEEL_DENSITY };
+    (4.0 * area / std::f64::consts::PI).sqrt()
 }
 
 /// A value within a few rounding errors of zero is zero (a point's mass less its end nodes').
@@ -186,11 +200,22 @@ fn bits(v: [f64; 3]) -> [u64; 3] {
 }
 
 /// The index of the MoorDyn point an end is on, adding it (and its body) when new.
-fn point_of(file: &SceneFile, bodies: &[RigidBody], end: &EndDef, points: &mut Vec<PointRow>, body_ids: &mut Vec<usize>) -> usize {
+fn point_of(
+    file: &SceneFile,
+    bodies: &[RigidBody],
+    end: &EndDef,
+    points: &mut Vec<PointRow>,
+    body_ids: &mut Vec<usize>,
+) -> usize {
     let (key, row) = match end {
         EndDef::World(position) => (
             PointKey::World(bits(*position)),
-            PointRow { kind: "Fixed".into(), position: *position, values: [0.0; 4], key: PointKey::World(bits(*position)) },
+            PointRow {
+                kind: "Fixed".into(),
+                position: *position,
+                values: [0.0; 4],
+                key: PointKey::World(bits(*position)),
+            },
         ),
         EndDef::Body { body, point } => {
             // Ends name bodies the build checked exist; an unknown one is written at the origin.
@@ -202,7 +227,10 @@ fn point_of(file: &SceneFile, bodies: &[RigidBody], end: &EndDef, points: &mut V
                 let cda = hydro.map_or(0.0, |h| h.drag[0] * h.drag_areas.map_or(0.0, |a| a[0]));
                 let key = PointKey::PointMass(index);
                 let mass = bodies.get(index).map_or(def.master.mass, RigidBody::mass);
-                (key.clone(), PointRow { kind: "Free".into(), position: at, values: [mass, hull_volume(def), cda, 0.0], key })
+                (
+                    key.clone(),
+                    PointRow { kind: "Free".into(), position: at, values: [mass, hull_volume(def), cda, 0.0], key },
+                )
             } else {
                 if !body_ids.contains(&index) {
                     body_ids.push(index);
@@ -257,7 +285,9 @@ fn write_bodies(text: &mut String, file: &SceneFile, bodies: &[RigidBody], body_
         let (cg, inertia, mass) = bodies.get(*index).map_or(([0.0; 3], [1.0; 3], def.master.mass), |body| {
             let mass_properties = &body.mass_properties;
             let cg = turn.inverse() * (mass_properties.center_of_mass - Vec3::from(def.master.position));
-            let local = turn.to_rotation_matrix().matrix().transpose() * mass_properties.inertia_about_g * turn.to_rotation_matrix().matrix();
+            let local = turn.to_rotation_matrix().matrix().transpose()
+                * mass_properties.inertia_about_g
+                * turn.to_rotation_matrix().matrix();
             (cg.into(), [local[(0, 0)], local[(1, 1)], local[(2, 2)]], body.mass())
         });
         let hydro = def.hydro.as_ref();

@@ -140,21 +140,30 @@ pub fn read(sections: &[Section], last: usize) -> Result<Input, Located> {
     };
     refuse_sections(sections, &mut warnings)?;
     let line_types = match table(SectionKind::LineTypes) {
-        Some(section) => data_rows(section)?.iter().map(|row| line_type(row, &section.title)).collect::<Result<Vec<_>, _>>()?,
+        Some(section) => {
+            data_rows(section)?.iter().map(|row| line_type(row, &section.title)).collect::<Result<Vec<_>, _>>()?
+        }
         None => return Err(ends_early(last, "LINE TYPES")),
     };
     let bodies = match table(SectionKind::Bodies) {
-        Some(section) => data_rows(section)?.iter().map(|row| body(row, &mut warnings)).collect::<Result<Vec<_>, _>>()?,
+        Some(section) => {
+            data_rows(section)?.iter().map(|row| body(row, &mut warnings)).collect::<Result<Vec<_>, _>>()?
+        }
         None => Vec::new(),
     };
     let points = match table(SectionKind::Points) {
-        Some(section) => data_rows(section)?.iter().map(|row| point(row, bodies.len())).collect::<Result<Vec<_>, _>>()?,
+        Some(section) => {
+            data_rows(section)?.iter().map(|row| point(row, bodies.len())).collect::<Result<Vec<_>, _>>()?
+        }
         None => return Err(ends_early(last, "POINTS")),
     };
     let lines = match table(SectionKind::Lines) {
         Some(section) => {
             let order = LineColumns::of(section)?;
-            data_rows(section)?.iter().map(|row| line(row, order, &line_types, &points)).collect::<Result<Vec<_>, _>>()?
+            data_rows(section)?
+                .iter()
+                .map(|row| line(row, order, &line_types, &points))
+                .collect::<Result<Vec<_>, _>>()?
         }
         None => return Err(ends_early(last, "LINES")),
     };
@@ -198,7 +207,9 @@ fn refuse_sections(sections: &[Section], warnings: &mut Vec<Located>) -> Result<
                 };
                 if let Some(row) = rows.first() {
                     let what = match section.kind {
-                        SectionKind::Rods => "rods are not modelled by Tether (refused: the lines they hold would be wrong)",
+                        SectionKind::Rods => {
+                            "rods are not modelled by Tether (refused: the lines they hold would be wrong)"
+                        }
                         SectionKind::Failure => "line failures are not modelled by Tether (refused)",
                         _ => "synthetic-rope (Syrope) lines are not modelled by Tether (refused)",
                     };
@@ -278,7 +289,11 @@ fn number(field: Field, what: &str) -> Result<f64, Located> {
 fn non_negative(field: Field, what: &str) -> Result<f64, Located> {
     let value = number(field, what)?;
     if value < 0.0 {
-        return Err(Located { line: field.line, col: field.col, message: format!("{what} must be ≥ 0, found {value}") });
+        return Err(Located {
+            line: field.line,
+            col: field.col,
+            message: format!("{what} must be ≥ 0, found {value}"),
+        });
     }
     Ok(value)
 }
@@ -332,7 +347,10 @@ fn line_type(row: &Row, title: &str) -> Result<LineType, Located> {
         return Err(Located {
             line: row.line,
             col: row.fields[10].col,
-            message: format!("line type \"{}\": vortex-induced vibration (Cl ≠ 0) is not modelled by Tether (refused)", line_type.name),
+            message: format!(
+                "line type \"{}\": vortex-induced vibration (Cl ≠ 0) is not modelled by Tether (refused)",
+                line_type.name
+            ),
         });
     }
     Ok(line_type)
@@ -367,7 +385,10 @@ fn point(row: &Row, body_count: usize) -> Result<Point, Located> {
             return Err(Located {
                 line: kind.line,
                 col: kind.col,
-                message: format!("point {id}: unknown type \"{}\" (Fixed, Free, Coupled, Body<n> or Turbine<n>)", kind.text),
+                message: format!(
+                    "point {id}: unknown type \"{}\" (Fixed, Free, Coupled, Body<n> or Turbine<n>)",
+                    kind.text
+                ),
             });
         }
     };
@@ -411,7 +432,9 @@ fn body(row: &Row, warnings: &mut Vec<Located>) -> Result<Body, Located> {
             return Err(Located {
                 line: kind_field.line,
                 col: kind_field.col,
-                message: format!("body {id}: a pinned coupled body (moved but free to turn) is not modelled by Tether (refused)"),
+                message: format!(
+                    "body {id}: a pinned coupled body (moved but free to turn) is not modelled by Tether (refused)"
+                ),
             });
         }
         _ => {
@@ -430,7 +453,10 @@ fn body(row: &Row, warnings: &mut Vec<Located>) -> Result<Body, Located> {
             return Err(Located {
                 line: at.line,
                 col: at.col,
-                message: format!("body {id}: {what} must be {counts:?} numbers separated by | (≥ 0), found \"{}\"", at.text),
+                message: format!(
+                    "body {id}: {what} must be {counts:?} numbers separated by | (≥ 0), found \"{}\"",
+                    at.text
+                ),
             });
         }
         Ok(values)
@@ -504,12 +530,16 @@ fn line(row: &Row, columns: LineColumns, types: &[LineType], points: &[Point]) -
         let (word, number) = word_and_number(at.text);
         let refuse = |message: String| Located { line: at.line, col: at.col, message };
         if word.starts_with('R') && !word.starts_with("RO") || word == "ROD" {
-            return Err(refuse(format!("line {id}: ends on a rod (\"{}\"), which Tether does not model (refused)", at.text)));
+            return Err(refuse(format!(
+                "line {id}: ends on a rod (\"{}\"), which Tether does not model (refused)",
+                at.text
+            )));
         }
         if !["", "C", "CON", "P", "POINT"].contains(&word.as_str()) {
             return Err(refuse(format!("line {id}: end \"{}\" is not a point number", at.text)));
         }
-        let id_of_point = number.ok_or_else(|| refuse(format!("line {id}: end \"{}\" has no point number", at.text)))?;
+        let id_of_point =
+            number.ok_or_else(|| refuse(format!("line {id}: end \"{}\" has no point number", at.text)))?;
         points
             .iter()
             .position(|p| p.id == id_of_point)
@@ -539,7 +569,11 @@ fn check_unique(ids: impl Iterator<Item = (usize, usize)>, what: &str) -> Result
     let mut seen = std::collections::HashMap::new();
     for (id, line) in ids {
         if let Some(first) = seen.insert(id, line) {
-            return Err(Located { line, col: 1, message: format!("{what} {id} is declared again (first at line {first})") });
+            return Err(Located {
+                line,
+                col: 1,
+                message: format!("{what} {id} is declared again (first at line {first})"),
+            });
         }
     }
     Ok(())
@@ -569,9 +603,10 @@ fn read_options(section: &Section, warnings: &mut Vec<Located>) -> Result<Option
             "WAVEKIN" | "WATERKIN" if value.text != "0" => return Err(refuse("wave kinematics (files or grids)")),
             "CURRENTS" if value.text != "0" => return Err(refuse("current kinematics (files or grids)")),
             "SEAFLOORFILE" | "SEAFLOOR" => return Err(refuse("a 3-D seafloor from a file")),
-            "DTM" | "TSCHEME" | "CFL" | "DTOUT" | "DTIC" | "TMAXIC" | "CDSCALEIC" | "ICDFAC" | "THRESHIC" | "ICTHRESH"
-            | "ICDT" | "ICTMAX" | "ICGENDYNAMIC" | "FILEIC" | "WRITELOG" | "DISABLEOUTPUT" | "DISABLEOUTTIME" | "ECHO"
-            | "WAVEKIN" | "WATERKIN" | "CURRENTS" | "WRITEUNITS" | "OUTSWITCH" | "FRICDAMP" | "STATDYNFRICSCALE" => {
+            "DTM" | "TSCHEME" | "CFL" | "DTOUT" | "DTIC" | "TMAXIC" | "CDSCALEIC" | "ICDFAC" | "THRESHIC"
+            | "ICTHRESH" | "ICDT" | "ICTMAX" | "ICGENDYNAMIC" | "FILEIC" | "WRITELOG" | "DISABLEOUTPUT"
+            | "DISABLEOUTTIME" | "ECHO" | "WAVEKIN" | "WATERKIN" | "CURRENTS" | "WRITEUNITS" | "OUTSWITCH"
+            | "FRICDAMP" | "STATDYNFRICSCALE" => {
                 options.unused.push(format!("{} {}", name.text, value.text));
             }
             _ => warnings.push(Located {

@@ -8,12 +8,14 @@
 //! | Coupled point | a kinematic body at the point, at rest (give it a motion) |
 //! | Coupled body, Turbine | a kinematic body at its reference point |
 //! | Free body | a free rigid body: mass, CG, inertia, buoyancy and added mass from a box hull of its volume, drag areas |
-//! | Free point | a point mass: a body with its rotation held (three degrees of freedom, see [`point_mass`]) |
+//! | Free point | a point mass: a body with its rotation held (three degrees of freedom, see `point_mass`) |
 //! | g, WtrDnsty, WtrDpth, kBot, cBot, FrictionCoefficient | gravity, `water`, `seabed`, the lines' seabed, `line_friction` |
 
 use super::Located;
 use super::input::{Attachment, Body, BodyKind, Input, Line, LineType, Point};
-use crate::file::{BodyDef, CouplingDef, EndDef, InertiaDef, NodeDef, SceneFile, SeabedDef, ShapeDef, SupportDef, VelocityDef};
+use crate::file::{
+    BodyDef, CouplingDef, EndDef, InertiaDef, NodeDef, SceneFile, SeabedDef, ShapeDef, SupportDef, VelocityDef,
+};
 use crate::line_model::{DampingDef, LineModelDef};
 use crate::water::{HydroDef, WaterDef, WavesDef};
 use std::collections::BTreeMap;
@@ -46,11 +48,11 @@ pub struct Origin {
 ///
 /// # Errors
 /// What the scene cannot represent: a free point without water to balance its lines' end
-/// nodes (see [`point_mass`]), a free body without mass, bending stiffness that matters.
+/// nodes (see `point_mass`), a free body without mass, bending stiffness that matters.
 pub fn map(input: &Input) -> Result<Mapped, Located> {
     let mut warnings = input.warnings.clone();
     let mut origins = BTreeMap::new();
-    let water = (input.options.density > 0.0).then(|| WaterDef {
+    let water = (input.options.density > 0.0).then_some(WaterDef {
         density: input.options.density,
         level: 0.0,
         depth: Some(input.options.depth),
@@ -128,7 +130,12 @@ fn body_name(id: usize) -> String {
 /// Bending stiffness, which Tether's lines do not have, is left out with a warning when it
 /// acts over less than a segment — its length scale `(EI/|w|)^(1/3)` \[m] (w the line's wet
 /// weight per length [N/m]) is shorter than the segment `L/N` — and refused otherwise.
-fn check_bending(line: &Line, line_type: &LineType, options: &super::input::Options, warnings: &mut Vec<Located>) -> Result<(), Located> {
+fn check_bending(
+    line: &Line,
+    line_type: &LineType,
+    options: &super::input::Options,
+    warnings: &mut Vec<Located>,
+) -> Result<(), Located> {
     if line_type.bending_stiffness == 0.0 {
         return Ok(());
     }
@@ -211,7 +218,11 @@ fn rotation(body: &Body) -> Rotation {
 fn kinematic(name: String, position: [f64; 3], rotation: [f64; 3], mass: f64, inertia: [f64; 3]) -> BodyDef {
     BodyDef {
         name,
-        master: NodeDef { position, mass, inertia: InertiaDef { xx: inertia[0], yy: inertia[1], zz: inertia[2], ..InertiaDef::default() } },
+        master: NodeDef {
+            position,
+            mass,
+            inertia: InertiaDef { xx: inertia[0], yy: inertia[1], zz: inertia[2], ..InertiaDef::default() },
+        },
         slaves: Vec::new(),
         velocity: [0.0; 3],
         angular_velocity: [0.0; 3],
@@ -274,7 +285,12 @@ fn body_def(body: &Body, density: f64, warnings: &mut Vec<Located>) -> Result<Op
                 master: NodeDef {
                     position: master.into(),
                     mass: body.mass,
-                    inertia: InertiaDef { xx: body.inertia[0], yy: body.inertia[1], zz: body.inertia[2], ..InertiaDef::default() },
+                    inertia: InertiaDef {
+                        xx: body.inertia[0],
+                        yy: body.inertia[1],
+                        zz: body.inertia[2],
+                        ..InertiaDef::default()
+                    },
                 },
                 slaves: Vec::new(),
                 velocity: [0.0; 3],
@@ -370,7 +386,9 @@ fn point_mass(input: &Input, index: usize) -> Result<BodyDef, Located> {
 
 fn point_comment(point: &Point) -> String {
     let what = match point.attachment {
-        Attachment::Coupled => "Coupled point: kinematic, at rest here; give it the motion of what drives it".to_string(),
+        Attachment::Coupled => {
+            "Coupled point: kinematic, at rest here; give it the motion of what drives it".to_string()
+        }
         Attachment::Free => format!(
             "Free point: mass {} kg, volume {} m³, CdA {} m², Ca {} (point mass: mass and hull include its lines' end nodes)",
             point.mass, point.volume, point.drag_area, point.added_mass

@@ -8,7 +8,8 @@
 //! `findStartOfSection` does; a parser generator (nom, pest) would add a grammar for what is a
 //! table. Stages: [`reader`] (text → sections of fields with line and column) → [`input`]
 //! (typed, checked, with what Tether cannot model refused or warned of) → [`mapping`] (a
-//! [`SceneFile`](crate::SceneFile)) → [`ron_text`] (readable RON) → the scene loader, whose
+//! [`SceneFile`](crate::SceneFile)) → [`settle`] (free points and bodies at static equilibrium)
+//! → [`ron_text`] (readable RON) → the scene loader, whose
 //! errors are reported at the MoorDyn file's line.
 
 pub mod export;
@@ -16,6 +17,7 @@ pub mod input;
 pub mod mapping;
 pub mod reader;
 pub mod ron_text;
+pub mod settle;
 
 use crate::{Scene, SceneError};
 use std::path::Path;
@@ -54,7 +56,8 @@ pub fn is_moordyn(path: &Path, text: &str) -> bool {
 pub fn import(text: &str, path: &Path) -> Result<Imported, SceneError> {
     let (sections, last) = reader::sections(text).map_err(|e| e.at(path))?;
     let input = input::read(&sections, last).map_err(|e| e.at(path))?;
-    let mapped = mapping::map(&input).map_err(|e| e.at(path))?;
+    let mut mapped = mapping::map(&input).map_err(|e| e.at(path))?;
+    mapped.file = settle::settle(mapped.file, &mut mapped.warnings);
     let name = path.file_name().map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned());
     let written = ron_text::write(&input, &mapped, &name).map_err(|e| SceneError {
         path: path.display().to_string(),

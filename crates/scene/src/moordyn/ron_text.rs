@@ -25,7 +25,8 @@ pub fn write(input: &Input, mapped: &Mapped, source: &str) -> Result<Written, ro
     let body_lines: Vec<&str> = body.lines().collect();
     for (index, line) in body_lines.iter().enumerate() {
         // An item opens on the line before its `name: "…"`: its comment goes above it.
-        let named = body_lines.get(index + 1).and_then(|next| item_name(next)).and_then(|name| mapped.origins.get(name));
+        let named =
+            body_lines.get(index + 1).and_then(|next| item_name(next)).and_then(|name| mapped.origins.get(name));
         if let Some(Origin { line: from, comment }) = named {
             let indent: String = line.chars().take_while(|c| c.is_whitespace()).collect();
             lines.push(format!("{indent}// {comment} (file line {from})"));

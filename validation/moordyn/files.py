@@ -119,6 +119,12 @@ def run_moordyn(case: Case, out: Path) -> dict:
                 "single_point_check": [(norm(moordyn.GetPointForce(p)), moordyn.GetPointNAttached(p)) for p in coupled],
             }
             rows = [[0.0] + static["ends"]]
+            free_points = [(f"point{i + 1}", p) for i, p in enumerate(points)
+                           if moordyn.GetPointType(p) == moordyn.POINT_TYPE_FREE]
+            free_bodies = [(f"body{i + 1}", moordyn.GetBody(system, i + 1)) for i in range(moordyn.GetNumberBodies(system))
+                           if moordyn.GetBodyType(moordyn.GetBody(system, i + 1)) == moordyn.BODY_TYPE_FREE]
+            settled = {name: [0.0, 0.0, 0.0] for name, _ in free_points + free_bodies}
+            samples = 0
             steps = round(DURATION / COUPLING_DT)
             start = time.process_time()
             for k in range(steps):
@@ -128,6 +134,13 @@ def run_moordyn(case: Case, out: Path) -> dict:
                 velocity = [(b - a) / COUPLING_DT for a, b in zip(here, there)]
                 moordyn.Step(system, there, velocity, t, COUPLING_DT)
                 rows.append([t_next] + ends())
+                if t_next > SECOND_HALF:
+                    samples += 1
+                    for name, p in free_points:
+                        settled[name] = [a + b for a, b in zip(settled[name], moordyn.GetPointPos(p))]
+                    for name, b in free_bodies:
+                        settled[name] = [a + c for a, c in zip(settled[name], moordyn.GetBodyPos(b))]
+            static["settled"] = {name: [c / samples for c in v] for name, v in settled.items()}
             step_cpu = time.process_time() - start
             moordyn.Close(system)
         finally:
@@ -218,6 +231,10 @@ def main() -> None:
             gap = math.dist(where, mine)
             static.append(f"| {case.file} | {name} position [m] | ({', '.join(f'{c:.2f}' for c in where)}) | "
                           f"({', '.join(f'{c:.2f}' for c in mine)}) | {gap:.3f} m |")
+            mean = m["static"]["settled"][name]
+            static.append(f"| {case.file} | {name} position [m], MoorDyn's mean over {SECOND_HALF:g}–{DURATION:g} s "
+                          f"(the surge is symmetric) | ({', '.join(f'{c:.2f}' for c in mean)}) | "
+                          f"({', '.join(f'{c:.2f}' for c in mine)}) | {math.dist(mean, mine):.3f} m |")
         print(f"  MoorDyn CPU {m['init_cpu']:.1f} s init + {m['step_cpu']:.1f} s; Tether record {t['wall']:.1f} s",
               file=sys.stderr)
     text = (f"Line end tensions over {SECOND_HALF:g}–{DURATION:g} s [kN], the coupled points surged as each case "

@@ -4,9 +4,9 @@
 
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
+use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass};
 use tether_physics::statics::{Settings, equilibrium};
 use tether_scene::file::{CouplingDef, EndDef, SceneFile, SupportDef};
-use tether_scene::line_model::{DampingDef, LineModelDef};
 use tether_scene::moordyn::{self, export};
 use tether_scene::{Scene, SceneError};
 use tether_test_support::{here, repo, scene_files};
@@ -79,7 +79,7 @@ fn moordyns_own_files_import_or_are_refused_in_one_line() {
     }
 }
 
-fn catenary(file: &SceneFile, index: usize) -> (&EndDef, &EndDef, f64, f64, f64, f64, LineModelDef) {
+fn catenary(file: &SceneFile, index: usize) -> (&EndDef, &EndDef, f64, f64, f64, f64, LineModel) {
     match &file.couplings[index] {
         CouplingDef::Catenary { end1, end2, mass_per_length, length, stiffness, displaced_area, model, .. } => {
             (end1, end2, *mass_per_length, *length, *stiffness, *displaced_area, *model)
@@ -101,9 +101,9 @@ fn oc3_lines_become_dynamic_catenaries_with_the_files_values() {
     assert_eq!(area, PI * 0.09 * 0.09 / 4.0);
     assert_eq!(
         model,
-        LineModelDef::Dynamic {
+        LineModel::Dynamic(LumpedMass {
             segments: 20,
-            damping: DampingDef::Ratio(0.8),
+            damping: InternalDamping::Ratio(0.8),
             drag_normal: 1.6,
             drag_tangential: 0.1,
             added_mass_normal: 1.0,
@@ -111,7 +111,7 @@ fn oc3_lines_become_dynamic_catenaries_with_the_files_values() {
             seabed_stiffness: 3.0e6,
             seabed_damping: 3.0e5,
             friction_speed: 0.01,
-        }
+        })
     );
     let fairlead = &scene.file.bodies[0];
     assert_eq!(fairlead.master.position, [5.2, 0.0, -70.0]);
@@ -250,7 +250,7 @@ fn bad_input_is_refused_at_its_line() {
 
 /// The lines of a scene as the comparison sees them: the world positions of their ends at
 /// t = 0 and whether each end is on the world, a kinematic, a free or a point body.
-type LineSummary = (Vec<&'static str>, [f64; 2], [u64; 2], LineModelDef, Vec<[i64; 3]>);
+type LineSummary = (Vec<&'static str>, [f64; 2], [u64; 2], LineModel, Vec<[i64; 3]>);
 
 fn lines_of(scene: &Scene) -> Vec<LineSummary> {
     lines_of_world(&scene.file, &scene.world)
@@ -343,10 +343,10 @@ fn assert_same_lines(before: &[LineSummary], after: &[LineSummary], segments: u3
     }
 }
 
-fn segments_of(model: &LineModelDef) -> u32 {
+fn segments_of(model: &LineModel) -> u32 {
     match model {
-        LineModelDef::Dynamic { segments, .. } => *segments,
-        LineModelDef::QuasiStatic => 0,
+        LineModel::Dynamic(line) => line.segments,
+        LineModel::QuasiStatic => 0,
     }
 }
 

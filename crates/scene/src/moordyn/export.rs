@@ -5,7 +5,7 @@
 //! | Tether | MoorDyn |
 //! |---|---|
 //! | `Catenary` (dynamic) | a line and a line type of its λ0, d = √(4 A_d/π) (a steel rod's when A_d = 0, [`diameter_of`]), EA = D L, BA or −ζ, C_dn, C_an, C_dt, C_at |
-//! | `Catenary` (quasi-static) | the same with `segments` (the export's flag) and the coefficients a line switched to dynamic gets ([`LineModelDef::wire`]) |
+//! | `Catenary` (quasi-static) | the same with `segments` (the export's flag) and the coefficients a line switched to dynamic gets ([`LumpedMass::wire`]) |
 //! | world end | a Fixed point (one per position) |
 //! | body with its rotation held, translation free | a Free point (the mapping's point mass, inverted) |
 //! | kinematic (or partly fixed) / free / fixed body | a Coupled / Free / Fixed body, its reference the master node, with Body points |
@@ -15,9 +15,9 @@
 
 use super::mapping::STEP;
 use crate::file::{BodyDef, CouplingDef, EndDef, SceneFile, ShapeDef, SupportDef};
-use crate::line_model::{DampingDef, LineModelDef};
 use std::fmt::Write as _;
 use tether_physics::body::RigidBody;
+use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass};
 use tether_physics::math::{Rotation, Vec3};
 
 /// The segments a quasi-static line is written with when the export is not told (the
@@ -74,11 +74,7 @@ pub fn export(file: &SceneFile, bodies: &[RigidBody], source: &str, segments: u3
             left_out.push(coupling.name().to_string());
             continue;
         };
-        let model = match model {
-            LineModelDef::QuasiStatic => LineModelDef::wire(segments),
-            LineModelDef::Dynamic { .. } => *model,
-        };
-        let LineModelDef::Dynamic {
+        let LumpedMass {
             segments: count,
             damping,
             drag_normal,
@@ -88,14 +84,14 @@ pub fn export(file: &SceneFile, bodies: &[RigidBody], source: &str, segments: u3
             seabed_stiffness,
             seabed_damping,
             ..
-        } = model
-        else {
-            continue;
+        } = match model {
+            LineModel::QuasiStatic => LumpedMass::wire(segments),
+            LineModel::Dynamic(line) => *line,
         };
         seabed.get_or_insert((seabed_stiffness, seabed_damping));
         let ba = match damping {
-            DampingDef::Ratio(zeta) => -zeta,
-            DampingDef::Coefficient(ba) => ba,
+            InternalDamping::Ratio(zeta) => -zeta,
+            InternalDamping::Coefficient(ba) => ba,
         };
         let diameter = diameter_of(*displaced_area, *mass_per_length);
         let values = [

@@ -16,10 +16,9 @@ use super::input::{Attachment, Body, BodyKind, Input, Line, LineType, Point};
 use crate::file::{
     BodyDef, CouplingDef, EndDef, InertiaDef, NodeDef, SceneFile, SeabedDef, ShapeDef, SupportDef, VelocityDef,
 };
-use crate::line_model::{DampingDef, LineModelDef};
 use crate::water::{HydroDef, WaterDef, WavesDef};
 use std::collections::BTreeMap;
-use tether_physics::coupling::LumpedMass;
+use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass};
 use tether_physics::integrator::{Integrator, Substeps};
 use tether_physics::math::{Rotation, Vec3};
 
@@ -168,12 +167,12 @@ fn line_def(input: &Input, line: &Line, line_type: &LineType) -> CouplingDef {
         length: line.length,
         stiffness: line_type.axial_stiffness / line.length,
         displaced_area: std::f64::consts::PI * line_type.diameter * line_type.diameter / 4.0,
-        model: LineModelDef::Dynamic {
+        model: LineModel::Dynamic(LumpedMass {
             segments: line.segments,
             damping: if line_type.damping < 0.0 {
-                DampingDef::Ratio(-line_type.damping)
+                InternalDamping::Ratio(-line_type.damping)
             } else {
-                DampingDef::Coefficient(line_type.damping)
+                InternalDamping::Coefficient(line_type.damping)
             },
             drag_normal: line_type.drag_normal,
             drag_tangential: line_type.drag_tangential,
@@ -182,7 +181,7 @@ fn line_def(input: &Input, line: &Line, line_type: &LineType) -> CouplingDef {
             seabed_stiffness: input.options.seabed_stiffness,
             seabed_damping: input.options.seabed_damping,
             friction_speed: LumpedMass::FRICTION_SPEED,
-        },
+        }),
     }
 }
 

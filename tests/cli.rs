@@ -301,6 +301,7 @@ fn check_says_when_a_quasi_static_line_is_likely_wrong() {
     let dynamic = tether(&["check", common::repo("scenes/chain_forced_surge.ron").to_str().unwrap()]);
     let stdout = String::from_utf8_lossy(&dynamic.stdout);
     assert!(!stdout.contains("transverse period"), "{stdout}");
+}
 
 /// Issue 32: `tether import` writes the commented RON scene, which loads to the same scene as
 /// the MoorDyn file itself (`check` reads it directly), and prints the time the import and the

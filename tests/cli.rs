@@ -302,3 +302,46 @@ fn check_says_when_a_quasi_static_line_is_likely_wrong() {
     let stdout = String::from_utf8_lossy(&dynamic.stdout);
     assert!(!stdout.contains("transverse period"), "{stdout}");
 }
+
+/// Issue 32: `tether import` writes the commented RON scene, which loads to the same scene as
+/// the MoorDyn file itself (`check` reads it directly), and prints the time the import and the
+/// build took; `tether export moordyn` writes a file that imports back.
+#[test]
+fn import_and_export_moordyn_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let source = common::repo("validation/moordyn/inputs/lines.txt");
+    let scene = dir.path().join("lines.ron");
+    let out = tether(&["import", source.to_str().unwrap(), "-o", scene.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(stdout.contains("3 bodies, 3 lines → wrote") && stdout.contains("import and build"), "{stdout}");
+    let imported = tether_scene::load(&scene).unwrap();
+    let direct = tether_scene::load(&source).unwrap();
+    assert_eq!(imported.file, direct.file);
+    let checked = tether(&["check", source.to_str().unwrap()]);
+    assert!(String::from_utf8_lossy(&checked.stdout).contains("lines.txt: ok — 3 bodies, 3 couplings"));
+    let exported = dir.path().join("lines.dat");
+    let out = tether(&["export", "moordyn", scene.to_str().unwrap(), "-o", exported.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let back = tether_scene::load(&exported).unwrap();
+    assert_eq!(back.file.couplings.len(), 3);
+}
+
+/// Issue 32, check 6: a bad MoorDyn file is one line with its line and column, exit 1, and
+/// `import` writes nothing.
+#[test]
+fn a_bad_moordyn_file_exits_1_with_one_line_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(common::repo("validation/moordyn/inputs/lines.txt")).unwrap();
+    let bad = dir.path().join("bad.txt");
+    std::fs::write(&bad, text.replace("1     main       1        4", "1     chain      1        4")).unwrap();
+    let scene = dir.path().join("bad.ron");
+    let out = tether(&["import", bad.to_str().unwrap(), "-o", scene.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(
+        stderr.trim(),
+        format!("error: {}:19:7: line 1: no line type \"chain\" (the file's types: main)", bad.display())
+    );
+    assert!(!scene.exists());
+}

@@ -12,7 +12,7 @@ use tether_scene as scene;
 
 #[derive(Debug, Args)]
 pub struct EquilibriumArgs {
-    /// Scene file (.ron).
+    /// Scene file (.ron), or a MoorDyn input file.
     scene: PathBuf,
     /// Write the scene with its bodies starting at equilibrium, at rest (RON; the original's
     /// comments are not kept).

@@ -17,7 +17,7 @@ const SCENES_DIR: &str = "scenes";
 
 #[derive(Debug, Default, Args)]
 pub struct GuiArgs {
-    /// Scene file (.ron) to open (default: scenes/moored_buoy.ron when there is one).
+    /// Scene file (.ron) or MoorDyn input file to open (default: scenes/moored_buoy.ron when there is one).
     scene: Option<PathBuf>,
     /// Stream to the external Rerun viewer at this URL instead of the embedded one
     /// (e.g. rerun+http://127.0.0.1:9876/proxy).

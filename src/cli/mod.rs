@@ -3,9 +3,11 @@
 mod check;
 mod equilibrium;
 mod estimate_contact;
+mod export;
 mod fit;
 mod forces;
 mod gui;
+mod import;
 mod offsets;
 mod record;
 mod study;
@@ -32,7 +34,7 @@ pub struct Cli {
 enum Command {
     /// Validate a scene; print each body's mass properties, the couplings and the initial energy.
     Check {
-        /// Scene file (.ron).
+        /// Scene file (.ron), or a MoorDyn input file.
         scene: PathBuf,
     },
     /// Run a scene headless and write a Rerun recording (.rrd).
@@ -59,7 +61,7 @@ enum Command {
     Fit(fit::FitArgs),
     /// Print the forces of the initial state.
     Forces {
-        /// Scene file (.ron).
+        /// Scene file (.ron), or a MoorDyn input file.
         scene: PathBuf,
         /// Print JSON (world frame, N and N·m; f1/f2 are exerted by the coupling on end 1 / end 2).
         #[arg(long)]
@@ -73,6 +75,12 @@ enum Command {
     /// A body's restoring force held at offsets from equilibrium (the offset curve): a table, a
     /// CSV file and a PNG chart.
     Offsets(offsets::OffsetsArgs),
+    /// Convert a MoorDyn input file (v2, or v1 as OpenFAST writes it) into a commented RON scene;
+    /// print the time the import and the build took.
+    Import(import::ImportArgs),
+    /// Write a scene's lines, anchors, points and the bodies they attach to as a MoorDyn v2 input
+    /// file.
+    Export(export::ExportArgs),
 }
 
 /// Exit code of a run stopped by Ctrl-C or SIGTERM (128 + SIGINT, the shell's convention).
@@ -94,6 +102,8 @@ pub fn run(cli: Cli) -> anyhow::Result<u8> {
         Command::Study(args) => study::run(&args).map(|()| 0),
         Command::Equilibrium(args) => equilibrium::run(&args).map(|()| 0),
         Command::Offsets(args) => offsets::run(&args).map(|()| 0),
+        Command::Import(args) => import::run(&args).map(|()| 0),
+        Command::Export(args) => export::run(&args).map(|()| 0),
         Command::Fit(args) => fit::run(&args).map(|outcome| match outcome {
             fit::Outcome::Finished => 0,
             fit::Outcome::Interrupted => INTERRUPTED,

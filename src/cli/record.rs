@@ -19,7 +19,7 @@ use tether_record::{ArrowedContacts, FaceArrows, FrameSchedule, Recorder};
 
 #[derive(Debug, Args)]
 pub struct RecordArgs {
-    /// Scene file (.ron).
+    /// Scene file (.ron), or a MoorDyn input file.
     scene: PathBuf,
     /// Output recording (.rrd).
     #[arg(short, long)]

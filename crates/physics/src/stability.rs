@@ -159,11 +159,20 @@ pub fn limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
                 oscillator_limit(integrator, spring.law.tangent_stiffness(length), spring.damping, along(&d))
             }
             CouplingKind::Catenary(line) if line.model != LineModel::QuasiStatic => {
-                // An end body is held by its first segment, a spring EA/l against the next node
-                // (PHYSICS.md §8): the bodies' step must resolve it.
+                // An end body is held by its first segment, a spring EA/l with its internal
+                // damper BA/l against the next node (PHYSICS.md §8): the bodies' step must
+                // resolve both (a light body on a stiffly damped chain is held by the damper).
                 let Some(nodes) = evaluation.line_run(index).and_then(|run| run.nodes()) else { continue };
                 let n = nodes.positions.len() - 1;
                 let stiffness = line.stiffness * n as f64;
+                let segment = line.length / n as f64;
+                let damping = match &line.model {
+                    LineModel::Dynamic(lumped) => {
+                        lumped.damping.coefficient(segment, line.stiffness * line.length, line.mass_per_length)
+                            / segment
+                    }
+                    LineModel::QuasiStatic => 0.0,
+                };
                 let first = [
                     (end1, nodes.positions[1] - nodes.positions[0]),
                     (end2, nodes.positions[n - 1] - nodes.positions[n]),
@@ -172,7 +181,12 @@ pub fn limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
                     .iter()
                     .filter_map(|(end, along_segment)| {
                         let d = along_segment.try_normalize(0.0)?;
-                        Some(oscillator_limit(integrator, stiffness, 0.0, inverse_mass_along(system, frames, end, &d)))
+                        Some(oscillator_limit(
+                            integrator,
+                            stiffness,
+                            damping,
+                            inverse_mass_along(system, frames, end, &d),
+                        ))
                     })
                     .fold(f64::INFINITY, f64::min)
             }

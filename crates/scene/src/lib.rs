@@ -7,6 +7,7 @@ pub mod build;
 pub mod file;
 mod finite;
 pub mod mesh_file;
+pub mod moordyn;
 pub mod pose;
 pub mod source;
 pub mod water;
@@ -39,7 +40,8 @@ pub struct Scene {
     pub warnings: Vec<String>,
 }
 
-/// Reads and builds the scene at `path`.
+/// Reads and builds the scene at `path`: a RON scene, or a MoorDyn input file converted on the
+/// way in ([`moordyn::load`]).
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
     let text = std::fs::read_to_string(path).map_err(|e| SceneError {
         path: path.display().to_string(),
@@ -47,6 +49,9 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
         col: 1,
         message: format!("cannot read scene file: {e}"),
     })?;
+    if moordyn::is_moordyn(path, &text) {
+        return moordyn::load(&text, path);
+    }
     parse(&text, path)
 }
 

@@ -29,7 +29,7 @@ pub fn add_water(
     };
     let spec = def.spec();
     for (body_def, body) in file.bodies.iter().zip(bodies) {
-        if body_def.hydro.is_none() && body.mass_properties.center_of_mass.z < def.level {
+        if body_def.hydro.is_none() && !body.is_kinematic() && body.mass_properties.center_of_mass.z < def.level {
             warnings.push(format!(
                 "body \"{}\" starts under the water surface but declares no hydro: the water does not act on it",
                 body_def.name

@@ -1,0 +1,366 @@
+//! MoorDyn input files in and out (issue 32; docs/moordyn-files.md): MoorDyn's own files import
+//! or are refused in one line, the mapping's numbers, OpenFAST's v1 layout, the free point's
+//! closed form, bad input at its line, and export → import giving back the same lines.
+
+use std::f64::consts::PI;
+use std::path::{Path, PathBuf};
+use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass};
+use tether_physics::statics::{Settings, equilibrium};
+use tether_scene::file::{CouplingDef, EndDef, SceneFile, SupportDef};
+use tether_scene::moordyn::{self, export};
+use tether_scene::{Scene, SceneError};
+use tether_test_support::{here, repo, scene_files};
+
+fn input(name: &str) -> PathBuf {
+    repo("validation/moordyn/inputs").join(name)
+}
+
+fn load(path: &Path) -> Result<Scene, SceneError> {
+    tether_scene::load(path)
+}
+
+fn import_text(text: &str, label: &str) -> Result<Scene, String> {
+    moordyn::load(text, Path::new(label)).map_err(|e| e.to_string())
+}
+
+/// The one-line error of a file that must be refused.
+fn refusal(text: &str, label: &str) -> String {
+    match import_text(text, label) {
+        Ok(_) => panic!("accepted:\n{text}"),
+        Err(error) => error,
+    }
+}
+
+/// What a kept file gives: (bodies, lines) of its scene, or the start of its one-line refusal.
+type Outcome = Result<(usize, usize), &'static str>;
+
+/// Check 1: each file kept from MoorDyn's repository imports, or is refused with the one line
+/// that names what Tether does not model, at its line.
+#[test]
+fn moordyns_own_files_import_or_are_refused_in_one_line() {
+    let outcomes: [(&str, Outcome); 18] = [
+        ("WD0050_Chain.txt", Ok((1, 1))),
+        ("WD0200_Chain.txt", Ok((1, 1))),
+        ("lines.txt", Ok((3, 3))),
+        ("example_lines.txt", Ok((3, 3))),
+        ("example_body.txt", Ok((1, 3))),
+        ("body_tests_bodyDrag.txt", Ok((1, 1))),
+        ("pendulum.txt", Ok((1, 1))),
+        ("time_schemes.txt", Ok((1, 1))),
+        ("lifting.txt", Ok((1, 1))),
+        ("polyester_simple.txt", Ok((1, 1))),
+        ("local_euler_hanging.txt", Ok((3, 2))),
+        (
+            "tripod.txt",
+            Err("tripod.txt:44:1: line 1: bending stiffness EI = 93212594.98 N·m² of type \"nodeFloat\" acts over"),
+        ),
+        (
+            "seafloor.txt",
+            Err("seafloor.txt:23:1: option Mooring/3D_seafloor/seafloor_profile_3d.txt SeafloorFile: a 3-D seafloor"),
+        ),
+        ("wavekin_wave_1.txt", Err("wavekin_wave_1.txt:28:1: option 1 WaveKin: wave kinematics")),
+        ("wavekin_current_1.txt", Err("wavekin_current_1.txt:28:1: option 1 WaveKin: wave kinematics")),
+        ("BodiesAndRods.dat", Err("BodiesAndRods.dat:19:1: rods are not modelled by Tether")),
+        ("body_tests_pinnedBody.txt", Err("body_tests_pinnedBody.txt:17:1: rods are not modelled by Tether")),
+        ("body_tests_orbitalBody.txt", Err("body_tests_orbitalBody.txt:20:1: rods are not modelled by Tether")),
+    ];
+    for (name, expected) in outcomes {
+        match (load(&input(name)), expected) {
+            (Ok(scene), Ok((bodies, lines))) => {
+                assert_eq!((scene.world.bodies().len(), scene.world.couplings().len()), (bodies, lines), "{name}");
+            }
+            (Err(error), Err(start)) => {
+                let line = error.to_string();
+                assert!(line.contains(start) && !line.contains('\n'), "{name}: {line}");
+            }
+            (Ok(_), Err(start)) => panic!("{name} imported, expected {start}"),
+            (Err(error), Ok(_)) => panic!("{name}: {error}"),
+        }
+    }
+}
+
+fn catenary(file: &SceneFile, index: usize) -> (&EndDef, &EndDef, f64, f64, f64, f64, LineModel) {
+    match &file.couplings[index] {
+        CouplingDef::Catenary { end1, end2, mass_per_length, length, stiffness, displaced_area, model, .. } => {
+            (end1, end2, *mass_per_length, *length, *stiffness, *displaced_area, *model)
+        }
+        other => panic!("not a line: {other:?}"),
+    }
+}
+
+/// The OC3-Hywind file: each line a dynamic catenary with the file's numbers (D = EA/L,
+/// A_d = π d²/4), Fixed points world ends, Vessel points kinematic bodies at rest.
+#[test]
+fn oc3_lines_become_dynamic_catenaries_with_the_files_values() {
+    let scene = load(&input("lines.txt")).unwrap();
+    let (end1, end2, lambda, length, stiffness, area, model) = catenary(&scene.file, 0);
+    assert_eq!(end1, &EndDef::World([853.87, 0.0, -320.0]));
+    assert_eq!(end2, &EndDef::Body { body: "point4".into(), point: [0.0; 3] });
+    assert_eq!((lambda, length), (77.7066, 902.2));
+    assert_eq!(stiffness, 384.243e6 / 902.2);
+    assert_eq!(area, PI * 0.09 * 0.09 / 4.0);
+    assert_eq!(
+        model,
+        LineModel::Dynamic(LumpedMass {
+            segments: 20,
+            damping: InternalDamping::Ratio(0.8),
+            drag_normal: 1.6,
+            drag_tangential: 0.1,
+            added_mass_normal: 1.0,
+            added_mass_tangential: 0.0,
+            seabed_stiffness: 3.0e6,
+            seabed_damping: 3.0e5,
+            friction_speed: 0.01,
+        })
+    );
+    let fairlead = &scene.file.bodies[0];
+    assert_eq!(fairlead.master.position, [5.2, 0.0, -70.0]);
+    assert!(matches!(fairlead.support, SupportDef::Kinematic { .. }));
+    let water = scene.file.water.as_ref().unwrap();
+    assert_eq!((water.density, water.depth), (1025.0, Some(320.0)));
+    // The source file is named in the opening comment, the line type kept as a comment.
+    assert!(scene.text.starts_with("// Imported by `tether import` from the MoorDyn input file lines.txt."));
+    assert!(scene.text.contains("//   main: Diam 0.09 m, Mass/m 77.7066 kg/m, EA 384243000 N, BA/-zeta -0.8"));
+    assert!(scene.text.contains(
+        "// line 1: type \"main\", 902.2 m, 20 segments, from point 1 (Fixed) to point 4 (Coupled) (file line 19)"
+    ));
+}
+
+/// OpenFAST's v1 layout (LINE DICTIONARY with Can Cat Cdn Cdt, NODE PROPERTIES with forces,
+/// LINE PROPERTIES with the ends after the length, count lines, Echo) reads as the v2 file.
+#[test]
+fn openfast_v1_file_reads_as_the_same_system_as_v2() {
+    let v1 = load(&here!("fixtures/moordyn/oc3_v1.dat")).unwrap();
+    let v2 = load(&input("lines.txt")).unwrap();
+    assert_eq!(v1.file.couplings, v2.file.couplings);
+    assert_eq!(v1.file.bodies, v2.file.bodies);
+}
+
+/// A free point: a clump weight (m = 2000 kg, V = 0.5 m³) hanging on a vertical rope (λ0 10
+/// kg/m, d 0.05 m, EA 2e6 N, 50 m) from (0, 0, −10). At equilibrium the rope's bottom carries
+/// the point's wet weight `T_b = (m − ρV) g` and its top `T_b + w L`; it stretches
+/// `(T_b L + w L²/2)/EA`, so the point hangs at `z = −10 − L − (T_b L + w L²/2)/EA` — whatever
+/// mass and hull the mapping gave it to carry its lines' end nodes.
+#[test]
+fn a_free_point_hangs_where_its_wet_weight_stretches_the_line() {
+    let scene = load(&here!("fixtures/moordyn/free_point.dat")).unwrap();
+    let system = scene.world.system();
+    let solved = equilibrium::solve(system, system.initial_states(), &[], &Settings::default()).unwrap();
+    let (g, rho, length, ea) = (9.81, 1025.0, 50.0, 2.0e6);
+    let wet = (10.0 - rho * PI * 0.05 * 0.05 / 4.0) * g;
+    let bottom = (2000.0 - rho * 0.5) * g;
+    let expected = -10.0 - length - (bottom * length + wet * length * length / 2.0) / ea;
+    let z = solved.states[0].position.z;
+    assert!((z - expected).abs() < 1e-6, "z = {z}, closed form {expected}");
+    // The import starts it there (MoorDyn's file gave −60 m as a first guess).
+    let start = scene.file.bodies[0].master.position[2];
+    assert!((start - expected).abs() < 1e-6, "starts at z = {start}, closed form {expected}");
+    // Its mass carries the rope's end node, λ0 L/(2N) = 25 kg (MoorDyn's point mass matrix).
+    assert_eq!(scene.world.bodies()[0].mass(), 2025.0);
+}
+
+/// A point on a body is where MoorDyn puts it: the reference point plus the body's rotation
+/// (roll, pitch, yaw) of the point, whatever the centre of gravity.
+#[test]
+fn points_on_a_turned_body_are_where_moordyn_puts_them() {
+    let text = FREE_BODY.replace("BODYROW", "1 Free 10 0 -20 0 0 90 5000 0|0|-1 2000|2000|1000 4 1|1|1 1");
+    let scene = import_text(&text, "body.dat").unwrap();
+    let forces = &scene.world.coupling_forces()[0];
+    // Point (2, 0, 1) turned 90° about z: (0, 2, 1) from (10, 0, −20).
+    assert!((forces.point2 - tether_physics::math::Vec3::new(10.0, 2.0, -19.0)).norm() < 1e-12, "{}", forces.point2);
+    let body = &scene.world.bodies()[0];
+    assert!((body.mass_properties.center_of_mass - tether_physics::math::Vec3::new(10.0, 0.0, -21.0)).norm() < 1e-12);
+}
+
+const FREE_BODY: &str = "--- LINE TYPES ---
+TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
+(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
+chain 0.0648 25.79 1.1e8 -0.8 0 2.4 1 1.15 0.5
+--- BODIES ---
+ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*
+(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)
+BODYROW
+--- POINTS ---
+ID Attachment X Y Z Mass Volume CdA Ca
+(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
+1 Fixed 100 0 -50 0 0 0 0
+2 Body1 2 0 1 0 0 0 0
+--- LINES ---
+ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
+(#) (name) (#) (#) (m) (-) (-)
+1 chain 1 2 100 10 -
+--- OPTIONS ---
+50 WtrDpth
+--- need this line ---
+";
+
+/// Check 6: bad input is one line with the file's line (and column), and nothing is built.
+#[test]
+fn bad_input_is_refused_at_its_line() {
+    let good = FREE_BODY.replace("BODYROW", "1 Free 10 0 -20 0 0 0 5000 0 2000 4 1 1");
+    assert!(import_text(&good, "good.dat").is_ok());
+    let cases = [
+        ("--- OPTIONS ---", "--- WIND ---", "bad.dat:18:5: unknown section \"WIND\""),
+        (
+            "1 chain 1 2 100 10 -",
+            "1 rope 1 2 100 10 -",
+            "bad.dat:17:3: line 1: no line type \"rope\" (the file's types: chain)",
+        ),
+        ("1 chain 1 2 100 10 -", "1 chain 1 7 100 10 -", "bad.dat:17:11: line 1: no point 7 (the file has 2 points)"),
+        ("2 Body1 2 0 1", "2 Body2 2 0 1", "bad.dat:13:3: point 2 is attached to body 2 but the file has 1 bodies"),
+        ("1 Fixed 100 0 -50", "1 Fixed 1OO 0 -50", "bad.dat:12:9: X: expected a number, found \"1OO\""),
+        (
+            "1 chain 1 2 100 10 -",
+            "1 chain 1 2 -100 10 -",
+            "bad.dat:17:13: line 1: the unstretched length must be > 0 m, found -100",
+        ),
+        (
+            "1 chain 1 2 100 10 -",
+            "1 chain 1 2 100 -10 -",
+            "bad.dat:17:17: NumSegs: expected a whole number ≥ 1, found \"-10\"",
+        ),
+        (
+            "1 chain 1 2 100 10 -",
+            "1 chain 1 2 100 0 -",
+            "bad.dat:17:17: NumSegs: expected a whole number ≥ 1, found \"0\"",
+        ),
+        (
+            "chain 0.0648 25.79 1.1e8 -0.8",
+            "chain 0.0648 25.79 ea.dat -0.8",
+            "bad.dat:4:20: line type \"chain\": EA \"ea.dat\" is a nonlinear",
+        ),
+        (
+            "1 chain 1 2 100 10 -",
+            "1 chain 1 2 100",
+            "bad.dat:17:16: NumSegs missing: the row has 5 fields, NumSegs is field 6",
+        ),
+    ];
+    for (from, to, expected) in cases {
+        let error = refusal(&good.replacen(from, to, 1), "bad.dat");
+        assert!(error.starts_with(expected) && !error.contains('\n'), "{to}: {error}");
+    }
+    // A file that ends early: before its LINES section.
+    let early = &good[..good.find("--- LINES ---").unwrap()];
+    let error = refusal(early, "bad.dat");
+    assert_eq!(error, "bad.dat:13:1: the file ends without a LINES section");
+    // A value the physics refuses is reported at the file's line of the line it is in.
+    let error = refusal(&good.replace("-0.8 0 2.4", "-1.5 0 2.4"), "bad.dat");
+    assert!(error.starts_with("bad.dat:17:1: as imported: coupling \"line1\""), "{error}");
+}
+
+/// The lines of a scene as the comparison sees them: the world positions of their ends at
+/// t = 0 and whether each end is on the world, a kinematic, a free or a point body.
+type LineSummary = (Vec<&'static str>, [f64; 2], [u64; 2], LineModel, Vec<[i64; 3]>);
+
+fn lines_of(scene: &Scene) -> Vec<LineSummary> {
+    lines_of_world(&scene.file, &scene.world)
+}
+
+fn lines_of_world(file: &SceneFile, world: &tether_physics::world::World) -> Vec<LineSummary> {
+    file.couplings
+        .iter()
+        .enumerate()
+        .filter_map(|(index, coupling)| {
+            let CouplingDef::Catenary { end1, end2, mass_per_length, length, stiffness, displaced_area, model, .. } =
+                coupling
+            else {
+                return None;
+            };
+            let forces = &world.coupling_forces()[index];
+            let kinds = [end1, end2]
+                .iter()
+                .map(|end| match end {
+                    EndDef::World(_) => "Fixed",
+                    EndDef::Body { body, .. } => {
+                        let def = file.bodies.iter().find(|b| &b.name == body).unwrap();
+                        if def.support == (SupportDef::Fixed { translation: (false, false, false), rotation: true }) {
+                            "point mass"
+                        } else {
+                            export::body_kind(&def.support)
+                        }
+                    }
+                })
+                .collect();
+            Some((
+                kinds,
+                [*stiffness, *displaced_area],
+                [mass_per_length.to_bits(), length.to_bits()],
+                *model,
+                [forces.point1, forces.point2].iter().map(|p| p.map(|x| (x * 1e9).round() as i64).into()).collect(),
+            ))
+        })
+        .collect()
+}
+
+/// Check 4: export then import of every shipped scene with lines gives the same lines — mass
+/// per length, length and the dynamic model bit for bit, the end positions to the nanometre and
+/// what each end is on; the stiffness and displaced area, which cross the file as EA = D L and
+/// d = √(4 A_d/π), to 4 ulp; a dry line (no displaced area) comes back with the steel rod's area
+/// the export wrote for it, λ0/7850. Quasi-static lines come back dynamic with the export's
+/// segments.
+#[test]
+fn export_then_import_gives_back_the_same_lines() {
+    let mut exported = 0;
+    for path in scene_files() {
+        let scene = load(&path).unwrap();
+        if !scene.file.couplings.iter().any(|c| matches!(c, CouplingDef::Catenary { .. })) {
+            continue;
+        }
+        let text = export::export(&scene.file, scene.bodies.bodies(), &path.display().to_string(), 30);
+        let (file, world) = mapped_unsettled(&text);
+        assert_same_lines(&lines_of(&scene), &lines_of_world(&file, &world), 30, &path);
+        exported += 1;
+    }
+    assert!(exported >= 5, "{exported} shipped scenes with lines");
+}
+
+/// A MoorDyn file read and mapped, and its world, before the import settles its free bodies
+/// (the end positions compared are then the file's).
+fn mapped_unsettled(text: &str) -> (SceneFile, tether_physics::world::World) {
+    let (sections, last) = moordyn::reader::sections(text).unwrap();
+    let input = moordyn::input::read(&sections, last).unwrap();
+    let file = moordyn::mapping::map(&input).unwrap().file;
+    let world = tether_scene::build::build(&file, Path::new(".")).unwrap_or_else(|p| panic!("{}", p.message)).world;
+    (file, world)
+}
+
+/// Each line the same (module docs of the test above); a quasi-static one dynamic at `segments`.
+fn assert_same_lines(before: &[LineSummary], after: &[LineSummary], segments: u32, path: &Path) {
+    assert_eq!(before.len(), after.len(), "{}", path.display());
+    for (a, b) in before.iter().zip(after) {
+        assert_eq!((&a.0, a.2, &a.4), (&b.0, b.2, &b.4), "{}", path.display());
+        assert_eq!(
+            b.3,
+            a.3.dynamic_with(if a.3.is_quasi_static() { segments } else { segments_of(&a.3) }),
+            "{}",
+            path.display()
+        );
+        let mass_per_length = f64::from_bits(a.2[0]);
+        let area = if a.1[1] > 0.0 { a.1[1] } else { mass_per_length / export::STEEL_DENSITY };
+        for (x, y) in [a.1[0], area].iter().zip(&b.1) {
+            assert!((x - y).abs() <= 4.0 * f64::EPSILON * x.abs(), "{}: {x} → {y}", path.display());
+        }
+    }
+}
+
+fn segments_of(model: &LineModel) -> u32 {
+    match model {
+        LineModel::Dynamic(line) => line.segments,
+        LineModel::QuasiStatic => 0,
+    }
+}
+
+/// An imported file exported and imported again is the same scene: bodies (point masses
+/// included: the export takes back the mass and hull the mapping added) and lines.
+#[test]
+fn an_imported_file_survives_export_and_import() {
+    for path in [input("lines.txt"), here!("fixtures/moordyn/free_point.dat")] {
+        let first = load(&path).unwrap();
+        let text = export::export(&first.file, first.bodies.bodies(), "first", 20);
+        let (file, world) = mapped_unsettled(&text);
+        assert_same_lines(&lines_of(&first), &lines_of_world(&file, &world), 20, &path);
+        for (a, b) in first.world.bodies().iter().zip(world.bodies()) {
+            assert!((a.mass() - b.mass()).abs() < 1e-9 * a.mass(), "{}: {} → {}", path.display(), a.mass(), b.mass());
+        }
+    }
+}

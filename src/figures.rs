@@ -134,7 +134,8 @@ pub fn editable(x: f64, digits: usize) -> String {
 /// (`2.5×10^6` and `2.5×10⁶` too), `,` as the decimal point when there is no `.`; `None` when
 /// it is not a number.
 pub fn parse(text: &str) -> Option<f64> {
-    let mut plain: String = text.chars().filter(|c| !c.is_whitespace()).map(|c| if c == '−' { '-' } else { c }).collect();
+    let mut plain: String =
+        text.chars().filter(|c| !c.is_whitespace()).map(|c| if c == '−' { '-' } else { c }).collect();
     if !plain.contains('.') {
         plain = plain.replace(',', ".");
     }

@@ -144,7 +144,10 @@ fn dropped_scenes_open_dropped_recordings_play_back_and_other_files_are_refused(
     // status, Play greyed, the panel saying what plays and offering the scene back.
     let panel = harness.state().panel();
     assert!(panel.scene().is_none() && panel.status().is_none(), "the scene is closed for the playback");
-    assert_eq!(panel.playback().map(|p| (p.recording.clone(), p.closed.clone())), Some((recording.clone(), Some(scene.clone()))));
+    assert_eq!(
+        panel.playback().map(|p| (p.recording.clone(), p.closed.clone())),
+        Some((recording.clone(), Some(scene.clone())))
+    );
     harness.run_steps(2);
     assert!(harness.get_by_label("▶ Play").accesskit_node().is_disabled(), "nothing to play");
     harness.get_by_label("Playing back spring_mass.rrd");

@@ -78,7 +78,9 @@ fn every_relative_link_of_the_docs_resolves() {
     let repo = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut pages = vec![repo.join("README.md")];
     let docs = std::fs::read_dir(repo.join("docs")).expect("docs/");
-    pages.extend(docs.map(|entry| entry.expect("a directory entry").path()).filter(|p| p.extension().is_some_and(|e| e == "md")));
+    pages.extend(
+        docs.map(|entry| entry.expect("a directory entry").path()).filter(|p| p.extension().is_some_and(|e| e == "md")),
+    );
     let mut checked = 0;
     let mut broken = Vec::new();
     for page in &pages {

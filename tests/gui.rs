@@ -365,7 +365,9 @@ fn water_knobs_tune_the_running_water_and_bad_values_are_refused() {
     assert_eq!(world(&harness).system().water().expect("water").water.spec().current.speed, 0.4);
 
     set_knob(&mut harness, "density ρ", 0.0);
-    harness.get_by_label_contains("Refused: density = 0 not applied (the run keeps 1025): water: density must be > 0 kg/m³, got 0");
+    harness.get_by_label_contains(
+        "Refused: density = 0 not applied (the run keeps 1025): water: density must be > 0 kg/m³, got 0",
+    );
     assert_eq!(world(&harness).system().water().expect("water").water.spec().density, 1025.0);
 
     set_knob(&mut harness, "drag C_d z", 0.7);
@@ -374,7 +376,9 @@ fn water_knobs_tune_the_running_water_and_bad_values_are_refused() {
     });
     assert_eq!(drag_z(&world(&harness)), 0.7);
     set_knob(&mut harness, "drag C_d z", -1.0);
-    harness.get_by_label_contains("Refused: drag[2] = -1 not applied (the run keeps 0.7): body \"float\": hydro: drag must be finite and ≥ 0");
+    harness.get_by_label_contains(
+        "Refused: drag[2] = -1 not applied (the run keeps 0.7): body \"float\": hydro: drag must be finite and ≥ 0",
+    );
     assert_eq!(drag_z(&world(&harness)), 0.7);
 }
 
@@ -795,12 +799,13 @@ fn long_lines_wrap_the_log_is_newest_first_and_rows_stay_put() {
     let long_name = "a_body_named_at_such_length_that_its_name_cannot_fit_in_any_panel_".repeat(3);
     let bad = common::spring_scene_text(&long_name).replace("mass: 1.0,", "mass: -1.0,");
     let dir = scenes_folder(&[("spring.ron", SPRING.as_str()), ("bad.ron", &bad)]);
-    let mut harness = Harness::builder()
-        .with_size([1200.0, 1100.0])
-        .build_ui_state(|ui, panel: &mut ControlPanel| {
+    let mut harness = Harness::builder().with_size([1200.0, 1100.0]).build_ui_state(
+        |ui, panel: &mut ControlPanel| {
             let width = panel.side_panel(ui, None);
             ui.data_mut(|d| d.insert_temp(egui::Id::new("side width"), width));
-        }, panel(dir.path()));
+        },
+        panel(dir.path()),
+    );
     let width = |harness: &Harness<'_, ControlPanel>| {
         harness.ctx.data(|d| d.get_temp::<f32>(egui::Id::new("side width"))).expect("the panel's width")
     };

@@ -86,7 +86,6 @@ pub struct ControlPanel {
     playback: Option<Playback>,
 }
 
-
 impl ControlPanel {
     /// A panel with its simulation thread (no scene yet) writing to `sinks`; `wake` repaints.
     pub fn new(sinks: Sinks, wake: Wake, scenes_dir: PathBuf) -> std::io::Result<Self> {

@@ -49,7 +49,10 @@ pub fn ui(ui: &mut egui::Ui, picker: &Picker<'_>) -> Option<SceneAction> {
             ui.strong(format!("Playing back {}", file_name(recording))).on_hover_text(recording.display().to_string());
             ui.label("The viewer shows this recording; no scene runs. Open a scene to run one.");
             if let Some(closed) = closed
-                && ui.button(format!("Back to {}", file_name(closed))).on_hover_text("Open the scene again, at t = 0").clicked()
+                && ui
+                    .button(format!("Back to {}", file_name(closed)))
+                    .on_hover_text("Open the scene again, at t = 0")
+                    .clicked()
             {
                 action = Some(SceneAction::Open(closed.clone()));
             }
@@ -68,7 +71,8 @@ pub fn ui(ui: &mut egui::Ui, picker: &Picker<'_>) -> Option<SceneAction> {
         if ui
             .button("Open recording…")
             .on_hover_text("Play back a .rrd (dropping one works too); the scene running is closed")
-            .clicked() {
+            .clicked()
+        {
             action = Some(SceneAction::BrowseRecording);
         }
         if ui.button("⟳").on_hover_text("List the scenes folder again").clicked() {

@@ -2,6 +2,7 @@
 //! steps, the contacts the estimator needs, the bodies' states. Built from the world by the
 //! simulation thread once per tick.
 
+use crate::figures;
 use crate::line_hint::{self, Measures};
 use tether_physics::body::BodyState;
 use tether_physics::coupling::contact::Opposing;
@@ -10,7 +11,6 @@ use tether_physics::energy::EnergyReport;
 use tether_physics::integrator::Timing;
 use tether_physics::math::Vec3;
 use tether_physics::stability::Limiter;
-use crate::figures;
 use tether_physics::world::World;
 
 /// The running simulation at one instant.

@@ -16,8 +16,8 @@ use crate::rerun;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;
-use tether_physics::coupling::{Catenary, CouplingKind, LineModel};
 use tether_physics::coupling::catenary::{LineEnd, LineState};
+use tether_physics::coupling::{Catenary, CouplingKind, LineModel};
 use tether_physics::math::Vec3;
 use tether_physics::world::World;
 

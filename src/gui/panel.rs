@@ -302,7 +302,8 @@ impl ControlPanel {
         self.poll_dialogs();
         self.shortcuts(ui.ctx());
         // The log at the bottom of the panel, always in sight, newest first.
-        egui::Panel::bottom("tether_log").resizable(true).default_size(120.0).show(ui, |ui| self.log_ui(ui));
+        // Not resizable: a resize handle would take the keyboard focus before "Open scene…" (Tab).
+        egui::Panel::bottom("tether_log").resizable(false).exact_size(120.0).show(ui, |ui| self.log_ui(ui));
         egui::ScrollArea::vertical().auto_shrink([false, false]).show(ui, |ui| {
             ui.heading("Tether");
             let scene_path = self.scene.as_ref().map(|s| s.path.as_path());

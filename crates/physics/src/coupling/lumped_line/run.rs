@@ -117,7 +117,7 @@ pub struct LineOutcome {
 
 impl LineRun {
     /// A run of coupling `coupling`, which starts in its static shape at its first evaluation,
-    /// moving as that shape does ([`start_under_way`]).
+    /// moving as that shape does (PHYSICS.md §8 "Initial state").
     pub fn new(coupling: usize) -> Self {
         Self {
             coupling,

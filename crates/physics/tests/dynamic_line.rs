@@ -244,7 +244,8 @@ fn a_taut_line_in_a_current_bows_as_a_loaded_string() {
     assert!((mid / expected - 1.0).abs() < 0.02, "mid-span {mid} m, f L²/(8 T0) = {expected} m (T0 = {tension} N)");
 }
 
-/// A line started under way moves as its static shape does (PHYSICS.md §8 "Initial state"):
+/// A line started under way (by a live edit) moves as its static shape does (PHYSICS.md §8
+/// "Initial state"):
 /// both ends of a hanging line (λ0 = 8 kg/m, 12 m over a 10 m span, EA = 2×10⁷ N) carried at a
 /// steady 1 m/s sideways keep the line's shape, so its end force stays the static one to the
 /// static solve's precision over 2 s (issue 35: started at rest under the moving ends, the end
@@ -262,7 +263,7 @@ fn a_line_started_under_way_moves_with_its_static_shape() {
         velocity,
         attachment: tether_physics::coupling::Attachment::World,
     };
-    let mut run = LineRun::new(0);
+    let mut run = LineRun::under_way(0);
     let start = run.advance(&l, &discrete, &surroundings, None, &[moving(p1, 0.0), moving(p2, 0.0)], 0.0).unwrap();
     run.commit();
     let still = statics::solve(&l, &discrete, &surroundings, &p1, &p2, 0.0).nodes;

@@ -51,8 +51,10 @@ pub struct LineError {
 pub struct LineRun {
     /// Index of the line's coupling in the system.
     pub coupling: usize,
+    /// How its nodes start at its first evaluation.
+    start: Start,
     /// The nodes at the last accepted step (`None` before the first evaluation: the line then
-    /// starts in its static equilibrium, moving with it, [`start_under_way`]).
+    /// starts in its static equilibrium as `start` says).
     committed: Option<LineNodes>,
     /// The mean dissipated power over the interval that led to `committed` \[W].
     committed_power: f64,
@@ -69,6 +71,16 @@ pub struct LineRun {
     scratch: NodeForces,
     flow: Vec<Flow>,
     sea: FlowInstant,
+}
+
+/// How a dynamic line's nodes start (PHYSICS.md §8 "Initial state").
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Start {
+    /// At rest in the static shape: a world's start and a reset, as MoorDyn's lines start.
+    AtRest,
+    /// In the static shape, moving as it moves with the ends ([`LineRun::under_way`]): a line
+    /// switched to dynamic, or edited, while the world runs.
+    UnderWay,
 }
 
 /// Time over which the static shape's motion is taken at a start under way \[s] (a forward
@@ -116,11 +128,23 @@ pub struct LineOutcome {
 }
 
 impl LineRun {
-    /// A run of coupling `coupling`, which starts in its static shape at its first evaluation,
-    /// moving as that shape does (PHYSICS.md §8 "Initial state").
+    /// A run of coupling `coupling` from the start of a world: at its first evaluation, at rest
+    /// in its static shape (as MoorDyn's lines start, after its relaxation).
     pub fn new(coupling: usize) -> Self {
+        Self::starting(coupling, Start::AtRest)
+    }
+
+    /// A run of coupling `coupling` started by a live edit (a line switched to dynamic, or its
+    /// values changed, while the world runs): at its first evaluation, in its static shape and
+    /// moving as that shape does with the ends ([`Start::UnderWay`]).
+    pub fn under_way(coupling: usize) -> Self {
+        Self::starting(coupling, Start::UnderWay)
+    }
+
+    fn starting(coupling: usize, start: Start) -> Self {
         Self {
             coupling,
+            start,
             committed: None,
             committed_power: 0.0,
             current: None,
@@ -179,7 +203,13 @@ impl LineRun {
             Some(committed) if committed.time <= time => committed,
             _ => {
                 self.committed_power = 0.0;
-                start_under_way(line, discrete, surroundings, ends, time)
+                match self.start {
+                    Start::AtRest => {
+                        let (p1, p2) = (ends[0].position, ends[1].position);
+                        statics::solve(line, discrete, surroundings, &p1, &p2, time).nodes
+                    }
+                    Start::UnderWay => start_under_way(line, discrete, surroundings, ends, time),
+                }
             }
         };
         let mut nodes = self.current.take().unwrap_or_else(|| committed.clone());

@@ -9,6 +9,7 @@
 //! feature (on by default); without it the library and the binary are headless.
 
 pub mod chart_style;
+pub mod figures;
 pub mod fit;
 #[cfg(feature = "gui")]
 pub mod gui;

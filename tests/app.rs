@@ -7,7 +7,7 @@ mod common;
 
 use common::repo;
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable as _;
+use egui_kittest::kittest::{NodeT as _, Queryable as _};
 use rerun::external::re_viewer::external::re_viewer_context::Item;
 use rerun::external::re_viewer::{self, SystemCommand, SystemCommandSender as _};
 use rerun::external::{egui, tokio};
@@ -140,11 +140,31 @@ fn dropped_scenes_open_dropped_recordings_play_back_and_other_files_are_refused(
     assert!(harness.state().panel().log().any(|l| l.text == format!("playing back {}", recording.display())));
     let db = harness.state().viewer().and_then(|v| v.recording_db()).unwrap();
     assert!(db.is_logged_entity(&"world/bodies/mass".into()), "the recording's body is in the viewer");
+    // The live run is closed, not left running unseen behind the recording: no scene, no
+    // status, Play greyed, the panel saying what plays and offering the scene back.
+    let panel = harness.state().panel();
+    assert!(panel.scene().is_none() && panel.status().is_none(), "the scene is closed for the playback");
     assert_eq!(
-        harness.state().panel().status().map(|s| s.label.clone()).as_deref(),
-        Some("dropped"),
-        "the scene keeps running beside it"
+        panel.playback().map(|p| (p.recording.clone(), p.closed.clone())),
+        Some((recording.clone(), Some(scene.clone())))
     );
+    harness.run_steps(2);
+    assert!(harness.get_by_label("▶ Play").accesskit_node().is_disabled(), "nothing to play");
+    harness.get_by_label("Playing back spring_mass.rrd");
+    let closed = harness.state().panel().simulation().snapshot(PATIENCE);
+    assert!(closed.is_none(), "the simulation thread has no run");
+
+    harness.get_by_label("Back to dropped.ron").click();
+    until(&mut harness, "the scene again", |app| app.panel().status().is_some_and(|s| s.label == "dropped"));
+    let live_in_viewer = |app: &TetherApp| {
+        app.viewer().and_then(|v| v.recording_db()).is_some_and(|db| {
+            db.recording_id().to_string() != file_recording && db.is_logged_entity(&"world/bodies/bob".into())
+        })
+    };
+    until(&mut harness, "the viewer to show the live run again", live_in_viewer);
+    assert!(harness.state().panel().playback().is_none());
+    drop_file(&mut harness, &recording);
+    until(&mut harness, "the recording again", viewer_has_it);
 
     let notes = dir.path().join("notes.txt");
     std::fs::write(&notes, "Scene(").unwrap();
@@ -159,7 +179,6 @@ fn dropped_scenes_open_dropped_recordings_play_back_and_other_files_are_refused(
     );
     harness.get_by_label(&refusal);
     assert_eq!(harness.state().panel().load_error(), None, "not read as a scene");
-    assert_eq!(harness.state().panel().scene().map(|s| s.path.clone()), Some(scene));
     let db = harness.state().viewer().and_then(|v| v.recording_db()).unwrap();
     assert_eq!(db.recording_id().to_string(), file_recording, "the viewer still shows the recording");
 }
@@ -186,7 +205,8 @@ fn the_body_selected_in_the_viewer_is_shown_with_its_state() {
     let now = world(&harness);
     let state = now.state(0);
     assert!(state.position.x < 1.1 && state.velocity.x < 0.0, "the spring pulls the body in: {state:?}");
-    let shown = |v: &tether_physics::math::Vec3| format!("({:.4}, {:.4}, {:.4})", v.x, v.y, v.z);
+    let number = |x: f64| tether::figures::number(x, 4);
+    let shown = |v: &tether_physics::math::Vec3| format!("({}, {}, {})", number(v.x), number(v.y), number(v.z));
     let position = format!("{} m", shown(&state.position));
     let velocity = format!("{} m/s", shown(&state.velocity));
     until(&mut harness, "the viewer to hold the body's entity", |app| {
@@ -205,7 +225,7 @@ fn the_body_selected_in_the_viewer_is_shown_with_its_state() {
     }
     harness.get_by_label(&position);
     harness.get_by_label(&velocity);
-    harness.get_by_label("(0.0000, 0.0000, 0.0000) rad/s");
+    harness.get_by_label("(0, 0, 0) rad/s");
 
     select(&mut harness, "world/springs");
     let start = Instant::now();

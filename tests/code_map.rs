@@ -56,3 +56,50 @@ fn the_code_map_lists_every_module_and_only_those() {
     }
     assert!(problems.is_empty(), "docs/architecture.md's code map is out of date:\n{}", problems.join("\n"));
 }
+
+/// The relative targets of a Markdown text's links and images: `](target)` and `src="target"`,
+/// without their `#fragment`; web addresses and in-page anchors left out.
+fn relative_targets(text: &str) -> Vec<String> {
+    let links = text.split("](").skip(1).filter_map(|rest| rest.split_once(')').map(|(target, _)| target));
+    let images = text.split("src=\"").skip(1).filter_map(|rest| rest.split_once('"').map(|(target, _)| target));
+    links
+        .chain(images)
+        .map(|target| target.split_whitespace().next().unwrap_or_default())
+        .map(|target| target.split('#').next().unwrap_or_default().to_string())
+        .filter(|target| !target.is_empty() && !target.contains("://") && !target.starts_with("mailto:"))
+        .collect()
+}
+
+/// Every relative link and image of the README and of `docs/` resolves from the file it is in
+/// (issue 35: docs/window.md showed `screenshots/gui_tuning_panel.png`, which is beside the
+/// docs folder, not in it).
+#[test]
+fn every_relative_link_of_the_docs_resolves() {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut pages = vec![repo.join("README.md")];
+    let docs = std::fs::read_dir(repo.join("docs")).expect("docs/");
+    pages.extend(
+        docs.map(|entry| entry.expect("a directory entry").path()).filter(|p| p.extension().is_some_and(|e| e == "md")),
+    );
+    let mut checked = 0;
+    let mut broken = Vec::new();
+    for page in &pages {
+        let text = std::fs::read_to_string(page).unwrap_or_else(|e| panic!("{}: {e}", page.display()));
+        let folder = page.parent().expect("a page in a folder");
+        for target in relative_targets(&text) {
+            checked += 1;
+            if !folder.join(&target).exists() {
+                broken.push(format!("{}: {target}", page.display()));
+            }
+        }
+    }
+    assert!(checked > 20, "the links were read: {checked}");
+    assert!(broken.is_empty(), "links that lead nowhere:\n{}", broken.join("\n"));
+}
+
+#[test]
+fn link_targets_are_read_from_links_and_images() {
+    let text = "see [a](docs/a.md#part), ![b](../shots/b.png \"title\"), <img src=\"c.png\" width=\"3\">, \
+                [web](https://example.org/x) and [here](#anchor)";
+    assert_eq!(relative_targets(text), ["docs/a.md", "../shots/b.png", "c.png"]);
+}

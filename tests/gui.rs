@@ -75,6 +75,13 @@ fn world(harness: &Harness<'_, ControlPanel>) -> World {
     harness.state().simulation().snapshot(PATIENCE).expect("a scene is running")
 }
 
+fn spring_damping(world: &World) -> f64 {
+    match &world.couplings()[0].kind {
+        CouplingKind::SpringDamper(spring) => spring.damping,
+        kind => panic!("not a spring: {kind:?}"),
+    }
+}
+
 fn spring_stiffness(world: &World) -> f64 {
     match &world.couplings()[0].kind {
         CouplingKind::SpringDamper(spring) => match spring.law {
@@ -130,8 +137,18 @@ fn a_tuned_stiffness_reaches_the_running_simulation_and_a_bad_one_is_refused() {
     assert!(harness.query_by_label_contains("spring •").is_some(), "the coupling is marked as tuned");
 
     set_knob(&mut harness, "stiffness k", -5.0);
-    harness.get_by_label_contains("Refused: coupling \"spring\": stiffness must be ≥ 0 N/m, got -5");
+    harness.get_by_label(
+        "Refused: law.stiffness = -5 not applied (the run keeps 2500): coupling \"spring\": stiffness must be ≥ 0 N/m, got -5",
+    );
     assert_eq!(spring_stiffness(&world(&harness)), 2500.0, "a refused value leaves the simulation alone");
+
+    // Another field of the same coupling, fixed, applies; the refused one keeps its message.
+    set_knob(&mut harness, "damping k_d", 0.75);
+    until(&mut harness, "the damping in the running world", |p| {
+        p.simulation().snapshot(PATIENCE).is_some_and(|w| spring_damping(&w) == 0.75)
+    });
+    assert_eq!(spring_stiffness(&world(&harness)), 2500.0);
+    harness.get_by_label_contains("Refused: law.stiffness = -5 not applied (the run keeps 2500)");
 
     harness.get_by_label("Revert to file").click();
     until(&mut harness, "the revert", |p| p.scene().is_some_and(|s| s.tuned == s.file));
@@ -348,7 +365,9 @@ fn water_knobs_tune_the_running_water_and_bad_values_are_refused() {
     assert_eq!(world(&harness).system().water().expect("water").water.spec().current.speed, 0.4);
 
     set_knob(&mut harness, "density ρ", 0.0);
-    harness.get_by_label_contains("Refused: water: density must be > 0 kg/m³, got 0");
+    harness.get_by_label_contains(
+        "Refused: density = 0 not applied (the run keeps 1025): water: density must be > 0 kg/m³, got 0",
+    );
     assert_eq!(world(&harness).system().water().expect("water").water.spec().density, 1025.0);
 
     set_knob(&mut harness, "drag C_d z", 0.7);
@@ -357,7 +376,9 @@ fn water_knobs_tune_the_running_water_and_bad_values_are_refused() {
     });
     assert_eq!(drag_z(&world(&harness)), 0.7);
     set_knob(&mut harness, "drag C_d z", -1.0);
-    harness.get_by_label_contains("Refused: body \"float\": hydro: drag must be finite and ≥ 0");
+    harness.get_by_label_contains(
+        "Refused: drag[2] = -1 not applied (the run keeps 0.7): body \"float\": hydro: drag must be finite and ≥ 0",
+    );
     assert_eq!(drag_z(&world(&harness)), 0.7);
 }
 
@@ -422,10 +443,30 @@ fn line_model(world: &World) -> LineModel {
     }
 }
 
+/// The series names the recording `path` gives entity `entity` (its static `SeriesLines`).
+fn series_names(path: &Path, entity: &str) -> Vec<String> {
+    let component = rerun::SeriesLines::descriptor_names().component;
+    let stores = common::x11::stores(path);
+    let mut names = Vec::new();
+    for store in stores.values() {
+        for chunk in store.iter_physical_chunks().filter(|c| c.is_static() && c.entity_path().to_string() == entity) {
+            for row in chunk.iter_slices::<String>(component) {
+                names = row.into_iter().map(|name| name.to_string()).collect();
+            }
+        }
+    }
+    names
+}
+
+/// A line switched to dynamic while it runs: its model reaches the world, its plot gains the
+/// quasi-static series docs/dynamic-lines.md promises (issue 35: they were missing after a live
+/// switch), a bad segment count is refused.
 #[test]
 fn a_line_switches_to_dynamic_live_and_a_bad_segment_count_is_refused() {
     let dir = scenes_folder(&[("rope.ron", ROPE)]);
-    let mut harness = harness(panel(dir.path()));
+    let shown = dir.path().join("shown.rrd");
+    let sinks = Sinks::new(vec![Sinks::file(&shown).unwrap()]);
+    let mut harness = harness(ControlPanel::new(sinks, Arc::new(|| {}), dir.path().to_path_buf()).unwrap());
     open_from_list(&mut harness, "rope.ron");
     assert_eq!(line_model(&world(&harness)), LineModel::QuasiStatic);
 
@@ -435,7 +476,7 @@ fn a_line_switches_to_dynamic_live_and_a_bad_segment_count_is_refused() {
     assert_eq!(model.segments, 20, "a switched line takes 20 segments");
 
     set_knob(&mut harness, "segments N", 0.0);
-    harness.get_by_label_contains("Refused: coupling \"rope\": segments must be at least 1, got 0");
+    harness.get_by_label_contains("Refused: model.segments = 0 not applied (the run keeps 20): coupling \"rope\": segments must be at least 1, got 0");
     set_knob(&mut harness, "segments N", 8.0);
     until(&mut harness, "8 segments", |p| {
         p.simulation()
@@ -445,6 +486,11 @@ fn a_line_switches_to_dynamic_live_and_a_bad_segment_count_is_refused() {
     let world = world(&harness);
     let nodes = world.evaluation().line_run(0).and_then(|run| run.nodes()).expect("the line has nodes");
     assert_eq!(nodes.positions.len(), 9, "8 segments, 9 nodes");
+    drop(harness);
+    assert_eq!(
+        series_names(&shown, "/plots/catenary"),
+        ["rope end1", "rope end2", "rope end1 quasi-static", "rope end2 quasi-static"]
+    );
 }
 
 /// The spring of [`SPRING`] with stiffness `k` N/m, its x sampled every 10 ms for 2 s with
@@ -557,7 +603,7 @@ fn a_fit_moves_the_running_stiffness_to_the_record_and_revert_puts_the_file_back
 fn a_fit_with_bad_choices_is_refused_with_one_line() {
     let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
     let record = spring_record(dir.path(), 130.0);
-    let mut harness = harness(panel(dir.path()));
+    let mut harness = tall_harness(panel(dir.path()));
     open_from_list(&mut harness, "spring.ron");
     harness.state_mut().open_record(&record);
     harness.get_by_label("Fit to a record").click();
@@ -634,4 +680,157 @@ fn the_window_says_when_a_quasi_static_line_is_likely_wrong() {
     until(&mut harness, "the hint to go", |p| p.status().is_some_and(|s| s.line_hints[0].is_none()));
     harness.run_steps(2);
     assert!(harness.query_by_label_contains("likely wrong quasi-static").is_none());
+}
+
+/// Issue 35: text typed into a number field is said not to be a number (it was dropped
+/// silently), the value and the run untouched; a number typed then applies and the note goes.
+#[test]
+fn text_typed_into_a_number_field_says_it_is_not_a_number() {
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
+    let mut harness = harness(panel(dir.path()));
+    open_from_list(&mut harness, "spring.ron");
+    let type_into = |harness: &mut Harness<'_, ControlPanel>, text: &str| {
+        harness.get_by_label("damping k_d").click();
+        harness.run_steps(2);
+        harness.get_by_label("damping k_d").type_text(text);
+        harness.run_steps(1);
+        harness.key_press(egui::Key::Enter);
+        harness.run_steps(2);
+    };
+    type_into(&mut harness, "abc");
+    harness.get_by_label("“abc” is not a number: nothing applied");
+    assert_eq!(spring_damping(&world(&harness)), 0.0);
+
+    type_into(&mut harness, "0.5");
+    until(&mut harness, "the damping in the running world", |p| {
+        p.simulation().snapshot(PATIENCE).is_some_and(|w| spring_damping(&w) == 0.5)
+    });
+    harness.run_steps(2);
+    assert!(harness.query_by_label_contains("is not a number").is_none());
+}
+
+/// Issue 35: with no scene (`tether view`), Play, Step and Reset are greyed.
+#[test]
+fn without_a_scene_play_step_and_reset_are_greyed() {
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
+    let mut harness = harness(panel(dir.path()));
+    harness.run_steps(2);
+    for button in ["▶ Play", "⏭ Step", "⟲ Reset"] {
+        assert!(harness.get_by_label(button).accesskit_node().is_disabled(), "{button} is greyed with no scene");
+    }
+    open_from_list(&mut harness, "spring.ron");
+    harness.run_steps(2);
+    for button in ["▶ Play", "⏭ Step", "⟲ Reset"] {
+        assert!(!harness.get_by_label(button).accesskit_node().is_disabled(), "{button} works on a scene");
+    }
+}
+
+/// Issue 35: the contact estimator's impact typed on one scene does not carry over to the next:
+/// each scene's estimator starts from the default impact (1 m/s).
+#[test]
+fn the_contact_estimator_starts_from_each_scene() {
+    let mut harness = tall_harness(panel(&repo("scenes")));
+    open_from_list(&mut harness, "fender.ron");
+    harness.run_steps(2);
+    set_knob(&mut harness, "impact speed v", 7.0);
+    let speed = |harness: &Harness<'_, ControlPanel>| {
+        harness.get_by_label("impact speed v").accesskit_node().numeric_value().expect("a number field")
+    };
+    assert_eq!(speed(&harness), 7.0);
+    open_from_list(&mut harness, "box_drop.ron");
+    harness.run_steps(2);
+    assert_eq!(speed(&harness), 1.0, "the next scene's estimator starts from the default impact");
+}
+
+/// Issue 35: a run that diverges in its very first step (k = 10⁹ N/m at dt = 1 ms, 30 times its
+/// stable step) shows that step in the viewer — the recording's last frame is at t = 1 ms, not
+/// 0 — and says so; the panel's step count stays 0.
+#[test]
+fn a_first_step_that_diverges_is_shown_in_the_viewer_and_said() {
+    let stiff = SPRING.replace("stiffness: 100.0", "stiffness: 1e9");
+    let dir = scenes_folder(&[("stiff.ron", &stiff)]);
+    let shown = dir.path().join("shown.rrd");
+    let sinks = Sinks::new(vec![Sinks::file(&shown).unwrap()]);
+    let mut harness = harness(ControlPanel::new(sinks, Arc::new(|| {}), dir.path().to_path_buf()).unwrap());
+    open_from_list(&mut harness, "stiff.ron");
+    harness.key_press(egui::Key::ArrowRight);
+    until(&mut harness, "the divergence", |p| p.status().is_some_and(|s| s.failure.is_some()));
+    let status = harness.state().status().cloned().unwrap();
+    let failure = status.failure.unwrap();
+    assert_eq!(status.steps, 0, "{failure}");
+    assert!(failure.contains("the simulation diverged at t = 0.001 s"), "{failure}");
+    assert!(failure.ends_with("(the viewer shows the state it reached at t = 1 ms)"), "{failure}");
+    drop(harness);
+    let stores = common::x11::stores(&shown);
+    let last = stores
+        .values()
+        .flat_map(|store| store.iter_physical_chunks())
+        .filter_map(|c| c.timelines().get(&"sim_time".into()).and_then(|t| t.times_raw().iter().copied().max()))
+        .max();
+    assert_eq!(last, Some(1_000_000), "the diverged step's frame, at 1 ms");
+}
+
+/// Issue 35: a line edited shorter than the distance between its ends is applied with a
+/// warning (it is stretched by EA at once), and `substeps: Auto` plans again for it: the rope
+/// (D = 2×10⁵ N/m, λ0 = 2 kg/m) slack at 10 m over 8.485 m holds the 100 kg ball at one
+/// sub-step of 50 ms; pulled taut at 8 m (EA/L = 2.5×10⁵ N/m, stable step 2/ω = 40 ms) it
+/// needs ⌈0.05/(0.9·0.04)⌉ = 2.
+#[test]
+fn a_line_edited_shorter_than_its_ends_warns_and_auto_substeps_follow() {
+    let rope = ROPE.replace("dt: 1e-3,", "dt: 0.05, substeps: Auto,").replace("(6.0, 0.0, 2.0)", "(6.0, 0.0, 4.0)");
+    let dir = scenes_folder(&[("rope.ron", &rope)]);
+    let mut harness = harness(panel(dir.path()));
+    open_from_list(&mut harness, "rope.ron");
+    assert_eq!(harness.state().status().map(|s| s.substeps), Some(1));
+    set_knob(&mut harness, "length L_eq", 8.0);
+    let warning = "warning: line \"rope\" is 8 m long, shorter than the 8.485 m between its ends: it is stretched by EA = 1.6 MN at once";
+    until(&mut harness, "the warning", |p| p.log().any(|l| l.error && l.text == warning));
+    until(&mut harness, "two sub-steps", |p| p.status().is_some_and(|s| s.substeps == 2));
+    assert_eq!(world(&harness).substeps(), 2);
+    harness.run_steps(2);
+    harness.get_by_label("integrator step 25 ms (2 substeps per dt)");
+}
+
+/// Issue 35: a long line in the log (or a refusal, a load error) wraps in the side panel
+/// instead of widening it; the newest log line is on top; the pace's row is there paused and
+/// playing, so the rows below it do not move.
+#[test]
+fn long_lines_wrap_the_log_is_newest_first_and_rows_stay_put() {
+    let long_name = "a_body_named_at_such_length_that_its_name_cannot_fit_in_any_panel_".repeat(3);
+    let bad = common::spring_scene_text(&long_name).replace("mass: 1.0,", "mass: -1.0,");
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str()), ("bad.ron", &bad)]);
+    let mut harness = Harness::builder().with_size([1200.0, 1100.0]).build_ui_state(
+        |ui, panel: &mut ControlPanel| {
+            let width = panel.side_panel(ui, None);
+            ui.data_mut(|d| d.insert_temp(egui::Id::new("side width"), width));
+        },
+        panel(dir.path()),
+    );
+    let width = |harness: &Harness<'_, ControlPanel>| {
+        harness.ctx.data(|d| d.get_temp::<f32>(egui::Id::new("side width"))).expect("the panel's width")
+    };
+    open_from_list(&mut harness, "spring.ron");
+    harness.run_steps(2);
+    let before = width(&harness);
+    let long = format!("{} end", "a_very_long_path_segment/".repeat(20));
+    harness.state_mut().note_error(long.clone());
+    harness.state_mut().note("the newest line".into());
+    harness.get_by_label("bad.ron").click();
+    harness.run_steps(3);
+    let error = harness.state().load_error().expect("the bad scene is refused").to_string();
+    assert!(error.contains(&long_name), "{error}");
+    harness.get_by_label(&error);
+    assert_eq!(width(&harness), before, "the panel keeps its width ({before})");
+    let top = |harness: &Harness<'_, ControlPanel>, label: &str| {
+        harness.get_by_label_contains(label).accesskit_node().bounding_box().expect("laid out").y0
+    };
+    assert!(top(&harness, "the newest line") < top(&harness, "a_very_long_path_segment"), "newest first");
+
+    let speed_row = |harness: &Harness<'_, ControlPanel>| top(harness, "Speed");
+    let paused = speed_row(&harness);
+    harness.get_by_label("paused");
+    harness.key_press(egui::Key::Space);
+    until(&mut harness, "the run", |p| p.status().is_some_and(|s| s.running && s.time > 0.01));
+    harness.run_steps(1);
+    assert_eq!(speed_row(&harness), paused, "the rows below the pace stay where they were");
 }

@@ -368,3 +368,34 @@ fn grounded_lines_are_drawn_marked_and_their_grounded_length_plotted() {
     }
     assert!(lengths.windows(2).all(|w| w[0] != w[1]), "the grounded length changes as the buoy swings: {lengths:?}");
 }
+
+/// Issue 35: a dynamic line's grounded length is its nodes' (the segments on the seabed), not 0.
+/// moored_buoy with mooring1 dynamic (40 segments of 6.25 m): at t = 0 its nodes are the static
+/// shape, whose grounded length is the quasi-static catenary's within a segment; it stays on
+/// the seabed over the 2 s recorded.
+#[test]
+fn a_dynamic_line_s_grounded_length_is_read_from_its_nodes() {
+    let text = std::fs::read_to_string(common::repo("scenes/moored_buoy.ron")).unwrap();
+    let dynamic = "Dynamic(segments: 40, damping: Ratio(0.8), drag_normal: 2.4, drag_tangential: 1.15, added_mass_normal: 1.0, added_mass_tangential: 0.5)";
+    let text = text.replacen("model: QuasiStatic,", &format!("model: {dynamic},"), 1);
+    assert!(text.contains(&format!("model: {dynamic},")), "mooring1 made dynamic");
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("moored_buoy.ron");
+    std::fs::write(&scene, &text).unwrap();
+    let out = dir.path().join("out.rrd");
+    let status = tether()
+        .args(["record", scene.to_str().unwrap(), "-o", out.to_str().unwrap(), "--duration", "2", "--log-hz", "10"])
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let grounded = scalars_by_step(&out, "/plots/seabed");
+    let quasi_static = tether_scene::load(&common::repo("scenes/moored_buoy.ron")).unwrap().world;
+    let expected = quasi_static.line_state(0).expect("a solved line").grounded_length();
+    let at_start = grounded[&0][0];
+    println!("mooring1 grounded at t = 0: {at_start} m dynamic, {expected} m quasi-static");
+    assert!(expected > 10.0, "the chain lies on the seabed: {expected} m");
+    assert!((at_start - expected).abs() <= 6.25, "{at_start} m against {expected} m");
+    for (step, lengths) in &grounded {
+        assert!(lengths[0] > 0.0, "step {step}: {lengths:?}");
+    }
+}

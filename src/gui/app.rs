@@ -80,8 +80,8 @@ impl TetherApp {
     fn open_recording(&mut self, path: &Path) {
         match &self.viewer {
             Some(viewer) => {
+                self.panel.play_back(path);
                 viewer.open_url_or_file(&path.display().to_string());
-                self.panel.note(format!("playing back {}", path.display()));
             }
             None => self.panel.note_error(format!(
                 "{}: recordings play back in the embedded viewer, not with --connect",
@@ -206,9 +206,7 @@ impl eframe::App for TetherApp {
 
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         let selected = self.selection.borrow().clone();
-        egui::Panel::left("tether_controls").resizable(true).default_size(380.0).show(ui, |ui| {
-            self.panel.ui(ui, selected.as_deref());
-        });
+        self.panel.side_panel(ui, selected.as_deref());
         if self.panel.sweep().is_some() {
             egui::Panel::bottom("tether_sweep").resizable(true).default_size(300.0).show(ui, |ui| {
                 self.panel.sweep_ui(ui);

@@ -4,7 +4,9 @@
 //! the running scene (its masses, expected area `A` and range `d0`). "Use k1, k2" puts them in
 //! the contact's knobs, which tune the running simulation as any edit does.
 
+use super::number_field::number_field;
 use super::simulation::ContactStatus;
+use crate::figures;
 use rerun::external::egui;
 use tether_physics::coupling::contact::estimator::{self, Impact};
 
@@ -47,7 +49,7 @@ pub fn ui(ui: &mut egui::Ui, contacts: &[ContactStatus], impact: &mut ImpactDraf
         ] {
             let name = ui.label(label);
             let speed = 0.001_f64.max(value.abs() * 0.01);
-            ui.add(egui::DragValue::new(value).speed(speed).max_decimals(6)).labelled_by(name.id);
+            number_field(ui, value, speed).labelled_by(name.id);
             ui.label(unit);
             ui.end_row();
         }
@@ -64,13 +66,24 @@ pub fn ui(ui: &mut egui::Ui, contacts: &[ContactStatus], impact: &mut ImpactDraf
             damping_ratio: impact.damping_ratio,
         });
         ui.label(format!(
-            "{} (m_e from {:.3} kg, A = {:.4} m², d0 = {} m)",
-            contact.name, contact.mass, contact.area, contact.range
+            "{} (m_e from {} kg, A = {} m², d0 = {})",
+            contact.name,
+            figures::number(contact.mass, 4),
+            figures::number(contact.area, 4),
+            figures::quantity(contact.range, "m", 4)
         ));
         match estimate {
             Ok(e) => {
-                ui.label(format!("k1 = {:.4e} N/m³   k2 = {:.4e} N·s/m³", e.stiffness, e.damping));
-                ui.label(format!("τ = {:.4e} s   recommended dt ≤ {:.4e} s", e.stopping_time, e.recommended_dt));
+                ui.label(format!(
+                    "k1 = {}   k2 = {}",
+                    figures::quantity(e.stiffness, "N/m³", 4),
+                    figures::quantity(e.damping, "N·s/m³", 4)
+                ));
+                ui.label(format!(
+                    "τ = {}   recommended dt ≤ {}",
+                    figures::quantity(e.stopping_time, "s", 4),
+                    figures::quantity(e.recommended_dt, "s", 4)
+                ));
                 if ui.button(format!("Use k1, k2 for {}", contact.name)).clicked() {
                     chosen = Some(UseEstimate { index: contact.index, stiffness: e.stiffness, damping: e.damping });
                 }

@@ -14,6 +14,7 @@
 //! are exhaustive: a new kind does not compile until it says what can be fitted in it.
 
 use super::line_plot::{self, Framed};
+use super::number_field::number_field;
 use super::open_scene::{KnobId, OpenScene};
 use super::simulation::{Curve, Wake};
 use crate::fit::measured::Record;
@@ -781,7 +782,8 @@ fn choices_ui(
 /// A bound: a number after `prefix`, named `name` for screen readers (and tests).
 fn bound(ui: &mut egui::Ui, value: &mut f64, prefix: &str, name: &str) {
     let speed = value.abs().max(1e-3) * 0.01;
-    let response = ui.add(egui::DragValue::new(value).speed(speed).max_decimals(6).prefix(format!("{prefix} ")));
+    ui.label(prefix);
+    let response = number_field(ui, value, speed);
     ui.ctx().accesskit_node_builder(response.id, |node| node.set_label(name));
 }
 

@@ -9,7 +9,8 @@
 //!   applies what its sub-panels ask for:
 //!   - [`scenes`]: scene list, file dialogs, load errors;
 //!   - [`run_controls`]: play/pause/step/reset, speed, integrator, dt, substeps;
-//!   - [`tuning`]: every parameter of every coupling, with units; revert, save as;
+//!   - [`tuning`]: every parameter of every coupling, with units, each in a [`number_field`];
+//!     revert, save as;
 //!   - [`indicators`]: energy balance, stable time steps, the selected body;
 //!   - [`contact_estimator`]: k1, k2, τ from an impact, where the scene has contact;
 //!   - [`water`]: waves, current, density, each floating body's coefficients, live;
@@ -31,6 +32,7 @@ pub mod fit;
 pub mod indicators;
 pub mod knobs;
 pub mod line_plot;
+pub mod number_field;
 pub mod open_scene;
 pub mod panel;
 pub mod run_controls;

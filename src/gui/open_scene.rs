@@ -362,13 +362,44 @@ mod tests {
         water_knob(&mut open).density = 0.0;
         assert!(open.tune(KnobId::Water).is_none());
         let knob = &open.knobs.water.knobs()[0];
-        assert_eq!(knob.refusal.as_deref(), Some("water: density must be > 0 kg/m³, got 0"));
+        let refused: Vec<String> = knob.refusals.iter().map(ToString::to_string).collect();
+        assert_eq!(refused, ["density = 0 not applied (the run keeps 1025): water: density must be > 0 kg/m³, got 0"]);
         assert_eq!(open.tuned, open.file, "a refused value is not tuned");
 
         assert_eq!(open.revert_to_file(), [KnobId::Water]);
         assert_eq!(water_knob(&mut open).density, 1025.0);
         assert!(matches!(open.tune(KnobId::Water), Some(Command::SetWater(spec)) if spec.density == 1025.0));
-        assert_eq!(open.knobs.water.knobs()[0].refusal, None);
+        assert!(open.knobs.water.knobs()[0].refusals.is_empty());
         assert!(open.revert_to_file().is_empty(), "nothing left to apply");
+    }
+
+    /// Issue 35: after a refused wave period, a corrected wave height applies (the period stays
+    /// refused, with its reason, the run keeping 6 s); fixing the period applies it and clears
+    /// the reason.
+    #[test]
+    fn a_fixed_field_applies_while_another_of_the_same_knob_stays_refused() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut open = open(&dir, |_| {});
+        let set = |open: &mut OpenScene, h: f64, t: f64| {
+            if let WavesDef::Regular { height, period, .. } = &mut water_knob(open).waves {
+                (*height, *period) = (h, t);
+            }
+        };
+        set(&mut open, 1.0, 0.0);
+        assert!(open.tune(KnobId::Water).is_none());
+        set(&mut open, 3.0, 0.0);
+        let Some(Command::SetWater(spec)) = open.tune(KnobId::Water) else { panic!("the height is applied") };
+        let WaveSpec::Regular { height, period, .. } = spec.waves else { panic!("{:?}", spec.waves) };
+        assert_eq!((height, period), (3.0, 6.0), "the new height, the running period");
+        assert_eq!(open.tuned.water.as_ref().map(waves), Some((3.0, 6.0)));
+        assert_eq!(waves(water_knob(&mut open)), (3.0, 0.0), "the knob still shows the refused draft");
+        let refused: Vec<String> = open.knobs.water.knobs()[0].refusals.iter().map(ToString::to_string).collect();
+        assert_eq!(refused.len(), 1, "{refused:?}");
+        assert!(refused[0].starts_with("waves.period = 0 not applied (the run keeps 6): water: "), "{}", refused[0]);
+
+        set(&mut open, 3.0, 8.0);
+        assert!(open.tune(KnobId::Water).is_some());
+        assert_eq!(open.tuned.water.as_ref().map(waves), Some((3.0, 8.0)));
+        assert!(open.knobs.water.knobs()[0].refusals.is_empty());
     }
 }

@@ -12,7 +12,7 @@ use super::indicators::{self, EnergyHistory};
 use super::knobs::Knob;
 use super::open_scene::{KnobId, OnDisk, OpenScene};
 use super::run_controls::{self, RunAction, TimingDraft};
-use super::scenes::{self, SceneAction};
+use super::scenes::{self, Playback, SceneAction};
 use super::simulation::{Command, Report, Simulation, Speed, Status, Wake};
 use super::statics::{self, StaticsAction, StaticsDraft};
 use super::stream::Sinks;
@@ -81,6 +81,9 @@ pub struct ControlPanel {
     statics: StaticsDraft,
     /// The fit panel's record, choices and fit.
     fit: FitDraft,
+    /// The recording played back in the viewer since the scene was closed for it, and the scene
+    /// that was closed (to go back to).
+    playback: Option<Playback>,
 }
 
 impl ControlPanel {
@@ -106,6 +109,7 @@ impl ControlPanel {
             sweep: None,
             statics: StaticsDraft::new(None),
             fit: FitDraft::default(),
+            playback: None,
         })
     }
 
@@ -132,6 +136,30 @@ impl ControlPanel {
     /// The panel's log, oldest first.
     pub fn log(&self) -> impl Iterator<Item = &LogLine> {
         self.log.iter()
+    }
+
+    /// The recording played back in the viewer, if one is.
+    pub fn playback(&self) -> Option<&Playback> {
+        self.playback.as_ref()
+    }
+
+    /// A recording is played back in the viewer: the live scene's run is stopped and closed
+    /// (its controls go grey: the viewer no longer shows it, so nothing may run unseen), the
+    /// panel says what plays and offers the closed scene back.
+    pub fn play_back(&mut self, recording: &Path) {
+        let closed = self.scene.take().map(|open| open.path);
+        if let Some(path) = &closed {
+            self.simulation.send(Command::Close);
+            self.note(format!(
+                "closed {} to play back a recording (tuned values not kept: \"Save as…\" keeps them)",
+                path.display()
+            ));
+        }
+        self.status = None;
+        self.history = EnergyHistory::default();
+        self.fit.scene_changed();
+        self.note(format!("playing back {}", recording.display()));
+        self.playback = Some(Playback { recording: recording.to_path_buf(), closed });
     }
 
     /// Recordings the user asked to play back (the app gives them to the viewer).
@@ -240,7 +268,10 @@ impl ControlPanel {
             self.note(note);
         }
         self.load_error = None;
+        self.playback = None;
+        // Per-scene state starts from the scene: nothing typed for the last one carries over.
         self.timing = TimingDraft::from_file(&loaded.scene.tuned);
+        self.impact = ImpactDraft::default();
         self.history = EnergyHistory::default();
         self.statics = StaticsDraft::new(loaded.scene.tuned.seabed.as_ref().map(|s| s.line_friction));
         self.fit.scene_changed();
@@ -255,16 +286,34 @@ impl ControlPanel {
         self.simulation.stop();
     }
 
+    /// Draws the panel as the window's left side panel, 380 points wide to start with and
+    /// resizable by the user (long lines wrap in it instead of widening it); returns its width.
+    pub fn side_panel(&mut self, ui: &mut egui::Ui, selected: Option<&str>) -> f32 {
+        let shown = egui::Panel::left("tether_controls").resizable(true).default_size(380.0).show(ui, |ui| {
+            self.ui(ui, selected);
+        });
+        shown.response.rect.width()
+    }
+
     /// Draws the panel and does what it asks; `selected` is the entity selected in the viewer.
     pub fn ui(&mut self, ui: &mut egui::Ui, selected: Option<&str>) {
         self.receive();
         self.reload_if_changed(ui.ctx());
         self.poll_dialogs();
         self.shortcuts(ui.ctx());
+        // The log at the bottom of the panel, always in sight, newest first.
+        // Not resizable: a resize handle would take the keyboard focus before "Open scene…" (Tab).
+        egui::Panel::bottom("tether_log").resizable(false).exact_size(120.0).show(ui, |ui| self.log_ui(ui));
         egui::ScrollArea::vertical().auto_shrink([false, false]).show(ui, |ui| {
             ui.heading("Tether");
             let scene_path = self.scene.as_ref().map(|s| s.path.as_path());
-            if let Some(action) = scenes::ui(ui, scene_path, &self.scene_list, self.load_error()) {
+            let picker = scenes::Picker {
+                current: scene_path,
+                scenes: &self.scene_list,
+                load_error: self.load_error(),
+                playback: self.playback.as_ref(),
+            };
+            if let Some(action) = scenes::ui(ui, &picker) {
                 self.scene_action(action);
             }
             ui.separator();
@@ -289,8 +338,6 @@ impl ControlPanel {
             self.water_ui(ui);
             self.statics_ui(ui, selected);
             self.fit_ui(ui);
-            ui.separator();
-            self.log_ui(ui);
         });
         if self.status.as_ref().is_some_and(|s| s.running) {
             ui.ctx().request_repaint_after(super::simulation::TICK);
@@ -302,6 +349,8 @@ impl ControlPanel {
         self.receive_fit();
         for report in self.simulation.drain() {
             match report {
+                // A status sent before the scene was closed is no run's any more.
+                Report::Status(_) if self.scene.is_none() => {}
                 Report::Status(status) => {
                     self.history.push(&status);
                     self.status = Some(*status);
@@ -470,9 +519,8 @@ impl ControlPanel {
                 .iter_mut()
                 .zip(&open.file.bodies)
                 .enumerate()
-                .filter_map(|(index, (Knob { draft, refusal }, body))| {
-                    let refusal = refusal.as_ref();
-                    draft.as_mut().map(|hydro| (index, body.name.as_str(), hydro, refusal))
+                .filter_map(|(index, (Knob { draft, refusals }, body))| {
+                    draft.as_mut().map(|hydro| (index, body.name.as_str(), hydro, refusals.as_slice()))
                 })
                 .collect(),
         });
@@ -619,13 +667,18 @@ impl ControlPanel {
         }
     }
 
+    /// The log, newest line first, each wrapped in the panel's width.
     fn log_ui(&self, ui: &mut egui::Ui) {
-        for line in &self.log {
-            if line.error {
-                ui.colored_label(ui.visuals().error_fg_color, &line.text);
-            } else {
-                ui.label(&line.text);
+        ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Wrap);
+        ui.weak("Log, newest first");
+        egui::ScrollArea::vertical().auto_shrink([false, false]).show(ui, |ui| {
+            for line in self.log.iter().rev() {
+                if line.error {
+                    ui.colored_label(ui.visuals().error_fg_color, &line.text);
+                } else {
+                    ui.label(&line.text);
+                }
             }
-        }
+        });
     }
 }

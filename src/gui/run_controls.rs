@@ -1,7 +1,9 @@
 //! Run controls: play/pause (Space), one step (→), reset (Backspace), speed, and the time step
 //! settings (integrator, dt, substeps) applied to the running simulation.
 
+use super::number_field::number_field;
 use super::simulation::{Speed, Status};
+use crate::figures;
 use rerun::external::egui;
 use tether_physics::integrator::{Integrator, Substeps};
 use tether_scene::SceneFile;
@@ -68,23 +70,33 @@ pub fn ui(
 ) -> Vec<RunAction> {
     let mut actions = Vec::new();
     let running = status.is_some_and(|s| s.running);
-    ui.horizontal(|ui| {
-        let (label, action) = if running { ("⏸ Pause", RunAction::Pause) } else { ("▶ Play", RunAction::Play) };
-        if ui.button(label).on_hover_text("Space").clicked() {
-            actions.push(action);
-        }
-        if ui.button("⏭ Step").on_hover_text("→: one world step").clicked() {
-            actions.push(RunAction::Step);
-        }
-        if ui.button("⟲ Reset").on_hover_text("Backspace: back to t = 0, tuned values kept").clicked() {
-            actions.push(RunAction::Reset);
-        }
+    // Without a scene there is nothing to play, step or reset.
+    ui.add_enabled_ui(status.is_some(), |ui| {
+        ui.horizontal(|ui| {
+            let (label, action) = if running { ("⏸ Pause", RunAction::Pause) } else { ("▶ Play", RunAction::Play) };
+            if ui.button(label).on_hover_text("Space").clicked() {
+                actions.push(action);
+            }
+            if ui.button("⏭ Step").on_hover_text("→: one world step").clicked() {
+                actions.push(RunAction::Step);
+            }
+            if ui.button("⟲ Reset").on_hover_text("Backspace: back to t = 0, tuned values kept").clicked() {
+                actions.push(RunAction::Reset);
+            }
+        });
     });
     if let Some(status) = status {
-        ui.label(format!("t = {:.4} s   step {}", status.time, status.steps));
-        if status.running {
-            ui.label(format!("×{:.2} real time, {:.0} steps/s", status.rate, status.steps_per_second));
-        }
+        ui.label(format!("t = {}   step {}", figures::quantity(status.time, "s", 5), figures::count(status.steps)));
+        // The pace's row stays when paused, so nothing below moves on play and pause.
+        ui.label(if status.running {
+            format!(
+                "×{} real time, {} steps/s",
+                figures::number(status.rate, 2),
+                figures::number(status.steps_per_second.round(), 3)
+            )
+        } else {
+            "paused".to_string()
+        });
         if let Some(failure) = &status.failure {
             ui.colored_label(ui.visuals().error_fg_color, format!("Paused: {failure}"));
         }
@@ -135,7 +147,7 @@ fn timing_ui(ui: &mut egui::Ui, timing: &mut TimingDraft) -> bool {
         ui.end_row();
         let label = ui.label("dt");
         let speed = timing.dt.abs().max(1e-6) * 0.01;
-        let dt = ui.add(egui::DragValue::new(&mut timing.dt).speed(speed).max_decimals(8)).labelled_by(label.id);
+        let dt = number_field(ui, &mut timing.dt, speed).labelled_by(label.id);
         ui.label("s");
         apply |= dt.changed() && !dt.dragged() || dt.drag_stopped();
         ui.end_row();
@@ -151,7 +163,7 @@ fn timing_ui(ui: &mut egui::Ui, timing: &mut TimingDraft) -> bool {
                 apply = true;
             }
             if let Some(n) = &mut timing.substeps {
-                apply |= ui.add(egui::DragValue::new(n).speed(0.1)).changed();
+                apply |= number_field(ui, n, 0.1).changed();
             }
         });
         ui.label("per dt");

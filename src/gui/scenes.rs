@@ -1,4 +1,5 @@
-//! The scene picker: the scene list, the file dialogs, and why the last scene would not load.
+//! The scene picker: the scene list, the file dialogs, why the last scene would not load, and
+//! the recording played back in place of a scene.
 
 use rerun::external::egui;
 use std::path::{Path, PathBuf};
@@ -15,18 +16,51 @@ pub enum SceneAction {
     Refresh,
 }
 
-/// Draws the picker: the open scene, the load error in red, the list and the dialogs.
-pub fn ui(
-    ui: &mut egui::Ui,
-    current: Option<&Path>,
-    scenes: &[PathBuf],
-    load_error: Option<&str>,
-) -> Option<SceneAction> {
+/// A recording played back in the viewer in place of the live run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Playback {
+    pub recording: PathBuf,
+    /// The scene whose run was closed for it.
+    pub closed: Option<PathBuf>,
+}
+
+/// What the picker shows.
+pub struct Picker<'a> {
+    /// The open scene.
+    pub current: Option<&'a Path>,
+    /// The scenes folder's list.
+    pub scenes: &'a [PathBuf],
+    /// Why the last scene would not load.
+    pub load_error: Option<&'a str>,
+    /// The recording played back in place of a scene.
+    pub playback: Option<&'a Playback>,
+}
+
+/// Draws the picker: the open scene (or the recording played back, with the scene closed for
+/// it to go back to), the load error in red, the list and the dialogs.
+pub fn ui(ui: &mut egui::Ui, picker: &Picker<'_>) -> Option<SceneAction> {
+    let Picker { current, scenes, load_error, playback } = *picker;
     let mut action = None;
-    match current {
-        Some(path) => ui.label(format!("Scene: {}", file_name(path))).on_hover_text(path.display().to_string()),
-        None => ui.label("No scene open: pick one below, open a file or drop a .ron on the window."),
-    };
+    match (current, playback) {
+        (Some(path), _) => {
+            ui.label(format!("Scene: {}", file_name(path))).on_hover_text(path.display().to_string());
+        }
+        (None, Some(Playback { recording, closed })) => {
+            ui.strong(format!("Playing back {}", file_name(recording))).on_hover_text(recording.display().to_string());
+            ui.label("The viewer shows this recording; no scene runs. Open a scene to run one.");
+            if let Some(closed) = closed
+                && ui
+                    .button(format!("Back to {}", file_name(closed)))
+                    .on_hover_text("Open the scene again, at t = 0")
+                    .clicked()
+            {
+                action = Some(SceneAction::Open(closed.clone()));
+            }
+        }
+        (None, None) => {
+            ui.label("No scene open: pick one below, open a file or drop a .ron on the window.");
+        }
+    }
     if let Some(error) = load_error {
         ui.colored_label(ui.visuals().error_fg_color, error).on_hover_text("The previous scene keeps running.");
     }
@@ -34,7 +68,11 @@ pub fn ui(
         if ui.button("Open scene…").clicked() {
             action = Some(SceneAction::Browse);
         }
-        if ui.button("Open recording…").on_hover_text("Play back a .rrd (dropping one works too)").clicked() {
+        if ui
+            .button("Open recording…")
+            .on_hover_text("Play back a .rrd (dropping one works too); the scene running is closed")
+            .clicked()
+        {
             action = Some(SceneAction::BrowseRecording);
         }
         if ui.button("⟳").on_hover_text("List the scenes folder again").clicked() {

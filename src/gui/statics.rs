@@ -4,8 +4,10 @@
 //! A line's displaced area `A_d` is tuned with its other knobs ([`super::tuning`]).
 
 use super::line_plot::{self, Framed};
+use super::number_field::number_field;
 use super::simulation::OffsetCurve;
 use super::tuning::knob;
+use crate::figures;
 use rerun::external::egui;
 use tether_physics::seabed::Seabed;
 use tether_physics::statics::Direction;
@@ -105,7 +107,8 @@ pub fn ui(
         egui::Grid::new("offset knobs").num_columns(3).show(ui, |ui| {
             knob(ui, "to", &mut draft.to, draft.direction.unit());
             ui.label("offsets");
-            ui.add(egui::DragValue::new(&mut draft.steps).range(1..=200));
+            number_field(ui, &mut draft.steps, 0.1);
+            draft.steps = draft.steps.clamp(1, 200);
             ui.end_row();
         });
         let valid = draft.to.is_finite() && draft.to != 0.0;
@@ -142,21 +145,21 @@ fn plot(ui: &mut egui::Ui, curve: &OffsetCurve) {
     painter.text(
         rect.left_top() + egui::vec2(4.0, 2.0),
         egui::Align2::LEFT_TOP,
-        format!("{y1:.4e} {load}"),
+        figures::quantity(y1, load, 4),
         font.clone(),
         text,
     );
     painter.text(
         rect.left_bottom() + egui::vec2(4.0, -2.0),
         egui::Align2::LEFT_BOTTOM,
-        format!("{y0:.4e} {load}"),
+        figures::quantity(y0, load, 4),
         font.clone(),
         text,
     );
     painter.text(
         rect.right_bottom() + egui::vec2(-4.0, -2.0),
         egui::Align2::RIGHT_BOTTOM,
-        format!("offset {x0:.3} … {x1:.3} {unit}"),
+        format!("offset {} … {}", figures::quantity(x0, unit, 3), figures::quantity(x1, unit, 3)),
         font,
         text,
     );

@@ -9,6 +9,7 @@
 //! law does not compile until it has its knobs here.
 
 use super::knobs::Knob;
+use super::number_field::number_field;
 use crate::line_hint::Measures;
 use rerun::external::egui;
 use rerun::external::egui::emath::Numeric;
@@ -52,7 +53,7 @@ pub fn ui(
     if knobs.is_empty() {
         ui.label("This scene has no couplings.");
     }
-    for (index, Knob { draft, refusal }) in knobs.iter_mut().enumerate() {
+    for (index, Knob { draft, refusals }) in knobs.iter_mut().enumerate() {
         let edited = file.couplings.get(index) != Some(&*draft);
         let title = format!("{}{} ({})", draft.name(), if edited { " •" } else { "" }, kind_name(draft));
         egui::CollapsingHeader::new(title).id_salt(("coupling", index)).default_open(index < 4).show(ui, |ui| {
@@ -62,8 +63,8 @@ pub fn ui(
             if let Some(Some(measures)) = hints.get(index) {
                 line_hint(ui, measures);
             }
-            if let Some(refusal) = refusal {
-                ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refusal}"));
+            for refused in refusals.iter() {
+                ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refused}"));
             }
         });
     }
@@ -178,28 +179,26 @@ fn law_knobs(ui: &mut egui::Ui, law: &mut LawDef) -> bool {
 pub(super) fn knob(ui: &mut egui::Ui, label: &str, value: &mut impl Numeric, unit: &str) -> bool {
     let name = ui.label(label);
     let speed = value.to_f64().abs().max(1e-3) * 0.01;
-    let response = ui.add(egui::DragValue::new(value).speed(speed).max_decimals(6)).labelled_by(name.id);
+    let response = number_field(ui, value, speed).labelled_by(name.id);
     ui.label(unit);
     ui.end_row();
     response.changed()
 }
 
-/// The points of a table, one grid row each.
+/// The points of a table, one grid row each: `x [m] … f [N] …`.
 fn table_knobs(ui: &mut egui::Ui, points: &mut [(f64, f64)], x: (&str, &str), y: (&str, &str)) -> bool {
     let mut edited = false;
     for (row, (px, py)) in points.iter_mut().enumerate() {
         let name = ui.label(format!("point {}", row + 1));
         ui.horizontal(|ui| {
-            edited |= ui.add(point_knob(px, x)).labelled_by(name.id).changed();
-            edited |= ui.add(point_knob(py, y)).labelled_by(name.id).changed();
+            for (value, (symbol, unit)) in [(px, x), (py, y)] {
+                ui.label(symbol);
+                let speed = value.abs().max(1e-3) * 0.01;
+                edited |= number_field(ui, value, speed).labelled_by(name.id).changed();
+                ui.label(unit);
+            }
         });
         ui.end_row();
     }
     edited
-}
-
-/// A table coordinate: its symbol before the number, its unit after.
-fn point_knob<'a>(value: &'a mut f64, (symbol, unit): (&str, &str)) -> egui::DragValue<'a> {
-    let speed = value.abs().max(1e-3) * 0.01;
-    egui::DragValue::new(value).speed(speed).max_decimals(6).prefix(format!("{symbol} ")).suffix(format!(" {unit}"))
 }

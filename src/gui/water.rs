@@ -4,7 +4,7 @@
 //! an edited draft with the scene builder (the same checks and messages as loading) and sends
 //! the simulation what it accepts; a refused value stays in its knob with the reason.
 
-use super::knobs::Knob;
+use super::knobs::{Knob, Refused};
 use super::tuning::knob;
 use rerun::external::egui;
 use std::fmt::Display;
@@ -22,14 +22,14 @@ pub enum WaterAction {
 /// The water's knobs, as the panel shows them; `R` is why a value was refused.
 pub struct WaterKnobs<'a, R> {
     pub water: &'a mut Knob<WaterDef, R>,
-    /// `(body index, name, coefficients, refusal)` of each floating body.
-    pub bodies: Vec<(usize, &'a str, &'a mut HydroDef, Option<&'a R>)>,
+    /// `(body index, name, coefficients, refused fields)` of each floating body.
+    pub bodies: Vec<(usize, &'a str, &'a mut HydroDef, &'a [Refused<R>])>,
 }
 
 /// Draws the water section; nothing for a scene without water.
 pub fn ui<R: Display>(ui: &mut egui::Ui, knobs: Option<WaterKnobs<R>>) -> Vec<WaterAction> {
     let mut actions = Vec::new();
-    let Some(WaterKnobs { water: Knob { draft: water, refusal: water_refusal }, bodies }) = knobs else {
+    let Some(WaterKnobs { water: Knob { draft: water, refusals: water_refusals }, bodies }) = knobs else {
         return actions;
     };
     egui::CollapsingHeader::new("Water").id_salt("water").default_open(true).show(ui, |ui| {
@@ -37,18 +37,18 @@ pub fn ui<R: Display>(ui: &mut egui::Ui, knobs: Option<WaterKnobs<R>>) -> Vec<Wa
         if edited {
             actions.push(WaterAction::Water);
         }
-        if let Some(refusal) = water_refusal {
-            ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refusal}"));
+        for refused in water_refusals.iter() {
+            ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refused}"));
         }
-        for (index, name, hydro, refusal) in bodies {
+        for (index, name, hydro, refusals) in bodies {
             ui.label(format!("body \"{name}\" in the water"));
             let edited =
                 egui::Grid::new(("hydro knobs", index)).num_columns(3).show(ui, |ui| hydro_knobs(ui, hydro)).inner;
             if edited {
                 actions.push(WaterAction::Hydro(index));
             }
-            if let Some(refusal) = refusal {
-                ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refusal}"));
+            for refused in refusals {
+                ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refused}"));
             }
         }
     });

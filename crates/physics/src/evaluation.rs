@@ -46,13 +46,14 @@ impl Evaluation {
     }
 
     /// Starts coupling `index`'s cache afresh for `coupling`, which replaced it.
-    /// A dynamic line starts again at rest in its static equilibrium where it is now.
+    /// A dynamic line starts again in its static equilibrium where it is now, moving as that
+    /// shape moves with its ends ([`LineRun::under_way`]: no jolt from a live edit).
     pub(crate) fn forget(&mut self, index: usize, coupling: &Coupling) {
         self.caches[index] = coupling.new_cache();
         self.lines.retain(|run| run.coupling != index);
         if is_dynamic(coupling) {
             let at = self.lines.partition_point(|run| run.coupling < index);
-            self.lines.insert(at, LineRun::new(index));
+            self.lines.insert(at, LineRun::under_way(index));
         }
     }
 

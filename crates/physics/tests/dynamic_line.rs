@@ -243,3 +243,43 @@ fn a_taut_line_in_a_current_bows_as_a_loaded_string() {
     eprintln!("current: mid-span {mid} m, f L²/(8 T0) = {expected} m ({:+.2e})", mid / expected - 1.0);
     assert!((mid / expected - 1.0).abs() < 0.02, "mid-span {mid} m, f L²/(8 T0) = {expected} m (T0 = {tension} N)");
 }
+
+/// A line started under way (by a live edit) moves as its static shape does (PHYSICS.md §8
+/// "Initial state"):
+/// both ends of a hanging line (λ0 = 8 kg/m, 12 m over a 10 m span, EA = 2×10⁷ N) carried at a
+/// steady 1 m/s sideways keep the line's shape, so its end force stays the static one to the
+/// static solve's precision over 2 s (issue 35: started at rest under the moving ends, the end
+/// segments were jerked taut — here the end force swung by 39 % of itself).
+#[test]
+fn a_line_started_under_way_moves_with_its_static_shape() {
+    let (p1, p2) = (V::zeros(), V::new(10.0, 0.0, 0.0));
+    let l = line(8.0, 12.0, 2.0e7, plain(20), p1, p2);
+    let surroundings = Surroundings::dry(V::new(0.0, 0.0, -G));
+    let LineModel::Dynamic(model) = l.model else { unreachable!("built dynamic") };
+    let discrete = Discrete::new(&l, &model, &surroundings, None);
+    let velocity = V::new(0.0, 1.0, 0.0);
+    let moving = |p: V, t: f64| EndMotion {
+        position: p + velocity * t,
+        velocity,
+        attachment: tether_physics::coupling::Attachment::World,
+    };
+    let mut run = LineRun::under_way(0);
+    let start = run.advance(&l, &discrete, &surroundings, None, &[moving(p1, 0.0), moving(p2, 0.0)], 0.0).unwrap();
+    run.commit();
+    let still = statics::solve(&l, &discrete, &surroundings, &p1, &p2, 0.0).nodes;
+    let nodes = run.nodes().expect("the nodes");
+    for (v, (now, rest)) in nodes.velocities.iter().zip(nodes.positions.iter().zip(&still.positions)) {
+        assert!((now - rest).norm() < 1e-9, "the static shape: {now} against {rest}");
+        assert!((v - velocity).norm() < 1e-6, "every node moves with the ends: {v}");
+    }
+    let mut largest: f64 = 0.0;
+    let dt = 1e-3;
+    for step in 1..=2000 {
+        let t = f64::from(step) * dt;
+        let outcome = run.advance(&l, &discrete, &surroundings, None, &[moving(p1, t), moving(p2, t)], t).unwrap();
+        run.commit();
+        largest = largest.max((outcome.f1 - start.f1).norm() / start.f1.norm());
+    }
+    eprintln!("end force {} N, largest change over 2 s {largest:.2e} of it", start.f1.norm());
+    assert!(largest < 1e-6, "the end force changed by {largest:.2e} of itself");
+}

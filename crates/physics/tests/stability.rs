@@ -97,6 +97,43 @@ fn auto_substeps_make_a_too_large_step_stable() {
     assert_eq!(steps_to_failure(&mut fixed, 1000), None);
 }
 
+/// A live edit re-plans `substeps: Auto` (docs/scenes.md): the spring-mass at dt = 0.3 s runs
+/// ⌈0.3/(0.9·0.2)⌉ = 2 sub-steps; its spring stiffened to 400 N/m (stable step 2/20 = 0.1 s)
+/// takes ⌈0.3/(0.9·0.1)⌉ = 4 and stays bounded, where `Fixed(2)` under the same edit diverges;
+/// softened to 25 N/m (0.4 s) it needs ⌈0.3/0.36⌉ = 1.
+#[test]
+fn auto_substeps_are_planned_again_after_a_live_edit() {
+    let scene = |substeps: &str, stiffness: f64| {
+        common::scene(&format!(
+            "Scene(gravity: (0, 0, 0), dt: 0.3, substeps: {substeps}, bodies: [Body(name: \"m\",
+                master: Node(position: (1.01, 0, 0), mass: 1.0, inertia: Inertia(xx: 0.01, yy: 0.01, zz: 0.01)),
+                support: Fixed(translation: (false, true, true), rotation: true), shape: Sphere(radius: 0.1))],
+             couplings: [SpringDamper(name: \"s\", end1: World((0, 0, 0)), end2: Body(body: \"m\"), law: Linear(stiffness: {stiffness:e}, rest_length: 1.0))])"
+        ))
+        .world
+    };
+    let spring = |stiffness: f64| scene("Auto", stiffness).couplings()[0].clone();
+    let mut auto = scene("Auto", 100.0);
+    let mut fixed = scene("Fixed(2)", 100.0);
+    assert_eq!((auto.substeps(), fixed.substeps()), (2, 2));
+    for _ in 0..10 {
+        auto.step().unwrap();
+        fixed.step().unwrap();
+    }
+    auto.replace_coupling(0, spring(400.0)).unwrap();
+    fixed.replace_coupling(0, spring(400.0)).unwrap();
+    assert_eq!(auto.substeps(), 4);
+    assert_relative_eq!(auto.step_size(), 0.075, max_relative = 1e-15);
+    assert_eq!(fixed.substeps(), 2, "a fixed count is the user's");
+    assert_eq!(steps_to_failure(&mut auto, 1000), None);
+    assert!((auto.state(0).position.x - 1.0).abs() <= 0.0101, "bounded: {}", auto.state(0).position.x);
+    assert!(steps_to_failure(&mut fixed, 1000).is_some(), "0.15 s steps on a 0.1 s stable step diverge");
+
+    auto.replace_coupling(0, spring(25.0)).unwrap();
+    assert_eq!(auto.substeps(), 1);
+    assert_eq!(steps_to_failure(&mut auto, 1000), None);
+}
+
 /// |R(z)|² of RK4, `R = 1 + z + z²/2 + z³/6 + z⁴/24`, for `z = x + iy`, written out here apart
 /// from the estimator's.
 fn rk4_gain(x: f64, y: f64) -> f64 {

@@ -1,5 +1,6 @@
 //! How the viewer lays out a run: the 3D scene large on the left, the plots stacked on the
-//! right (a fit's plots first, twice as tall as the others; energy; tension when there are couplings; the catenaries' end tensions, their
+//! right (a fit's plots first, twice as tall as the others; the energy in two plots, stored and
+//! moving; the couplings' tensions — a contact's normal force named as such; the catenaries' end tensions, their
 //! grounded lengths on a seabed, and the contacts' forces when there are any; each floating
 //! body's motion in the water); the `sim_time` timeline; the viewer's own side panels folded,
 //! room being short beside the control panel.
@@ -28,18 +29,26 @@ pub fn layout_with_fits(world: &World, columns: &[&str]) -> Blueprint {
         .iter()
         .map(|column| TimeSeriesView::new(format!("fit: {column}")).with_origin(paths::fit_plot(column)).into())
         .collect();
-    plots.push(TimeSeriesView::new("energy [J]").with_origin(paths::ENERGY).into());
-    if !couplings.is_empty() {
-        plots.push(TimeSeriesView::new("tension [N]").with_origin(paths::TENSION).into());
-    }
-    let (mut lines, mut contacts) = (false, false);
+    plots.extend(energy_views());
+    let (mut pulls, mut lines, mut contacts) = (false, false, false);
     for coupling in couplings {
         match coupling.kind {
             // A spring's tension is in the tension plot.
-            CouplingKind::SpringDamper(_) => {}
-            CouplingKind::Catenary(_) => lines = true,
+            CouplingKind::SpringDamper(_) => pulls = true,
+            CouplingKind::Catenary(_) => (pulls, lines) = (true, true),
             CouplingKind::Contact(_) => contacts = true,
         }
+    }
+    // The plot holds every coupling's scalar force: a contact's is its normal force, which is
+    // not a tension.
+    let forces = match (pulls, contacts) {
+        (true, false) => Some("tension [N]"),
+        (true, true) => Some("tension, contact normal force [N]"),
+        (false, true) => Some("contact normal force [N]"),
+        (false, false) => None,
+    };
+    if let Some(name) = forces {
+        plots.push(TimeSeriesView::new(name).with_origin(paths::TENSION).into());
     }
     if lines {
         plots.push(TimeSeriesView::new("catenary end tensions [N]").with_origin(paths::CATENARY_PLOT).into());
@@ -73,6 +82,27 @@ pub fn layout_with_fits(world: &World, columns: &[&str]) -> Blueprint {
         .with_blueprint_panel(BlueprintPanel::from_state(PanelState::Collapsed))
         .with_selection_panel(SelectionPanel::from_state(PanelState::Collapsed))
         .with_time_panel(TimePanel::new().with_timeline("sim_time"))
+}
+
+/// The energy account (PHYSICS.md §5) in two plots of `plots/energy`'s series: the stored
+/// energies with their total and the balance, and what moves — kinetic, dissipated, external
+/// work. Apart, the kinetic energy of a moored buoy (kJ) is not a flat line beside a mooring's
+/// elastic energy (−6.9 MJ). Each plot hides the other's series (in the order the energy
+/// track logs them).
+fn energy_views() -> [ContainerLike; 2] {
+    // kinetic, gravity, elastic, dissipated, external_work, total, balance
+    let stored = [false, true, true, false, false, true, true];
+    let moving = stored.map(|shown| !shown);
+    let view = |name: &str, shown: [bool; 7]| -> ContainerLike {
+        TimeSeriesView::new(name)
+            .with_origin(paths::ENERGY)
+            .with_override(paths::ENERGY, &rerun::SeriesLines::new().with_visible_series(shown))
+            .into()
+    };
+    [
+        view("energy: gravity, elastic, total, balance [J]", stored),
+        view("energy: kinetic, dissipated, external work [J]", moving),
+    ]
 }
 
 /// Sends `world`'s [`layout`] to the viewer behind `stream` (nothing for a disabled stream).

@@ -144,6 +144,27 @@ impl Recorder {
         Ok(())
     }
 
+    /// Follows a live edit that changed what `world` records (a line switched to dynamic or
+    /// back: its plot gains or loses its quasi-static series): the buffered frames go out as
+    /// they were, then every track starts again from `world` and logs its static part anew
+    /// (what was sent so far is still counted).
+    ///
+    /// # Errors
+    /// A stream that fails.
+    pub fn restart_tracks(&mut self, world: &World) -> Result<(), RecordError> {
+        self.flush()?;
+        let mut tracks = tracks::for_world(world);
+        for (track, stats) in &mut tracks {
+            if let Some((_, sent)) = self.tracks.iter().find(|(_, sent)| sent.kind == stats.kind) {
+                *stats = KindStats { entities: stats.entities, ..sent.clone() };
+            }
+            track.log_static(&self.stream, world)?;
+        }
+        self.tracks = tracks;
+        self.stream.flush_async()?;
+        Ok(())
+    }
+
     /// Buffers the world's current state as a frame at its `sim_time` and `step`; sends the
     /// buffered frames when there are [`FRAMES_PER_CHUNK`] of them or [`BYTES_PER_CHUNK`].
     pub fn log_frame(&mut self, world: &World) -> Result<(), RecordError> {

@@ -76,6 +76,9 @@ pub enum Command {
     FitModel(Vec<Curve>),
     /// A new scene, paused at t = 0 (a fit's plots are dropped).
     Load(Box<Run>),
+    /// The scene closed: its run stopped, its recording finished (a recording is played back
+    /// in its place).
+    Close,
     /// A copy of the running world, for inspection (tests, tools).
     Snapshot(Sender<Option<World>>),
 }

@@ -126,6 +126,15 @@ impl Recording {
         if self.face_arrows { FaceArrows::all() } else { FaceArrows::default() }
     }
 
+    /// Follows an edit that changed what `world` records (a line's model switched): the
+    /// recorder's tracks start again from it (a dynamic line's quasi-static series appear).
+    pub(super) fn restart_tracks(&mut self, world: &World) -> Result<(), String> {
+        match &mut self.recorder {
+            Some(recorder) => recorder.restart_tracks(world).map_err(|e| format!("recording: {e}")),
+            None => Ok(()),
+        }
+    }
+
     /// Buffers a frame of `world` now (sent at the next [`Recording::flush`]).
     pub(super) fn log(&mut self, world: &World) -> Result<(), String> {
         let Some(recorder) = &mut self.recorder else { return Ok(()) };

@@ -12,11 +12,12 @@ use super::Wake;
 use super::protocol::{Command, Report, Run, Speed};
 use super::recording::Recording;
 use super::status::{self, RunState};
+use crate::figures;
 use crate::gui::stream::Sinks;
 use crate::run_length;
 use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender, TryRecvError};
 use std::time::{Duration, Instant};
-use tether_physics::coupling::Coupling;
+use tether_physics::coupling::{Coupling, CouplingKind, LineModel};
 use tether_physics::integrator::Timing;
 use tether_physics::seabed::Seabed;
 use tether_physics::statics::{Dof, Settings, equilibrium, offsets};
@@ -176,6 +177,7 @@ impl Runner {
                 self.report_failure(drawn);
             }
             Command::Load(run) => self.load(*run),
+            Command::Close => self.close(),
             Command::Snapshot(reply) => {
                 reply.send(self.run.as_ref().map(|run| run.world.clone())).ok();
             }
@@ -249,7 +251,18 @@ impl Runner {
         }
         if let Err(error) = run.world.step() {
             self.running = false;
-            let message = error.to_string();
+            // The step that failed is shown where it can be (a first step that diverges would
+            // otherwise leave the viewer at t = 0 with no sign of it); a state that is not
+            // finite never reaches the recording.
+            let shown = if status::finite(&run.world) {
+                let time = run.world.time();
+                let logged = self.recording.log(&run.world);
+                self.report_failure(logged);
+                format!("the viewer shows the state it reached at t = {}", figures::quantity(time, "s", 5))
+            } else {
+                "its state is not finite: the viewer shows the last step before".to_string()
+            };
+            let message = format!("{error} ({shown})");
             self.failure = Some(message.clone());
             return self.report(Report::Error(message));
         }
@@ -294,6 +307,16 @@ impl Runner {
         self.report(Report::Message(format!("loaded {label}")));
     }
 
+    /// Stops the run and finishes its recording; nothing runs until the next load.
+    fn close(&mut self) {
+        let Some(run) = self.run.take() else { return };
+        self.running = false;
+        self.failure = None;
+        self.recording.drop_fit();
+        self.finish_recording();
+        self.report(Report::Message(format!("{}: run stopped and closed", run.label)));
+    }
+
     /// Ends the current recording and starts a new one for the current world, its first frame
     /// logged.
     fn start_recording(&mut self) {
@@ -318,14 +341,17 @@ impl Runner {
             Ok(()) => match run_length::check(&run.world, run.duration, run_length::DEFAULT_MAX_STEPS) {
                 Err(long) if self.running => {
                     self.running = false;
-                    Report::Error(format!("paused: the scene's {} s at this timing: {long}", run.duration))
+                    Report::Error(format!(
+                        "paused: the scene's {} at this timing: {long}",
+                        figures::quantity(run.duration, "s", 6)
+                    ))
                 }
                 _ => Report::Message(format!(
-                    "dt = {:e} s, {} substep(s), {:?} from t = {:.4} s",
-                    timing.dt,
+                    "dt = {}, {} substep(s), {:?} from t = {}",
+                    figures::quantity(timing.dt, "s", 6),
                     run.world.substeps(),
                     timing.integrator.name(),
-                    run.world.time()
+                    figures::quantity(run.world.time(), "s", 5)
                 )),
             },
             Err(error) => Report::Error(error.to_string()),
@@ -336,13 +362,25 @@ impl Runner {
     fn set_coupling(&mut self, index: usize, coupling: Coupling, sent: Instant) {
         let Some(run) = &mut self.run else { return };
         let name = coupling.name.clone();
+        let model_before = line_model(&run.world, index);
         match run.world.replace_coupling(index, coupling) {
             Ok(()) => {
                 let (time, latency) = (run.world.time(), sent.elapsed().as_secs_f64() * 1e3);
+                let short = status::short_line(&run.world, index);
+                if line_model(&run.world, index) != model_before {
+                    // A line switched to dynamic or back: its plot's series change.
+                    let restarted = self.recording.restart_tracks(&run.world);
+                    self.report_failure(restarted);
+                }
                 self.log_frame();
                 self.report(Report::Message(format!(
-                    "coupling \"{name}\" applied at t = {time:.4} s, {latency:.2} ms after the edit"
+                    "coupling \"{name}\" applied at t = {}, {} after the edit",
+                    figures::quantity(time, "s", 5),
+                    figures::quantity(latency * 1e-3, "s", 3)
                 )));
+                if let Some(warning) = short {
+                    self.report(Report::Error(warning));
+                }
             }
             Err(error) => self.report(Report::Error(error.to_string())),
         }
@@ -365,7 +403,7 @@ impl Runner {
             Ok(()) => {
                 let time = run.world.time();
                 self.log_frame();
-                self.report(Report::Message(format!("{what} applied at t = {time:.4} s")));
+                self.report(Report::Message(format!("{what} applied at t = {}", figures::quantity(time, "s", 5))));
             }
             Err(error) => self.report(Report::Error(error.to_string())),
         }
@@ -386,7 +424,9 @@ impl Runner {
                 let time = run.world.time();
                 self.log_frame();
                 self.report(Report::Message(format!(
-                    "seabed line friction C_B = {friction} applied at t = {time:.4} s"
+                    "seabed line friction C_B = {} applied at t = {}",
+                    figures::number(friction, 6),
+                    figures::quantity(time, "s", 5)
                 )));
             }
             Err(error) => self.report(Report::Error(error)),
@@ -407,7 +447,10 @@ impl Runner {
                 self.running = false;
                 let elapsed = clock.elapsed().as_secs_f64() * 1e3;
                 self.log_frame();
-                self.report(Report::Message(format!("static equilibrium in {iterations} Newton iterations ({elapsed:.2} ms): the bodies placed there at rest")));
+                self.report(Report::Message(format!(
+                    "static equilibrium in {iterations} Newton iterations ({}): the bodies placed there at rest",
+                    figures::quantity(elapsed * 1e-3, "s", 3)
+                )));
             }
             Err(error) => self.report(Report::Error(error)),
         }
@@ -449,6 +492,14 @@ impl Runner {
             wall: wall.as_secs_f64(),
         };
         self.report(Report::Status(Box::new(status::status(&run.world, &state))));
+    }
+}
+
+/// Whether coupling `index` of `world` is a line, and a dynamic one (`None`: not a line).
+fn line_model(world: &World, index: usize) -> Option<bool> {
+    match &world.couplings().get(index)?.kind {
+        CouplingKind::Catenary(line) => Some(line.model != LineModel::QuasiStatic),
+        CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => None,
     }
 }
 

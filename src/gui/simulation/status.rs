@@ -2,6 +2,7 @@
 //! steps, the contacts the estimator needs, the bodies' states. Built from the world by the
 //! simulation thread once per tick.
 
+use crate::figures;
 use crate::line_hint::{self, Measures};
 use tether_physics::body::BodyState;
 use tether_physics::coupling::contact::Opposing;
@@ -161,4 +162,45 @@ fn body_status(world: &World, index: usize) -> BodyStatus {
         velocity,
         angular_velocity: orientation * angular_velocity,
     }
+}
+
+/// A warning when line `index` of `world` is shorter, unstretched, than the distance between its
+/// ends where they are now: it is then stretched by `EA = D L_eq` at once (PHYSICS.md §3), a
+/// jolt the run may not survive at its time step.
+pub fn short_line(world: &World, index: usize) -> Option<String> {
+    let coupling = world.couplings().get(index)?;
+    let line = match &coupling.kind {
+        CouplingKind::Catenary(line) => line,
+        CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => return None,
+    };
+    let frames = world.frames();
+    let span = (line.end2.motion(frames).position - line.end1.motion(frames).position).norm();
+    (line.length < span).then(|| {
+        format!(
+            "warning: line \"{}\" is {} long, shorter than the {} between its ends: it is stretched by EA = {} at once",
+            coupling.name,
+            figures::quantity(line.length, "m", 4),
+            figures::quantity(span, "m", 4),
+            figures::quantity(line.stiffness * line.length, "N", 3)
+        )
+    })
+}
+
+/// Whether everything the recorder logs of `world` is finite: the bodies' states, the energy
+/// account, each coupling's ends, forces and energy (a diverged step may be shown only then).
+pub fn finite(world: &World) -> bool {
+    let vector = |v: &Vec3| v.iter().all(|x| x.is_finite());
+    let states = world.synchronized_states().iter().all(|s| {
+        vector(&s.position)
+            && vector(&s.velocity)
+            && vector(&s.angular_velocity)
+            && s.orientation.coords.iter().all(|x| x.is_finite())
+    });
+    let e = world.energy();
+    let energy = [e.kinetic, e.gravity, e.elastic, e.dissipated, e.external_work].iter().all(|x| x.is_finite());
+    let couplings = world.coupling_forces().iter().all(|c| {
+        [&c.point1, &c.point2, &c.f1, &c.f2].into_iter().all(vector)
+            && [c.tension, c.dissipated_power, c.potential].iter().all(|x| x.is_finite())
+    });
+    states && energy && couplings
 }

@@ -160,12 +160,24 @@ impl World {
         Ok(())
     }
 
-    /// Starts the integrator again after a live edit of the world that was `before`, books the
-    /// jump in energy the edit made as external work (PHYSICS.md §5: the balance then still
-    /// checks the integrator) and refreshes the stable-step limit; if the couplings cannot give
-    /// their forces, the world goes back to `before`.
+    /// Starts the integrator again after a live edit of the world that was `before`, with
+    /// `Substeps::Auto` planned again for what the edit changed (a stiffer line, a shorter one
+    /// pulled taut, heavier water need more substeps, a softer one fewer), books the jump in
+    /// energy the edit made as external work (PHYSICS.md §5: the balance then still checks the
+    /// integrator) and refreshes the stable-step limit; if the couplings cannot give their
+    /// forces, the world goes back to `before`.
     fn restart_after_edit(&mut self, before: World) -> Result<(), StepError> {
-        if let Err(error) = self.start_integrator() {
+        let edited = self.states.clone();
+        let mut started = self.start_integrator();
+        if started.is_ok() && self.timing.substeps == Substeps::Auto {
+            let needed = self.auto_substeps();
+            if needed != self.substeps {
+                self.substeps = needed;
+                self.states = edited;
+                started = self.start_integrator();
+            }
+        }
+        if let Err(error) = started {
             *self = before;
             return Err(error);
         }

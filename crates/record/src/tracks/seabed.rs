@@ -16,8 +16,8 @@ use crate::rerun;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;
-use tether_physics::coupling::CouplingKind;
 use tether_physics::coupling::catenary::{LineEnd, LineState};
+use tether_physics::coupling::{Catenary, CouplingKind, LineModel};
 use tether_physics::math::Vec3;
 use tether_physics::world::World;
 
@@ -110,7 +110,7 @@ impl Track for SeabedTrack {
             line.grounded_per_frame.push(usize::from(grounded.is_some()));
             line.touchdowns.extend(touchdowns.iter().map(f32x3));
             line.touchdowns_per_frame.push(touchdowns.len());
-            self.grounded_lengths.push(state.map_or(0.0, LineState::grounded_length));
+            self.grounded_lengths.push(grounded_length(world, line.index, state));
             bytes += usize::from(grounded.is_some()) * 2 * 3 * 4 + touchdowns.len() * 3 * 4 + 8;
         }
         bytes
@@ -184,4 +184,21 @@ fn log_plane(stream: &RecordingStream, world: &World, elevation: f64) -> Result<
             .with_albedo_factor(rerun::datatypes::Rgba32::from_rgb(r, g, b)),
     )?;
     Ok(())
+}
+
+/// Line `index`'s grounded length `L_B` \[m]: a dynamic line's from its nodes (the segments on
+/// the seabed), a quasi-static one's from its solved shape `state`; 0 before either exists.
+fn grounded_length(world: &World, index: usize, state: Option<&LineState>) -> f64 {
+    let nodes = world.evaluation().line_run(index).and_then(|run| run.nodes());
+    let dynamic = match &world.couplings()[index].kind {
+        CouplingKind::Catenary(Catenary { model: LineModel::Dynamic(model), length, .. }) => {
+            Some(length / f64::from(model.segments))
+        }
+        CouplingKind::Catenary(_) | CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => None,
+    };
+    let up = -world.gravity().try_normalize(0.0).unwrap_or_else(|| -Vec3::z());
+    match (nodes, dynamic, world.system().seabed()) {
+        (Some(nodes), Some(segment), Some(seabed)) => nodes.grounded_length(seabed, &up, segment),
+        _ => state.map_or(0.0, LineState::grounded_length),
+    }
 }

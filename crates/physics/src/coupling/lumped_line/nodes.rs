@@ -13,6 +13,7 @@
 
 use super::discrete::Discrete;
 use crate::math::Vec3;
+use crate::seabed::Seabed;
 
 /// Where a line's nodes are and how fast they move, at `time`.
 #[derive(Debug, Clone, PartialEq)]
@@ -30,6 +31,17 @@ impl LineNodes {
     pub fn at_rest(time: f64, positions: Vec<Vec3>) -> Self {
         let velocities = vec![Vec3::zeros(); positions.len()];
         Self { time, positions, velocities }
+    }
+
+    /// The unstretched length lying on `seabed` \[m] (`up` the upward unit vertical, `segment`
+    /// each segment's unstretched length \[m]): a segment whose two nodes touch it (at or below
+    /// its elevation, where it holds them up, PHYSICS.md §8) lies on it whole, one with a single
+    /// node touching it half (the touchdown is somewhere along it). The dynamic line's `L_B`,
+    /// as the quasi-static line's is its grounded arc.
+    pub fn grounded_length(&self, seabed: &Seabed, up: &Vec3, segment: f64) -> f64 {
+        let touching: Vec<bool> = self.positions.iter().map(|p| p.dot(up) <= seabed.elevation).collect();
+        let halves: usize = touching.windows(2).map(|pair| usize::from(pair[0]) + usize::from(pair[1])).sum();
+        0.5 * segment * halves as f64
     }
 
     /// `½ Σ m_i |v_i|²` \[J] of the nodes between the ends (the ends move with what they are
@@ -194,4 +206,21 @@ fn water_forces(line: &Discrete, share: f64, tangent: &Vec3, relative: &Vec3, ac
 fn tangent(x: &[Vec3], node: usize, n: usize) -> Vec3 {
     let (a, b) = (node.saturating_sub(1), (node + 1).min(n));
     (x[b] - x[a]).try_normalize(0.0).unwrap_or_else(Vec3::z)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Five nodes 10 m apart, three on a seabed at z = −50 (one sunk into it), the fourth 1 cm
+    /// above: two segments lie on it whole, the touchdown segment half: 25 m.
+    #[test]
+    fn the_grounded_length_counts_the_segments_on_the_seabed() {
+        let seabed = Seabed { elevation: -50.0, line_friction: 0.5 };
+        let heights = [-50.002, -50.0, -50.001, -49.99, -45.0];
+        let positions = heights.iter().enumerate().map(|(i, &z)| Vec3::new(10.0 * i as f64, 0.0, z)).collect();
+        let nodes = LineNodes::at_rest(0.0, positions);
+        assert_eq!(nodes.grounded_length(&seabed, &Vec3::z(), 10.0), 25.0);
+        assert_eq!(nodes.grounded_length(&Seabed { elevation: -60.0, ..seabed }, &Vec3::z(), 10.0), 0.0);
+    }
 }

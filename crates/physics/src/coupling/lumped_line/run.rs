@@ -51,8 +51,10 @@ pub struct LineError {
 pub struct LineRun {
     /// Index of the line's coupling in the system.
     pub coupling: usize,
+    /// How its nodes start at its first evaluation.
+    start: Start,
     /// The nodes at the last accepted step (`None` before the first evaluation: the line then
-    /// starts at rest in its static equilibrium).
+    /// starts in its static equilibrium as `start` says).
     committed: Option<LineNodes>,
     /// The mean dissipated power over the interval that led to `committed` \[W].
     committed_power: f64,
@@ -71,6 +73,48 @@ pub struct LineRun {
     sea: FlowInstant,
 }
 
+/// How a dynamic line's nodes start (PHYSICS.md §8 "Initial state").
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Start {
+    /// At rest in the static shape: a world's start and a reset, as MoorDyn's lines start.
+    AtRest,
+    /// In the static shape, moving as it moves with the ends ([`LineRun::under_way`]): a line
+    /// switched to dynamic, or edited, while the world runs.
+    UnderWay,
+}
+
+/// Time over which the static shape's motion is taken at a start under way \[s] (a forward
+/// difference: the ends move by `v δ`, millimetres at the speeds of moored bodies, far above
+/// the static solve's precision).
+const UNDER_WAY_DT: f64 = 1e-3;
+
+/// The line's static shape between its ends where they are (PHYSICS.md §8 "Initial state"),
+/// each node moving as that shape moves while the ends go on at their velocities: `v_i =
+/// (r_i(p + v δ) − r_i(p)) / δ`. A line started under way — switched to dynamic, or edited,
+/// while its body moves — thus starts as the quasi-static line it replaces was moving, not at
+/// rest under ends that move (which jerked the end segments taut: a jolt of tension and of the
+/// body's pitch no line has). Ends at rest give the shape at rest.
+fn start_under_way(
+    line: &Catenary,
+    discrete: &Discrete,
+    surroundings: &Surroundings,
+    ends: &[EndMotion; 2],
+    time: f64,
+) -> LineNodes {
+    let (p1, p2) = (ends[0].position, ends[1].position);
+    let mut nodes = statics::solve(line, discrete, surroundings, &p1, &p2, time).nodes;
+    let (v1, v2) = (ends[0].velocity, ends[1].velocity);
+    if v1 == Vec3::zeros() && v2 == Vec3::zeros() {
+        return nodes;
+    }
+    let moved = (p1 + v1 * UNDER_WAY_DT, p2 + v2 * UNDER_WAY_DT);
+    let later = statics::solve(line, discrete, surroundings, &moved.0, &moved.1, time).nodes;
+    for (velocity, (now, then)) in nodes.velocities.iter_mut().zip(nodes.positions.iter().zip(&later.positions)) {
+        *velocity = (then - now) / UNDER_WAY_DT;
+    }
+    nodes
+}
+
 /// What the line did at an evaluation, for its coupling's record.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LineOutcome {
@@ -84,10 +128,23 @@ pub struct LineOutcome {
 }
 
 impl LineRun {
-    /// A run of coupling `coupling`, which starts at rest at its first evaluation.
+    /// A run of coupling `coupling` from the start of a world: at its first evaluation, at rest
+    /// in its static shape (as MoorDyn's lines start, after its relaxation).
     pub fn new(coupling: usize) -> Self {
+        Self::starting(coupling, Start::AtRest)
+    }
+
+    /// A run of coupling `coupling` started by a live edit (a line switched to dynamic, or its
+    /// values changed, while the world runs): at its first evaluation, in its static shape and
+    /// moving as that shape does with the ends ([`Start::UnderWay`]).
+    pub fn under_way(coupling: usize) -> Self {
+        Self::starting(coupling, Start::UnderWay)
+    }
+
+    fn starting(coupling: usize, start: Start) -> Self {
         Self {
             coupling,
+            start,
             committed: None,
             committed_power: 0.0,
             current: None,
@@ -145,9 +202,14 @@ impl LineRun {
         let committed = match self.committed.take() {
             Some(committed) if committed.time <= time => committed,
             _ => {
-                let (p1, p2) = (ends[0].position, ends[1].position);
                 self.committed_power = 0.0;
-                statics::solve(line, discrete, surroundings, &p1, &p2, time).nodes
+                match self.start {
+                    Start::AtRest => {
+                        let (p1, p2) = (ends[0].position, ends[1].position);
+                        statics::solve(line, discrete, surroundings, &p1, &p2, time).nodes
+                    }
+                    Start::UnderWay => start_under_way(line, discrete, surroundings, ends, time),
+                }
             }
         };
         let mut nodes = self.current.take().unwrap_or_else(|| committed.clone());

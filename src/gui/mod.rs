@@ -9,6 +9,7 @@
 //!   applies what its sub-panels ask for:
 //!   - [`scenes`]: scene list, file dialogs, load errors;
 //!   - [`run_controls`]: play/pause/step/reset, speed, integrator, dt, substeps;
+//!   - [`follow`]: the viewer's eye framing the run or following a body;
 //!   - [`tuning`]: every parameter of every coupling, with units; revert, save as;
 //!   - [`indicators`]: energy balance, stable time steps, the selected body;
 //!   - [`contact_estimator`]: k1, k2, τ from an impact, where the scene has contact;
@@ -28,6 +29,7 @@ pub mod app;
 pub mod contact_estimator;
 pub mod dialogs;
 pub mod fit;
+pub mod follow;
 pub mod indicators;
 pub mod knobs;
 pub mod line_plot;

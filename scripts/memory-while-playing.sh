@@ -34,7 +34,7 @@ done
 # The window draws its first frames and loads the scene before it takes keys.
 sleep 5
 xdotool windowfocus --sync "$window"
-echo "$scene with $binary: ${MARKS// /, } s of play"
+echo "$scene with $binary: ${marks// /, } s of play"
 echo "before play: $(rss_mb) MB"
 xdotool key space
 start=$(date +%s)

@@ -23,6 +23,7 @@
 //!     below the viewer when a sweep is open);
 //! - [`simulation`]: the thread that owns the world;
 //! - [`stream`]: where recordings go (embedded viewer, `--connect`, `--save`);
+//! - [`renderer`]: a software rasterizer noted once, the viewer's memory limit;
 //! - [`watch`], [`dialogs`]: the open file watched on disk, file dialogs off the GUI thread.
 
 pub mod app;
@@ -35,6 +36,7 @@ pub mod knobs;
 pub mod line_plot;
 pub mod open_scene;
 pub mod panel;
+pub mod renderer;
 pub mod run_controls;
 pub mod scenes;
 pub mod simulation;

@@ -63,7 +63,7 @@ pub fn layout(world: &World) -> (Blueprint, EntityPath) {
 
 /// The layout of a run of `world` with a fit's plot for each measured column of `columns`
 /// (record and model, [`crate::comparison`]) at the top of the plots, and the blueprint path of
-/// its 3D view (where its eye goes, [`send`]).
+/// its 3D view (where its eye goes: [`send_layout_with_fits`]).
 pub fn layout_with_fits(world: &World, columns: &[&str]) -> (Blueprint, EntityPath) {
     let couplings = world.couplings();
     let mut plots: Vec<ContainerLike> = columns

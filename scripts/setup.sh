@@ -36,6 +36,28 @@ ensure_test_packages() {
         munge slurm-wlm
 }
 
+# The window on a machine without a GPU (no /dev/dri render node: a VM, a remote desktop, Xvfb)
+# renders with Mesa's lavapipe, whose Debian 12 release (22.3.6) leaks about 14 MB a second while
+# the viewer plays (docs/window.md, "Memory"); bookworm-backports' Mesa 25 does not. On Debian 12
+# without a GPU, adds bookworm-backports to apt's sources and installs its lavapipe (and the
+# libdrm it needs); elsewhere, or with Mesa 25 already, does nothing.
+ensure_cpu_vulkan_driver() {
+    compgen -G "/dev/dri/renderD*" >/dev/null && return 0
+    grep -q '^VERSION_CODENAME=bookworm$' /etc/os-release 2>/dev/null || return 0
+    local installed
+    installed=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers 2>/dev/null || true)
+    [ -n "$installed" ] && dpkg --compare-versions "$installed" ge 25 && return 0
+    echo "installing Mesa's lavapipe from bookworm-backports (Debian 12's leaks while the viewer plays)" >&2
+    if ! grep -rqs "bookworm-backports" /etc/apt/sources.list /etc/apt/sources.list.d/; then
+        printf '%s\n' "Types: deb" "URIs: http://deb.debian.org/debian" "Suites: bookworm-backports" \
+            "Components: main" "Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg" \
+            | as_root tee /etc/apt/sources.list.d/bookworm-backports.sources >/dev/null
+    fi
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+        -t bookworm-backports mesa-vulkan-drivers
+}
+
 # The `rerun` CLI of the Rust crate's version (Python package rerun-sdk), in a virtual environment
 # (Debian 12 and Ubuntu 24.04 refuse a system-wide pip install), put first on PATH.
 RERUN_VERSION=0.36.3

@@ -14,9 +14,12 @@ fn tether() -> Command {
 fn rows_per_entity(path: &std::path::Path) -> BTreeMap<String, usize> {
     let mut file = std::fs::File::open(path).unwrap();
     let stores = rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file).unwrap();
-    assert_eq!(stores.len(), 1, "one recording");
+    // One recording, and the window's layout (a blueprint).
+    let kinds: Vec<bool> = stores.keys().map(rerun::StoreId::is_recording).collect();
+    assert_eq!(kinds.iter().filter(|&&recording| recording).count(), 1, "one recording: {kinds:?}");
+    assert_eq!(kinds.len(), 2, "and one blueprint: {kinds:?}");
     let mut rows = BTreeMap::new();
-    for store in stores.values() {
+    for store in stores.values().filter(|store| store.id().is_recording()) {
         for chunk in store.iter_physical_chunks() {
             let entry = rows.entry(chunk.entity_path().to_string()).or_insert(0);
             if !chunk.is_static() {
@@ -398,4 +401,69 @@ fn a_dynamic_line_s_grounded_length_is_read_from_its_nodes() {
     for (step, lengths) in &grounded {
         assert!(lengths[0] > 0.0, "step {step}: {lengths:?}");
     }
+}
+
+/// The position and look target of the eye in the blueprint of an `.rrd` file, and the entity
+/// path they are under.
+fn eye_in_file(path: &std::path::Path) -> (String, [f32; 3], [f32; 3]) {
+    let mut file = std::fs::File::open(path).unwrap();
+    let stores = rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file).unwrap();
+    let blueprint = stores.values().find(|store| !store.id().is_recording()).expect("a blueprint in the file");
+    let eye = rerun::external::re_sdk_types::blueprint::archetypes::EyeControls3D::descriptor_position().component;
+    let target =
+        rerun::external::re_sdk_types::blueprint::archetypes::EyeControls3D::descriptor_look_target().component;
+    let chunk = blueprint
+        .iter_physical_chunks()
+        .find(|chunk| chunk.entity_path().to_string().ends_with("/EyeControls3D"))
+        .expect("the 3D view's eye in the blueprint");
+    let first = |component| chunk.iter_slices::<[f32; 3]>(component).next().expect("a value")[0];
+    (chunk.entity_path().to_string(), first(eye), first(target))
+}
+
+/// `tether record` writes the window's layout into the file, the 3D view's eye where the
+/// framing of the run puts it, so that the file opens framed in Rerun's own viewer as in the
+/// window.
+#[test]
+fn a_recording_opens_with_its_eye_framing_the_run() {
+    for scene in ["scenes/box_drop.ron", "scenes/oc3_hywind.ron"] {
+        let (_dir, out) = record(scene, &["--duration", "0.5"]);
+        let (path, eye, target) = eye_in_file(&out);
+        let world = tether_scene::load(&common::repo(scene)).unwrap().world;
+        let framing = tether_record::framing::Framing::of(&world);
+        let close = |a: [f32; 3], b: &tether_physics::math::Vec3| (0..3).all(|i| (f64::from(a[i]) - b[i]).abs() < 1e-3);
+        assert!(
+            close(eye, &framing.eye) && close(target, &framing.target),
+            "{scene}: {path} {eye:?} {target:?} {framing:?}"
+        );
+    }
+}
+
+/// The framing sweeps what moves over its first seconds: a sphere (r = 0.1 m) falling freely
+/// from z = 10 m for 5 s reaches z = 10 − g·5²/2 = −112.6 m; the spring anchor 1 m from where it
+/// starts is framed with it, the one 3 km away is not.
+#[test]
+fn the_framing_holds_a_free_fall_over_its_first_seconds_and_the_anchors_near_it() {
+    let text = |anchor: &str| {
+        format!(
+            "Scene(dt: 0.001, duration: 10.0, bodies: [
+                Body(name: \"ball\", master: Node(position: (0.0, 0.0, 10.0), mass: 1.0,
+                     inertia: Inertia(xx: 0.004, yy: 0.004, zz: 0.004)), shape: Sphere(radius: 0.1)),
+                Body(name: \"post\", master: Node(position: {anchor}, mass: 1.0,
+                     inertia: Inertia(xx: 1.0, yy: 1.0, zz: 1.0)),
+                     support: Fixed(translation: (true, true, true), rotation: true), shape: Sphere(radius: 0.1)),
+            ], couplings: [
+                SpringDamper(name: \"tie\", end1: World({anchor}), end2: Body(body: \"post\"),
+                    law: Linear(stiffness: 1.0, rest_length: 0.0)),
+            ])"
+        )
+    };
+    let g = 9.81;
+    let fallen = 10.0 - g * 5.0 * 5.0 / 2.0;
+    let (low, high) = tether_record::framing::swept_box(&tether_test_support::scene(&text("(1.0, 0.0, 10.0)")).world);
+    // The leapfrog's positions in uniform gravity are exact up to g·dt·t = 4.9 cm at t = 5 s.
+    assert!((low.z - (fallen - 0.1)).abs() < g * 0.001 * 5.0, "{low}");
+    assert!((high.z - 10.1).abs() < 1e-9 && (high.x - 1.0).abs() < 1e-9, "{high}: the near anchor framed");
+    let (low, high) =
+        tether_record::framing::swept_box(&tether_test_support::scene(&text("(3000.0, 0.0, 10.0)")).world);
+    assert!((high.x - 0.1).abs() < 1e-9 && (low.x + 0.1).abs() < 1e-9, "{low} {high}: the far anchor is not");
 }

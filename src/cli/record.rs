@@ -4,6 +4,9 @@
 //! when the simulation diverges (exit 1, with the body, the time and the stable time step), and
 //! on Ctrl-C or SIGTERM (exit 130).
 //!
+//! The file holds the window's layout (a blueprint), its 3D view's eye framing what moves
+//! (`tether_record::framing`), so that it opens in Rerun's viewer as in the window.
+//!
 //! `--face-arrows` draws contacts' face forces (none by default: they are the costliest kind of
 //! entity, and the contact force plots are always there); `--timing` reports where the time
 //! went and what each kind of entity costs per frame.
@@ -133,6 +136,9 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     let face_arrows = face_arrows(args)?;
     face_arrows.check(world)?;
     let mut recorder = Recorder::to_file(&args.output, world, &face_arrows)
+        .with_context(|| format!("cannot write {}", args.output.display()))?;
+    // The window's layout, its eye framing the run: the file opens in any viewer as in the window.
+    tether_record::layout::send_layout(recorder.stream(), world)
         .with_context(|| format!("cannot write {}", args.output.display()))?;
     let interrupted = super::cancel_on_ctrl_c()?;
 

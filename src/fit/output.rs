@@ -70,7 +70,8 @@ fn write_recording(setup: &Setup, outcome: &Outcome, path: &Path) -> Result<(), 
     let mut world = model.scene(&outcome.values)?.world;
     let mut recorder = Recorder::to_file(path, &world, &FaceArrows::default()).map_err(|e| fail(&e))?;
     let columns: Vec<&str> = model.signals.iter().map(|s| s.column.as_str()).collect();
-    layout::send_layout_with_fits(recorder.stream(), &world, &columns).map_err(|e| fail(&e))?;
+    layout::send_layout_with_fits(recorder.stream(), &world, &columns, &layout::Camera::framing(&world))
+        .map_err(|e| fail(&e))?;
     let shift = model.shift(&outcome.values);
     for (s, signal) in model.signals.iter().enumerate() {
         let stream = recorder.stream();

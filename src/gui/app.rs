@@ -60,6 +60,10 @@ impl TetherApp {
         if let Err(error) = closing {
             panel.note_error(format!("Ctrl-C will not close the window cleanly: {error}"));
         }
+        let adapter = cc.wgpu_render_state.as_ref().map(|state| state.adapter.get_info());
+        if let Some(note) = adapter.as_ref().and_then(super::renderer::software_note) {
+            panel.note_error(note);
+        }
         let mut app = Self { panel, viewer, selection, connect: options.connect };
         if let Some(recording) = &options.recording {
             app.open_recording(recording);
@@ -179,6 +183,7 @@ fn embedded_viewer(
         re_viewer::AsyncRuntimeHandle::new_native(runtime),
     );
     viewer.app_options_mut().custom_window_decorations = false;
+    viewer.app_options_mut().memory_limit = super::renderer::memory_limit();
     viewer.add_log_receiver(rx);
     let sink = CallbackSink::new(move |messages| {
         for message in messages {

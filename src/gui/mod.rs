@@ -9,6 +9,7 @@
 //!   applies what its sub-panels ask for:
 //!   - [`scenes`]: scene list, file dialogs, load errors;
 //!   - [`run_controls`]: play/pause/step/reset, speed, integrator, dt, substeps;
+//!   - [`follow`]: the viewer's eye framing the run or following a body;
 //!   - [`tuning`]: every parameter of every coupling, with units, each in a [`number_field`];
 //!     revert, save as;
 //!   - [`indicators`]: energy balance, stable time steps, the selected body;
@@ -23,18 +24,21 @@
 //!     below the viewer when a sweep is open);
 //! - [`simulation`]: the thread that owns the world;
 //! - [`stream`]: where recordings go (embedded viewer, `--connect`, `--save`);
+//! - [`renderer`]: a software rasterizer noted once, the viewer's memory limit;
 //! - [`watch`], [`dialogs`]: the open file watched on disk, file dialogs off the GUI thread.
 
 pub mod app;
 pub mod contact_estimator;
 pub mod dialogs;
 pub mod fit;
+pub mod follow;
 pub mod indicators;
 pub mod knobs;
 pub mod line_plot;
 pub mod number_field;
 pub mod open_scene;
 pub mod panel;
+pub mod renderer;
 pub mod run_controls;
 pub mod scenes;
 pub mod simulation;

@@ -8,6 +8,7 @@
 use super::contact_estimator::{self, ImpactDraft, UseEstimate};
 use super::dialogs::{Dialogs, Purpose};
 use super::fit::{self, Decision, FitAction, FitDraft, FitUpdate};
+use super::follow;
 use super::indicators::{self, EnergyHistory};
 use super::knobs::Knob;
 use super::open_scene::{KnobId, OnDisk, OpenScene};
@@ -84,6 +85,8 @@ pub struct ControlPanel {
     /// The recording played back in the viewer since the scene was closed for it, and the scene
     /// that was closed (to go back to).
     playback: Option<Playback>,
+    /// The body the viewer's eye follows, if any (none when a scene is loaded).
+    follow: Option<String>,
 }
 
 impl ControlPanel {
@@ -110,6 +113,7 @@ impl ControlPanel {
             statics: StaticsDraft::new(None),
             fit: FitDraft::default(),
             playback: None,
+            follow: None,
         })
     }
 
@@ -276,6 +280,8 @@ impl ControlPanel {
         self.statics = StaticsDraft::new(loaded.scene.tuned.seabed.as_ref().map(|s| s.line_friction));
         self.fit.scene_changed();
         self.scene = Some(loaded.scene);
+        self.follow = None;
+        self.simulation.send(Command::Follow(None));
         self.simulation.send(Command::Load(Box::new(loaded.run)));
         self.simulation.send(Command::SetSpeed(self.settings.speed));
         self.simulation.send(Command::SetFaceArrows(self.settings.face_arrows));
@@ -326,6 +332,10 @@ impl ControlPanel {
             );
             for action in actions {
                 self.run_action(action);
+            }
+            if let Some(follow) = follow::ui(ui, self.status.as_ref(), &self.follow) {
+                self.follow = follow.clone();
+                self.simulation.send(Command::Follow(follow));
             }
             ui.separator();
             indicators::ui(ui, self.status.as_ref(), &self.history, selected);

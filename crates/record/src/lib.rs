@@ -9,6 +9,8 @@
 //! - `world/couplings/<name>`: `LineStrips3D` between the ends, each frame; a catenary is drawn
 //!   along its solved shape in 32 segments, 8 bands coloured by tension (blue: the lowest
 //!   tension along the line, red: the highest);
+//! - `world/boundaries/<contact>`: static, a contact's planes as patches; `world/anchors`:
+//!   static, every coupling end fixed in the world, as points;
 //! - `plots/energy`: one series each for kinetic, gravity, elastic, dissipated, external_work,
 //!   total and balance \[J], in one plot;
 //! - `plots/tension`: one series per coupling, named after it \[N], in one plot (a catenary's
@@ -37,6 +39,7 @@
 //! of them). Hence few chunks, few bytes; see the README's "Recording speed".
 
 pub mod comparison;
+pub mod framing;
 pub mod layout;
 pub mod paths;
 

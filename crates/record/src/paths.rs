@@ -9,6 +9,8 @@
 //! | `world/springs` | every spring-damper's line, one strip each |
 //! | `world/couplings/<name>` | a catenary's shape |
 //! | `world/contacts/<name>` | a contact's face forces |
+//! | `world/boundaries/<name>` | a contact's planes (a ground, a quay wall) |
+//! | `world/anchors` | every coupling end fixed in the world |
 //! | `plots/energy` | the energy balance |
 //! | `plots/tension` | every coupling's tension |
 //! | `plots/catenary` | every catenary's end tensions |
@@ -29,6 +31,8 @@ pub const WORLD: &str = "world";
 pub const BODIES: &str = "world/bodies";
 /// Every spring-damper's line, one strip each in scene order.
 pub const SPRINGS: &str = "world/springs";
+/// Every coupling end fixed in the world, as points.
+pub const ANCHORS: &str = "world/anchors";
 /// The energy plot.
 pub const ENERGY: &str = "plots/energy";
 /// Every coupling's tension, one series each.
@@ -76,6 +80,11 @@ pub fn grounded_line(line: &str) -> String {
 /// `world/seabed/touchdowns/<line>`.
 pub fn touchdowns(line: &str) -> String {
     format!("world/seabed/touchdowns/{line}")
+}
+
+/// `world/boundaries/<contact>`: the planes a contact pushes its body away from.
+pub fn boundary(contact: &str) -> String {
+    format!("world/boundaries/{contact}")
 }
 
 /// `world/water/forces/<body>`.

@@ -48,6 +48,9 @@ pub enum Command {
     },
     /// Draw every contact's face forces as arrows in the recording (or not), from now on.
     SetFaceArrows(bool),
+    /// The viewer's eye follows this body (by name), or frames the run again (`None`), in this
+    /// run and the next ones.
+    Follow(Option<String>),
     /// The water replaced by `spec` (checked by the scene builder), without a restart.
     SetWater(WaterSpec),
     /// Body `body`'s coefficients in the water replaced by `spec` (checked), without a restart.

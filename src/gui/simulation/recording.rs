@@ -7,12 +7,16 @@
 //! While a fit is shown ([`Recording::show_fit`]), each recording of the scene lays out a plot
 //! per measured column beside the others, with the record's samples and the model's latest
 //! curve in it ([`tether_record::comparison`]).
+//!
+//! The 3D view's eye frames each run ([`tether_record::framing`]) or follows the body chosen
+//! ([`Recording::follow`]), in this run and the next ones while the body is in the scene.
 
 use super::protocol::Curve;
 use crate::gui::stream::Sinks;
 use rerun::RecordingStream;
 use std::time::{Duration, Instant};
 use tether_physics::world::World;
+use tether_record::layout::Camera;
 use tether_record::{FaceArrows, Recorder, comparison, layout, paths};
 
 /// Frames logged per second of simulated time, as `tether record`'s default.
@@ -45,6 +49,10 @@ pub(super) struct Recording {
     last_flush: Instant,
     /// The fit shown, if any.
     fit: Option<FitPlots>,
+    /// The current run's camera (`None` before the first run).
+    camera: Option<Camera>,
+    /// The body the eye follows, by name, if the user chose one.
+    follow: Option<String>,
 }
 
 /// A fit's plots: the record of each measured column, the model's latest curve of each.
@@ -65,6 +73,8 @@ impl Recording {
             face_arrows: false,
             last_flush: Instant::now(),
             fit: None,
+            camera: None,
+            follow: None,
         }
     }
 
@@ -73,11 +83,15 @@ impl Recording {
     pub(super) fn start(&mut self, label: &str, world: &World) -> Result<(), String> {
         self.finish()?;
         let stream = self.sinks.stream(label).map_err(|e| format!("recording: {e}"))?;
+        let follow = self.follow.clone().filter(|name| world.bodies().iter().any(|body| &body.name == name));
+        let camera = self.camera.insert(Camera { follow, ..Camera::framing(world) });
         match &mut self.fit {
-            None => layout::send_layout(&stream, world).map_err(|e| format!("recording: {e}"))?,
+            None => {
+                layout::send_layout_with_fits(&stream, world, &[], camera).map_err(|e| format!("recording: {e}"))?
+            }
             Some(fit) => {
                 fit.drawn = 0;
-                fit.draw(&stream, world)?;
+                fit.draw(&stream, world, camera)?;
             }
         }
         self.recorder = Some(Recorder::new(stream, world, &self.arrows()).map_err(|e| format!("recording: {e}"))?);
@@ -88,9 +102,28 @@ impl Recording {
     /// this recording of `world` and the next ones, until [`Recording::drop_fit`].
     pub(super) fn show_fit(&mut self, world: &World, measured: Vec<Curve>) -> Result<(), String> {
         let fit = self.fit.insert(FitPlots { measured, model: Vec::new(), drawn: 0 });
-        match &self.recorder {
-            Some(recorder) => fit.draw(recorder.stream(), world),
-            None => Ok(()),
+        match (&self.recorder, &self.camera) {
+            (Some(recorder), Some(camera)) => fit.draw(recorder.stream(), world, camera),
+            _ => Ok(()),
+        }
+    }
+
+    /// The eye follows body `body` (by name) from now on, or, with `None`, goes back to the
+    /// run's framing: the layout of `world`'s run is sent again with it.
+    pub(super) fn follow(&mut self, body: Option<String>, world: Option<&World>) -> Result<(), String> {
+        self.follow = body;
+        let (Some(recorder), Some(camera), Some(world)) = (&self.recorder, &mut self.camera, world) else {
+            return Ok(());
+        };
+        camera.follow = self.follow.clone().filter(|name| world.bodies().iter().any(|b| &b.name == name));
+        match &mut self.fit {
+            None => layout::send_layout_with_fits(recorder.stream(), world, &[], camera)
+                .map_err(|e| format!("recording: {e}")),
+            Some(fit) => {
+                let columns: Vec<&str> = fit.measured.iter().map(|c| c.column.as_str()).collect();
+                layout::send_layout_with_fits(recorder.stream(), world, &columns, camera)
+                    .map_err(|e| format!("recording the fit: {e}"))
+            }
         }
     }
 
@@ -177,12 +210,12 @@ impl Recording {
 }
 
 impl FitPlots {
-    /// The layout with the fit's plots, the record's samples and the model's latest curves, into
-    /// `stream` (a recording of `world`).
-    fn draw(&mut self, stream: &RecordingStream, world: &World) -> Result<(), String> {
+    /// The layout with the fit's plots (the eye at `camera`), the record's samples and the
+    /// model's latest curves, into `stream` (a recording of `world`).
+    fn draw(&mut self, stream: &RecordingStream, world: &World, camera: &Camera) -> Result<(), String> {
         let fail = |e: &dyn std::fmt::Display| format!("recording the fit: {e}");
         let columns: Vec<&str> = self.measured.iter().map(|c| c.column.as_str()).collect();
-        layout::send_layout_with_fits(stream, world, &columns).map_err(|e| fail(&e))?;
+        layout::send_layout_with_fits(stream, world, &columns, camera).map_err(|e| fail(&e))?;
         for curve in &self.measured {
             comparison::log_styles(stream, &curve.column).map_err(|e| fail(&e))?;
             comparison::send_series(stream, &curve.column, paths::FIT_RECORD, &curve.times, &curve.values)

@@ -158,6 +158,10 @@ impl Runner {
             Command::SetTiming(timing) => self.set_timing(timing),
             Command::SetCoupling { index, coupling, sent } => self.set_coupling(index, coupling, sent),
             Command::SetFaceArrows(on) => self.set_face_arrows(on),
+            Command::Follow(body) => {
+                let set = self.recording.follow(body, self.run.as_ref().map(|run| &run.world));
+                self.report_failure(set);
+            }
             Command::SetWater(spec) => self.edit_water("the water", |world| world.replace_water(spec)),
             Command::SetHydro { body, spec } => {
                 self.edit_water("the body's coefficients in the water", |world| world.replace_hydro(body, spec))

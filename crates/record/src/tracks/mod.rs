@@ -5,6 +5,7 @@
 //! paths go in [`crate::paths`].
 //!
 //! - [`bodies`]: every body's pose, its static shape and slave nodes;
+//! - [`boundaries`]: the contacts' planes and the anchors, static;
 //! - [`springs`]: the spring-dampers' lines between their ends;
 //! - [`catenaries`]: a catenary's shape coloured by tension, and the end tension plot;
 //! - [`contacts`]: the contacts' normal force and friction plot;
@@ -16,6 +17,7 @@
 //! - [`seabed`]: the lines' grounded parts, touchdowns and grounded lengths.
 
 mod bodies;
+mod boundaries;
 mod catenaries;
 mod contacts;
 mod energy;
@@ -67,6 +69,9 @@ pub(crate) fn for_world(world: &World) -> Vec<(Box<dyn Track>, KindStats)> {
         tracks.push((track, KindStats { kind, entities, ..KindStats::default() }))
     };
     add("bodies", world.bodies().len(), Box::new(bodies::Bodies::new(world)));
+    if let Some(boundaries) = boundaries::Boundaries::new(world) {
+        add("boundaries", boundaries.entities(), Box::new(boundaries));
+    }
     if let Some(springs) = springs::Springs::new(world) {
         add("springs", 1, Box::new(springs));
     }

@@ -410,20 +410,26 @@ mod tests {
         c.amplitude * factor * (k * (c.heading.cos() * x + c.heading.sin() * y) - c.frequency * t + c.phase).cos()
     }
 
+    /// Nine components of 0.7 m on the grid `k_i = (3 + i) k_0`, `k_0` = 0.013 rad/m, heading
+    /// 0.7 rad, phases `0.37 i`, in water of `depth`.
+    fn grid_components(depth: Option<f64>) -> Vec<WaveComponent> {
+        let base = 0.013;
+        (0..9)
+            .map(|i| {
+                let wave_number = f64::from(3 + i) * base;
+                let frequency = (G * wave_number * depth.map_or(1.0, |h: f64| (wave_number * h).tanh())).sqrt();
+                WaveComponent { amplitude: 0.7, frequency, wave_number, heading: 0.7, phase: 0.37 * f64::from(i) }
+            })
+            .collect()
+    }
+
     /// Nine components on the grid `k_i = (3 + i) k_0`, heading 0.7 rad: the harmonic path
     /// (powers of one complex number) against the textbook sum, to 1e-12 m of 6.3 m of amplitude
     /// (round-off of nine products per chain and of phases of ~1e3 rad).
     #[test]
     fn the_harmonic_sum_matches_the_closed_form() {
         for depth in [None, Some(20.0), Some(3.0)] {
-            let base = 0.013;
-            let components: Vec<_> = (0..9)
-                .map(|i| {
-                    let wave_number = f64::from(3 + i) * base;
-                    let frequency = (G * wave_number * depth.map_or(1.0, |h: f64| (wave_number * h).tanh())).sqrt();
-                    WaveComponent { amplitude: 0.7, frequency, wave_number, heading: 0.7, phase: 0.37 * f64::from(i) }
-                })
-                .collect();
+            let components = grid_components(depth);
             let sea = Sea::new(components.clone(), 0.0, depth);
             assert!(sea.is_harmonic());
             let time = 987.6;
@@ -442,14 +448,7 @@ mod tests {
     #[test]
     fn the_harmonic_kinematics_match_the_sum_by_component() {
         for depth in [None, Some(20.0), Some(3.0)] {
-            let base = 0.013;
-            let components: Vec<_> = (0..9)
-                .map(|i| {
-                    let wave_number = f64::from(3 + i) * base;
-                    let frequency = (G * wave_number * depth.map_or(1.0, |h: f64| (wave_number * h).tanh())).sqrt();
-                    WaveComponent { amplitude: 0.7, frequency, wave_number, heading: 0.7, phase: 0.37 * f64::from(i) }
-                })
-                .collect();
+            let components = grid_components(depth);
             let sea = Sea::new(components, 0.0, depth);
             assert!(sea.is_harmonic());
             let time = 987.6;

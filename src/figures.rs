@@ -70,6 +70,12 @@ fn superscript(n: i32) -> String {
 /// A real number to read: `digits` significant digits, trailing zeros dropped, a plain decimal
 /// between 10⁻³ and 10⁶ and `1.25×10⁻⁷` outside; `0` for zero, `-0` too.
 pub fn number(x: f64, digits: usize) -> String {
+    written(x, digits, |mantissa, exponent| format!("{mantissa}×10{}", superscript(exponent)))
+}
+
+/// `x` to `digits` significant digits: `0`, a non-finite value's name, a plain decimal between
+/// 10⁻³ and 10⁶, or else the mantissa and power of ten as `power` writes them.
+fn written(x: f64, digits: usize, power: impl Fn(&str, i32) -> String) -> String {
     if x == 0.0 {
         return "0".into();
     }
@@ -78,7 +84,7 @@ pub fn number(x: f64, digits: usize) -> String {
     }
     plain(x, digits).unwrap_or_else(|| {
         let (mantissa, exponent) = scientific(x, digits);
-        format!("{mantissa}×10{}", superscript(exponent))
+        power(&mantissa, exponent)
     })
 }
 
@@ -118,16 +124,7 @@ pub fn count(n: impl Into<u64>) -> String {
 /// A number field's text, which [`parse`] reads back: `digits` significant digits, no trailing
 /// zeros, integers with no decimals, `2.5e10` (Rust's notation) beyond 10⁶ and under 10⁻³.
 pub fn editable(x: f64, digits: usize) -> String {
-    if x == 0.0 {
-        return "0".into();
-    }
-    if !x.is_finite() {
-        return non_finite(x);
-    }
-    plain(x, digits).unwrap_or_else(|| {
-        let (mantissa, exponent) = scientific(x, digits);
-        format!("{mantissa}e{exponent}")
-    })
+    written(x, digits, |mantissa, exponent| format!("{mantissa}e{exponent}"))
 }
 
 /// A number as a person types it: spaces ignored, `−` (U+2212) as `-`, `×10` for `e`

@@ -22,7 +22,10 @@ use tether::fit::setup::Setup;
 use tether::runner::{Runner, all_cores};
 
 fn repo(path: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join(path)
+    std::path::PathBuf::from(
+        std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR when it runs a test"),
+    )
+    .join(path)
 }
 
 fn fit(spec: &Path, runner: &Runner) -> (Setup, run::Outcome, f64) {

@@ -12,7 +12,7 @@ fn features(with_tests: bool) -> BTreeMap<String, BTreeSet<String>> {
     let edges = if with_tests { "normal,build,dev" } else { "normal,build" };
     let out = Command::new(env!("CARGO"))
         .args(["tree", "--workspace", "--locked", "--offline", "--prefix", "none", "-e", edges, "-f", "{p}|{f}"])
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .current_dir(std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR when it runs a test"))
         .output()
         .expect("cargo runs");
     assert!(out.status.success(), "cargo tree: {}", String::from_utf8_lossy(&out.stderr));

@@ -93,7 +93,10 @@ fn bench_chains(c: &mut Criterion) {
 
 /// The repository's `scenes/` (this crate is two levels below the workspace root).
 fn scenes() -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenes")
+    std::path::PathBuf::from(
+        std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR when it runs a test"),
+    )
+    .join("../../scenes")
 }
 
 /// The world of the shipped scene `scenes/<name>`.

@@ -5,19 +5,27 @@
 use std::path::{Path, PathBuf};
 use tether_scene::{self as scene, Scene};
 
-/// Path of a file under the repository root.
+/// Path of a file under the repository root: the workspace (the folder with `Cargo.lock`)
+/// holding the test that runs, found when it runs from `CARGO_MANIFEST_DIR` (which cargo sets
+/// for a test it runs) or else the working folder. Not `env!`: cargo does not rebuild an
+/// unchanged crate for a checkout moved elsewhere (a cached target directory), so a path
+/// compiled in can name a checkout that is gone.
 pub fn repo(path: &str) -> PathBuf {
-    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
-    // This crate is `crates/test-support`: its manifest's directory has the root two levels up.
-    manifest.ancestors().nth(2).expect("crates/test-support lies two levels below the root").join(path)
+    let start = std::env::var_os("CARGO_MANIFEST_DIR").map(PathBuf::from).or_else(|| std::env::current_dir().ok());
+    let workspace = start.as_deref().and_then(|dir| dir.ancestors().find(|d| d.join("Cargo.lock").is_file()));
+    workspace.expect("a test runs inside the repository (its CARGO_MANIFEST_DIR or working folder)").join(path)
 }
 
-/// Path of a file under the calling crate's `tests/` (expanded where it is called, so that
-/// `CARGO_MANIFEST_DIR` is the caller's).
+/// Path of a file under the `tests/` of the crate whose test runs (`CARGO_MANIFEST_DIR`, which
+/// cargo sets for the test it runs: see [`repo`] for why not `env!`).
 #[macro_export]
 macro_rules! here {
     ($path:expr) => {
-        ::std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join($path)
+        ::std::path::PathBuf::from(
+            ::std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR when it runs a test"),
+        )
+        .join("tests")
+        .join($path)
     };
 }
 

@@ -15,7 +15,7 @@ use std::sync::{Arc, LazyLock};
 use std::time::{Duration, Instant};
 use tether::fit::report::number;
 use tether::gui::panel::ControlPanel;
-use tether::gui::stream::Sinks;
+use tether::gui::stream::{Sinks, ViewerBacklog};
 use tether_physics::coupling::{CouplingKind, ElasticLaw, LineModel};
 use tether_physics::statics::{Settings, equilibrium};
 use tether_physics::world::World;
@@ -487,9 +487,10 @@ fn a_line_switches_to_dynamic_live_and_a_bad_segment_count_is_refused() {
     let nodes = world.evaluation().line_run(0).and_then(|run| run.nodes()).expect("the line has nodes");
     assert_eq!(nodes.positions.len(), 9, "8 segments, 9 nodes");
     drop(harness);
+    assert_eq!(series_names(&shown, "/plots/catenary"), ["rope end1", "rope end2"]);
     assert_eq!(
-        series_names(&shown, "/plots/catenary"),
-        ["rope end1", "rope end2", "rope end1 quasi-static", "rope end2 quasi-static"]
+        series_names(&shown, "/plots/catenary/quasi-static/rope"),
+        ["rope end1 quasi-static", "rope end2 quasi-static"]
     );
 }
 
@@ -833,4 +834,74 @@ fn long_lines_wrap_the_log_is_newest_first_and_rows_stay_put() {
     until(&mut harness, "the run", |p| p.status().is_some_and(|s| s.running && s.time > 0.01));
     harness.run_steps(1);
     assert_eq!(speed_row(&harness), paused, "the rows below the pace stay where they were");
+}
+
+/// The tracking entity of the 3D view's eye in each blueprint of the recording `path` (`None`
+/// for an eye that frames the run).
+fn eye_tracking_in(path: &Path) -> Vec<Option<String>> {
+    use rerun::external::re_sdk_types::blueprint::archetypes::EyeControls3D;
+    let position = EyeControls3D::descriptor_position().component;
+    let tracking = EyeControls3D::descriptor_tracking_entity().component;
+    let stores = common::x11::stores(path);
+    let eyes = stores.values().filter(|store| !store.id().is_recording()).flat_map(|store| {
+        store.iter_physical_chunks().filter(|c| c.entity_path().to_string().ends_with("/EyeControls3D"))
+    });
+    eyes.filter(|chunk| chunk.iter_slices::<[f32; 3]>(position).next().is_some())
+        .map(|chunk| chunk.iter_slices::<String>(tracking).next().map(|row| row[0].trim_start_matches('/').to_string()))
+        .collect()
+}
+
+/// Opens the "View" chooser, which shows `shown`, and picks `choice` in it.
+fn choose_view(harness: &mut Harness<'_, ControlPanel>, shown: &str, choice: &str) {
+    let chooser = harness
+        .get_all_by_role(accesskit::Role::ComboBox)
+        .find(|node| node.accesskit_node().value().as_deref() == Some(shown))
+        .unwrap_or_else(|| panic!("no chooser showing {shown:?}"));
+    chooser.click();
+    harness.run_steps(2);
+    harness.get_by_label(choice).click();
+    harness.run_steps(2);
+}
+
+/// Issue 35: "View ▸ follow m" sends the viewer a layout whose eye tracks the body's shape;
+/// "the whole run" sends one that frames the run again (no tracking). The three layouts of
+/// the run (loaded, followed, framed again) are in what the viewer was sent.
+#[test]
+fn the_view_follows_the_chosen_body_and_frames_the_run_again() {
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
+    let shown = dir.path().join("shown.rrd");
+    let sinks = Sinks::new(vec![Sinks::file(&shown).unwrap()]);
+    let mut harness = harness(ControlPanel::new(sinks, Arc::new(|| {}), dir.path().to_path_buf()).unwrap());
+    open_from_list(&mut harness, "spring.ron");
+    harness.run_steps(2);
+    choose_view(&mut harness, "the whole run", "follow m");
+    choose_view(&mut harness, "follow m", "the whole run");
+    harness.run_steps(4);
+    drop(harness);
+    let mut eyes = eye_tracking_in(&shown);
+    eyes.sort();
+    assert_eq!(eyes, [None, None, Some(tether_record::paths::body_shape("m"))], "the eyes sent: {eyes:?}");
+}
+
+/// Issue 35: while the embedded viewer is behind what it was sent (more than
+/// `ViewerBacklog::LIMIT` messages left in its channel after a frame), the run waits for it and
+/// says so; when the viewer has caught up the run goes on.
+#[test]
+fn the_run_waits_for_a_viewer_that_is_behind() {
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
+    let backlog = ViewerBacklog::default();
+    let sinks = Sinks::with_viewer(Vec::new(), backlog.clone());
+    let mut harness = harness(ControlPanel::new(sinks, Arc::new(|| {}), dir.path().to_path_buf()).unwrap());
+    open_from_list(&mut harness, "spring.ron");
+    backlog.set(ViewerBacklog::LIMIT + 1);
+    harness.key_press(egui::Key::Space);
+    until(&mut harness, "the run to say it waits", |p| p.status().is_some_and(|s| s.waiting_for_viewer));
+    let waiting_at = harness.state().status().unwrap().time;
+    std::thread::sleep(Duration::from_millis(300));
+    until(&mut harness, "a status after the wait", |p| p.status().is_some_and(|s| s.waiting_for_viewer));
+    assert_eq!(harness.state().status().unwrap().time, waiting_at, "no step while the viewer is behind");
+    harness.get_by_label_contains("waiting for the viewer");
+
+    backlog.set(ViewerBacklog::LIMIT);
+    until(&mut harness, "the run to go on", |p| p.status().is_some_and(|s| !s.waiting_for_viewer && s.time > 0.1));
 }

@@ -16,6 +16,7 @@
 //! - `plots/tension`: one series per coupling, named after it \[N], in one plot (a catenary's
 //!   series is its larger end tension, a contact's its normal force);
 //! - `plots/catenary`: every catenary's end tensions, series `<name> end1` and `<name> end2` \[N];
+//!   a dynamic line's quasi-static ones in `plots/catenary/quasi-static/<name>`;
 //! - `plots/contact`: every contact's total normal force `Σ|f_n|` and friction `|Σ f_t|`, series
 //!   `<name> normal` and `<name> friction` \[N];
 //! - `world/contacts/<name>`: a contact's face forces as arrows from the face centroids, for the

@@ -14,6 +14,7 @@
 //! | `plots/energy` | the energy balance |
 //! | `plots/tension` | every coupling's tension |
 //! | `plots/catenary` | every catenary's end tensions |
+//! | `plots/catenary/quasi-static/<line>` | a dynamic line's quasi-static end tensions |
 //! | `plots/contact` | every contact's normal force and friction |
 //! | `world/water/surface`, `world/water/seabed` | the sea surface, the seabed plane |
 //! | `world/water/forces/<body>` | the water's force on a floating body |
@@ -95,6 +96,12 @@ pub fn water_force(body: &str) -> String {
 /// `plots/water/<body>/<plot>`.
 pub fn water_plot(body: &str, plot: &str) -> String {
     format!("{WATER_PLOTS}/{body}/{plot}")
+}
+
+/// `plots/catenary/quasi-static/<line>`: the quasi-static end tensions of dynamic line `line`,
+/// in the catenary plot.
+pub fn quasi_static_plot(line: &str) -> String {
+    format!("{CATENARY_PLOT}/quasi-static/{line}")
 }
 
 /// `world/bodies/<name>`: the body's pose.

@@ -2,9 +2,11 @@
 //! bands coloured by tension (blue: the lowest tension along the line, red: the highest) every
 //! frame, its width static; a dynamic line (PHYSICS.md §8) is drawn through its nodes, banded
 //! the same way by its segments' tensions. `plots/catenary` holds the end tensions of every
-//! line, series `<name> end1` and `<name> end2` \[N], and for a dynamic line beside them the
-//! quasi-static catenary's for the same end positions, `<name> end1 quasi-static` and
-//! `<name> end2 quasi-static`: its dynamic amplification.
+//! line, series `<name> end1` and `<name> end2` \[N], and for a dynamic line, in the same plot,
+//! `plots/catenary/quasi-static/<name>` the quasi-static catenary's for the same end positions,
+//! `<name> end1 quasi-static` and `<name> end2 quasi-static`: its dynamic amplification. Each
+//! entity keeps its number of series for the whole recording (the viewer warns when it varies),
+//! so a line switched to dynamic while it runs adds an entity rather than series.
 //!
 //! A band is one strip of 4 segments with one colour: 40 points and 8 colours a frame, 576 bytes
 //! with the row's index, where 32 two-point strips took 1,116 — the file writer compresses every
@@ -32,8 +34,10 @@ const BANDS: usize = 8;
 struct Line {
     /// Coupling index in the world.
     index: usize,
-    /// Whether the line is dynamic: its plot then has the quasi-static tensions beside.
-    dynamic: bool,
+    /// Where a dynamic line's quasi-static end tensions go (`None`: a quasi-static line).
+    quasi_static_plot: Option<String>,
+    /// The quasi-static end tensions \[N], frame-major (`end1`, `end2` of each frame).
+    quasi_static: Vec<f64>,
     path: String,
     /// The strips' points and colours, frame after frame; `points_per_strip` says how many
     /// points each strip has, `strips_per_frame` how many strips each frame has.
@@ -63,7 +67,8 @@ impl Catenaries {
             })
             .map(|(index, coupling, dynamic)| Line {
                 index,
-                dynamic,
+                quasi_static_plot: dynamic.then(|| paths::quasi_static_plot(&coupling.name)),
+                quasi_static: Vec::new(),
                 path: paths::coupling(coupling),
                 points: Vec::new(),
                 points_per_strip: Vec::new(),
@@ -77,11 +82,6 @@ impl Catenaries {
     pub(super) fn len(&self) -> usize {
         self.lines.len()
     }
-
-    /// Series in the tension plot: two per line, four per dynamic line.
-    fn series(&self) -> usize {
-        self.lines.iter().map(|line| if line.dynamic { 4 } else { 2 }).sum()
-    }
 }
 
 impl Track for Catenaries {
@@ -92,12 +92,16 @@ impl Track for Catenaries {
         }
         let names = self.lines.iter().flat_map(|line| {
             let name = &world.couplings()[line.index].name;
-            let quasi_static = [format!("{name} end1 quasi-static"), format!("{name} end2 quasi-static")];
             [format!("{name} end1"), format!("{name} end2")]
-                .into_iter()
-                .chain(quasi_static.into_iter().filter(|_| line.dynamic))
         });
         stream.log_static(paths::CATENARY_PLOT, &rerun::SeriesLines::new().with_names(names))?;
+        for line in &self.lines {
+            if let Some(plot) = &line.quasi_static_plot {
+                let name = &world.couplings()[line.index].name;
+                let names = [format!("{name} end1 quasi-static"), format!("{name} end2 quasi-static")];
+                stream.log_static(plot.as_str(), &rerun::SeriesLines::new().with_names(names))?;
+            }
+        }
         Ok(())
     }
 
@@ -124,11 +128,11 @@ impl Track for Catenaries {
             };
             line.strips_per_frame.push(strips);
             self.end_tensions.extend([t1, t2]);
-            if line.dynamic {
+            if line.quasi_static_plot.is_some() {
                 // Before the first evaluation, the dynamic line's own ends stand in.
-                self.end_tensions.extend(quasi_static.unwrap_or([t1, t2]));
+                line.quasi_static.extend(quasi_static.unwrap_or([t1, t2]));
             }
-            let series = if line.dynamic { 4 } else { 2 };
+            let series = if line.quasi_static_plot.is_some() { 4 } else { 2 };
             bytes += (line.points.len() - points_before) * 3 * 4 + strips * (4 + 4) + series * 8;
         }
         bytes
@@ -150,8 +154,12 @@ impl Track for Catenaries {
             ];
             send_chunk(stream, &line.path, frames.columns(), shape, sent)?;
             line.strips_per_frame.clear();
+            if let Some(path) = &line.quasi_static_plot {
+                let tensions = plot(std::mem::take(&mut line.quasi_static), 2);
+                send_chunk(stream, path, frames.columns(), vec![tensions], sent)?;
+            }
         }
-        let tensions = plot(std::mem::take(&mut self.end_tensions), self.series());
+        let tensions = plot(std::mem::take(&mut self.end_tensions), 2 * self.lines.len());
         send_chunk(stream, paths::CATENARY_PLOT, frames.columns(), vec![tensions], sent)
     }
 }

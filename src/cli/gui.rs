@@ -1,4 +1,4 @@
-//! `tether gui [SCENE] [--connect URL] [--save OUT.rrd] [--sweep DIR]` and `tether view
+//! `tether gui [SCENE] [--connect URL] [--save OUT.rrd] [--sweep DIR] [--max-fps N]` and `tether view
 //! FILE.rrd`: the window. A build without the `gui` feature (the headless build) keeps the
 //! subcommands and says, when one is run, that it has no window and how to get one.
 
@@ -29,6 +29,10 @@ pub struct GuiArgs {
     /// Open a sweep's output directory in the sweep table (a case loads in one click).
     #[arg(long)]
     sweep: Option<PathBuf>,
+    /// Frames drawn per second at most (default: 30 when the viewer renders on the CPU, as on a
+    /// machine without a GPU; no cap on a GPU).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    max_fps: Option<u32>,
 }
 
 #[cfg(feature = "gui")]
@@ -46,6 +50,7 @@ pub fn run(args: GuiArgs) -> anyhow::Result<()> {
         save: args.save,
         scenes_dir: PathBuf::from(SCENES_DIR),
         sweep: args.sweep,
+        max_fps: args.max_fps,
     };
     tether::gui::run(options).context("the window")
 }

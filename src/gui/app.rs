@@ -2,7 +2,7 @@
 //! of the window (or a note when streaming to an external viewer), dropped files.
 
 use super::panel::{ControlPanel, Settings};
-use super::stream::Sinks;
+use super::stream::{Sinks, ViewerBacklog};
 use super::{GuiError, GuiOptions, waker};
 use rerun::external::{eframe, egui, re_log_channel, re_viewer};
 use rerun::sink::{CallbackSink, LogSink};
@@ -21,6 +21,10 @@ pub struct TetherApp {
     /// The entity selected in the viewer, from its selection events.
     selection: Rc<RefCell<Option<String>>>,
     connect: Option<String>,
+    /// The frame rate's cap (on a software rasterizer, or as `--max-fps` asks).
+    frame_cap: Option<super::renderer::FrameCap>,
+    /// What the embedded viewer left in its channel after the last frame.
+    backlog: ViewerBacklog,
 }
 
 impl TetherApp {
@@ -34,13 +38,15 @@ impl TetherApp {
         options: GuiOptions,
     ) -> Result<Self, GuiError> {
         let selection = Rc::new(RefCell::new(None));
+        let backlog = ViewerBacklog::default();
         let viewer = options.connect.is_none().then(|| {
             let (viewer, sink) = embedded_viewer(cc, main_thread, runtime, Rc::clone(&selection));
             sinks.push(sink);
             viewer
         });
-        let mut panel = ControlPanel::new(Sinks::new(sinks), waker(&cc.egui_ctx), options.scenes_dir.clone())
-            .map_err(GuiError::Thread)?;
+        let sinks = Sinks::with_viewer(sinks, backlog.clone());
+        let mut panel =
+            ControlPanel::new(sinks, waker(&cc.egui_ctx), options.scenes_dir.clone()).map_err(GuiError::Thread)?;
         if let Some(settings) = cc.storage.and_then(|storage| eframe::get_value::<Settings>(storage, SETTINGS_KEY)) {
             panel.settings = settings;
         }
@@ -64,7 +70,8 @@ impl TetherApp {
         if let Some(note) = adapter.as_ref().and_then(super::renderer::software_note) {
             panel.note_error(note);
         }
-        let mut app = Self { panel, viewer, selection, connect: options.connect };
+        let frame_cap = super::renderer::FrameCap::for_adapter(options.max_fps, adapter.as_ref());
+        let mut app = Self { panel, viewer, selection, connect: options.connect, frame_cap, backlog };
         if let Some(recording) = &options.recording {
             app.open_recording(recording);
         }
@@ -196,6 +203,9 @@ fn embedded_viewer(
 
 impl eframe::App for TetherApp {
     fn logic(&mut self, ctx: &egui::Context, frame: &mut eframe::Frame) {
+        if let Some(cap) = &mut self.frame_cap {
+            cap.wait();
+        }
         self.take_dropped_files(ctx);
         // The embedded viewer quits on Ctrl+Q; without it, so does the window.
         if self.viewer.is_none() && ctx.input_mut(|i| i.consume_key(egui::Modifiers::COMMAND, egui::Key::Q)) {
@@ -206,6 +216,7 @@ impl eframe::App for TetherApp {
         }
         if let Some(viewer) = &mut self.viewer {
             viewer.logic(ctx, frame);
+            self.backlog.set(viewer.msg_receive_set().queue_len());
         }
     }
 

@@ -24,7 +24,8 @@
 //!     below the viewer when a sweep is open);
 //! - [`simulation`]: the thread that owns the world;
 //! - [`stream`]: where recordings go (embedded viewer, `--connect`, `--save`);
-//! - [`renderer`]: a software rasterizer noted once, the viewer's memory limit;
+//! - [`renderer`]: a software rasterizer noted once and its frame rate capped, the viewer's
+//!   memory limit;
 //! - [`watch`], [`dialogs`]: the open file watched on disk, file dialogs off the GUI thread.
 
 pub mod app;
@@ -67,6 +68,8 @@ pub struct GuiOptions {
     pub scenes_dir: PathBuf,
     /// A sweep's output directory to open in the sweep table.
     pub sweep: Option<PathBuf>,
+    /// Frames drawn per second at most; `None`: [`renderer::FrameCap::for_adapter`]'s default.
+    pub max_fps: Option<u32>,
 }
 
 /// Why the window could not run.
@@ -86,6 +89,9 @@ pub enum GuiError {
 /// recordings flushed before this returns. A bad `--save` path or `--connect` URL fails before
 /// the window opens.
 pub fn run(options: GuiOptions) -> Result<(), GuiError> {
+    // The viewer's own warnings and notes (a memory limit reached, data dropped, a renderer
+    // problem) reach stderr, as in Rerun's viewer (`RUST_LOG` chooses what).
+    rerun::external::re_log::setup_logging();
     let mut sinks = Vec::new();
     if let Some(url) = &options.connect {
         sinks.push(stream::Sinks::connect(url)?);

@@ -7,23 +7,65 @@
 //!   when it started (counted by Rerun's accounting allocator, `main.rs`): past it, Rerun's viewer
 //!   drops the oldest data of the live run (the `--save` file keeps everything), so a long
 //!   session does not grow without end.
+//! - On a software rasterizer the window draws at most [`CPU_MAX_FPS`] frames a second
+//!   ([`FrameCap`]): the viewer redraws every frame while a run plays, and on the CPU each frame
+//!   takes the core the simulation needs.
 
 use rerun::external::eframe::egui_wgpu::wgpu;
 use rerun::external::re_memory::{MemoryLimit, MemoryUse};
+use std::time::{Duration, Instant};
 
 /// The first Mesa major release whose lavapipe was measured not to leak while the viewer plays
 /// (25.0.7 from Debian bookworm-backports; 22.3.6, Debian 12's own, grows by about 14 MB a second
 /// on `moored_buoy`).
 pub const FIXED_MESA: u32 = 25;
 
-/// Heap the viewer may add to what the program held when it started [bytes]: about two minutes of
-/// `moored_buoy` at ×1 (the live recording's data held by the viewer grows by 0.5 MB a second).
-pub const LIVE_DATA_BUDGET: u64 = 64 * 1024 * 1024;
+/// Heap the viewer may add to what the program held when it started [bytes]: about a minute of
+/// `moored_buoy` at ×1 (the live recording's data held by the viewer grows by about 0.45 MB a
+/// second), so the window's memory is flat after the first minute of play.
+pub const LIVE_DATA_BUDGET: u64 = 32 * 1024 * 1024;
 
 /// The viewer's memory limit: the heap the program holds now (its resident size where the heap is
 /// not counted) plus [`LIVE_DATA_BUDGET`].
 pub fn memory_limit() -> MemoryLimit {
     MemoryLimit::from_bytes(MemoryUse::capture().used().unwrap_or(0) + LIVE_DATA_BUDGET)
+}
+
+/// Frames a second drawn at most when the viewer renders on the CPU (`tether gui --max-fps`
+/// changes it): a 3D view and its plots stay fluid to the eye, and the window takes about half
+/// the CPU it takes uncapped (docs/window.md, "Memory").
+pub const CPU_MAX_FPS: u32 = 30;
+
+/// A cap on the frame rate: each frame starts no sooner than the shortest interval after the
+/// last (the window waits out the rest, as a display's vertical sync makes it wait on a GPU).
+pub struct FrameCap {
+    /// The shortest time between the starts of two frames.
+    interval: Duration,
+    /// When the last frame started.
+    last: Instant,
+}
+
+impl FrameCap {
+    /// At most `max_fps` frames a second; `None` when neither `max_fps` is given nor the
+    /// adapter `info` renders on the CPU ([`CPU_MAX_FPS`] there).
+    pub fn for_adapter(max_fps: Option<u32>, info: Option<&wgpu::AdapterInfo>) -> Option<Self> {
+        Self::at_most(max_fps, info.is_some_and(|info| info.device_type == wgpu::DeviceType::Cpu))
+    }
+
+    /// At most `max_fps` frames a second, or [`CPU_MAX_FPS`] when not given and `on_cpu`.
+    fn at_most(max_fps: Option<u32>, on_cpu: bool) -> Option<Self> {
+        let fps = max_fps.or(on_cpu.then_some(CPU_MAX_FPS))?;
+        Some(Self { interval: Duration::from_secs_f64(1.0 / f64::from(fps.max(1))), last: Instant::now() })
+    }
+
+    /// Waits until a frame may start, then counts it as started.
+    pub fn wait(&mut self) {
+        let since = self.last.elapsed();
+        if since < self.interval {
+            std::thread::sleep(self.interval - since);
+        }
+        self.last = Instant::now();
+    }
 }
 
 /// The line the panel's log shows once for the adapter `info`: `None` on a GPU.
@@ -58,6 +100,26 @@ mod tests {
     use super::*;
 
     const LLVMPIPE: &str = "llvmpipe (LLVM 15.0.6, 256 bits)";
+
+    #[test]
+    fn the_cpu_renderer_is_capped_at_30_fps_a_gpu_only_when_asked() {
+        let interval = |cap: Option<FrameCap>| cap.map(|cap| cap.interval);
+        assert_eq!(interval(FrameCap::at_most(None, true)), Some(Duration::from_secs_f64(1.0 / 30.0)));
+        assert_eq!(interval(FrameCap::at_most(None, false)), None);
+        assert_eq!(interval(FrameCap::at_most(Some(10), false)), Some(Duration::from_millis(100)));
+        assert_eq!(interval(FrameCap::at_most(Some(120), true)), Some(Duration::from_secs_f64(1.0 / 120.0)));
+    }
+
+    /// Three frames through a 50 fps cap take at least the two intervals between them.
+    #[test]
+    fn frames_through_the_cap_are_at_least_its_interval_apart() {
+        let mut cap = FrameCap::at_most(Some(50), false).unwrap();
+        let start = Instant::now();
+        for _ in 0..3 {
+            cap.wait();
+        }
+        assert!(start.elapsed() >= Duration::from_millis(40), "{:?}", start.elapsed());
+    }
 
     #[test]
     fn an_old_lavapipe_is_named_with_its_fix_a_new_one_as_slow_a_gpu_not_at_all() {

@@ -89,8 +89,9 @@ pub fn ui(
         ui.label(format!("t = {}   step {}", figures::quantity(status.time, "s", 5), figures::count(status.steps)));
         // The pace's row stays when paused, so nothing below moves on play and pause.
         ui.label(if status.running {
+            let waiting = if status.waiting_for_viewer { ", waiting for the viewer" } else { "" };
             format!(
-                "×{} real time, {} steps/s",
+                "×{} real time, {} steps/s{waiting}",
                 figures::number(status.rate, 2),
                 figures::number(status.steps_per_second.round(), 3)
             )

@@ -6,11 +6,19 @@
 //! gets a [`Forward`] sink onto the same shared ones, so one `.rrd` file holds every run of the
 //! session and one connection serves them all. The file's footer is written when the last
 //! [`Sinks`] handle is dropped, after the simulation thread has flushed and stopped.
+//!
+//! The embedded viewer takes in what it is sent for at most 10 ms of each frame it draws; on a
+//! slow frame rate (the viewer rendering on a busy CPU) what a run sends piles up in the channel
+//! to it (up to 128 MB) and what the viewer shows falls behind what runs. The window counts what
+//! is left in the channel after each frame ([`ViewerBacklog`]); the simulation holds its steps
+//! while that is more than [`ViewerBacklog::LIMIT`] messages, so the run goes as fast as the
+//! viewer can show it and the memory stays bounded (docs/window.md, "Memory").
 
 use rerun::RecordingStream;
 use rerun::log::LogMsg;
 use rerun::sink::{LogSink, MultiSink, SinkFlushError};
 use std::sync::Arc;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
 use tether_record::APPLICATION_ID;
 
@@ -18,6 +26,31 @@ use tether_record::APPLICATION_ID;
 #[derive(Clone)]
 pub struct Sinks {
     shared: Option<Arc<MultiSink>>,
+    /// What the embedded viewer has not taken in yet, when there is one.
+    backlog: ViewerBacklog,
+}
+
+/// The messages waiting in the channel to the embedded viewer after its last frame: set by the
+/// window each frame, read by the simulation before each step (none counted without an
+/// embedded viewer).
+#[derive(Clone, Default)]
+pub struct ViewerBacklog(Arc<AtomicUsize>);
+
+impl ViewerBacklog {
+    /// Messages left over after a frame past which the viewer is behind. A run sends one
+    /// message per entity ten times a second: this is a few seconds of a scene with tens of
+    /// entities, so a viewer that keeps up never reaches it.
+    pub const LIMIT: usize = 256;
+
+    /// The viewer left `messages` in its channel after this frame.
+    pub fn set(&self, messages: usize) {
+        self.0.store(messages, Ordering::Relaxed);
+    }
+
+    /// Whether the viewer is behind what was sent to it.
+    pub fn is_behind(&self) -> bool {
+        self.0.load(Ordering::Relaxed) > Self::LIMIT
+    }
 }
 
 /// A sink that could not be opened.
@@ -32,12 +65,22 @@ pub enum SinkError {
 impl Sinks {
     /// No sinks: recordings go nowhere.
     pub fn none() -> Self {
-        Self { shared: None }
+        Self { shared: None, backlog: ViewerBacklog::default() }
     }
 
     /// These sinks, shared by every run.
     pub fn new(sinks: Vec<Box<dyn LogSink>>) -> Self {
-        Self { shared: (!sinks.is_empty()).then(|| Arc::new(MultiSink::new(sinks))) }
+        Self::with_viewer(sinks, ViewerBacklog::default())
+    }
+
+    /// These sinks, one of them an embedded viewer whose channel's `backlog` the window counts.
+    pub fn with_viewer(sinks: Vec<Box<dyn LogSink>>, backlog: ViewerBacklog) -> Self {
+        Self { shared: (!sinks.is_empty()).then(|| Arc::new(MultiSink::new(sinks))), backlog }
+    }
+
+    /// Whether the embedded viewer is behind what was sent to it ([`ViewerBacklog`]).
+    pub fn viewer_is_behind(&self) -> bool {
+        self.backlog.is_behind()
     }
 
     /// An `.rrd` file sink at `path` (created now, so a bad path fails before any run).

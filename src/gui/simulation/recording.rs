@@ -194,6 +194,11 @@ impl Recording {
         }
     }
 
+    /// Whether the embedded viewer is behind what it was sent (the run waits for it).
+    pub(super) fn viewer_is_behind(&self) -> bool {
+        self.sinks.viewer_is_behind()
+    }
+
     /// Spreads the frames of a tick that advanced `advanced` [s] of simulated time: at most
     /// [`FRAMES_PER_TICK`], at most [`LOG_HZ`] per simulated second.
     pub(super) fn pace(&mut self, advanced: f64) {

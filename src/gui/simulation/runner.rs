@@ -229,6 +229,13 @@ impl Runner {
         let since_last = start.duration_since(self.last_advance);
         self.last_advance = start;
         let (t0, steps0) = (self.world_time(), self.world_steps());
+        if self.recording.viewer_is_behind() {
+            // The viewer is behind what it was sent (`stream::ViewerBacklog`): the run waits for
+            // it, and goes on from here when it has caught up.
+            self.anchor = Anchor { wall: start, sim: t0 };
+            self.pace.add(0.0, 0, since_last);
+            return;
+        }
         let target = match self.speed {
             Speed::Factor(factor) => self.anchor.sim + factor * start.duration_since(self.anchor.wall).as_secs_f64(),
             Speed::Max => f64::INFINITY,
@@ -494,6 +501,7 @@ impl Runner {
             advanced,
             steps,
             wall: wall.as_secs_f64(),
+            waiting_for_viewer: self.recording.viewer_is_behind(),
         };
         self.report(Report::Status(Box::new(status::status(&run.world, &state))));
     }

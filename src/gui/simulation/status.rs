@@ -48,6 +48,8 @@ pub struct Status {
     /// second.
     pub rate: f64,
     pub steps_per_second: f64,
+    /// Whether the run waits for the embedded viewer, which is behind what it was sent.
+    pub waiting_for_viewer: bool,
 }
 
 /// A contact coupling as the estimator sees it (PHYSICS.md §4).
@@ -87,6 +89,8 @@ pub struct RunState {
     pub advanced: f64,
     pub steps: u64,
     pub wall: f64,
+    /// Whether the run waits for the embedded viewer, which is behind what it was sent.
+    pub waiting_for_viewer: bool,
 }
 
 /// The status of `world` in the run `run`.
@@ -133,6 +137,7 @@ pub fn status(world: &World, run: &RunState) -> Status {
         bodies: (0..world.bodies().len()).map(|i| body_status(world, i)).collect(),
         rate: if run.running { run.advanced / wall } else { 0.0 },
         steps_per_second: if run.running { run.steps as f64 / wall } else { 0.0 },
+        waiting_for_viewer: run.running && run.waiting_for_viewer,
     }
 }
 

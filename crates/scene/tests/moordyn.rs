@@ -188,10 +188,45 @@ fn moordyns_friction_damping_sets_each_lines_friction_speed() {
     )
     .unwrap();
     assert_eq!(without.file.seabed.as_ref().unwrap().line_friction, 0.0);
+    // A static to dynamic ratio other than 1 is named with its line (Tether's friction has one).
+    let scaled = import_text(
+        &text.replace("0.5                  FrictionCoefficient", "0.5 FrictionCoefficient\n2 StatDynFricScale"),
+        "f.txt",
+    )
+    .unwrap();
+    assert!(
+        scaled.text.contains("(file line 28): option 2 StatDynFricScale: Tether's seabed friction has one coefficient"),
+        "{}",
+        scaled.text
+    );
     // A file without friction keeps the default friction speed (it does not matter there).
     let frictionless = load(&input("WD0050_Chain_frictionless.txt")).unwrap();
     let (.., model) = catenary(&frictionless.file, 0);
     assert_eq!(model, LineModel::Dynamic(LumpedMass { friction_speed: LumpedMass::FRICTION_SPEED, ..line }));
+}
+
+/// The export writes the `FricDamp` that gives its first line its friction speed, `CV = w l /
+/// v_s`, and a `dtM` within the time that damper takes to stop a node, `λ0 l / (μ CV) = λ0 v_s /
+/// (μ w)`, beyond twice which MoorDyn's explicit step diverges: spread_moored_barge's chains
+/// (λ0 114.94 kg/m, A_d 0.014698 m², 300 m in 20 segments, μ = 1, v_s = 0.01 m/s) give CV =
+/// 1.46915e6 N·s/m (g 9.80665) and a limit of 1.17 ms, under the axial wave's half crossing (1.9 ms).
+#[test]
+fn the_export_writes_the_friction_damping_and_a_step_it_stays_stable_at() {
+    let path = repo("scenes/spread_moored_barge.ron");
+    let scene = load(&path).unwrap();
+    let text = export::export(&scene.file, scene.bodies.bodies(), "barge", 20);
+    let option = |name: &str| -> f64 {
+        let row = text.lines().find(|row| row.split_whitespace().nth(1) == Some(name)).unwrap();
+        row.split_whitespace().next().unwrap().parse().unwrap()
+    };
+    let area = PI * export::diameter_of(0.014698, 114.94).powi(2) / 4.0;
+    let wet = (114.94 - 1025.0 * area) * 9.80665;
+    let damping = option("FricDamp");
+    assert!((damping - wet * 15.0 / 0.01).abs() < 1e-9 * damping, "FricDamp {damping}");
+    assert!((damping - 1.46915e6).abs() < 10.0, "FricDamp {damping}");
+    let limit = 114.94 * 15.0 / (option("FrictionCoefficient") * damping);
+    let step = option("dtM");
+    assert!(step <= limit && step > 0.9 * limit, "dtM {step} against {limit}");
 }
 
 /// A free point: a clump weight (m = 2000 kg, V = 0.5 m³) hanging on a vertical rope (λ0 10

@@ -347,19 +347,23 @@ fn write_lines(text: &mut String, lines: &[LineRow], types: &[TypeRow]) {
 }
 
 /// MoorDyn's internal step `dtM` \[s]: half the time the axial wave takes to cross the shortest
-/// segment, `l √(λ0/EA)`, no longer than the scene's step.
-fn moordyn_step(lines: &[LineRow], types: &[TypeRow]) -> f64 {
-    let crossing = lines
+/// segment, `l √(λ0/EA)`, no longer than the scene's step, nor than the time `λ0 l / (μ CV)` its
+/// seabed friction's damper `friction_damper` = μ CV \[N·s/m] takes to stop a node's slide (its
+/// explicit step is unstable beyond twice that).
+fn moordyn_step(lines: &[LineRow], types: &[TypeRow], friction_damper: f64) -> f64 {
+    let limit = lines
         .iter()
         .map(|line| {
             let values = &types[line.type_index].values;
-            line.length / f64::from(line.segments) * (values[1] / values[2]).sqrt()
+            let segment = line.length / f64::from(line.segments);
+            let crossing = 0.5 * segment * (values[1] / values[2]).sqrt();
+            let friction = values[1] * segment / friction_damper;
+            crossing.min(friction)
         })
-        .fold(STEP, f64::min);
-    let half = 0.5 * crossing;
+        .fold(0.5 * STEP, f64::min);
     // Two significant digits, rounded down.
-    let scale = 10f64.powi(half.log10().floor() as i32 - 1);
-    (half / scale).floor() * scale
+    let scale = 10f64.powi(limit.log10().floor() as i32 - 1);
+    (limit / scale).floor() * scale
 }
 
 /// MoorDyn's `FricDamp` CV \[N·s/m] that gives the first line its friction speed: `CV = w l /
@@ -382,15 +386,17 @@ fn write_options(text: &mut String, file: &SceneFile, lines: &[LineRow], types: 
         .unwrap_or(10_000.0);
     let friction = file.seabed.as_ref().map_or(0.0, |s| s.line_friction);
     let gravity = -file.gravity[2];
+    let damping = friction_damping(lines, types, water.map_or(0.0, |w| w.density), gravity);
+    let damper = friction * damping.unwrap_or(0.0);
     let _ = writeln!(text, "---------------------- OPTIONS ---------------------------------------------");
-    let _ = writeln!(text, "{:?} dtM - MoorDyn's time step (s)", moordyn_step(lines, types));
+    let _ = writeln!(text, "{:?} dtM - MoorDyn's time step (s)", moordyn_step(lines, types, damper));
     let _ = writeln!(text, "{:?} g - gravity (m/s^2)", -file.gravity[2]);
     let _ = writeln!(text, "{:?} WtrDnsty - water density (kg/m^3)", water.map_or(0.0, |w| w.density));
     let _ = writeln!(text, "{depth:?} WtrDpth - water depth (m)");
     let _ = writeln!(text, "{:?} kBot - bottom stiffness (Pa/m)", seabed.0);
     let _ = writeln!(text, "{:?} cBot - bottom damping (Pa-s/m)", seabed.1);
     let _ = writeln!(text, "{friction:?} FrictionCoefficient - seabed friction (-)");
-    if let Some(damping) = friction_damping(lines, types, water.map_or(0.0, |w| w.density), gravity) {
+    if let Some(damping) = damping {
         let _ = writeln!(text, "{damping:?} FricDamp - seabed friction's damping below its Coulomb limit (N-s/m)");
     }
     let _ = writeln!(text, "0 writeLog - no log file");

@@ -207,9 +207,10 @@ fn moordyns_friction_damping_sets_each_lines_friction_speed() {
 
 /// The export writes the `FricDamp` that gives its first line its friction speed, `CV = w l /
 /// v_s`, and a `dtM` within the time that damper takes to stop a node, `λ0 l / (μ CV) = λ0 v_s /
-/// (μ w)`, beyond twice which MoorDyn's explicit step diverges: spread_moored_barge's chains
-/// (λ0 114.94 kg/m, A_d 0.014698 m², 300 m in 20 segments, μ = 1, v_s = 0.01 m/s) give CV =
-/// 1.46915e6 N·s/m (g 9.80665) and a limit of 1.17 ms, under the axial wave's half crossing (1.9 ms).
+/// (μ w)`, beyond which MoorDyn's capped friction chatters
+/// (validation/moordyn/friction_step.py): spread_moored_barge's chains (λ0 114.94 kg/m, A_d
+/// 0.014698 m², 300 m in 20 segments, μ = 1, v_s = 0.01 m/s) give CV = 1.46915e6 N·s/m (g
+/// 9.80665) and a limit of 1.17 ms, under the axial wave's half crossing (1.9 ms).
 #[test]
 fn the_export_writes_the_friction_damping_and_a_step_it_stays_stable_at() {
     let path = repo("scenes/spread_moored_barge.ron");

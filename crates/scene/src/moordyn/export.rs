@@ -348,8 +348,8 @@ fn write_lines(text: &mut String, lines: &[LineRow], types: &[TypeRow]) {
 
 /// MoorDyn's internal step `dtM` \[s]: half the time the axial wave takes to cross the shortest
 /// segment, `l √(λ0/EA)`, no longer than the scene's step, nor than the time `λ0 l / (μ CV)` its
-/// seabed friction's damper `friction_damper` = μ CV \[N·s/m] takes to stop a node's slide (its
-/// explicit step is unstable beyond twice that).
+/// seabed friction's damper `friction_damper` = μ CV \[N·s/m] takes to stop a node's slide
+/// (longer steps make MoorDyn's capped friction chatter: validation/moordyn/friction_step.py).
 fn moordyn_step(lines: &[LineRow], types: &[TypeRow], friction_damper: f64) -> f64 {
     let limit = lines
         .iter()

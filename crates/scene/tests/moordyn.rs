@@ -179,6 +179,7 @@ fn moordyns_friction_damping_sets_each_lines_friction_speed() {
     let expected = wet * 10.0 / 200.0;
     assert!((line.friction_speed - expected).abs() < 1e-12 * expected, "{} against {expected}", line.friction_speed);
     assert!((line.friction_speed - 166.16).abs() < 0.01, "{}", line.friction_speed);
+    assert!(scene.text.contains("FrictionCoefficient 0.5, FricDamp 200 N·s/m (each line's friction_speed)."));
     assert_eq!(scene.file.seabed.as_ref().unwrap().line_friction, 0.5);
     // FricDamp 0: MoorDyn's friction is nil, and so is the import's.
     let text = std::fs::read_to_string(input("WD0050_Chain.txt")).unwrap();

@@ -222,6 +222,31 @@ fn estimate_contact_prints_the_formulas_values() {
     assert!(String::from_utf8_lossy(&refused.stderr).contains("must be below d0"));
 }
 
+/// `tether forces --json` gives a dynamic line's nodes (the static start MoorDyn's node positions
+/// are compared with in validation/moordyn/files.py): N + 1 of them from end 1 to end 2, the
+/// segments adding up to the line's length stretched by at most its largest tension over EA
+/// (chain_forced_surge: 40 segments of 250 m, EA = 1.107e8 N, end tensions under 42 kN); a
+/// quasi-static line has none.
+#[test]
+fn forces_json_gives_a_dynamic_lines_nodes() {
+    let out = tether(&["forces", common::repo("scenes/chain_forced_surge.ron").to_str().unwrap(), "--json"]);
+    assert!(out.status.success());
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let nodes: Vec<Vec3> = json["couplings"][0]["nodes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|n| Vec3::new(n[0].as_f64().unwrap(), n[1].as_f64().unwrap(), n[2].as_f64().unwrap()))
+        .collect();
+    assert_eq!(nodes.len(), 41);
+    assert_eq!((nodes[0], nodes[40]), (Vec3::new(-237.0, 0.0, -50.0), Vec3::new(0.0, 0.0, -1.0)));
+    let stretched: f64 = nodes.windows(2).map(|w| (w[1] - w[0]).norm()).sum();
+    assert!(stretched > 250.0 * (1.0 - 1e-4) && stretched < 250.0 * (1.0 + 42.0e3 / 1.107e8), "{stretched}");
+    let quasi_static = tether(&["forces", common::repo("scenes/sagging_chain.ron").to_str().unwrap(), "--json"]);
+    let json: serde_json::Value = serde_json::from_slice(&quasi_static.stdout).unwrap();
+    assert!(json["couplings"][0].get("nodes").is_none());
+}
+
 /// `tether forces --json` reports a catenary's horizontal tension and parameters u1, u2.
 #[test]
 fn forces_json_reports_the_catenary_solution() {
@@ -325,6 +350,11 @@ fn import_and_export_moordyn_files() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let back = tether_scene::load(&exported).unwrap();
     assert_eq!(back.file.couplings.len(), 3);
+    // A real v1 file (OpenFAST's layout of 2021, the IEA 15 MW semi): `check` prints it.
+    let v1 = common::repo("validation/moordyn/inputs/IEA-15-240-RWT-UMaineSemi_MoorDyn_v1.dat");
+    let checked = tether(&["check", v1.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&checked.stdout);
+    assert!(checked.status.success() && stdout.contains("_v1.dat: ok — 3 bodies, 3 couplings"), "{stdout}");
 }
 
 /// Issue 32, check 6: a bad MoorDyn file is one line with its line and column, exit 1, and

@@ -22,6 +22,9 @@ struct CouplingReport<'a> {
     f2: [f64; 3],
     #[serde(flatten, skip_serializing_if = "Option::is_none")]
     catenary: Option<CatenaryReport>,
+    /// A dynamic line's nodes, none for other couplings.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    nodes: Option<Vec<[f64; 3]>>,
 }
 
 #[derive(Serialize)]
@@ -35,6 +38,12 @@ fn catenary_report(world: &World, index: usize) -> Option<CatenaryReport> {
     let state = world.line_state(index)?;
     let (u1, u2) = state.parameters();
     Some(CatenaryReport { horizontal_tension: state.horizontal_tension, u1, u2 })
+}
+
+/// A dynamic line's node positions `r_0 … r_N` \[m] (PHYSICS.md §8).
+fn line_nodes(world: &World, index: usize) -> Option<Vec<[f64; 3]>> {
+    let nodes = world.evaluation().line_run(index)?.nodes()?;
+    Some(nodes.positions.iter().map(a).collect())
 }
 
 /// Total force [N] and moment about G [N·m] on a body, world frame; for a floating body also
@@ -91,6 +100,7 @@ fn report(world: &World) -> Report<'_> {
                 f1: a(&f.f1),
                 f2: a(&f.f2),
                 catenary: catenary_report(world, i),
+                nodes: line_nodes(world, i),
             })
             .collect(),
         bodies: world

@@ -16,7 +16,9 @@ For every shipped scene with lines:
    them (MoorPy knows a body's volume but not its waterplane, so it cannot float Tether's hulls)
    and the file's FrictionCoefficient given to its lines (MoorPy's reader leaves it out), solves
    the free points' equilibrium and its catenaries; each line end's tension must agree with
-   Tether's within 0.1 %.
+   Tether's within 0.1 %. A file with a line end above the water (spread_moored_barge's deck
+   fairleads) is solved lowered by that height (run_moorpy: MoorPy reweighs such a line between
+   wet and dry by its ends' heights), and MoorPy's tensions as read are shown beside.
 
     python3 validation/moordyn/exports.py [--tether PATH] [--out DIR]
 
@@ -48,7 +50,7 @@ def in_venv():
     if not python.exists():
         print(f"making {VENV} with moorpy and moordyn==2.7.2 from PyPI …", flush=True)
         subprocess.run([sys.executable, "-m", "venv", str(VENV)], check=True)
-        subprocess.run([str(python), "-m", "pip", "install", "-q", "moorpy", "moordyn==2.7.2"], check=True)
+        subprocess.run([str(python), "-m", "pip", "install", "-q", "moorpy==1.3.0", "moordyn==2.7.2"], check=True)
     os.execv(str(python), [str(python), __file__, *sys.argv[1:]])
 
 
@@ -82,8 +84,16 @@ def run_moordyn(path: Path) -> str:
         os.chdir(cwd)
 
 
-def run_moorpy(path: Path) -> list[tuple[float, float]]:
-    """MoorPy's (TA, TB) per line [N], its bodies held, its free points solved."""
+def run_moorpy(path: Path, lowered: bool) -> tuple[list[tuple[float, float]], float]:
+    """MoorPy's (TA, TB) per line [N], its bodies held, its free points solved; and how far [m]
+    the system was lowered.
+
+    `lowered`: when a line end is above the water, MoorPy 1.3's Line.staticSolve weighs the whole
+    line between its wet and its dry weight by its ends' heights (w = w_wet + (w_dry − w_wet)
+    (−z_bottom)/(z_top − z_bottom): nearly dry for a line from the seabed to a fairlead just above
+    the surface), where Tether's catenary (PHYSICS.md §3, §7) weighs it wet all along. Lowering
+    the whole system (every point, body and the seabed) by the highest end's height plus 1 m
+    keeps each line's geometry, seabed included, and lets MoorPy weigh it as Tether does."""
     import moorpy as mp
 
     system = mp.System(file=str(path))
@@ -93,8 +103,20 @@ def run_moorpy(path: Path) -> list[tuple[float, float]]:
     for body in system.bodyList:
         body.type = 1  # held where the file puts it: Tether's equilibrium
     system.initialize()
+    highest = max(max(line.rA[2], line.rB[2]) for line in system.lineList)
+    drop = highest + 1.0 if lowered and highest > 0.0 else 0.0
+    if drop:
+        on_bodies = {id(point) for body in system.bodyList for point in system.pointList
+                     if point.number in body.attachedP}
+        system.depth += drop
+        for body in system.bodyList:
+            body.r6[2] -= drop
+        for point in system.pointList:
+            if id(point) not in on_bodies:
+                point.r[2] -= drop
+        system.initialize()
     system.solveEquilibrium(tol=1e-9)
-    return [(line.TA, line.TB) for line in system.lineList]
+    return [(line.TA, line.TB) for line in system.lineList], drop
 
 
 def main() -> None:
@@ -107,8 +129,9 @@ def main() -> None:
         Path(os.environ.get("CARGO_TARGET_DIR", REPO / "target")) / "release" / "tether"
     out = REPO / args.out
     out.mkdir(parents=True, exist_ok=True)
-    rows = ["| scene | line | Tether end 1 | MoorPy end A | Δ | Tether end 2 | MoorPy end B | Δ | MoorDyn |",
-            "|---|---|---:|---:|---:|---:|---:|---:|---|"]
+    rows = ["| scene | line | Tether end 1 | MoorPy end A | Δ | Tether end 2 | MoorPy end B | Δ | MoorDyn | "
+            "MoorPy as read, an end above water: A, B |",
+            "|---|---|---:|---:|---:|---:|---:|---:|---|---|"]
     worst = 0.0
     for scene in scenes_with_lines():
         placed, exported = out / f"{scene.stem}_equilibrium.ron", out / f"{scene.stem}.dat"
@@ -124,15 +147,18 @@ def main() -> None:
             moordyn_outcome = run_moordyn(exported)
         except Exception as error:  # noqa: BLE001  (the table says what MoorDyn said)
             moordyn_outcome = f"failed: {error}"
-        tensions = run_moorpy(exported)
+        tensions, drop = run_moorpy(exported, lowered=True)
+        as_read = run_moorpy(exported, lowered=False)[0] if drop else [None] * len(tensions)
         lines = [c for c in solved["couplings"] if c["kind"] == "catenary"]
-        for coupling, (ta, tb) in zip(lines, tensions):
+        for coupling, (ta, tb), raw in zip(lines, tensions, as_read):
             t1, t2 = coupling["tension1"], coupling["tension2"]
             d1 = (ta - t1) / max(t1, t2)
             d2 = (tb - t2) / max(t1, t2)
             worst = max(worst, abs(d1), abs(d2))
             rows.append(f"| {scene.stem} | {coupling['name']} | {t1 / 1e3:.3f} | {ta / 1e3:.3f} | {100 * d1:+.3f} % | "
-                        f"{t2 / 1e3:.3f} | {tb / 1e3:.3f} | {100 * d2:+.3f} % | {moordyn_outcome} |")
+                        f"{t2 / 1e3:.3f} | {tb / 1e3:.3f} | {100 * d2:+.3f} % | {moordyn_outcome} | "
+                        + (f"{raw[0] / 1e3:.3f}, {raw[1] / 1e3:.3f} kN ({100 * (raw[1] / t2 - 1):+.1f} %; lowered "
+                           f"{drop:.2f} m for the comparison) |" if raw else "|"))
         print(f"{scene.stem}: {moordyn_outcome}", file=sys.stderr, flush=True)
     text = ("Static line end tensions [kN]: `tether equilibrium` against MoorPy on the exported file (Δ relative "
             "to the line's larger end tension):\n\n" + "\n".join(rows)

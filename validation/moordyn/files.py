@@ -17,8 +17,10 @@ is the net force on the line's end node, GetLineNodeForce(line, 0 | N) (what it 
 point: Line::getEndState), which for a point with one line is GetPointForce.
 
 Static start (check 3): after moordyn.Init against Tether's imported initial state: each line
-end's tension (MoorDyn's end node force, Tether's `tether forces --json`) and the free points'
-and bodies' positions (MoorDyn's GetPointPos/GetBodyPos, the imported scene's).
+end's tension (MoorDyn's end node force, Tether's `tether forces --json`), every node of every
+line (MoorDyn's GetLineNodePos, the `nodes` of `tether forces --json`: the largest distance, as a
+share of the line's unstretched length) and the free points' and bodies' positions (MoorDyn's
+GetPointPos/GetBodyPos, the imported scene's).
 
 Prints two tables and writes them, with the CSVs, into --out (table.md). Run through
 validation/moordyn/run-files, which makes the Python environment (that of validation/moordyn/run).
@@ -56,6 +58,7 @@ class Case:
     amplitude: tuple[float, float, float]  # m, of every coupled point
     period: float  # s
     dtm: float | None = None  # s: MoorDyn's step when the file's CFL choice diverges (ζ = 1 lines)
+    moordyn_file: str | None = None  # what MoorDyn reads, when it cannot read `file` (a v1 file)
 
 
 CASES = [
@@ -63,9 +66,14 @@ CASES = [
          (2.0, 0.0, 0.0), 10.0, 2e-4),
     Case("WD0050_Chain_frictionless.txt", "the same without seabed friction (FrictionCoefficient 0)",
          (2.0, 0.0, 0.0), 10.0, 2e-4),
+    Case("WD0050_Chain_coulomb.txt", "the same with FricDamp 3323300 N s/m: Coulomb friction within 1 cm/s of sliding",
+         (2.0, 0.0, 0.0), 10.0, 2e-4),
     Case("lines.txt", "OC3-Hywind's three lines, coupled fairleads, 320 m (tests/Mooring)", (5.0, 0.0, 0.0), 20.0),
     Case("local_euler_hanging.txt", "two chains joined by a free point between two coupled points (tests/Mooring/local_euler)",
          (5.0, 0.0, 0.0), 20.0, 1e-4),
+    Case("IEA-15-240-RWT-UMaineSemi_MoorDyn_v1.dat", "the IEA 15 MW semi's three chains in OpenFAST's v1 layout "
+         "(MoorDyn reads its v2 transcription)", (5.0, 0.0, 0.0), 20.0,
+         moordyn_file="IEA-15-240-RWT-UMaineSemi_MoorDyn_v1_as_v2.dat"),
     Case("free_buoy.dat", "a free body on OC3's lines, pulled by a rope from a coupled point (example/body.txt, body made free)",
          (5.0, 0.0, 0.0), 20.0),
 ]
@@ -85,12 +93,13 @@ def run_moordyn(case: Case, out: Path) -> dict:
     import moordyn
 
     with tempfile.TemporaryDirectory() as work:
-        for f in INPUTS.glob(case.file + "*"):  # the file and its initial-condition file, if any
+        read = case.moordyn_file or case.file
+        for f in INPUTS.glob(read + "*"):  # the file and its initial-condition file, if any
             shutil.copy(f, work)
         cwd = os.getcwd()
         os.chdir(work)
         try:
-            system = moordyn.Create(case.file)
+            system = moordyn.Create(read)
             if case.dtm:
                 moordyn.SetDt(system, case.dtm)
             points = [moordyn.GetPoint(system, i + 1) for i in range(moordyn.GetNumberPoints(system))]
@@ -111,6 +120,9 @@ def run_moordyn(case: Case, out: Path) -> dict:
 
             static = {
                 "ends": ends(),
+                "nodes": [[list(moordyn.GetLineNodePos(line, i)) for i in range(moordyn.GetLineN(line) + 1)]
+                          for line in lines],
+                "lengths": [moordyn.GetLineUnstretchedLength(line) for line in lines],
                 "free_points": {f"point{i + 1}": list(moordyn.GetPointPos(p)) for i, p in enumerate(points)
                                 if moordyn.GetPointType(p) == moordyn.POINT_TYPE_FREE},
                 "free_bodies": {f"body{i + 1}": list(moordyn.GetBodyPos(moordyn.GetBody(system, i + 1)))
@@ -124,6 +136,10 @@ def run_moordyn(case: Case, out: Path) -> dict:
             free_bodies = [(f"body{i + 1}", moordyn.GetBody(system, i + 1)) for i in range(moordyn.GetNumberBodies(system))
                            if moordyn.GetBodyType(moordyn.GetBody(system, i + 1)) == moordyn.BODY_TYPE_FREE]
             settled = {name: [0.0, 0.0, 0.0] for name, _ in free_points + free_bodies}
+            # On the seabed: below the lowest point (the files' anchors lie on it; a node there sinks
+            # into it by its weight over kBot d).
+            seabed = min(moordyn.GetPointPos(p)[2] for p in points)
+            sliding = 0.0  # the fastest horizontal speed of a node on the seabed over the second half [m/s]
             samples = 0
             steps = round(DURATION / COUPLING_DT)
             start = time.process_time()
@@ -136,6 +152,11 @@ def run_moordyn(case: Case, out: Path) -> dict:
                 rows.append([t_next] + ends())
                 if t_next > SECOND_HALF:
                     samples += 1
+                    for line in lines:
+                        for i in range(1, moordyn.GetLineN(line)):
+                            if moordyn.GetLineNodePos(line, i)[2] < seabed:
+                                vx, vy, _ = moordyn.GetLineNodeVel(line, i)
+                                sliding = max(sliding, math.hypot(vx, vy))
                     for name, p in free_points:
                         settled[name] = [a + b for a, b in zip(settled[name], moordyn.GetPointPos(p))]
                     for name, b in free_bodies:
@@ -145,7 +166,8 @@ def run_moordyn(case: Case, out: Path) -> dict:
             moordyn.Close(system)
         finally:
             os.chdir(cwd)
-    return {"static": static, "rows": rows, "lines": len(lines), "init_cpu": init_cpu, "step_cpu": step_cpu}
+    return {"static": static, "rows": rows, "lines": len(lines), "init_cpu": init_cpu, "step_cpu": step_cpu,
+            "sliding": sliding}
 
 
 def tether_scene(binary: Path, case: Case, out: Path) -> Path:
@@ -172,6 +194,7 @@ def run_tether(binary: Path, case: Case, out: Path, lines: int) -> dict:
     ends = []
     for coupling in forces["couplings"][:lines]:
         ends += [norm(coupling["f1"]), norm(coupling["f2"])]
+    nodes = [coupling["nodes"] for coupling in forces["couplings"][:lines]]
     bodies = {}
     for match in re.finditer(r'name: "((?:point|body)\d+)",\s*master: Node\(\s*position: \(([^)]*)\)',
                              imported.read_text()):
@@ -185,7 +208,7 @@ def run_tether(binary: Path, case: Case, out: Path, lines: int) -> dict:
     for k in range(lines):
         for end in (1, 2):
             series[(k, end)] = read_tether(rrd, "plots/catenary", f"line{k + 1} end{end}")
-    return {"ends": ends, "bodies": bodies, "series": series, "wall": wall}
+    return {"ends": ends, "nodes": nodes, "bodies": bodies, "series": series, "wall": wall}
 
 
 def main() -> None:
@@ -203,6 +226,7 @@ def main() -> None:
     dynamic = ["| file | line end | MoorDyn peak | Tether peak | Δ peak | MoorDyn min | Tether min | Δ min |",
                "|---|---|---:|---:|---:|---:|---:|---:|"]
     static = ["| file | what | MoorDyn after Init | Tether at import | Δ |", "|---|---|---:|---:|---:|"]
+    sliding = ["| file | fastest slide of a grounded node over the second half, MoorDyn [m/s] |", "|---|---:|"]
     worst = 0.0
     for case in cases:
         print(f"{case.file}: MoorDyn ...", file=sys.stderr, flush=True)
@@ -224,6 +248,12 @@ def main() -> None:
                 ms, ts = m["static"]["ends"][column - 1], t["ends"][column - 1]
                 static.append(f"| {case.file} | line{k + 1} end{end} tension [kN] | {ms / 1e3:.2f} | {ts / 1e3:.2f} | "
                               f"{100 * (ts / ms - 1):+.2f} % |")
+        for k, (theirs, mine, length) in enumerate(zip(m["static"]["nodes"], t["nodes"], m["static"]["lengths"])):
+            gaps = [math.dist(a, b) for a, b in zip(theirs, mine)]
+            worst_node = max(range(len(gaps)), key=gaps.__getitem__)
+            static.append(f"| {case.file} | line{k + 1} nodes: largest distance [m] (node {worst_node} of "
+                          f"{len(gaps) - 1}) | | | {gaps[worst_node]:.3f} m = {100 * gaps[worst_node] / length:.3f} % of "
+                          f"{length:g} m |")
         for name, where in {**m["static"]["free_points"], **m["static"]["free_bodies"]}.items():
             mine = t["bodies"].get(name)
             if mine is None:
@@ -237,9 +267,13 @@ def main() -> None:
                           f"({', '.join(f'{c:.2f}' for c in mine)}) | {math.dist(mean, mine):.3f} m |")
         print(f"  MoorDyn CPU {m['init_cpu']:.1f} s init + {m['step_cpu']:.1f} s; Tether record {t['wall']:.1f} s",
               file=sys.stderr)
+        if m["sliding"] > 0.0:
+            sliding.append(f"| {case.file} | {m['sliding']:.3f} |")
     text = (f"Line end tensions over {SECOND_HALF:g}–{DURATION:g} s [kN], the coupled points surged as each case "
             "says (files.py CASES):\n\n" + "\n".join(dynamic) + "\n\nStatic start:\n\n" + "\n".join(static)
-            + f"\n\nLargest relative difference of a peak or minimum: {100 * worst:.2f} %\n")
+            + f"\n\nLargest relative difference of a peak or minimum: {100 * worst:.2f} %\n\n"
+            + "Seabed sliding (MoorDyn's friction on such a node is μ FricDamp v below its Coulomb limit):\n\n"
+            + "\n".join(sliding) + "\n")
     print(text)
     (out / "table.md").write_text(text)
 

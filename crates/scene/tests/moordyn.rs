@@ -38,7 +38,8 @@ type Outcome = Result<(usize, usize), &'static str>;
 /// that names what Tether does not model, at its line.
 #[test]
 fn moordyns_own_files_import_or_are_refused_in_one_line() {
-    let outcomes: [(&str, Outcome); 18] = [
+    let outcomes: [(&str, Outcome); 19] = [
+        ("IEA-15-240-RWT-UMaineSemi_MoorDyn_v1.dat", Ok((3, 3))),
         ("WD0050_Chain.txt", Ok((1, 1))),
         ("WD0200_Chain.txt", Ok((1, 1))),
         ("lines.txt", Ok((3, 3))),
@@ -134,6 +135,100 @@ fn openfast_v1_file_reads_as_the_same_system_as_v2() {
     let v2 = load(&input("lines.txt")).unwrap();
     assert_eq!(v1.file.couplings, v2.file.couplings);
     assert_eq!(v1.file.bodies, v2.file.bodies);
+}
+
+/// A real v1 file: the IEA 15 MW reference turbine's UMaine VolturnUS-S mooring as its
+/// repository kept it in 2021 (validation/moordyn/inputs/SOURCES.md): `LINE TYPES` with a count
+/// line and v1's columns (Can Cat Cdn Cdt, no EI), `CONNECTION PROPERTIES` with forces, `LINE
+/// PROPERTIES` with the ends after the length. Each line gets the file's numbers in v1's order.
+#[test]
+fn the_iea_15_mw_semis_v1_file_imports_with_its_columns_in_v1_order() {
+    let scene = load(&input("IEA-15-240-RWT-UMaineSemi_MoorDyn_v1.dat")).unwrap();
+    assert_eq!((scene.world.bodies().len(), scene.world.couplings().len()), (3, 3));
+    let (end1, end2, lambda, length, stiffness, area, model) = catenary(&scene.file, 0);
+    // Line 1: NodeAnch 2 (Fixed at −837.6, 0, −200), NodeFair 1 (Vessel).
+    assert_eq!(end1, &EndDef::World([-837.6, 0.0, -200.0]));
+    assert_eq!(end2, &EndDef::Body { body: "point1".into(), point: [0.0; 3] });
+    assert_eq!((lambda, length, stiffness, area), (685.0, 850.0, 3.27e9 / 850.0, PI * 0.333 * 0.333 / 4.0));
+    let LineModel::Dynamic(line) = model else { panic!("{model:?}") };
+    // main 0.333 685.00 3.27E+09 -1 | Can 0.82 Cat 0.27 Cdn 1.11 Cdt 0.20.
+    assert_eq!(line.segments, 50);
+    assert_eq!(line.damping, InternalDamping::Ratio(1.0));
+    assert_eq!(
+        (line.added_mass_normal, line.added_mass_tangential, line.drag_normal, line.drag_tangential),
+        (0.82, 0.27, 1.11, 0.20)
+    );
+    assert_eq!(scene.file.water.as_ref().unwrap().depth, Some(200.0));
+    // Its v2 transcription, which MoorDyn 2.7.2 runs in validation/moordyn/files.py (MoorDyn
+    // refuses v1's 9-column types), is the same system.
+    let as_v2 = load(&input("IEA-15-240-RWT-UMaineSemi_MoorDyn_v1_as_v2.dat")).unwrap();
+    assert_eq!((&as_v2.file.couplings, &as_v2.file.bodies), (&scene.file.couplings, &scene.file.bodies));
+}
+
+/// MoorDyn's seabed friction below its Coulomb limit is the damper `μ CV |v_h|` per node
+/// (FricDamp CV, 200 N·s/m by default); the import gives each line the friction speed
+/// `v_s = w l / CV` at which Tether's `μ F_n tanh(|v_h|/v_s)` has that slope on a node resting
+/// under its own wet weight `F_n = w l`. WD0050's chain: d 0.252 m, 390 kg/m, 410 m in 41
+/// segments, ρ 1025, g 9.80665 (the file's defaults): v_s = 166.16 m/s.
+#[test]
+fn moordyns_friction_damping_sets_each_lines_friction_speed() {
+    let scene = load(&input("WD0050_Chain.txt")).unwrap();
+    let (.., model) = catenary(&scene.file, 0);
+    let LineModel::Dynamic(line) = model else { panic!("{model:?}") };
+    let wet = (390.0 - 1025.0 * PI * 0.252 * 0.252 / 4.0) * 9.80665;
+    let expected = wet * 10.0 / 200.0;
+    assert!((line.friction_speed - expected).abs() < 1e-12 * expected, "{} against {expected}", line.friction_speed);
+    assert!((line.friction_speed - 166.16).abs() < 0.01, "{}", line.friction_speed);
+    assert!(scene.text.contains("FrictionCoefficient 0.5, FricDamp 200 N·s/m (each line's friction_speed)."));
+    assert_eq!(scene.file.seabed.as_ref().unwrap().line_friction, 0.5);
+    // FricDamp 0: MoorDyn's friction is nil, and so is the import's.
+    let text = std::fs::read_to_string(input("WD0050_Chain.txt")).unwrap();
+    let without = import_text(
+        &text.replace("0.5                  FrictionCoefficient", "0.5 FrictionCoefficient\n0 FricDamp"),
+        "f.txt",
+    )
+    .unwrap();
+    assert_eq!(without.file.seabed.as_ref().unwrap().line_friction, 0.0);
+    // A static to dynamic ratio other than 1 is named with its line (Tether's friction has one).
+    let scaled = import_text(
+        &text.replace("0.5                  FrictionCoefficient", "0.5 FrictionCoefficient\n2 StatDynFricScale"),
+        "f.txt",
+    )
+    .unwrap();
+    assert!(
+        scaled.text.contains("(file line 28): option 2 StatDynFricScale: Tether's seabed friction has one coefficient"),
+        "{}",
+        scaled.text
+    );
+    // A file without friction keeps the default friction speed (it does not matter there).
+    let frictionless = load(&input("WD0050_Chain_frictionless.txt")).unwrap();
+    let (.., model) = catenary(&frictionless.file, 0);
+    assert_eq!(model, LineModel::Dynamic(LumpedMass { friction_speed: LumpedMass::FRICTION_SPEED, ..line }));
+}
+
+/// The export writes the `FricDamp` that gives its first line its friction speed, `CV = w l /
+/// v_s`, and a `dtM` within the time that damper takes to stop a node, `λ0 l / (μ CV) = λ0 v_s /
+/// (μ w)`, beyond which MoorDyn's capped friction chatters
+/// (validation/moordyn/friction_step.py): spread_moored_barge's chains (λ0 114.94 kg/m, A_d
+/// 0.014698 m², 300 m in 20 segments, μ = 1, v_s = 0.01 m/s) give CV = 1.46915e6 N·s/m (g
+/// 9.80665) and a limit of 1.17 ms, under the axial wave's half crossing (1.9 ms).
+#[test]
+fn the_export_writes_the_friction_damping_and_a_step_it_stays_stable_at() {
+    let path = repo("scenes/spread_moored_barge.ron");
+    let scene = load(&path).unwrap();
+    let text = export::export(&scene.file, scene.bodies.bodies(), "barge", 20);
+    let option = |name: &str| -> f64 {
+        let row = text.lines().find(|row| row.split_whitespace().nth(1) == Some(name)).unwrap();
+        row.split_whitespace().next().unwrap().parse().unwrap()
+    };
+    let area = PI * export::diameter_of(0.014698, 114.94).powi(2) / 4.0;
+    let wet = (114.94 - 1025.0 * area) * 9.80665;
+    let damping = option("FricDamp");
+    assert!((damping - wet * 15.0 / 0.01).abs() < 1e-9 * damping, "FricDamp {damping}");
+    assert!((damping - 1.46915e6).abs() < 10.0, "FricDamp {damping}");
+    let limit = 114.94 * 15.0 / (option("FrictionCoefficient") * damping);
+    let step = option("dtM");
+    assert!(step <= limit && step > 0.9 * limit, "dtM {step} against {limit}");
 }
 
 /// A free point: a clump weight (m = 2000 kg, V = 0.5 m³) hanging on a vertical rope (λ0 10
@@ -329,12 +424,15 @@ fn assert_same_lines(before: &[LineSummary], after: &[LineSummary], segments: u3
     assert_eq!(before.len(), after.len(), "{}", path.display());
     for (a, b) in before.iter().zip(after) {
         assert_eq!((&a.0, a.2, &a.4), (&b.0, b.2, &b.4), "{}", path.display());
-        assert_eq!(
-            b.3,
-            a.3.dynamic_with(if a.3.is_quasi_static() { segments } else { segments_of(&a.3) }),
-            "{}",
-            path.display()
-        );
+        // The friction speed crosses the file as FricDamp CV = w l / v_s (a few rounding errors).
+        let (LineModel::Dynamic(before), LineModel::Dynamic(after)) =
+            (a.3.dynamic_with(if a.3.is_quasi_static() { segments } else { segments_of(&a.3) }), b.3)
+        else {
+            panic!("{}: not dynamic after import", path.display())
+        };
+        assert_eq!(after, LumpedMass { friction_speed: after.friction_speed, ..before }, "{}", path.display());
+        let (x, y) = (before.friction_speed, after.friction_speed);
+        assert!((x - y).abs() <= 16.0 * f64::EPSILON * x, "{}: friction speed {x} → {y}", path.display());
         let mass_per_length = f64::from_bits(a.2[0]);
         let area = if a.1[1] > 0.0 { a.1[1] } else { mass_per_length / export::STEEL_DENSITY };
         for (x, y) in [a.1[0], area].iter().zip(&b.1) {

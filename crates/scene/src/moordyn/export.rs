@@ -30,6 +30,8 @@ struct LineRow {
     ends: [usize; 2],
     length: f64,
     segments: u32,
+    /// `v_s` \[m/s] of its seabed friction ([`LumpedMass::friction_speed`]).
+    friction_speed: f64,
 }
 
 /// A MoorDyn line type: the values a line's row takes from its type.
@@ -83,7 +85,7 @@ pub fn export(file: &SceneFile, bodies: &[RigidBody], source: &str, segments: u3
             added_mass_tangential,
             seabed_stiffness,
             seabed_damping,
-            ..
+            friction_speed,
         } = match model {
             LineModel::QuasiStatic => LumpedMass::wire(segments),
             LineModel::Dynamic(line) => *line,
@@ -110,7 +112,7 @@ pub fn export(file: &SceneFile, bodies: &[RigidBody], source: &str, segments: u3
             types.len() - 1
         });
         let ends = [end1, end2].map(|end| point_of(file, bodies, end, &mut points, &mut body_ids));
-        lines.push(LineRow { type_index, ends, length: *length, segments: count });
+        lines.push(LineRow { type_index, ends, length: *length, segments: count, friction_speed });
     }
     // A point mass weighs as the file's point: the mapping's end-node mass and hull are taken back.
     for line in &lines {
@@ -345,19 +347,35 @@ fn write_lines(text: &mut String, lines: &[LineRow], types: &[TypeRow]) {
 }
 
 /// MoorDyn's internal step `dtM` \[s]: half the time the axial wave takes to cross the shortest
-/// segment, `l √(λ0/EA)`, no longer than the scene's step.
-fn moordyn_step(lines: &[LineRow], types: &[TypeRow]) -> f64 {
-    let crossing = lines
+/// segment, `l √(λ0/EA)`, no longer than the scene's step, nor than the time `λ0 l / (μ CV)` its
+/// seabed friction's damper `friction_damper` = μ CV \[N·s/m] takes to stop a node's slide
+/// (longer steps make MoorDyn's capped friction chatter: validation/moordyn/friction_step.py).
+fn moordyn_step(lines: &[LineRow], types: &[TypeRow], friction_damper: f64) -> f64 {
+    let limit = lines
         .iter()
         .map(|line| {
             let values = &types[line.type_index].values;
-            line.length / f64::from(line.segments) * (values[1] / values[2]).sqrt()
+            let segment = line.length / f64::from(line.segments);
+            let crossing = 0.5 * segment * (values[1] / values[2]).sqrt();
+            let friction = values[1] * segment / friction_damper;
+            crossing.min(friction)
         })
-        .fold(STEP, f64::min);
-    let half = 0.5 * crossing;
+        .fold(0.5 * STEP, f64::min);
     // Two significant digits, rounded down.
-    let scale = 10f64.powi(half.log10().floor() as i32 - 1);
-    (half / scale).floor() * scale
+    let scale = 10f64.powi(limit.log10().floor() as i32 - 1);
+    (limit / scale).floor() * scale
+}
+
+/// MoorDyn's `FricDamp` CV \[N·s/m] that gives the first line its friction speed: `CV = w l /
+/// v_s` (the inverse of the import's `friction_speed`, `super::mapping`); one value for the file,
+/// as MoorDyn has. None for a file whose first line floats.
+fn friction_damping(lines: &[LineRow], types: &[TypeRow], density: f64, gravity: f64) -> Option<f64> {
+    let line = lines.first()?;
+    let [diameter, mass_per_length, ..] = types[line.type_index].values;
+    let area = std::f64::consts::PI * diameter * diameter / 4.0;
+    let wet = (mass_per_length - density * area) * gravity;
+    let damping = wet * line.length / f64::from(line.segments) / line.friction_speed;
+    (damping.is_finite() && damping > 0.0).then_some(damping)
 }
 
 fn write_options(text: &mut String, file: &SceneFile, lines: &[LineRow], types: &[TypeRow], seabed: (f64, f64)) {
@@ -367,14 +385,20 @@ fn write_options(text: &mut String, file: &SceneFile, lines: &[LineRow], types: 
         .or_else(|| file.seabed.as_ref().and_then(|s| s.elevation).map(|z| -z))
         .unwrap_or(10_000.0);
     let friction = file.seabed.as_ref().map_or(0.0, |s| s.line_friction);
+    let gravity = -file.gravity[2];
+    let damping = friction_damping(lines, types, water.map_or(0.0, |w| w.density), gravity);
+    let damper = friction * damping.unwrap_or(0.0);
     let _ = writeln!(text, "---------------------- OPTIONS ---------------------------------------------");
-    let _ = writeln!(text, "{:?} dtM - MoorDyn's time step (s)", moordyn_step(lines, types));
+    let _ = writeln!(text, "{:?} dtM - MoorDyn's time step (s)", moordyn_step(lines, types, damper));
     let _ = writeln!(text, "{:?} g - gravity (m/s^2)", -file.gravity[2]);
     let _ = writeln!(text, "{:?} WtrDnsty - water density (kg/m^3)", water.map_or(0.0, |w| w.density));
     let _ = writeln!(text, "{depth:?} WtrDpth - water depth (m)");
     let _ = writeln!(text, "{:?} kBot - bottom stiffness (Pa/m)", seabed.0);
     let _ = writeln!(text, "{:?} cBot - bottom damping (Pa-s/m)", seabed.1);
     let _ = writeln!(text, "{friction:?} FrictionCoefficient - seabed friction (-)");
+    if let Some(damping) = damping {
+        let _ = writeln!(text, "{damping:?} FricDamp - seabed friction's damping below its Coulomb limit (N-s/m)");
+    }
     let _ = writeln!(text, "0 writeLog - no log file");
     let _ = writeln!(text, "------------------------- need this line ----------------------------------");
 }

@@ -108,8 +108,11 @@ pub struct Options {
     pub seabed_stiffness: f64,
     /// `cBot` [Pa·s/m].
     pub seabed_damping: f64,
-    /// `FrictionCoefficient` [–].
+    /// `FrictionCoefficient` μ [–].
     pub friction: f64,
+    /// `FricDamp` (MoorDyn-F's `CV`) [N·s/m]: below its Coulomb limit `μ F_n` MoorDyn's seabed
+    /// friction on a node is the damper `μ CV |v_h|` (`Line.cpp`, `getStateDeriv`).
+    pub friction_damping: f64,
     /// The options read but not used (`dtM 0.0002`, …), for the scene's opening comment.
     pub unused: Vec<String>,
 }
@@ -141,7 +144,8 @@ pub fn read(sections: &[Section], last: usize) -> Result<Input, Located> {
     refuse_sections(sections, &mut warnings)?;
     let line_types = match table(SectionKind::LineTypes) {
         Some(section) => {
-            data_rows(section)?.iter().map(|row| line_type(row, &section.title)).collect::<Result<Vec<_>, _>>()?
+            let v1 = is_v1_line_types(section);
+            data_rows(section)?.iter().map(|row| line_type(row, v1)).collect::<Result<Vec<_>, _>>()?
         }
         None => return Err(ends_early(last, "LINE TYPES")),
     };
@@ -176,7 +180,7 @@ pub fn read(sections: &[Section], last: usize) -> Result<Input, Located> {
 
 impl Default for Options {
     /// MoorDyn v2's defaults (`MoorDyn2.cpp`): g 9.80665, ρ 1025, no depth (the lowest point's),
-    /// kBot 3e6, cBot 3e5, no friction.
+    /// kBot 3e6, cBot 3e5, no friction, FricDamp 200 N·s/m.
     fn default() -> Self {
         Self {
             gravity: 9.80665,
@@ -185,6 +189,7 @@ impl Default for Options {
             seabed_stiffness: 3.0e6,
             seabed_damping: 3.0e5,
             friction: 0.0,
+            friction_damping: 200.0,
             unused: Vec::new(),
         }
     }
@@ -312,11 +317,18 @@ fn whole(field: Field, what: &str) -> Result<usize, Located> {
     })
 }
 
-fn line_type(row: &Row, title: &str) -> Result<LineType, Located> {
+/// Whether a line-type table has v1's columns (Diam, MassDen, EA, BA, Can, Cat, Cdn, Cdt), told
+/// by its sixth column's name (`Can` in v1, `EI` in v2): OpenFAST's v1 files title it `LINE
+/// DICTIONARY` or, as the IEA 15 MW semi's of 2021, `LINE TYPES` with a count line above.
+fn is_v1_line_types(section: &Section) -> bool {
+    let names = section.rows.iter().find(|row| !is_count(row));
+    names.and_then(|row| row.fields.get(5)).is_some_and(|f| f.text.to_uppercase().starts_with("CAN"))
+}
+
+/// A line type's row: v1's 9 columns (`v1`) or v2's 10 or more (Diam, Mass/m, EA, BA/-zeta, EI,
+/// Cd, Ca, CdAx, CaAx, optionally Cl).
+fn line_type(row: &Row, v1: bool) -> Result<LineType, Located> {
     let name = field(row, 0, "line type name")?.text.to_string();
-    // v1 (OpenFAST's LINE DICTIONARY, 9 columns): Diam, MassDen, EA, BA, Can, Cat, Cdn, Cdt.
-    // v2 (10 columns or more): Diam, Mass/m, EA, BA/-zeta, EI, Cd, Ca, CdAx, CaAx.
-    let v1 = title.contains("DICTIONARY") && row.fields.len() == 9;
     let ea = field(row, 3, "EA")?;
     // A table of strain against tension is named by its file; a `|` adds viscoelastic terms.
     if ea.text.parse::<f64>().is_err() && (ea.text.contains('|') || ea.text.contains('.')) {
@@ -600,13 +612,22 @@ fn read_options(section: &Section, warnings: &mut Vec<Located>) -> Result<Option
             "KBOT" | "KB" => options.seabed_stiffness = non_negative(value, "kBot")?,
             "CBOT" | "CB" => options.seabed_damping = non_negative(value, "cBot")?,
             "FRICTIONCOEFFICIENT" | "MU_KT" => options.friction = non_negative(value, "FrictionCoefficient")?,
+            "FRICDAMP" | "CV" => options.friction_damping = non_negative(value, "FricDamp")?,
+            "STATDYNFRICSCALE" | "MC" if number(value, "StatDynFricScale")? != 1.0 => warnings.push(Located {
+                line: value.line,
+                col: value.col,
+                message: format!(
+                    "option {} {}: Tether's seabed friction has one coefficient (no static to dynamic ratio): taken as 1",
+                    value.text, name.text
+                ),
+            }),
             "WAVEKIN" | "WATERKIN" if value.text != "0" => return Err(refuse("wave kinematics (files or grids)")),
             "CURRENTS" if value.text != "0" => return Err(refuse("current kinematics (files or grids)")),
             "SEAFLOORFILE" | "SEAFLOOR" => return Err(refuse("a 3-D seafloor from a file")),
             "DTM" | "TSCHEME" | "CFL" | "DTOUT" | "DTIC" | "TMAXIC" | "CDSCALEIC" | "ICDFAC" | "THRESHIC"
             | "ICTHRESH" | "ICDT" | "ICTMAX" | "ICGENDYNAMIC" | "FILEIC" | "WRITELOG" | "DISABLEOUTPUT"
             | "DISABLEOUTTIME" | "ECHO" | "WAVEKIN" | "WATERKIN" | "CURRENTS" | "WRITEUNITS" | "OUTSWITCH"
-            | "FRICDAMP" | "STATDYNFRICSCALE" => {
+            | "STATDYNFRICSCALE" | "MC" => {
                 options.unused.push(format!("{} {}", name.text, value.text));
             }
             _ => warnings.push(Located {

@@ -10,6 +10,7 @@
 //! | Free body | a free rigid body: mass, CG, inertia, buoyancy and added mass from a box hull of its volume, drag areas |
 //! | Free point | a point mass: a body with its rotation held (three degrees of freedom, see `point_mass`) |
 //! | g, WtrDnsty, WtrDpth, kBot, cBot, FrictionCoefficient | gravity, `water`, `seabed`, the lines' seabed, `line_friction` |
+//! | FricDamp CV | each line's `friction_speed` `v_s = w l / CV` (`friction_speed` below); no friction when CV = 0 |
 
 use super::Located;
 use super::input::{Attachment, Body, BodyKind, Input, Line, LineType, Point};
@@ -105,7 +106,8 @@ pub fn map(input: &Input) -> Result<Mapped, Located> {
         couplings,
         seabed: Some(SeabedDef {
             elevation: water.is_none().then_some(-input.options.depth),
-            line_friction: input.options.friction,
+            // MoorDyn's friction is `μ CV |v_h|` below its Coulomb limit: none when CV = 0.
+            line_friction: if input.options.friction_damping > 0.0 { input.options.friction } else { 0.0 },
             contact: None,
         }),
         water,
@@ -180,9 +182,27 @@ fn line_def(input: &Input, line: &Line, line_type: &LineType) -> CouplingDef {
             added_mass_tangential: line_type.added_mass_tangential,
             seabed_stiffness: input.options.seabed_stiffness,
             seabed_damping: input.options.seabed_damping,
-            friction_speed: LumpedMass::FRICTION_SPEED,
+            friction_speed: friction_speed(input, line, line_type),
         }),
     }
+}
+
+/// The friction speed `v_s` \[m/s] that gives a line MoorDyn's seabed friction (PHYSICS.md §8).
+///
+/// MoorDyn (`Line.cpp`, and MoorDyn-F's `MoorDyn_Line.f90` alike) pushes a grounded node sliding
+/// at `v_h` back with `min(μ CV |v_h|, μ F_n)`: a damper of `μ CV` \[N·s/m] per node, whatever its
+/// load, capped at Coulomb's limit (`CV` = `FricDamp`, 200 N·s/m unless the file says). Tether's
+/// is `μ F_n tanh(|v_h|/v_s)`, of slope `μ F_n / v_s` at rest. The two slopes are equal on a
+/// node lying on the seabed under its own wet weight, `F_n = w l` (w the wet weight per length,
+/// l the segment), when `v_s = w l / CV`; both then reach the same Coulomb limit. A line that
+/// floats (w ≤ 0), or a file without friction, keeps the default `v_s` (its friction is nil or
+/// its value does not matter).
+fn friction_speed(input: &Input, line: &Line, line_type: &LineType) -> f64 {
+    let options = &input.options;
+    let area = std::f64::consts::PI * line_type.diameter * line_type.diameter / 4.0;
+    let wet = (line_type.mass_per_length - options.density * area) * options.gravity;
+    let speed = wet * line.length / f64::from(line.segments) / options.friction_damping;
+    if options.friction > 0.0 && speed.is_finite() && speed > 0.0 { speed } else { LumpedMass::FRICTION_SPEED }
 }
 
 /// Where a line end is: the world, a point body, or a point on a body.

@@ -75,8 +75,14 @@ fn header(input: &Input, warnings: &[Located], source: &str) -> Vec<String> {
     }
     let options = &input.options;
     lines.push(format!(
-        "// Options used: g {} m/s², WtrDnsty {} kg/m³, WtrDpth {} m, kBot {} Pa/m, cBot {} Pa·s/m, FrictionCoefficient {}.",
-        options.gravity, options.density, options.depth, options.seabed_stiffness, options.seabed_damping, options.friction
+        "// Options used: g {} m/s², WtrDnsty {} kg/m³, WtrDpth {} m, kBot {} Pa/m, cBot {} Pa·s/m, FrictionCoefficient {}, FricDamp {} N·s/m (each line's friction_speed).",
+        options.gravity,
+        options.density,
+        options.depth,
+        options.seabed_stiffness,
+        options.seabed_damping,
+        options.friction,
+        options.friction_damping
     ));
     if !options.unused.is_empty() {
         lines.push(format!(

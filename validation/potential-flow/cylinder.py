@@ -3,7 +3,7 @@
 WAMIT files Tether reads (docs/PHYSICS.md §9), and Capytaine's own RAO as a small CSV.
 
 The Rust tests read what this writes (no Python needed to test); rerun it to check or to remake
-them (about 5 minutes on 2 cores):
+them (about 6 minutes on 2 cores):
 
     python3 -m venv ~/.cache/tether/capytaine-venv
     ~/.cache/tether/capytaine-venv/bin/pip install capytaine==3.0.0
@@ -11,7 +11,7 @@ them (about 5 minutes on 2 cores):
 
 Writes, beside this script, in `cylinder/`:
 - `cylinder.1`, `cylinder.3`, `cylinder.hst`: WAMIT's added mass and damping (ω = 0 as PER = −1,
-  ω = ∞ as PER = 0, then 60 periods), excitation (heading 0°) and hydrostatic stiffness, L = 1;
+  ω = ∞ as PER = 0, then 100 periods, ω = 0.05 to 5 rad/s), excitation (heading 0°) and hydrostatic stiffness, L = 1;
 - `cylinder_rao.csv`: ω [rad/s], then for surge, heave and pitch the RAO's amplitude (m/m,
   rad/m) and phase [deg] in WAMIT's convention (q = Re{a ξ e^{+iωt}}: Capytaine's phase negated);
 - `cylinder_body.csv`: the mass matrix M and hydrostatic stiffness C (6 × 6, SI, about the
@@ -37,7 +37,7 @@ DOFS = ["Surge", "Sway", "Heave", "Roll", "Pitch", "Yaw"]
 def body():
     """The immersed cylinder with a lid (the lid removes irregular frequencies), its rigid-body
     dofs about G, its inertia and its hydrostatic stiffness (weight term included: z_G − z_B)."""
-    mesh = cpt.mesh_vertical_cylinder(length=T + 2, radius=R, center=(0, 0, (2 - T) / 2), resolution=(8, 40, 24))
+    mesh = cpt.mesh_vertical_cylinder(length=T + 2, radius=R, center=(0, 0, (2 - T) / 2), resolution=(10, 56, 30))
     mass = RHO * np.pi * R**2 * T
     b = cpt.FloatingBody(mesh=mesh, lid_mesh=mesh.generate_lid(),
                          dofs=cpt.rigid_body_dofs(rotation_center=(0, 0, Z_G)),
@@ -53,7 +53,7 @@ def body():
 def main():
     OUT.mkdir(exist_ok=True)
     b = body()
-    w = np.arange(0.05, 3.0001, 0.05)
+    w = np.arange(0.05, 5.0001, 0.05)
     test = xr.Dataset(coords={"omega": np.concatenate([[0.0], w, [np.inf]]), "wave_direction": [0.0],
                               "radiating_dof": list(b.dofs), "water_depth": [np.inf], "rho": [RHO], "g": [G]})
     ds = cpt.BEMSolver().fill_dataset(test, b)
@@ -69,8 +69,11 @@ def main():
                 z = complex(r.sel(radiating_dof=dof).values[i])
                 row += [f"{abs(z):.8e}", f"{-np.degrees(np.angle(z)):.6f}"]
             f.write(",".join(row) + "\n")
-    m = np.asarray(b.inertia_matrix.sel(influenced_dof=DOFS, radiating_dof=DOFS))
-    c = np.asarray(b.hydrostatic_stiffness.sel(influenced_dof=DOFS, radiating_dof=DOFS))
+    # The matrices rao() solved with: the dataset's, as fill_dataset stored them.
+    m = np.asarray(ds.inertia_matrix.sel(influenced_dof=DOFS, radiating_dof=DOFS))
+    c = np.asarray(ds.hydrostatic_stiffness.sel(influenced_dof=DOFS, radiating_dof=DOFS))
+    print("body C55", float(b.hydrostatic_stiffness.sel(influenced_dof="Pitch", radiating_dof="Pitch")),
+          "dataset C55", c[4, 4], "body M55", float(b.inertia_matrix.sel(influenced_dof="Pitch", radiating_dof="Pitch")), "dataset M55", m[4, 4])
     with open(OUT / "cylinder_body.csv", "w") as f:
         f.write("# validation/potential-flow/cylinder.py: matrix,row,col,value (SI, about the reference point G)\n")
         for name, mat in (("M", m), ("C", c)):

@@ -71,6 +71,17 @@ pub fn kernel_from_added_mass(omega: &[f64], added_mass: &[f64], infinite: f64, 
     -2.0 / PI * transform(omega, &y, t, Weight::Sine)
 }
 
+/// `A(ω) = A∞ − (1/ω) ∫₀^{t_K} K(t) sin(ωt) dt` (Ogilvie 1964) at `omega` > 0 \[rad/s], `K` linear
+/// between its samples: the added mass the kernel of the damping implies, to set beside the
+/// file's (the check of PHYSICS.md §9 that needs no tail of `A` beyond its last frequency).
+pub fn added_mass_from_kernel(kernel: &SampledKernel, infinite: &Matrix6, omega: f64) -> Matrix6 {
+    let times: Vec<f64> = (0..kernel.values.len()).map(|n| n as f64 * kernel.step).collect();
+    Matrix6::from_fn(|i, j| {
+        let k: Vec<f64> = kernel.values.iter().map(|m| m[(i, j)]).collect();
+        infinite[(i, j)] - transform(&times, &k, omega, Weight::Sine) / omega
+    })
+}
+
 /// A body's kernel matrices `K(t_n)` at `t_n = n Δt`, `n = 0 … ⌊t_K/Δt⌋`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SampledKernel {
@@ -125,6 +136,28 @@ impl SampledKernel {
     pub fn pair(&self, i: usize, j: usize) -> Vec<f64> {
         self.values.iter().map(|k| k[(i, j)]).collect()
     }
+    /// `|K_ii(t_K)| / max_t |K_ii(t)|` per degree of freedom (0 where the kernel is nothing):
+    /// how much of the memory the truncation at `t_K` cuts off (PHYSICS.md §9: warn when not
+    /// small).
+    pub fn truncation(&self) -> [f64; 6] {
+        let (peaks, last) = (self.peaks(), self.values.last().copied().unwrap_or_else(Matrix6::zeros));
+        std::array::from_fn(|i| if peaks[(i, i)] > 0.0 { last[(i, i)].abs() / peaks[(i, i)] } else { 0.0 })
+    }
+
+    /// `max_{t ≥ from} |K_ii(t) − K'_ii(t)| / max_t |K_ii(t)|` per degree of freedom against
+    /// `other` sampled alike (0 where this kernel is nothing): the check of a file's `A` against
+    /// its `B` (PHYSICS.md §9). The kernel from `A` misses its value near `t = 0`, which lies in
+    /// the tail of `ω (A − A∞)` beyond the last frequency: `from` \[s] leaves that out.
+    pub fn disagreement(&self, other: &Self, from: f64) -> [f64; 6] {
+        let peaks = self.peaks();
+        let skip = (from / self.step).ceil() as usize;
+        std::array::from_fn(|i| {
+            let pairs = self.values.iter().zip(&other.values).skip(skip);
+            let worst = pairs.map(|(a, b)| (a[(i, i)] - b[(i, i)]).abs()).fold(0.0, f64::max);
+            if peaks[(i, i)] > 0.0 { worst / peaks[(i, i)] } else { 0.0 }
+        })
+    }
+
     /// The largest `|K_ij(t)|` over the samples, per pair.
     pub fn peaks(&self) -> Matrix6 {
         self.values.iter().fold(Matrix6::zeros(), |peak, k| peak.zip_map(k, |p, v| p.max(v.abs())))
@@ -134,6 +167,18 @@ impl SampledKernel {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn truncation_and_disagreement_are_relative_to_the_peak() {
+        let kernel = SampledKernel::sample(1.0, 4.0, |t| Matrix6::identity() * (8.0 - t));
+        let other = SampledKernel::sample(1.0, 4.0, |t| Matrix6::identity() * (8.0 - t + 0.1 * t));
+        assert_eq!(kernel.truncation()[2], 0.5);
+        assert!((kernel.disagreement(&other, 0.0)[0] - 0.05).abs() < 1e-15);
+        assert!((kernel.disagreement(&other, 4.0)[0] - 0.05).abs() < 1e-15);
+        assert!((kernel.disagreement(&other, 1.0)[0] - 0.05).abs() < 1e-15);
+        let nothing = SampledKernel::sample(1.0, 4.0, |_| Matrix6::zeros());
+        assert_eq!((nothing.truncation()[5], nothing.disagreement(&kernel, 0.0)[5]), (0.0, 0.0));
+    }
 
     /// A linear piece against its transform by a fine midpoint rule.
     #[test]

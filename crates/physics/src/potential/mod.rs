@@ -8,11 +8,13 @@
 //! - [`kernel`]: `K(t) = (2/π) ∫ B(ω) cos(ωt) dω`, each linear piece of `B` integrated exactly,
 //!   and its cross-check from `A(ω) − A∞`;
 //! - [`convolution`]: `F_r = −∫ K(t − τ) q̇(τ) dτ` over a history of `q̇`, by the trapezoid rule;
-//! - [`state_space`]: `ẋ = A_r x + B_r q̇`, `F_r = −C_r x`, fitted to `K(t)` per nonzero pair.
+//! - [`state_space`]: `ẋ = A_r x + B_r q̇`, `F_r = −C_r x`, fitted to `K(t)` per nonzero pair;
+//! - [`response`]: the linear frequency-domain response `ξ(ω)` in regular waves (the RAO).
 
 pub mod coefficients;
 pub mod convolution;
 pub mod kernel;
+pub mod response;
 pub mod state_space;
 
 pub use coefficients::{

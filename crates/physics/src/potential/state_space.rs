@@ -122,22 +122,35 @@ pub struct RadiationStateSpace {
     states: usize,
 }
 
-/// A pair whose kernel peaks below this fraction of `√(peak_ii peak_jj)` is taken as nothing.
-const NEGLIGIBLE_PAIR: f64 = 1e-6;
+/// What is taken as the panel code's numerical noise rather than a kernel: a diagonal term
+/// peaking below this fraction of the largest of its kind (translations, rotations: an
+/// axisymmetric body's yaw), a pair below it of `√(peak_ii peak_jj)` of its kept diagonal terms
+/// (the cylinder's surge–sway pair, 2e-5 of its diagonal's).
+const NEGLIGIBLE_PAIR: f64 = 1e-3;
+
+/// The diagonal peaks that are kernels, the others 0 (diagonal terms below 1e-3 of the largest of their kind, pairs below 1e-3 of `√(K_ii K_jj)`).
+fn kept_diagonal(peaks: &Matrix6) -> [f64; 6] {
+    let largest = |dof: usize| {
+        let kind = if dof < 3 { 0..3 } else { 3..6 };
+        kind.map(|k| peaks[(k, k)]).fold(0.0, f64::max)
+    };
+    std::array::from_fn(|i| if peaks[(i, i)] > NEGLIGIBLE_PAIR * largest(i) { peaks[(i, i)] } else { 0.0 })
+}
 
 impl RadiationStateSpace {
-    /// Fits every pair of `kernel` whose peak is not negligible against its diagonal terms'.
+    /// Fits every pair of `kernel` that is not numerical noise (diagonal terms below 1e-3 of the largest of their kind, pairs below 1e-3 of `√(K_ii K_jj)`).
     ///
     /// # Errors
     /// [`FitError::NotReached`] for the first pair no order up to the limit fits.
     pub fn fit(kernel: &SampledKernel, settings: FitSettings) -> Result<Self, FitError> {
         let peaks = kernel.peaks();
+        let diagonal = kept_diagonal(&peaks);
         let mut pairs = Vec::new();
         let mut states = 0;
         for i in 0..6 {
             for j in 0..6 {
-                let scale = (peaks[(i, i)] * peaks[(j, j)]).sqrt();
-                if peaks[(i, j)] == 0.0 || peaks[(i, j)] <= NEGLIGIBLE_PAIR * scale {
+                let scale = (diagonal[i] * diagonal[j]).sqrt();
+                if scale == 0.0 || peaks[(i, j)] <= NEGLIGIBLE_PAIR * scale {
                     continue;
                 }
                 let pair = fit_pair(&kernel.pair(i, j), kernel.step(), settings).map_err(|(best, order)| {

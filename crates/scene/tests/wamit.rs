@@ -435,7 +435,7 @@ fn the_oc3_spars_files_give_the_published_heave_and_pitch_periods() {
             let l_inv = factor.l().try_inverse().expect("L is invertible");
             let eigen = (l_inv * stiffness * l_inv.transpose()).symmetric_eigen();
             // The mode whose shape is most along `mode`.
-            let shapes = l_inv.transpose() * &eigen.eigenvectors;
+            let shapes = l_inv.transpose() * eigen.eigenvectors;
             let best = (0..6)
                 .max_by(|&a, &b| {
                     let share = |k: usize| shapes[(mode, k)].abs() / shapes.column(k).norm();

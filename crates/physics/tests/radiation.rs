@@ -101,7 +101,7 @@ fn the_state_space_fit_is_within_its_stated_error_and_the_two_forces_agree_to_1e
     assert_eq!(fit.pairs().len(), 5, "the five nonzero pairs, each fitted");
     // The stated error holds against the closed form on a grid 5 × finer than the samples.
     for pair in fit.pairs() {
-        assert!(pair.error <= 1e-4, "K{}{}: stated error {}", pair.i, pair.j, pair.error);
+        assert!(pair.error <= 1e-4, "K{}{}: stated error {}", pair.i + 1, pair.j + 1, pair.error);
         let scale = kernel.values()[0][(pair.i, pair.j)] / vanishing_kernel(1.0, omega_c, 0.0);
         let (mut diff, mut norm) = (0.0, 0.0);
         for n in 0..=(t_k / step) as usize * 5 {
@@ -113,12 +113,12 @@ fn the_state_space_fit_is_within_its_stated_error_and_the_two_forces_agree_to_1e
         let error = (diff / norm).sqrt();
         println!(
             "K{}{}: {} states, stated error {:.2e}, against the closed form {error:.2e}",
-            pair.i,
-            pair.j,
+            pair.i + 1,
+            pair.j + 1,
             pair.states(),
             pair.error
         );
-        assert!(error <= 1.2e-4, "K{}{}: {error:e} against the closed form", pair.i, pair.j);
+        assert!(error <= 1.2e-4, "K{}{}: {error:e} against the closed form", pair.i + 1, pair.j + 1);
     }
     // The same q̇(t) through both: the convolution on the kernel sampled at the run's step,
     // the states by RK4 at the same step.

@@ -16,6 +16,8 @@
 //! - [`surroundings`]: gravity, fluid and seabed as the couplings see them;
 //! - [`evaluation`]: what a force evaluation leaves behind (kinematics, loads, coupling records
 //!   and caches);
+//! - [`potential`]: potential flow from a panel code: frequency-domain data, radiation kernel,
+//!   convolution and state-space radiation (§9);
 //! - [`water`]: hydrostatics, waves, current, Morison loads and added mass (§6), an
 //!   environment stage of the force evaluation;
 //! - [`system`]: bodies, couplings, gravity and water, and the named stages of a force
@@ -50,6 +52,7 @@ pub mod mass_properties;
 pub mod math;
 pub mod mesh;
 pub mod parameter;
+pub mod potential;
 pub mod seabed;
 pub mod simd;
 pub mod stability;

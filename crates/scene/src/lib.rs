@@ -10,6 +10,7 @@ pub mod mesh_file;
 pub mod moordyn;
 pub mod pose;
 pub mod source;
+pub mod wamit;
 pub mod water;
 
 use build::{Bodies, Place, Problem};

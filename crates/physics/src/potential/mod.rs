@@ -1,0 +1,25 @@
+//! Potential-flow hydrodynamics from a panel code (PHYSICS.md §9): a body's frequency-domain
+//! coefficients, its radiation kernel `K(t)`, and the radiation force by direct convolution (the
+//! reference) or by a state-space approximation fitted to the kernel.
+//!
+//! Stages, in the order a body's data go through them:
+//! - [`coefficients`]: `A(ω)`, `B(ω)`, `A∞`, `A(0)`, `X(ω, β)` about the body's reference point,
+//!   checked once by [`Coefficients::new`];
+//! - [`kernel`]: `K(t) = (2/π) ∫ B(ω) cos(ωt) dω`, each linear piece of `B` integrated exactly,
+//!   and its cross-check from `A(ω) − A∞`;
+//! - [`convolution`]: `F_r = −∫ K(t − τ) q̇(τ) dτ` over a history of `q̇`, by the trapezoid rule;
+//! - [`state_space`]: `ẋ = A_r x + B_r q̇`, `F_r = −C_r x`, fitted to `K(t)` per nonzero pair;
+//! - [`response`]: the linear frequency-domain response `ξ(ω)` in regular waves (the RAO).
+
+pub mod coefficients;
+pub mod convolution;
+pub mod kernel;
+pub mod response;
+pub mod state_space;
+
+pub use coefficients::{
+    Coefficients, CoefficientsData, CoefficientsError, ComplexVector6, Excitation, Matrix6, Vector6,
+};
+pub use convolution::Convolution;
+pub use kernel::SampledKernel;
+pub use state_space::{FitError, FitSettings, PairFit, RadiationStateSpace};

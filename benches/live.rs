@@ -14,7 +14,6 @@ use rerun::external::re_entity_db::EntityDb;
 use rerun::log::LogMsg;
 use rerun::sink::{CallbackSink, LogSink};
 use std::collections::HashMap;
-use std::path::Path;
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 use tether::gui::simulation::{Command, Report, Run, Simulation, Speed};

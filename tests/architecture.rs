@@ -8,7 +8,6 @@
 mod import_graph;
 
 use import_graph::Ancestors;
-use std::path::Path;
 
 fn source(file: &str) -> std::path::PathBuf {
     std::path::PathBuf::from(

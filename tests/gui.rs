@@ -572,11 +572,17 @@ fn a_fit_moves_the_running_stiffness_to_the_record_and_revert_puts_the_file_back
         p.simulation().snapshot(PATIENCE).is_some_and(|w| spring_stiffness(&w) == 100.0)
     });
     assert!(harness.state().scene().is_some_and(|s| s.tuned == s.file));
+    let first = harness.state().fit().session.as_ref().map_or(0, |s| s.costs.len());
 
-    // What the viewer was sent: the record's samples once, a model curve per accepted
+    // A second fit in the same window draws its curves where the first one's were, visible.
+    harness.get_by_label("Fit").click();
+    harness.run_steps(2);
+    until(&mut harness, "the second fit to end", |p| p.fit().session.as_ref().is_some_and(|s| s.result.is_some()));
+    let second = harness.state().fit().session.as_ref().map_or(0, |s| s.costs.len());
+
+    // What the viewer was sent: the record's samples once per fit, a model curve per accepted
     // iteration, each but the last hidden by its style logged again (the viewer draws the
     // latest alone).
-    let drawn = harness.state().fit().session.as_ref().map_or(0, |s| s.costs.len());
     drop(harness);
     let stores = common::x11::stores(&shown);
     let chunks: Vec<_> = stores.values().flat_map(|store| store.iter_physical_chunks().cloned()).collect();
@@ -584,18 +590,26 @@ fn a_fit_moves_the_running_stiffness_to_the_record_and_revert_puts_the_file_back
         let of = chunks.iter().filter(|c| c.entity_path().to_string() == entity && c.is_static() == fixed);
         of.map(|c| c.num_rows()).sum()
     };
-    assert_eq!(rows("/plots/fit/x_measured/record", false), 201, "the record's samples, once");
-    for curve in 0..drawn {
+    // The latest static `visible_series` of an entity (static data: the last write wins).
+    let visible = |entity: &str| -> Option<bool> {
+        let component = rerun::SeriesLines::descriptor_visible_series().component;
+        let of = chunks.iter().filter(|c| c.entity_path().to_string() == entity && c.is_static());
+        of.flat_map(|c| c.row_ids().zip(c.iter_slices::<bool>(component)).map(|(id, v)| (id, v.iter().next())))
+            .filter_map(|(id, v)| Some((id, v?)))
+            .max_by_key(|(id, _)| *id)
+            .map(|(_, v)| v)
+    };
+    assert_eq!(rows("/plots/fit/x_measured/record", false), 2 * 201, "the record's samples, once per fit");
+    for curve in 0..first.max(second) {
         let entity = format!("/plots/fit/x_measured/model/{curve}");
         assert!(rows(&entity, false) > 1000, "{entity}: the model's curve at every world step");
-        let hidden = chunks.iter().any(|c| {
-            c.entity_path().to_string() == entity
-                && c.is_static()
-                && c.component_descriptors().any(|d| d.component.as_str() == "SeriesLines:visible_series")
-        });
-        assert_eq!(hidden, curve + 1 < drawn, "{entity}: its style says hidden once replaced");
+        assert_eq!(visible(&entity), Some(curve + 1 == second), "{entity}: only the second fit's last curve shows");
     }
-    assert_eq!(rows(&format!("/plots/fit/x_measured/model/{drawn}"), false), 0, "one curve per accepted iteration");
+    assert_eq!(
+        rows(&format!("/plots/fit/x_measured/model/{}", first.max(second)), false),
+        0,
+        "one curve per accepted iteration"
+    );
 }
 
 /// Bad choices are refused in one line and nothing runs: no column mapped; a negative bound on a

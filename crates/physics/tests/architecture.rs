@@ -8,7 +8,6 @@ mod import_graph;
 
 use import_graph::{Ancestors, code, cycle, expand, named_paths, target};
 use std::collections::{BTreeMap, BTreeSet};
-use std::path::Path;
 
 fn root() -> std::path::PathBuf {
     std::path::PathBuf::from(

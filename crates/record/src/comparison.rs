@@ -40,7 +40,13 @@ pub fn log_styles(stream: &RecordingStream, column: &str) -> Result<(), RecordEr
     )?;
     stream.log_static(
         paths::fit_series(column, paths::FIT_MODEL),
-        &rerun::SeriesLines::new().with_names(["model"]).with_colors([MODEL_COLOUR]).with_widths([MODEL_WIDTH]),
+        // Visible, said every time: a second fit in the same recording draws its drafts at the
+        // paths of the first fit's, which were hidden as earlier iterations.
+        &rerun::SeriesLines::new()
+            .with_names(["model"])
+            .with_colors([MODEL_COLOUR])
+            .with_widths([MODEL_WIDTH])
+            .with_visible_series([true]),
     )?;
     Ok(())
 }
@@ -92,7 +98,13 @@ pub fn send_model_draft(
     let series = format!("{}/{draft}", paths::FIT_MODEL);
     stream.log_static(
         paths::fit_series(column, &series),
-        &rerun::SeriesLines::new().with_names(["model"]).with_colors([MODEL_COLOUR]).with_widths([MODEL_WIDTH]),
+        // Visible, said every time: a second fit in the same recording draws its drafts at the
+        // paths of the first fit's, which were hidden as earlier iterations.
+        &rerun::SeriesLines::new()
+            .with_names(["model"])
+            .with_colors([MODEL_COLOUR])
+            .with_widths([MODEL_WIDTH])
+            .with_visible_series([true]),
     )?;
     send_series(stream, column, &series, times, values)?;
     if let Some(before) = draft.checked_sub(1) {

@@ -7,7 +7,6 @@
 mod import_graph;
 
 use import_graph::Ancestors;
-use std::path::Path;
 
 fn root() -> std::path::PathBuf {
     std::path::PathBuf::from(

@@ -7,7 +7,8 @@ use crate::coupling::catenary::LineState;
 use crate::coupling::contact::ContactForces;
 use crate::coupling::lumped_line::LineRun;
 use crate::coupling::{Coupling, CouplingCache, CouplingForces, CouplingKind, LineModel};
-use crate::water::{WaterForces, WaterScratch};
+use crate::potential::RadiationRun;
+use crate::water::{WaterForces, WaterScratch, WaterStage};
 
 /// The buffers of the force evaluation, one entry per body or coupling of a [`System`](crate::system::System).
 #[derive(Debug, Clone)]
@@ -26,6 +27,8 @@ pub struct Evaluation {
     pub(crate) lines: Vec<LineRun>,
     /// What the water did to each floating body (empty without water).
     pub(crate) water: Vec<WaterForces>,
+    /// The radiation memory of each floating body (PHYSICS.md §9; empty without water).
+    pub(crate) radiation: Vec<RadiationRun>,
     /// The water stage's buffers.
     pub(crate) water_scratch: WaterScratch,
 }
@@ -41,6 +44,7 @@ impl Evaluation {
             caches: couplings.iter().map(Coupling::new_cache).collect(),
             lines: (0..couplings.len()).filter(|&i| is_dynamic(&couplings[i])).map(LineRun::new).collect(),
             water: Vec::new(),
+            radiation: Vec::new(),
             water_scratch: WaterScratch::default(),
         }
     }
@@ -62,6 +66,18 @@ impl Evaluation {
     pub(crate) fn commit_lines(&mut self) {
         for run in &mut self.lines {
             run.commit();
+        }
+    }
+
+    /// Keeps every potential-flow body's last evaluation as the start of its radiation memory's
+    /// next interval: the world calls it when it accepts an integrator step
+    /// ([`RadiationRun::commit`]).
+    pub(crate) fn commit_radiation(&mut self, stage: Option<&WaterStage>) {
+        let Some(stage) = stage else { return };
+        for (floating, run) in stage.floating.iter().zip(&mut self.radiation) {
+            if let Some(potential) = &floating.potential {
+                run.commit(potential.model.radiation());
+            }
         }
     }
 

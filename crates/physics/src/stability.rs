@@ -29,7 +29,8 @@
 //! - Rotation, fixed-step schemes: `|ω| dt < 1` (Radioss aborts beyond).
 //! - Water (PHYSICS.md §6), per floating body: along each body axis `b_j` an oscillator of the
 //!   hydrostatic stiffness `ρ g A_wp (b_j·ẑ)²`, the linearised drag `w (ρ C_dj A_j |u_r·b_j| +
-//!   c_j)` and the mass with its added mass `m + w ρ V C_aj`; about each, the righting
+//!   c_j)` and the mass with its added mass `m + w ρ V C_aj` (with potential flow, §9:
+//!   `m + b_jᵀ A∞ b_j`, `A∞` about G; the radiation memory adds no stiffness); about each, the righting
 //!   stiffness `ρ g V max(GM_T, GM_L, 0)`, the linearised rotational drag
 //!   `w (2 C_rj |ω_j| + d_j)` and the smallest principal moment (added inertia left out: the
 //!   estimate errs short). The still-water hydrostatics at the current pose stand for the
@@ -274,7 +275,14 @@ fn water_limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
         for j in 0..3 {
             let axis = frame.rotation * hydro.axes.column(j);
             let heave = rho_g * statics.waterplane_area * axis.z * axis.z;
-            let mass = body.mass() + wetted * rho * hull.volume() * hydro.spec.added_mass[j];
+            let mass = match &floating.potential {
+                // Potential flow: `A∞` about G along the axis (PHYSICS.md §9).
+                Some(potential) => {
+                    let infinite = potential.model.infinite_added_mass_at_center(&frame);
+                    body.mass() + axis.dot(&(infinite.fixed_view::<3, 3>(0, 0) * axis))
+                }
+                None => body.mass() + wetted * rho * hull.volume() * hydro.spec.added_mass[j],
+            };
             dt = dt.min(oscillator_limit(integrator, heave, drag[j], 1.0 / mass));
             dt = dt.min(oscillator_limit(integrator, righting, turning[j], 1.0 / smallest_moment));
         }

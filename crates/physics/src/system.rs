@@ -30,7 +30,8 @@ use crate::simd::{Level, SupportedLevel};
 use crate::surroundings::Surroundings;
 use crate::water::environment::WaterError;
 use crate::water::morison::HydroSpec;
-use crate::water::stage::{FloatingBody, FloatingError, WaterStageInputs};
+use crate::potential::{PotentialBody, PotentialSpec, WaveExcitation};
+use crate::water::stage::{FloatingBody, FloatingError, FloatingPotential, WaterStageInputs};
 use crate::water::{WaterSpec, WaterStage};
 
 /// Bodies, couplings and gravity: what a run does not change (live edits aside).
@@ -154,6 +155,30 @@ impl System {
         Ok(self)
     }
 
+    /// The system with body `body`, floating in its water, under potential flow (PHYSICS.md §9):
+    /// its model built from `spec` and its excitation in the water's sea, about its reference
+    /// point's position at t = 0.
+    ///
+    /// # Errors
+    /// No water, a body that does not float, a kernel that cannot be sampled or fitted, a sea
+    /// heading the file lacks.
+    pub fn with_potential_flow(mut self, body: usize, spec: PotentialSpec) -> Result<Self, SystemError> {
+        let count = self.bodies.len();
+        let name = self.bodies.get(body).map(|b| b.name.clone()).unwrap_or_default();
+        let hydro = |source: FloatingError| SystemError::Hydro { body: name.clone(), source };
+        let stage = self.water.as_mut().ok_or(SystemError::NoWater)?;
+        let entry =
+            stage.floating.iter_mut().find(|f| f.body == body).ok_or(SystemError::FloatingBody { body, count })?;
+        let model = PotentialBody::new(spec, &self.bodies[body]).map_err(|e| hydro(e.into()))?;
+        let frame = self.initial_states[body].frame();
+        let reference = frame.position + model.arm(&frame);
+        let mean_position = [reference.x, reference.y];
+        let excitation = WaveExcitation::new(model.coefficients().excitation(), stage.water.sea().components(), mean_position)
+            .map_err(|e| hydro(e.into()))?;
+        entry.potential = Some(FloatingPotential { model: std::sync::Arc::new(model), mean_position, excitation });
+        Ok(self)
+    }
+
     /// The water stage, if the system has water.
     pub fn water(&self) -> Option<&WaterStage> {
         self.water.as_ref()
@@ -199,7 +224,8 @@ impl System {
                 // Accepted coefficients with the added mass zeroed stay in range.
                 let hydro = crate::water::Hydro::new(spec, &self.bodies[entry.body], &entry.hull)
                     .expect("accepted coefficients without added mass");
-                FloatingBody { hydro, ..entry.clone() }
+                // At rest nothing radiates and nothing accelerates: no potential flow.
+                FloatingBody { hydro, potential: None, ..entry.clone() }
             })
             .collect();
         WaterStage { water, floating }
@@ -207,7 +233,12 @@ impl System {
 
     /// Replaces the water's spec (a live edit: the world restarts its integrator after it).
     pub(crate) fn replace_water(&mut self, spec: WaterSpec) -> Result<(), SystemError> {
-        let stage = self.water.as_ref().ok_or(SystemError::NoWater)?.with_spec(spec, &self.surroundings.gravity)?;
+        let mut stage =
+            self.water.as_ref().ok_or(SystemError::NoWater)?.with_spec(spec, &self.surroundings.gravity)?;
+        stage.excite().map_err(|(body, source)| SystemError::Hydro {
+            body: self.bodies[body].name.clone(),
+            source: FloatingError::Heading(source),
+        })?;
         // The seabed stays at the water's depth (PHYSICS.md §7).
         let seabed = match (&self.surroundings.seabed, stage.water.seabed()) {
             (Some(seabed), Some(elevation)) => Some(Seabed { elevation, ..*seabed }),
@@ -415,11 +446,13 @@ impl System {
     #[inline]
     pub fn apply_water(&self, evaluation: &mut Evaluation, time: f64) -> f64 {
         let Some(stage) = &self.water else { return 0.0 };
-        let Evaluation { frames, loads, water, water_scratch, .. } = evaluation;
+        let Evaluation { frames, loads, water, radiation, water_scratch, .. } = evaluation;
         if water.len() != stage.floating.len() {
             water.resize(stage.floating.len(), crate::water::WaterForces::default());
+            radiation.resize(stage.floating.len(), crate::potential::RadiationRun::default());
         }
-        let on = WaterStageInputs { bodies: &self.bodies, frames, loads, records: water, scratch: water_scratch };
+        let on =
+            WaterStageInputs { bodies: &self.bodies, frames, loads, records: water, radiation, scratch: water_scratch };
         stage.apply(self.level, on, time)
     }
 

@@ -124,6 +124,24 @@ impl SampledKernel {
         Self { step, values: (0..count).map(|n| kernel(n as f64 * step)).collect() }
     }
 
+    /// `K(t)` linear between the samples, 0 beyond the last (the truncation `t_K`) and for t < 0.
+    pub fn at(&self, t: f64) -> Matrix6 {
+        let position = t / self.step;
+        if !(position >= 0.0) || position > (self.values.len() - 1) as f64 {
+            return Matrix6::zeros();
+        }
+        // 0 ≤ position ≤ len − 1 here: the cast is in range.
+        let below = (position.floor() as usize).min(self.values.len() - 1);
+        let Some(above) = self.values.get(below + 1) else { return self.values[below] };
+        let s = position - below as f64;
+        self.values[below] * (1.0 - s) + above * s
+    }
+
+    /// The truncation `t_K` \[s]: the time of the last sample.
+    pub fn duration(&self) -> f64 {
+        (self.values.len() - 1) as f64 * self.step
+    }
+
     /// The sampling step Δt \[s].
     pub fn step(&self) -> f64 {
         self.step

@@ -9,17 +9,26 @@
 //!   and its cross-check from `A(ω) − A∞`;
 //! - [`convolution`]: `F_r = −∫ K(t − τ) q̇(τ) dτ` over a history of `q̇`, by the trapezoid rule;
 //! - [`state_space`]: `ẋ = A_r x + B_r q̇`, `F_r = −C_r x`, fitted to `K(t)` per nonzero pair;
-//! - [`response`]: the linear frequency-domain response `ξ(ω)` in regular waves (the RAO).
+//! - [`response`]: the linear frequency-domain response `ξ(ω)` in regular waves (the RAO);
+//! - in the time domain: [`body`] (`A∞` in the generalised mass about the reference point, the
+//!   forces moved to G), [`radiation`] (the radiation memory carried through the integrators'
+//!   evaluations and committed at accepted steps) and [`excitation`] (per wave component).
 
+pub mod body;
 pub mod coefficients;
 pub mod convolution;
+pub mod excitation;
 pub mod kernel;
+pub mod radiation;
 pub mod response;
 pub mod state_space;
 
 pub use coefficients::{
     Coefficients, CoefficientsData, CoefficientsError, ComplexVector6, Excitation, Matrix6, Vector6,
 };
+pub use body::{PotentialBody, PotentialError, PotentialSpec};
 pub use convolution::Convolution;
+pub use excitation::{HeadingMissing, WaveExcitation};
 pub use kernel::SampledKernel;
+pub use radiation::{Radiation, RadiationMethod, RadiationRun};
 pub use state_space::{FitError, FitSettings, PairFit, RadiationStateSpace};

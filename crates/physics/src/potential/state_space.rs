@@ -22,7 +22,7 @@
 use super::coefficients::{Matrix6, Vector6};
 use super::kernel::SampledKernel;
 use crate::parameter::{Bound, ParameterError, require};
-use nalgebra::{DMatrix, DVector};
+use nalgebra::{Complex, DMatrix, DVector};
 
 /// How a kernel is fitted: the relative L2 error to reach and the highest order to try.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -206,6 +206,28 @@ impl RadiationStateSpace {
         }
     }
 
+    /// The states `to` at `h` \[s] after `from`, the input `q̇` moving linearly from `v0` to `v1`
+    /// over the interval, each mode integrated exactly (PHYSICS.md §9, "Radiation memory in the
+    /// integrators"): with `λ = σ + iω` and `z = x₁ + i x₂` (`z = x` for a real pole),
+    /// `z(h) = e^{λh} z(0) + (φ₁ − φ₂) q̇_0 + φ₂ q̇_1`, `φ₁ = (e^{λh} − 1)/λ`,
+    /// `φ₂ = (φ₁ − h)/(λh)` (their Taylor series where `|λh| < 1e-4`). `h = 0` gives `from`.
+    pub fn advance(&self, from: &[f64], v0: &Vector6, v1: &Vector6, h: f64, to: &mut [f64]) {
+        for pair in &self.pairs {
+            let (u0, u1) = (v0[pair.j], v1[pair.j]);
+            let mut s = pair.first_state;
+            for mode in &pair.modes {
+                let lambda = Complex::new(mode.decay, mode.frequency);
+                let start = Complex::new(from[s], if mode.is_real() { 0.0 } else { from[s + 1] });
+                let end = exact_linear_input(lambda, h, start, u0, u1);
+                to[s] = end.re;
+                if !mode.is_real() {
+                    to[s + 1] = end.im;
+                }
+                s += mode.states();
+            }
+        }
+    }
+
     /// `F_r = −C_r x` [N, N·m].
     pub fn force(&self, states: &[f64]) -> Vector6 {
         let mut force = Vector6::zeros();
@@ -223,6 +245,22 @@ impl RadiationStateSpace {
         }
         force
     }
+}
+
+/// `z(h)` of `ż = λ z + u(t)`, `u` linear from `u0` to `u1` over `[0, h]`, from `z(0) = start`.
+fn exact_linear_input(lambda: Complex<f64>, h: f64, start: Complex<f64>, u0: f64, u1: f64) -> Complex<f64> {
+    if h == 0.0 {
+        return start;
+    }
+    let z = lambda * h;
+    // `φ₁/h = (e^z − 1)/z`, `φ₂/h = (e^z − 1 − z)/z²`, by series where they would cancel.
+    let (phi1, phi2) = if z.norm() < 1e-4 {
+        (Complex::from(1.0) + z / 2.0 + z * z / 6.0, Complex::from(0.5) + z / 6.0 + z * z / 24.0)
+    } else {
+        let e = z.exp() - 1.0;
+        (e / z, (e - z) / (z * z))
+    };
+    z.exp() * start + (phi1 - phi2) * (u0 * h) + phi2 * (u1 * h)
 }
 
 /// The modes of the lowest order whose error reaches the tolerance, with that error; or the

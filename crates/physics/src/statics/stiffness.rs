@@ -60,6 +60,7 @@ pub fn tangent(system: &System, evaluation: &Evaluation) -> DMatrix<f64> {
     if let Some(stage) = system.water() {
         let bodies: Vec<usize> = stage.floating.iter().map(|f| f.body).collect();
         let mut records = vec![WaterForces::default(); bodies.len()];
+        let mut radiation = vec![crate::potential::RadiationRun::default(); bodies.len()];
         let mut scratch = WaterScratch::default();
         add_differences(&mut jacobian, system, frames, &bodies, |moved, loads| {
             let on = WaterStageInputs {
@@ -67,6 +68,7 @@ pub fn tangent(system: &System, evaluation: &Evaluation) -> DMatrix<f64> {
                 frames: moved,
                 loads,
                 records: &mut records,
+                radiation: &mut radiation,
                 scratch: &mut scratch,
             };
             stage.apply(system.supported_level(), on, STATIC_TIME);

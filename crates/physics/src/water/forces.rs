@@ -12,8 +12,13 @@ pub struct WaterForces {
     pub pressure: Load,
     /// Morison drag, damping and rotational drag.
     pub drag: Load,
-    /// The added mass's reaction, diffraction force included.
+    /// The added mass's reaction, diffraction force included; with potential flow, `A∞`'s
+    /// (PHYSICS.md §9).
     pub added_mass: Load,
+    /// Potential flow's radiation force `F_r`, moved to G (PHYSICS.md §9).
+    pub radiation: Load,
+    /// Potential flow's wave excitation `F_exc`, ramped, moved to G.
+    pub excitation: Load,
     /// `V_sub` \[m³]: `−∫_wet (z_w − z) n_z dA`.
     pub submerged_volume: f64,
     /// `w = V_sub / V`, within [0, 1].
@@ -28,8 +33,16 @@ impl WaterForces {
     /// Everything the water does to the body.
     pub fn total(&self) -> Load {
         Load {
-            force: self.pressure.force + self.drag.force + self.added_mass.force,
-            moment: self.pressure.moment + self.drag.moment + self.added_mass.moment,
+            force: self.pressure.force
+                + self.drag.force
+                + self.added_mass.force
+                + self.radiation.force
+                + self.excitation.force,
+            moment: self.pressure.moment
+                + self.drag.moment
+                + self.added_mass.moment
+                + self.radiation.moment
+                + self.excitation.moment,
         }
     }
 }

@@ -16,7 +16,10 @@
 //! 3. *added mass*: the fluid's inertia (and the diffraction force `M_a u̇`) as a reaction that
 //!    turns the total load into the one the rigid-body equations need, so that every
 //!    integrator solves `(m E + M_a) γ = F + M_a u̇` without knowing of it ([`added_mass`]);
-//! 4. *power*: `Σ F·v + M·ω` of the water's forces, booked as external work.
+//! 4. *potential flow* (a body with a panel code's data, PHYSICS.md §9, [`crate::potential`]):
+//!    step 1 without the incident wave's pressure and step 3 without Morison's added mass; the
+//!    radiation force, the excitation and the reaction of `A∞` instead;
+//! 5. *power*: `Σ F·v + M·ω` of the water's forces, booked as external work.
 //!
 //! [`hydrostatics`] gives the still-water properties a naval architect checks (displacement,
 //! draft, centre of buoyancy, waterplane, metacentric heights, natural periods); [`spectrum`]
@@ -48,4 +51,4 @@ pub use environment::{CurrentProfile, CurrentSpec, Water, WaterError, WaterSpec,
 pub use forces::WaterForces;
 pub use hull::Hull;
 pub use morison::Hydro;
-pub use stage::{FloatingBody, WaterScratch, WaterStage, WaterStageInputs};
+pub use stage::{FloatingBody, FloatingPotential, WaterScratch, WaterStage, WaterStageInputs};

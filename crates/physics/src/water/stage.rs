@@ -10,17 +10,28 @@ use super::morison::{Hydro, HydroError, HydroSpec};
 use super::pressure::integrate;
 use super::waves::SeaInstant;
 use crate::body::{BodyFrame, Load, RigidBody};
+use crate::potential::{HeadingMissing, PotentialBody, PotentialError, RadiationRun, WaveExcitation};
 use crate::math::Vec3;
 use crate::mesh::MeshError;
 use crate::simd::SupportedLevel;
 use std::sync::Arc;
 
-/// A body in the water: its index, hull and coefficients.
+/// A body in the water: its index, hull and coefficients, and its potential flow if it has any.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FloatingBody {
     pub body: usize,
     pub hull: Arc<Hull>,
     pub hydro: Hydro,
+    pub potential: Option<FloatingPotential>,
+}
+
+/// A floating body's potential flow (PHYSICS.md §9): its model, the mean horizontal position
+/// of its reference point \[m] and its excitation in the water's sea.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FloatingPotential {
+    pub model: Arc<PotentialBody>,
+    pub mean_position: [f64; 2],
+    pub excitation: WaveExcitation,
 }
 
 /// A body that cannot float, and why.
@@ -30,6 +41,10 @@ pub enum FloatingError {
     Hull(#[from] MeshError),
     #[error("hydro: {0}")]
     Hydro(#[from] HydroError),
+    #[error("hydro: potential: {0}")]
+    Potential(#[from] PotentialError),
+    #[error("hydro: potential: {0}")]
+    Heading(#[from] HeadingMissing),
 }
 
 impl FloatingBody {
@@ -41,7 +56,7 @@ impl FloatingBody {
         let body = &bodies[index];
         let hull = Hull::of_body(body)?;
         let hydro = Hydro::new(spec, body, &hull)?;
-        Ok(Self { body: index, hull: Arc::new(hull), hydro })
+        Ok(Self { body: index, hull: Arc::new(hull), hydro, potential: None })
     }
 }
 
@@ -59,7 +74,18 @@ pub struct WaterStageInputs<'a> {
     pub frames: &'a [BodyFrame],
     pub loads: &'a mut [Load],
     pub records: &'a mut [WaterForces],
+    /// The radiation memory of each floating body (unused without potential flow).
+    pub radiation: &'a mut [RadiationRun],
     pub scratch: &'a mut WaterScratch,
+}
+
+/// One floating body at an evaluation: its kinematics, its load from every other force and its
+/// radiation memory.
+struct BodyInputs<'a> {
+    body: &'a RigidBody,
+    frame: &'a BodyFrame,
+    load: &'a Load,
+    run: &'a mut RadiationRun,
 }
 
 /// The water at an evaluation's time `time` [s]: the ramp `r` (0 to 1) of its waves and
@@ -90,6 +116,22 @@ impl WaterStage {
         Ok(Self { water: Water::new(spec, gravity)?, floating: self.floating.clone() })
     }
 
+    /// Each potential-flow body's excitation rebuilt for the water's sea (after it changed).
+    ///
+    /// # Errors
+    /// The index of the first floating body whose file lacks the sea's heading, and why.
+    pub fn excite(&mut self) -> Result<(), (usize, HeadingMissing)> {
+        let components = self.water.sea().components();
+        for floating in &mut self.floating {
+            if let Some(potential) = &mut floating.potential {
+                let excitation = potential.model.coefficients().excitation();
+                potential.excitation = WaveExcitation::new(excitation, components, potential.mean_position)
+                    .map_err(|error| (floating.body, error))?;
+            }
+        }
+        Ok(())
+    }
+
     /// The floating entry of body `body`, if it floats.
     pub fn floating_body(&self, body: usize) -> Option<&FloatingBody> {
         self.floating.iter().find(|f| f.body == body)
@@ -112,7 +154,7 @@ impl WaterStage {
 
     #[inline(always)]
     fn apply_built(&self, on: WaterStageInputs<'_>, time: f64) -> f64 {
-        let WaterStageInputs { bodies, frames, loads, records, scratch } = on;
+        let WaterStageInputs { bodies, frames, loads, records, radiation, scratch } = on;
         let water = &self.water;
         let ramp = water.ramp(time);
         let waves = ramp > 0.0 && !water.sea().is_calm();
@@ -121,14 +163,15 @@ impl WaterStage {
         }
         let instant = Instant { time, ramp, waves };
         let mut power = 0.0;
-        for (floating, record) in self.floating.iter().zip(records.iter_mut()) {
+        for ((floating, record), run) in self.floating.iter().zip(records.iter_mut()).zip(radiation.iter_mut()) {
             let (body, frame) = (&bodies[floating.body], &frames[floating.body]);
             // A prescribed motion is not moved by forces: the water does nothing to it.
             if body.is_kinematic() {
                 *record = WaterForces { body: floating.body, ..WaterForces::default() };
                 continue;
             }
-            *record = self.body_forces(floating, body, frame, &loads[floating.body], scratch, &instant);
+            let on = BodyInputs { body, frame, load: &loads[floating.body], run };
+            *record = self.body_forces(floating, on, scratch, &instant);
             let total = record.total();
             loads[floating.body].force += total.force;
             loads[floating.body].moment += total.moment;
@@ -142,12 +185,11 @@ impl WaterStage {
     fn body_forces(
         &self,
         floating: &FloatingBody,
-        body: &RigidBody,
-        frame: &BodyFrame,
-        load: &Load,
+        on: BodyInputs<'_>,
         scratch: &mut WaterScratch,
         instant: &Instant,
     ) -> WaterForces {
+        let BodyInputs { body, frame, load, run } = on;
         let Instant { time, ramp, waves } = *instant;
         let water = &self.water;
         let hull = &floating.hull;
@@ -157,7 +199,9 @@ impl WaterStage {
         if frame.position.z - hull.bounding_radius() > water.level() + crest {
             return record;
         }
-        self.vertex_pressures(hull, frame, scratch, ramp, waves);
+        // With potential flow the incident wave's pressure is in the excitation (PHYSICS.md §9).
+        let froude_krylov = waves && floating.potential.is_none();
+        self.vertex_pressures(hull, frame, scratch, ramp, froude_krylov);
         let integral = integrate(hull, &scratch.pressures, &scratch.heads);
         let up = frame.rotation.row(2).transpose();
         record.submerged_volume = (-up.dot(&integral.head_flux)).max(0.0);
@@ -168,7 +212,7 @@ impl WaterStage {
         let (flow, acceleration) = water.flow(&(frame.position + hydro.drag_arm(&frame.rotation)), time);
         if record.wetted_fraction > 0.0 {
             record.drag = hydro.load(frame, &flow, water.density(), record.wetted_fraction);
-            if hydro.has_added_mass() {
+            if hydro.has_added_mass() && floating.potential.is_none() {
                 let added = AddedMass::new(
                     &hydro.axes,
                     &hydro.spec.added_mass,
@@ -184,8 +228,36 @@ impl WaterStage {
                 record.added_mass = added.reaction(body, frame, &before, &acceleration);
             }
         }
+        if let Some(potential) = &floating.potential {
+            self.potential_forces(potential, &mut record, body, frame, load, run, instant);
+        }
         record.power = power(&record.total(), frame);
         record
+    }
+
+    /// A potential-flow body's radiation force, excitation (ramped with the waves) and `A∞`
+    /// reaction (PHYSICS.md §9) into `record`, which holds its pressure and drag already.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn potential_forces(
+        &self,
+        potential: &FloatingPotential,
+        record: &mut WaterForces,
+        body: &RigidBody,
+        frame: &BodyFrame,
+        load: &Load,
+        run: &mut RadiationRun,
+        instant: &Instant,
+    ) {
+        let model = &potential.model;
+        let radiation = run.force(model.radiation(), instant.time, &model.velocity(frame));
+        record.radiation = model.at_center(frame, &radiation);
+        if instant.waves {
+            record.excitation = model.at_center(frame, &(potential.excitation.force(instant.time) * instant.ramp));
+        }
+        let others = record.total();
+        let before = Load { force: load.force + others.force, moment: load.moment + others.moment };
+        record.added_mass = model.reaction(body, frame, &before);
     }
 
     /// Stage *pressure* of one body: `p = ρ g (z_w − z + r Σ a K_p cos θ)` at each hull vertex,

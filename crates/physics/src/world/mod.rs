@@ -111,6 +111,7 @@ impl World {
             .start(&self.system, &mut self.states, &mut self.evaluation, time, h)
             .map_err(|e| self.coupling_error(e))?;
         self.evaluation.commit_lines();
+        self.evaluation.commit_radiation(self.system.water());
         Ok(())
     }
 
@@ -166,6 +167,7 @@ impl World {
     /// Stage *ledger*: an accepted integrator step's work and energies.
     fn book(&mut self, report: &StepReport) {
         self.evaluation.commit_lines();
+        self.evaluation.commit_radiation(self.system.water());
         self.ledger.add(&report.work);
         self.body_energy = report.energy;
         self.clock.integrator_steps += 1;

@@ -120,7 +120,7 @@ pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
     warn_about_lines(file, &mut warnings);
     let system = System::new(vec3(file.gravity), bodies.bodies.clone(), couplings, states)
         .map_err(|e| Problem { place: Place::Top("couplings"), message: e.to_string() })?;
-    let mut system = water::add_water(system, file, &bodies.bodies, &mut warnings)?;
+    let mut system = water::add_water(system, file, &bodies.bodies, directory, &mut warnings)?;
     if let Some(seabed) = seabed {
         system = system.with_seabed(seabed).map_err(|e| system_problem(file, e))?;
     }

@@ -17,6 +17,7 @@
 use super::finite::{Triple, finite, finite_option, finite3};
 use serde::{Deserialize, Serialize};
 use tether_physics::math::Vec3;
+use tether_physics::potential::RadiationMethod;
 use tether_physics::water::morison::HydroSpec;
 use tether_physics::water::{CurrentProfile, CurrentSpec, WaterError, WaterSpec, WaveSpec};
 
@@ -136,6 +137,65 @@ pub struct HydroDef {
     /// Drag centre in the reference frame \[m]; absent: G.
     #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "finite3_option")]
     pub drag_center: Option<Triple>,
+    /// Potential flow from a panel code's WAMIT files (PHYSICS.md §9); absent: none. With it
+    /// the incident wave's pressure and `added_mass`/`added_inertia` are not applied (the
+    /// files hold them); buoyancy from the mesh and the drag stay.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub potential: Option<WamitDef>,
+}
+
+/// A body's potential-flow data (PHYSICS.md §9):
+///
+/// ```ron
+/// potential: Wamit(
+///     file: "hydro/buoy",      // reads hydro/buoy.1 and .3, relative to the scene file
+///     length: 1.0,             // WAMIT's length scale L [m] (default 1)
+///     reference: (0, 0, 0),    // the panel code's origin in the body's reference frame [m] (default 0)
+///     radiation: StateSpace,   // or Convolution: the direct convolution, the reference (default StateSpace)
+///     fit_error: 1e-2,         // the state-space fit's relative L2 error per pair (default 1e-2)
+///     max_order: 30,           // its highest order per pair (default 30)
+///     kernel_duration: 60.0,   // the kernel's truncation t_K [s] (default 60)
+///     kernel_step: 0.05,       // its sampling step [s] (default 0.05)
+/// ),
+/// ```
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename = "Wamit", deny_unknown_fields)]
+pub struct WamitDef {
+    pub file: String,
+    #[serde(default = "default_length", deserialize_with = "finite")]
+    pub length: f64,
+    #[serde(default, deserialize_with = "finite3")]
+    pub reference: Triple,
+    #[serde(default)]
+    pub radiation: RadiationMethod,
+    #[serde(default = "default_fit_error", deserialize_with = "finite")]
+    pub fit_error: f64,
+    #[serde(default = "default_max_order")]
+    pub max_order: u32,
+    #[serde(default = "default_kernel_duration", deserialize_with = "finite")]
+    pub kernel_duration: f64,
+    #[serde(default = "default_kernel_step", deserialize_with = "finite")]
+    pub kernel_step: f64,
+}
+
+fn default_length() -> f64 {
+    1.0
+}
+
+fn default_fit_error() -> f64 {
+    1e-2
+}
+
+fn default_max_order() -> u32 {
+    30
+}
+
+fn default_kernel_duration() -> f64 {
+    60.0
+}
+
+fn default_kernel_step() -> f64 {
+    0.05
 }
 
 fn finite3_option<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<Triple>, D::Error> {

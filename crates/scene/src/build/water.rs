@@ -4,7 +4,10 @@
 use super::{Bodies, ItemAt, Place, Problem};
 use crate::file::SceneFile;
 use crate::source::ItemKind;
+use crate::wamit::Scale;
 use crate::water::WaterDef;
+use std::path::Path;
+use tether_physics::potential::{FitSettings, PotentialSpec};
 use tether_physics::body::RigidBody;
 use tether_physics::math::Vec3;
 use tether_physics::system::{System, SystemError};
@@ -13,15 +16,21 @@ use tether_physics::water::stage::FloatingError;
 use tether_physics::water::{Hull, Hydro, Water, WaterSpec};
 
 /// `system` with the water of `file` and its bodies that declare `hydro` in it (unchanged
-/// without water); warns of a body under the surface that declares no `hydro`, and of `hydro`
-/// without water.
+/// without water), their potential-flow files read relative to `directory`; warns of a body
+/// under the surface that declares no `hydro`, and of `hydro` without water; refuses potential
+/// flow without water.
 pub fn add_water(
     system: System,
     file: &SceneFile,
     bodies: &[RigidBody],
+    directory: &Path,
     warnings: &mut Vec<String>,
 ) -> Result<System, Problem> {
     let Some(def) = &file.water else {
+        if let Some(body) = file.bodies.iter().find(|b| b.hydro.as_ref().is_some_and(|h| h.potential.is_some())) {
+            let at = ItemAt::new(ItemKind::Body, &body.name, 0);
+            return Err(at.at_field("potential", "potential flow needs water: the scene has none".into()));
+        }
         for body in file.bodies.iter().filter(|b| b.hydro.is_some()) {
             warnings.push(format!("body \"{}\" declares hydro but the scene has no water: it feels none", body.name));
         }
@@ -38,7 +47,27 @@ pub fn add_water(
     }
     let floating: Vec<_> =
         file.bodies.iter().enumerate().filter_map(|(index, b)| b.hydro.as_ref().map(|h| (index, h.spec()))).collect();
-    system.with_water(spec, floating).map_err(placed)
+    let mut system = system.with_water(spec, floating).map_err(placed)?;
+    let gravity = Vec3::new(file.gravity[0], file.gravity[1], file.gravity[2]).norm();
+    let scale = |length| Scale { density: spec.density, gravity, length };
+    for (index, body_def) in file.bodies.iter().enumerate() {
+        let Some(wamit) = body_def.hydro.as_ref().and_then(|h| h.potential.as_ref()) else { continue };
+        let at = ItemAt::new(ItemKind::Body, &body_def.name, 0);
+        let coefficients = crate::wamit::read(&directory.join(&wamit.file), scale(wamit.length))
+            .map_err(|e| at.problem(Some("potential"), Some(&wamit.file), e.to_string()))?;
+        let fit = FitSettings::new(wamit.fit_error, wamit.max_order)
+            .map_err(|e| at.problem(Some("potential"), None, format!("potential: {e}")))?;
+        let spec = PotentialSpec {
+            coefficients,
+            reference: Vec3::new(wamit.reference[0], wamit.reference[1], wamit.reference[2]),
+            method: wamit.radiation,
+            fit,
+            kernel_duration: wamit.kernel_duration,
+            kernel_step: wamit.kernel_step,
+        };
+        system = system.with_potential_flow(index, spec).map_err(placed)?;
+    }
+    Ok(system)
 }
 
 /// Where `error` is in `file`, and its message.
@@ -59,6 +88,7 @@ fn placed(error: SystemError) -> Problem {
             let field = match source {
                 FloatingError::Hull(_) => "shape",
                 FloatingError::Hydro(_) => "hydro",
+                FloatingError::Potential(_) | FloatingError::Heading(_) => "potential",
             };
             at.at_field(field, source.to_string())
         }

@@ -457,3 +457,41 @@ fn the_oc3_spars_files_give_the_published_heave_and_pitch_periods() {
     // within check 5's 1.5 % (the files are for deep water, the site is 320 m deep).
     assert!((pitch / 29.15 - 1.0).abs() < 0.025 && pitch < 30.51, "pitch {pitch}");
 }
+
+/// The cylinder as a scene with `water` (a `water: …,` entry or nothing) and the `Wamit`'s
+/// fields `potential`.
+fn cylinder_scene(water: &str, potential: &str) -> String {
+    format!(
+        "Scene(dt: 0.02, {water} bodies: [Body(name: \"cylinder\",
+            master: Node(position: (0.0, 0.0, -4.0), mass: 1.7e5, inertia: Inertia(xx: 9e5, yy: 9e5, zz: 7.8e5)),
+            shape: Cylinder(radius: 3.0, length: 8.0, center: (0.0, 0.0, 2.0)),
+            hydro: Hydro(potential: Wamit({potential})))])"
+    )
+}
+
+/// Potential flow's scene key: the shipped cylinder accepted; bad input refused with one line
+/// placed at the body's `potential` (the reader's own file:line:col inside it).
+#[test]
+fn potential_flow_in_a_scene_is_refused_with_one_line_where_it_cannot_be() {
+    let file = format!("file: {:?}", cylinder().display().to_string());
+    let calm = "water: Water(),";
+    let good = tether_scene::parse(&cylinder_scene(calm, &file), std::path::Path::new("test.ron"));
+    assert!(good.is_ok(), "{:?}", good.err().map(|e| e.to_string()));
+    let cases = [
+        (cylinder_scene("", &file), "potential flow needs water: the scene has none"),
+        (cylinder_scene(calm, "file: \"no/such/stem\""), "no/such/stem.1"),
+        (
+            cylinder_scene("water: Water(waves: Regular(height: 0.1, period: 8.0, heading_deg: 90.0)),", &file),
+            "the waves travel toward 90.000° but the potential-flow file's excitation covers headings 0.000° to 0.000° only",
+        ),
+        (cylinder_scene(calm, &format!("{file}, fit_error: 2.0")), "fit_error"),
+        (cylinder_scene(calm, &format!("{file}, kernel_step: 0.0")), "kernel_step"),
+        (cylinder_scene(calm, &format!("{file}, kernel_step: 2.0, kernel_duration: 1.0")), "below its duration"),
+    ];
+    for (text, expected) in cases {
+        let error = tether_test_support::error_of(&text);
+        println!("{error}");
+        assert!(error.contains(expected) && !error.contains('\n'), "{error}");
+        assert!(error.contains("body \"cylinder\""), "{error}");
+    }
+}

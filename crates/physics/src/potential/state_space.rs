@@ -40,12 +40,12 @@ impl FitSettings {
     /// # Errors
     /// The value out of its range, named as scene files will spell it.
     pub fn new(tolerance: f64, max_order: u32) -> Result<Self, ParameterError> {
-        let tolerance = require("radiation_fit_error", tolerance, Bound::OpenUnit, "")?;
+        let tolerance = require("fit_error", tolerance, Bound::OpenUnit, "")?;
         if max_order == 0 {
-            return Err(ParameterError::TooFew { field: "radiation_max_order", value: max_order, least: 1 });
+            return Err(ParameterError::TooFew { field: "max_order", value: max_order, least: 1 });
         }
         if max_order > ORDER_LIMIT {
-            return Err(ParameterError::TooMany { field: "radiation_max_order", value: max_order, most: ORDER_LIMIT });
+            return Err(ParameterError::TooMany { field: "max_order", value: max_order, most: ORDER_LIMIT });
         }
         Ok(Self { tolerance, max_order })
     }
@@ -389,12 +389,12 @@ mod tests {
     fn settings_out_of_range_are_refused_by_name() {
         assert_eq!(
             FitSettings::new(0.0, 10).unwrap_err().to_string(),
-            "radiation_fit_error must be > 0 and < 1, got 0"
+            "fit_error must be > 0 and < 1, got 0"
         );
-        assert_eq!(FitSettings::new(1e-3, 0).unwrap_err().to_string(), "radiation_max_order must be at least 1, got 0");
+        assert_eq!(FitSettings::new(1e-3, 0).unwrap_err().to_string(), "max_order must be at least 1, got 0");
         assert_eq!(
             FitSettings::new(1e-3, 61).unwrap_err().to_string(),
-            "radiation_max_order must be at most 60, got 61"
+            "max_order must be at most 60, got 61"
         );
     }
 }

@@ -56,7 +56,7 @@ pub fn add_water(
         let coefficients = crate::wamit::read(&directory.join(&wamit.file), scale(wamit.length))
             .map_err(|e| at.problem(Some("potential"), Some(&wamit.file), e.to_string()))?;
         let fit = FitSettings::new(wamit.fit_error, wamit.max_order)
-            .map_err(|e| at.problem(Some("potential"), None, format!("potential: {e}")))?;
+            .map_err(|e| at.problem(Some("potential"), None, format!("hydro: potential: {e}")))?;
         let spec = PotentialSpec {
             coefficients,
             reference: Vec3::new(wamit.reference[0], wamit.reference[1], wamit.reference[2]),

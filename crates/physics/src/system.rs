@@ -25,12 +25,12 @@ use crate::coupling::{Coupling, CouplingError, CouplingForces, CouplingKind, End
 use crate::energy::Powers;
 use crate::evaluation::Evaluation;
 use crate::math::Vec3;
+use crate::potential::{PotentialBody, PotentialSpec, WaveExcitation};
 use crate::seabed::Seabed;
 use crate::simd::{Level, SupportedLevel};
 use crate::surroundings::Surroundings;
 use crate::water::environment::WaterError;
 use crate::water::morison::HydroSpec;
-use crate::potential::{PotentialBody, PotentialSpec, WaveExcitation};
 use crate::water::stage::{FloatingBody, FloatingError, FloatingPotential, WaterStageInputs};
 use crate::water::{WaterSpec, WaterStage};
 
@@ -173,8 +173,9 @@ impl System {
         let frame = self.initial_states[body].frame();
         let reference = frame.position + model.arm(&frame);
         let mean_position = [reference.x, reference.y];
-        let excitation = WaveExcitation::new(model.coefficients().excitation(), stage.water.sea().components(), mean_position)
-            .map_err(|e| hydro(e.into()))?;
+        let excitation =
+            WaveExcitation::new(model.coefficients().excitation(), stage.water.sea().components(), mean_position)
+                .map_err(|e| hydro(e.into()))?;
         entry.potential = Some(FloatingPotential { model: std::sync::Arc::new(model), mean_position, excitation });
         Ok(self)
     }
@@ -233,8 +234,7 @@ impl System {
 
     /// Replaces the water's spec (a live edit: the world restarts its integrator after it).
     pub(crate) fn replace_water(&mut self, spec: WaterSpec) -> Result<(), SystemError> {
-        let mut stage =
-            self.water.as_ref().ok_or(SystemError::NoWater)?.with_spec(spec, &self.surroundings.gravity)?;
+        let mut stage = self.water.as_ref().ok_or(SystemError::NoWater)?.with_spec(spec, &self.surroundings.gravity)?;
         stage.excite().map_err(|(body, source)| SystemError::Hydro {
             body: self.bodies[body].name.clone(),
             source: FloatingError::Heading(source),

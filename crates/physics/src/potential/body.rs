@@ -183,7 +183,11 @@ mod tests {
             damping: vec![Matrix6::zeros(); 2],
             added_mass_infinite: infinite,
             added_mass_zero: infinite,
-            excitation: Excitation { frequencies: vec![1.0], headings: vec![0.0], values: vec![ComplexVector6::zeros()] },
+            excitation: Excitation {
+                frequencies: vec![1.0],
+                headings: vec![0.0],
+                values: vec![ComplexVector6::zeros()],
+            },
             hydrostatic_stiffness: None,
         })
         .expect("valid data")

@@ -90,7 +90,11 @@ mod tests {
 
     fn excitation() -> Excitation {
         let x = |v: f64| ComplexVector6::from_fn(|i, _| if i == 2 { Complex::new(v, -v) } else { Complex::ZERO });
-        Excitation { frequencies: vec![0.5, 1.5], headings: vec![0.0, 0.5], values: vec![x(1.0), x(3.0), x(5.0), x(7.0)] }
+        Excitation {
+            frequencies: vec![0.5, 1.5],
+            headings: vec![0.0, 0.5],
+            values: vec![x(1.0), x(3.0), x(5.0), x(7.0)],
+        }
     }
 
     fn wave(heading: f64) -> WaveComponent {

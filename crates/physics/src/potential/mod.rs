@@ -23,10 +23,10 @@ pub mod radiation;
 pub mod response;
 pub mod state_space;
 
+pub use body::{PotentialBody, PotentialError, PotentialSpec};
 pub use coefficients::{
     Coefficients, CoefficientsData, CoefficientsError, ComplexVector6, Excitation, Matrix6, Vector6,
 };
-pub use body::{PotentialBody, PotentialError, PotentialSpec};
 pub use convolution::Convolution;
 pub use excitation::{HeadingMissing, WaveExcitation};
 pub use kernel::SampledKernel;

@@ -387,14 +387,8 @@ mod tests {
 
     #[test]
     fn settings_out_of_range_are_refused_by_name() {
-        assert_eq!(
-            FitSettings::new(0.0, 10).unwrap_err().to_string(),
-            "fit_error must be > 0 and < 1, got 0"
-        );
+        assert_eq!(FitSettings::new(0.0, 10).unwrap_err().to_string(), "fit_error must be > 0 and < 1, got 0");
         assert_eq!(FitSettings::new(1e-3, 0).unwrap_err().to_string(), "max_order must be at least 1, got 0");
-        assert_eq!(
-            FitSettings::new(1e-3, 61).unwrap_err().to_string(),
-            "max_order must be at most 60, got 61"
-        );
+        assert_eq!(FitSettings::new(1e-3, 61).unwrap_err().to_string(), "max_order must be at most 60, got 61");
     }
 }

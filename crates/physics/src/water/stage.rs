@@ -10,9 +10,9 @@ use super::morison::{Hydro, HydroError, HydroSpec};
 use super::pressure::integrate;
 use super::waves::SeaInstant;
 use crate::body::{BodyFrame, Load, RigidBody};
-use crate::potential::{HeadingMissing, PotentialBody, PotentialError, RadiationRun, WaveExcitation};
 use crate::math::Vec3;
 use crate::mesh::MeshError;
+use crate::potential::{HeadingMissing, PotentialBody, PotentialError, RadiationRun, WaveExcitation};
 use crate::simd::SupportedLevel;
 use std::sync::Arc;
 
@@ -229,35 +229,10 @@ impl WaterStage {
             }
         }
         if let Some(potential) = &floating.potential {
-            self.potential_forces(potential, &mut record, body, frame, load, run, instant);
+            potential_forces(potential, &mut record, BodyInputs { body, frame, load, run }, instant);
         }
         record.power = power(&record.total(), frame);
         record
-    }
-
-    /// A potential-flow body's radiation force, excitation (ramped with the waves) and `A∞`
-    /// reaction (PHYSICS.md §9) into `record`, which holds its pressure and drag already.
-    #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
-    fn potential_forces(
-        &self,
-        potential: &FloatingPotential,
-        record: &mut WaterForces,
-        body: &RigidBody,
-        frame: &BodyFrame,
-        load: &Load,
-        run: &mut RadiationRun,
-        instant: &Instant,
-    ) {
-        let model = &potential.model;
-        let radiation = run.force(model.radiation(), instant.time, &model.velocity(frame));
-        record.radiation = model.at_center(frame, &radiation);
-        if instant.waves {
-            record.excitation = model.at_center(frame, &(potential.excitation.force(instant.time) * instant.ramp));
-        }
-        let others = record.total();
-        let before = Load { force: load.force + others.force, moment: load.moment + others.moment };
-        record.added_mass = model.reaction(body, frame, &before);
     }
 
     /// Stage *pressure* of one body: `p = ρ g (z_w − z + r Σ a K_p cos θ)` at each hull vertex,
@@ -277,6 +252,22 @@ impl WaterStage {
             *pressure = rho_g * (*head + dynamic);
         }
     }
+}
+
+/// A potential-flow body's radiation force, excitation (ramped with the waves) and `A∞`
+/// reaction (PHYSICS.md §9) into `record`, which holds its pressure and drag already.
+#[inline(always)]
+fn potential_forces(potential: &FloatingPotential, record: &mut WaterForces, on: BodyInputs<'_>, instant: &Instant) {
+    let BodyInputs { body, frame, load, run } = on;
+    let model = &potential.model;
+    let radiation = run.force(model.radiation(), instant.time, &model.velocity(frame));
+    record.radiation = model.at_center(frame, &radiation);
+    if instant.waves {
+        record.excitation = model.at_center(frame, &(potential.excitation.force(instant.time) * instant.ramp));
+    }
+    let others = record.total();
+    let before = Load { force: load.force + others.force, moment: load.moment + others.moment };
+    record.added_mass = model.reaction(body, frame, &before);
 }
 
 /// `F·v + M·ω` \[W] of `load` on a body moving as `frame`.

@@ -150,10 +150,10 @@ pub fn stiffness_about(system: &System, index: usize, arm: &Vec3) -> Result<Matr
     };
     let reference = start[index].position + arm;
     let weight = still.gravity_load(&still.bodies()[index]).force;
-    let load = |states: &[BodyState]| -> Result<Vector6, RaoError> {
+    let load = |(states, reference): (Vec<BodyState>, Vec3)| -> Result<Vector6, RaoError> {
         let mut evaluation = Evaluation::new(states.len(), still.couplings());
         still
-            .evaluate(states, &mut evaluation, 0.0)
+            .evaluate(&states, &mut evaluation, 0.0)
             .map_err(|e| RaoError::Evaluation { coupling: e.coupling, source: e.source })?;
         let pressure = evaluation.water()[record].pressure;
         let force = pressure.force + weight;
@@ -161,6 +161,8 @@ pub fn stiffness_about(system: &System, index: usize, arm: &Vec3) -> Result<Matr
         let moment = pressure.moment - r.cross(&force);
         Ok(Vector6::new(force.x, force.y, force.z, moment.x, moment.y, moment.z))
     };
+    // The states with P moved by `by` along, or turned by `by` about, world axis `dof % 3`, and
+    // where P is then.
     let moved = |dof: usize, by: f64| {
         let mut states = start.clone();
         let mut axis = Vec3::zeros();
@@ -168,16 +170,17 @@ pub fn stiffness_about(system: &System, index: usize, arm: &Vec3) -> Result<Matr
         let state = &mut states[index];
         if dof < 3 {
             state.position += axis;
+            (states, reference + axis)
         } else {
             let turn = Rotation::from_scaled_axis(axis);
             state.position = reference + turn * (state.position - reference);
             state.orientation = turn * state.orientation;
+            (states, reference)
         }
-        states
     };
     let mut c = Matrix6::zeros();
     for dof in 0..6 {
-        let column = (load(&moved(dof, STEP))? - load(&moved(dof, -STEP))?) / (-2.0 * STEP);
+        let column = (load(moved(dof, STEP))? - load(moved(dof, -STEP))?) / (-2.0 * STEP);
         c.set_column(dof, &column);
     }
     Ok(c)

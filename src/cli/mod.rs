@@ -9,6 +9,7 @@ mod forces;
 mod gui;
 mod import;
 mod offsets;
+mod rao;
 mod record;
 mod study;
 mod sweep;
@@ -75,6 +76,9 @@ enum Command {
     /// A body's restoring force held at offsets from equilibrium (the offset curve): a table, a
     /// CSV file and a PNG chart.
     Offsets(offsets::OffsetsArgs),
+    /// A floating body's linear RAOs from its potential-flow data (the frequency-domain solve):
+    /// amplitude per metre of wave and phase per dof at the file's periods or those given.
+    Rao(rao::RaoArgs),
     /// Convert a MoorDyn input file (v2, or v1 as OpenFAST writes it) into a commented RON scene;
     /// print the time the import and the build took.
     Import(import::ImportArgs),
@@ -102,6 +106,7 @@ pub fn run(cli: Cli) -> anyhow::Result<u8> {
         Command::Study(args) => study::run(&args).map(|()| 0),
         Command::Equilibrium(args) => equilibrium::run(&args).map(|()| 0),
         Command::Offsets(args) => offsets::run(&args).map(|()| 0),
+        Command::Rao(args) => rao::run(&args).map(|()| 0),
         Command::Import(args) => import::run(&args).map(|()| 0),
         Command::Export(args) => export::run(&args).map(|()| 0),
         Command::Fit(args) => fit::run(&args).map(|outcome| match outcome {

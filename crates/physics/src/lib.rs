@@ -25,6 +25,8 @@
 //! - [`integrator`]: how states advance in time (§1, time integration), on a narrow interface;
 //! - [`energy`]: the energy balance that checks it all (§5);
 //! - [`stability`]: the stable time step of each coupling and spinning body;
+//! - [`rao`]: a floating body's RAOs from its potential data, its mass about the reference point
+//!   and its mesh's linear hydrostatic stiffness (§9);
 //! - [`statics`]: the system at rest — tangent stiffness, static equilibrium, offset curves;
 //! - [`simd`]: which vector instructions the hot stages are built for;
 //! - [`world`]: a system running in time: clock, ledger, health check, live edits.
@@ -53,6 +55,7 @@ pub mod math;
 pub mod mesh;
 pub mod parameter;
 pub mod potential;
+pub mod rao;
 pub mod seabed;
 pub mod simd;
 pub mod stability;

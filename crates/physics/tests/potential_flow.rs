@@ -12,11 +12,8 @@ use common::{repo, scene};
 use nalgebra::Complex;
 use std::f64::consts::PI;
 use tether_physics::body::BodyState;
-use tether_physics::evaluation::Evaluation;
-use tether_physics::math::{Rotation, Vec3};
-use tether_physics::potential::response::response;
 use tether_physics::potential::{Coefficients, Matrix6, Vector6};
-use tether_physics::system::System;
+use tether_physics::rao::LinearModel;
 use tether_physics::world::World;
 use tether_scene::wamit::{Scale, read};
 
@@ -67,45 +64,35 @@ fn coefficients() -> Coefficients {
     read(&stem, Scale { density: RHO, gravity: G, length: 1.0 }).expect("the shipped cylinder")
 }
 
-/// The body's 6 × 6 mass about G (the reference point), world axes.
-fn mass_matrix(world: &World) -> Matrix6 {
-    let body = &world.system().bodies()[0];
-    let state = world.state(0);
-    let r = state.orientation.to_rotation_matrix().into_inner();
-    let inertia = r * nalgebra::Matrix3::from_diagonal(&body.principal_moments()) * r.transpose();
-    let mut m = Matrix6::identity() * body.mass();
-    m.fixed_view_mut::<3, 3>(3, 3).copy_from(&inertia);
-    m
-}
-
-/// `−∂Q/∂q` of the pressure on the mesh (about G, world axes) at the initial pose, by central
-/// differences of 1e-4 m and rad: the linear hydrostatic stiffness the time domain sees.
-fn mesh_stiffness(system: &System) -> Matrix6 {
-    let start = system.initial_states().to_vec();
-    let pressure = |states: &[BodyState]| {
-        let mut evaluation = Evaluation::new(1, system.couplings());
-        system.evaluate(states, &mut evaluation, 0.0).expect("water always gives forces");
-        let p = evaluation.water()[0].pressure;
-        Vector6::new(p.force.x, p.force.y, p.force.z, p.moment.x, p.moment.y, p.moment.z)
-    };
-    let delta = 1e-4;
-    let moved = |dof: usize, by: f64| {
-        let mut states = start.clone();
-        let mut axis = Vec3::zeros();
-        axis[dof % 3] = by;
-        if dof < 3 {
-            states[0].position += axis;
-        } else {
-            states[0].orientation = Rotation::from_scaled_axis(axis) * states[0].orientation;
-        }
-        states
-    };
-    let mut c = Matrix6::zeros();
-    for j in 0..6 {
-        let column = (pressure(&moved(j, delta)) - pressure(&moved(j, -delta))) / (-2.0 * delta);
-        c.set_column(j, &column);
-    }
-    c
+/// The linear model `tether rao` solves, about G (the cylinder's reference point): its mass is
+/// the scene's, `diag(m, m, m, I_xx, I_xx, I_zz)`; its stiffness the wall-sided mesh's closed
+/// form, `C33 = ρ g A_wp`, `C44 = C55 = ρ g (I_wp + V (z_B − z_G))`, `z_B − z_G = 1 m`
+/// (`I_wp` the 32-gon's), nothing in surge, sway and yaw; to 1e-6.
+#[test]
+fn the_linear_model_is_the_scenes_mass_and_the_meshs_hydrostatic_stiffness() {
+    let world = cylinder("", 0.0, "", 0.02);
+    let model = LinearModel::new(world.system(), "cylinder").expect("a body with potential data");
+    let m = mass();
+    let ixx = m * (3.0 * RADIUS * RADIUS + DRAFT * DRAFT) / 12.0;
+    let expected_mass = Matrix6::from_diagonal(&Vector6::new(m, m, m, ixx, ixx, m * RADIUS * RADIUS / 2.0));
+    assert!((model.mass - expected_mass).norm() < 1e-9 * expected_mass.norm(), "{}", model.mass);
+    // The 32-gon's second moment about a diameter: n R⁴ (4 sin α + sin 2α)/48, α = 2π/n.
+    let step = 2.0 * PI / SIDES;
+    let second_moment = SIDES * RADIUS.powi(4) / 48.0 * (4.0 * step.sin() + (2.0 * step).sin());
+    let volume = waterplane() * DRAFT;
+    let pitch = RHO * G * (second_moment + volume * 1.0);
+    let heave = RHO * G * waterplane();
+    let mut expected = Matrix6::zeros();
+    expected[(2, 2)] = heave;
+    expected[(3, 3)] = pitch;
+    expected[(4, 4)] = pitch;
+    println!(
+        "C33 {:.6e} (expected {heave:.6e}), C44 {:.6e}, C55 {:.6e} (expected {pitch:.6e})",
+        model.stiffness[(2, 2)],
+        model.stiffness[(3, 3)],
+        model.stiffness[(4, 4)]
+    );
+    assert!((model.stiffness - expected).abs().max() < 1e-6 * pitch, "{}", model.stiffness);
 }
 
 /// Surge \[m], heave \[m] and pitch \[rad] of the body from its start.
@@ -158,11 +145,10 @@ fn settled(period: f64) -> [Complex<f64>; 3] {
 #[test]
 fn the_settled_response_in_regular_waves_is_the_frequency_domain_solve() {
     let world = cylinder("", 0.0, "radiation: Convolution", 0.02);
-    let (c, m) = (mesh_stiffness(world.system()), mass_matrix(&world));
-    let coefficients = coefficients();
+    let model = LinearModel::new(world.system(), "cylinder").expect("a body with potential data");
     for period in [4.0, 6.0, 8.0, 10.0, 13.0, 17.0, 22.0, 30.0] {
         let omega = 2.0 * PI / period;
-        let xi = response(&coefficients, &m, &c, omega, 0).expect("damped");
+        let xi = model.rao(&[omega], 0)[0].response.expect("damped");
         let measured = settled(period);
         for (k, dof) in [0, 2, 4].into_iter().enumerate() {
             let (expected, got) = (xi[dof], measured[k]);

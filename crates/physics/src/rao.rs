@@ -1,0 +1,187 @@
+//! A floating body's response amplitude operators (PHYSICS.md §9, "Closed forms and checks"):
+//! the linear model the frequency-domain solve [`response`] needs, built from the system
+//! itself, and `ξ(ω)` at a list of frequencies.
+//!
+//! Generalised coordinates are those of the body's reference point P (the panel code's origin,
+//! `r = x_P − x_G`, world axes; [`crate::potential::body`]), small rotations:
+//! - mass about P: `M_P = Jᵀ diag(m E, I_G) J`, `J = [[E, [r]×], [0, E]]` (so that
+//!   `x_G = x_P + r × θ` for a small rotation θ about P) \[kg, kg·m, kg·m²];
+//! - stiffness about P: `C = −∂Q/∂q` at the initial pose in still water, `Q` the mesh's
+//!   pressure load plus the weight, both as `(f, m_P)` with `m_P = m_G − r × f`, by central
+//!   differences of [`STEP`] in each translation of P and rotation about P
+//!   [N/m, N, N·m/rad]. The weight adds nothing when P is G; about another point it gives the
+//!   `−m g z_{G−P}` of roll and pitch. The same mesh the time domain floats, so a small regular
+//!   wave settles to this `ξ`.
+
+use crate::body::BodyState;
+use crate::coupling::CouplingError;
+use crate::evaluation::Evaluation;
+use crate::math::{Mat3, Rotation, Vec3};
+use crate::potential::response::response;
+use crate::potential::{Coefficients, ComplexVector6, Matrix6, PotentialBody, Vector6};
+use crate::system::System;
+use std::f64::consts::TAU;
+use std::sync::Arc;
+
+/// The central-difference step of the stiffness \[m, rad].
+pub const STEP: f64 = 1e-4;
+
+/// Headings this close \[rad] to one of the file's are taken as it.
+const SAME_HEADING: f64 = 1e-6;
+
+/// Why a body has no RAO.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RaoError {
+    #[error("no body named {name:?} (bodies: {known})")]
+    UnknownBody { name: String, known: String },
+    #[error("the scene has no water: RAOs need a body floating under potential flow")]
+    NoWater,
+    #[error("body {name:?} has no potential-flow data (hydro: Hydro(potential: Wamit(file: ...)))")]
+    NoPotential { name: String },
+    #[error("heading {heading:.3}° is not among the potential-flow file's headings ({known}°)")]
+    Heading { heading: f64, known: String },
+    #[error("coupling {coupling} cannot give its forces near the initial pose: {source}")]
+    Evaluation { coupling: usize, source: CouplingError },
+}
+
+/// A body's linear model about its reference point: its data, mass and stiffness.
+#[derive(Debug, Clone)]
+pub struct LinearModel {
+    body: Arc<PotentialBody>,
+    /// `M_P` (module docs).
+    pub mass: Matrix6,
+    /// `C` (module docs).
+    pub stiffness: Matrix6,
+}
+
+/// One frequency's response: `ξ` per unit wave amplitude (m/m, rad/m; WAMIT's phase).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RaoRow {
+    /// ω \[rad/s].
+    pub omega: f64,
+    /// `ξ(ω)`, or `None` where the system is singular.
+    pub response: Option<ComplexVector6>,
+}
+
+impl LinearModel {
+    /// The model of the body named `name` in `system` at its initial pose.
+    ///
+    /// # Errors
+    /// No such body, no water, a body without potential data, a coupling that fails.
+    pub fn new(system: &System, name: &str) -> Result<Self, RaoError> {
+        let bodies = system.bodies();
+        let index = bodies.iter().position(|b| b.name == name).ok_or_else(|| RaoError::UnknownBody {
+            name: name.to_string(),
+            known: bodies.iter().map(|b| b.name.as_str()).collect::<Vec<_>>().join(", "),
+        })?;
+        let stage = system.water().ok_or(RaoError::NoWater)?;
+        let model = stage
+            .floating
+            .iter()
+            .find(|f| f.body == index)
+            .and_then(|f| f.potential.as_ref())
+            .ok_or_else(|| RaoError::NoPotential { name: name.to_string() })?
+            .model
+            .clone();
+        let state = &system.initial_states()[index];
+        let arm = model.arm(&state.frame());
+        let mass = mass_about(system, index, &arm);
+        let stiffness = stiffness_about(system, index, &arm)?;
+        Ok(Self { body: model, mass, stiffness })
+    }
+
+    /// The panel code's data.
+    pub fn coefficients(&self) -> &Coefficients {
+        self.body.coefficients()
+    }
+
+    /// The index of `heading` \[rad] among the file's excitation headings (modulo 2π).
+    ///
+    /// # Errors
+    /// A heading the file lacks (the panel code's job to add, not interpolated here).
+    pub fn heading_index(&self, heading: f64) -> Result<usize, RaoError> {
+        let headings = &self.coefficients().excitation().headings;
+        headings
+            .iter()
+            .position(|&b| {
+                let turn = (heading - b).rem_euclid(TAU);
+                turn.min(TAU - turn) <= SAME_HEADING
+            })
+            .ok_or_else(|| RaoError::Heading {
+                heading: heading.to_degrees(),
+                known: headings.iter().map(|b| format!("{:.3}", b.to_degrees())).collect::<Vec<_>>().join(", "),
+            })
+    }
+
+    /// `ξ` at each of `omegas` \[rad/s] for heading index `heading`.
+    pub fn rao(&self, omegas: &[f64], heading: usize) -> Vec<RaoRow> {
+        omegas
+            .iter()
+            .map(|&omega| RaoRow {
+                omega,
+                response: response(self.coefficients(), &self.mass, &self.stiffness, omega, heading)
+                    .filter(|xi| xi.iter().all(|x| x.re.is_finite() && x.im.is_finite())),
+            })
+            .collect()
+    }
+}
+
+/// `M_P` of body `index` (module docs) with `arm` = `r` \[m], world axes, at the initial pose.
+pub fn mass_about(system: &System, index: usize, arm: &Vec3) -> Matrix6 {
+    let body = &system.bodies()[index];
+    let rotation = system.initial_states()[index].orientation.to_rotation_matrix().into_inner();
+    let inertia = rotation * Mat3::from_diagonal(&body.principal_moments()) * rotation.transpose();
+    let mut about_g = Matrix6::identity() * body.mass();
+    about_g.fixed_view_mut::<3, 3>(3, 3).copy_from(&inertia);
+    let mut j = Matrix6::identity();
+    j.fixed_view_mut::<3, 3>(0, 3).copy_from(&arm.cross_matrix());
+    j.transpose() * about_g * j
+}
+
+/// `C` of body `index` (module docs) about P, `arm` = `r` \[m] at the initial pose.
+///
+/// # Errors
+/// A water evaluation that fails at a displaced pose.
+pub fn stiffness_about(system: &System, index: usize, arm: &Vec3) -> Result<Matrix6, RaoError> {
+    let still = system.at_rest();
+    let start = still.initial_states().to_vec();
+    let Some(record) = still.water().and_then(|stage| stage.floating.iter().position(|f| f.body == index)) else {
+        return Err(RaoError::NoWater);
+    };
+    let reference = start[index].position + arm;
+    let weight = still.gravity_load(&still.bodies()[index]).force;
+    let load = |(states, reference): (Vec<BodyState>, Vec3)| -> Result<Vector6, RaoError> {
+        let mut evaluation = Evaluation::new(states.len(), still.couplings());
+        still
+            .evaluate(&states, &mut evaluation, 0.0)
+            .map_err(|e| RaoError::Evaluation { coupling: e.coupling, source: e.source })?;
+        let pressure = evaluation.water()[record].pressure;
+        let force = pressure.force + weight;
+        let r = reference - states[index].position;
+        let moment = pressure.moment - r.cross(&force);
+        Ok(Vector6::new(force.x, force.y, force.z, moment.x, moment.y, moment.z))
+    };
+    // The states with P moved by `by` along, or turned by `by` about, world axis `dof % 3`, and
+    // where P is then.
+    let moved = |dof: usize, by: f64| {
+        let mut states = start.clone();
+        let mut axis = Vec3::zeros();
+        axis[dof % 3] = by;
+        let state = &mut states[index];
+        if dof < 3 {
+            state.position += axis;
+            (states, reference + axis)
+        } else {
+            let turn = Rotation::from_scaled_axis(axis);
+            state.position = reference + turn * (state.position - reference);
+            state.orientation = turn * state.orientation;
+            (states, reference)
+        }
+    };
+    let mut c = Matrix6::zeros();
+    for dof in 0..6 {
+        let column = (load(moved(dof, STEP))? - load(moved(dof, -STEP))?) / (-2.0 * STEP);
+        c.set_column(dof, &column);
+    }
+    Ok(c)
+}

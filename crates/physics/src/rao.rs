@@ -17,6 +17,7 @@ use crate::body::BodyState;
 use crate::coupling::CouplingError;
 use crate::evaluation::Evaluation;
 use crate::math::{Mat3, Rotation, Vec3};
+use crate::potential::body::transfer;
 use crate::potential::response::response;
 use crate::potential::{Coefficients, ComplexVector6, Matrix6, PotentialBody, Vector6};
 use crate::system::System;
@@ -133,9 +134,9 @@ pub fn mass_about(system: &System, index: usize, arm: &Vec3) -> Matrix6 {
     let inertia = rotation * Mat3::from_diagonal(&body.principal_moments()) * rotation.transpose();
     let mut about_g = Matrix6::identity() * body.mass();
     about_g.fixed_view_mut::<3, 3>(3, 3).copy_from(&inertia);
-    let mut j = Matrix6::identity();
-    j.fixed_view_mut::<3, 3>(0, 3).copy_from(&arm.cross_matrix());
-    j.transpose() * about_g * j
+    // P's accelerations to G's.
+    let to_center = transfer(&-arm);
+    to_center.transpose() * about_g * to_center
 }
 
 /// `C` of body `index` (module docs) about P, `arm` = `r` \[m] at the initial pose.

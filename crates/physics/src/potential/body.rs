@@ -161,8 +161,9 @@ impl PotentialBody {
     }
 }
 
-/// `T = [[E, −[r]×], [0, E]]`: G's accelerations `(a_G, α)` to P's, `r = x_P − x_G`.
-fn transfer(r: &Vec3) -> Matrix6 {
+/// `T = [[E, −[r]×], [0, E]]`: G's accelerations `(a_G, α)` to P's, `r = x_P − x_G` (with `−r`,
+/// P's to G's: `rao::mass_about`).
+pub(crate) fn transfer(r: &Vec3) -> Matrix6 {
     let mut t = Matrix6::identity();
     t.fixed_view_mut::<3, 3>(0, 3).copy_from(&(-r.cross_matrix()));
     t

@@ -32,8 +32,10 @@ pub fn memory_limit() -> MemoryLimit {
 }
 
 /// Frames a second drawn at most when the viewer renders on the CPU (`tether gui --max-fps`
-/// changes it): a 3D view and its plots stay fluid to the eye, and the window takes about half
-/// the CPU it takes uncapped (docs/window.md, "Memory").
+/// changes it): a 3D view and its plots stay fluid to the eye, and an idle machine's renderer
+/// does not draw faster than that at the simulation's expense (on a busy one it draws slower
+/// anyway: the window took 25 s of CPU per minute of play capped and uncapped alike,
+/// docs/window.md, "Memory").
 pub const CPU_MAX_FPS: u32 = 30;
 
 /// A cap on the frame rate: each frame starts no sooner than the shortest interval after the

@@ -27,6 +27,8 @@
 //! - [`stability`]: the stable time step of each coupling and spinning body;
 //! - [`rao`]: a floating body's RAOs from its potential data, its mass about the reference point
 //!   and its mesh's linear hydrostatic stiffness (§9);
+//! - [`natural_periods`]: its undamped natural periods and mode shapes at the static equilibrium,
+//!   with `A∞` or `A(ω_n)` (§9);
 //! - [`statics`]: the system at rest — tangent stiffness, static equilibrium, offset curves;
 //! - [`simd`]: which vector instructions the hot stages are built for;
 //! - [`world`]: a system running in time: clock, ledger, health check, live edits.
@@ -53,6 +55,7 @@ pub mod integrator;
 pub mod mass_properties;
 pub mod math;
 pub mod mesh;
+pub mod natural_periods;
 pub mod parameter;
 pub mod potential;
 pub mod rao;

@@ -156,8 +156,14 @@ impl PotentialBody {
     /// `Tᵀ A∞ T` \[kg, kg·m, kg·m²]: `A∞` about G, world axes, at `frame` (the stable time step's
     /// effective mass).
     pub fn infinite_added_mass_at_center(&self, frame: &BodyFrame) -> Matrix6 {
+        self.added_mass_at_center(frame, self.coefficients.added_mass_infinite())
+    }
+
+    /// `Tᵀ A T`: an added mass `A` about P moved to G, world axes, at `frame`
+    /// (`crate::natural_periods` with `A(ω)`).
+    pub fn added_mass_at_center(&self, frame: &BodyFrame, added_mass: &Matrix6) -> Matrix6 {
         let transfer = transfer(&self.arm(frame));
-        transfer.transpose() * self.coefficients.added_mass_infinite() * transfer
+        transfer.transpose() * added_mass * transfer
     }
 }
 

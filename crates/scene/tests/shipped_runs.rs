@@ -145,13 +145,14 @@ const BOUNDS: &[Bounds] = &[
         ],
         balance_budget: 3e-3,
     },
-    // OC3-Hywind pushed at 0.5 m/s in surge from its equilibrium (G at x = −0.005 m, z =
-    // −78.0005 m): surges to 8.33 m, back to −5.51 m, heave within 49 mm below its rest (the
-    // lines pull it down as they tighten); no sway. Measured drift 0.99 J of the 1.01 MJ of
-    // kinetic energy it starts with (first-order dampers).
+    // OC3-Hywind (potential flow) pushed at 0.5 m/s in surge from its equilibrium (G at
+    // x = −0.005 m, z = −78.0005 m): surges to 8.19 m, back to −5.38 m, heave within 51 mm below
+    // its rest (the lines pull it down as they tighten); no sway. Measured drift 0.95 J of the
+    // 1.01 MJ of kinetic energy it starts with (first-order dampers; the radiation's work, 1.04
+    // MJ over 300 s, booked as external).
     Bounds {
         scene: "oc3_hywind.ron",
-        regions: &[region("spar", [-5.52, -1e-5, -78.06], [8.34, 1e-5, -77.99])],
+        regions: &[region("spar", [-5.39, -1e-5, -78.06], [8.19, 1e-5, -77.99])],
         balance_budget: 1.5,
     },
     // The closed form's envelope: |x − 1| ≤ 0.01 m. Measured drift 2.3e-6 J of the 5 mJ the
@@ -180,7 +181,7 @@ const BOUNDS: &[Bounds] = &[
             region("ball", [-1.0 - 1e-9, -0.29, 0.094], [-0.23, 0.01, 0.145]),
             region("box", [-0.001, 0.035, 0.15], [0.172, 0.06, 0.16]),
         ],
-        balance_budget: 0.15,
+        balance_budget: 1.5,
     },
     // 20.2 m of chain across 15 m: it bulges 1.3 m past its anchors; 74 balls land on the soft
     // ground, sink up to 30 mm and roll up to 0.16 m sideways. Measured drift 821 J of the

@@ -286,6 +286,10 @@ fn spread_moored_barge() {
     checks.done();
 }
 
+/// The line of `moored_buoy.ron` that potential flow follows, and with it.
+const POTENTIAL_OFF: &str = "// potential: Wamit(file: \"meshes/buoy\"),";
+const POTENTIAL_ON: &str = "potential: Wamit(file: \"meshes/buoy\"),";
+
 /// moored_buoy: released 5 m off its equilibrium in the wave and current.
 #[test]
 fn moored_buoy() {
@@ -300,6 +304,23 @@ fn moored_buoy() {
     checks.close("energy balance, C_B = 1 [mJ]", balance_drift(&s) * 1e3, 12.9, 1.0);
     let s = run(&mut world("moored_buoy", &[("line_friction: 1.0", "line_friction: 0.0")]), 60.0);
     checks.close("energy balance, C_B = 0 [mJ]", balance_drift(&s) * 1e3, 8.7, 0.05);
+    // The scene's comment: the same buoy under potential flow from its Capytaine files.
+    let s = run(&mut world("moored_buoy", &[(POTENTIAL_OFF, POTENTIAL_ON)]), 60.0);
+    checks.close("potential flow: swings back to x [m]", min_of(&s, p(0)), -2.54, 0.005);
+    checks.close(
+        "potential flow: heave below its rest [m]",
+        min_of(between(&s, 20.0, 60.0), p(2)) - rest_z,
+        -0.94,
+        0.005,
+    );
+    checks.close(
+        "potential flow: heave above its rest [m]",
+        max_of(between(&s, 20.0, 60.0), p(2)) - rest_z,
+        0.94,
+        0.005,
+    );
+    checks.close("potential flow: sway [m]", max_of(&s, |s| s.states[0].position.y.abs()), 0.0, 0.001);
+    checks.close("potential flow: energy balance [mJ]", balance_drift(&s) * 1e3, 24.0, 1.0);
     checks.done();
 }
 

@@ -169,6 +169,8 @@ impl System {
         let stage = self.water.as_mut().ok_or(SystemError::NoWater)?;
         let entry =
             stage.floating.iter_mut().find(|f| f.body == body).ok_or(SystemError::FloatingBody { body, count })?;
+        crate::potential::body::check_start_axes(&self.bodies[body], &self.initial_states[body].orientation)
+            .map_err(|e| hydro(e.into()))?;
         let model = PotentialBody::new(spec, &self.bodies[body]).map_err(|e| hydro(e.into()))?;
         let frame = self.initial_states[body].frame();
         let reference = frame.position + model.arm(&frame);

@@ -406,6 +406,11 @@ fn cylinder_scene(water: &str, potential: &str) -> String {
     )
 }
 
+/// `scene` with its body turned by the rotation vector `rotation` at t = 0.
+fn turned(scene: &str, rotation: &str) -> String {
+    scene.replacen("shape: Cylinder", &format!("rotation: {rotation}, shape: Cylinder"), 1)
+}
+
 /// Potential flow's scene key: the shipped cylinder accepted; bad input refused with one line
 /// placed at the body's `potential` (the reader's own file:line:col inside it).
 #[test]
@@ -414,6 +419,12 @@ fn potential_flow_in_a_scene_is_refused_with_one_line_where_it_cannot_be() {
     let calm = "water: Water(),";
     let good = tether_scene::parse(&cylinder_scene(calm, &file), std::path::Path::new("test.ron"));
     assert!(good.is_ok(), "{:?}", good.err().map(|e| e.to_string()));
+    // A decay test's initial heel (3°) is a small rotation, which the linear theory is about.
+    let heeled = tether_scene::parse(
+        &turned(&cylinder_scene(calm, &file), "(0.0, 0.0524, 0.0)"),
+        std::path::Path::new("test.ron"),
+    );
+    assert!(heeled.is_ok(), "{:?}", heeled.err().map(|e| e.to_string()));
     let cases = [
         (cylinder_scene("", &file), "potential flow needs water: the scene has none"),
         (cylinder_scene(calm, "file: \"no/such/stem\""), "no/such/stem.1"),
@@ -424,6 +435,10 @@ fn potential_flow_in_a_scene_is_refused_with_one_line_where_it_cannot_be() {
         (cylinder_scene(calm, &format!("{file}, fit_error: 2.0")), "fit_error"),
         (cylinder_scene(calm, &format!("{file}, kernel_step: 0.0")), "kernel_step"),
         (cylinder_scene(calm, &format!("{file}, kernel_step: 2.0, kernel_duration: 1.0")), "below its duration"),
+        (
+            turned(&cylinder_scene(calm, &file), "(0.0, 0.0, 1.5707963)"),
+            "the body starts turned 90.0° from the panel code's axes",
+        ),
     ];
     for (text, expected) in cases {
         let error = tether_test_support::error_of(&text);

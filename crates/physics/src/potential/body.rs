@@ -20,7 +20,7 @@ use super::kernel::SampledKernel;
 use super::radiation::{Radiation, RadiationMethod};
 use super::state_space::{FitError, FitSettings, RadiationStateSpace};
 use crate::body::{BodyFrame, Load, RigidBody, Support};
-use crate::math::{Mat3, Vec3};
+use crate::math::{Mat3, Rotation, Vec3};
 use crate::parameter::{Bound, ParameterError, require};
 
 /// What a scene says of a body's potential flow.
@@ -48,6 +48,29 @@ pub enum PotentialError {
     KernelSamples { step: f64, duration: f64 },
     #[error(transparent)]
     Fit(#[from] FitError),
+    #[error(
+        "the body starts turned {degrees:.1}° from the panel code's axes (its reference frame's, which the coefficients are in); potential flow takes them as the world's at t = 0, to within {MAX_START_TURN_DEGREES}°: turn the hull in the panel code instead"
+    )]
+    TurnedAtStart { degrees: f64 },
+}
+
+/// The largest turn \[deg] of a body's reference frame from the world's axes at t = 0 that its
+/// potential flow accepts: the coefficients are applied in world axes at P (§9), which a start
+/// this far off only perturbs as the linear theory's own small rotations do (a decay test's
+/// initial heel); a body placed at another heading needs the panel code run at it.
+pub const MAX_START_TURN_DEGREES: f64 = 5.0;
+
+/// `Ok` if `body`'s reference frame, at the start orientation `orientation` (principal frame →
+/// world), is within [`MAX_START_TURN_DEGREES`] of the world's axes.
+///
+/// # Errors
+/// [`PotentialError::TurnedAtStart`] with the angle.
+pub fn check_start_axes(body: &RigidBody, orientation: &Rotation) -> Result<(), PotentialError> {
+    let degrees = (orientation * body.reference_in_principal.rotation).angle().to_degrees();
+    if degrees > MAX_START_TURN_DEGREES {
+        return Err(PotentialError::TurnedAtStart { degrees });
+    }
+    Ok(())
 }
 
 /// A body's potential flow, built once (see the module docs).

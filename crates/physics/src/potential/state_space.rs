@@ -144,8 +144,8 @@ fn kept_diagonal(peaks: &Matrix6) -> [f64; 6] {
 }
 
 impl RadiationStateSpace {
-    /// Fits every pair of `kernel` that is not numerical noise ([`NEGLIGIBLE_DIAGONAL`],
-    /// [`NEGLIGIBLE_PAIR`]).
+    /// Fits every pair of `kernel` that is not numerical noise (a diagonal term below 1e-3 of the
+    /// largest of its kind, a pair below 1e-2 of `√(K_ii K_jj)`).
     ///
     /// # Errors
     /// [`FitError::NotReached`] for the first pair no order up to the limit fits.

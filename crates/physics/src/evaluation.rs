@@ -81,6 +81,14 @@ impl Evaluation {
         }
     }
 
+    /// Starts the radiation memory of floating body `index` (in the system's order) afresh: the
+    /// body at rest before the next evaluation (its potential flow switched on or off).
+    pub(crate) fn forget_radiation(&mut self, index: usize) {
+        if let Some(run) = self.radiation.get_mut(index) {
+            *run = RadiationRun::default();
+        }
+    }
+
     /// The run of dynamic line coupling `index` (`None` for another kind or model).
     pub fn line_run(&self, index: usize) -> Option<&LineRun> {
         self.lines.iter().find(|run| run.coupling == index)

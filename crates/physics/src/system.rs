@@ -31,7 +31,7 @@ use crate::simd::{Level, SupportedLevel};
 use crate::surroundings::Surroundings;
 use crate::water::environment::WaterError;
 use crate::water::morison::HydroSpec;
-use crate::water::stage::{FloatingBody, FloatingError, FloatingPotential, WaterStageInputs};
+use crate::water::stage::{FloatingBody, FloatingError, FloatingPotential, SwitchError, WaterStageInputs};
 use crate::water::{WaterSpec, WaterStage};
 
 /// Bodies, couplings and gravity: what a run does not change (live edits aside).
@@ -66,6 +66,8 @@ pub enum SystemError {
     Hydro { body: String, source: FloatingError },
     #[error("the system has no water")]
     NoWater,
+    #[error("body \"{body}\": potential flow cannot be switched: {source}")]
+    Switch { body: String, source: SwitchError },
     #[error("coupling \"{coupling}\": {source}")]
     BelowSeabed { coupling: String, source: BelowSeabed },
 }
@@ -228,7 +230,7 @@ impl System {
                 let hydro = crate::water::Hydro::new(spec, &self.bodies[entry.body], &entry.hull)
                     .expect("accepted coefficients without added mass");
                 // At rest nothing radiates and nothing accelerates: no potential flow.
-                FloatingBody { hydro, potential: None, ..entry.clone() }
+                FloatingBody { hydro, potential: None, switched_off: None, ..entry.clone() }
             })
             .collect();
         WaterStage { water, floating }
@@ -266,6 +268,17 @@ impl System {
         })?;
         entry.hydro = hydro;
         Ok(())
+    }
+
+    /// Switches body `body`'s potential flow on or off (a live edit, as above:
+    /// [`WaterStage::switch_potential_flow`]); returns its index among the floating bodies when
+    /// it switched.
+    pub(crate) fn switch_potential_flow(&mut self, body: usize, on: bool) -> Result<Option<usize>, SystemError> {
+        let stage = self.water.as_mut().ok_or(SystemError::NoWater)?;
+        stage.switch_potential_flow(body, on).map_err(|source| SystemError::Switch {
+            body: self.bodies.get(body).map(|b| b.name.clone()).unwrap_or_default(),
+            source,
+        })
     }
 
     /// Gravity [m/s²].

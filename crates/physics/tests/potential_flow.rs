@@ -14,6 +14,7 @@ use std::f64::consts::PI;
 use tether_physics::body::BodyState;
 use tether_physics::potential::{Coefficients, Matrix6, Vector6};
 use tether_physics::rao::LinearModel;
+use tether_physics::stability::Limiter;
 use tether_physics::world::World;
 use tether_scene::wamit::{Scale, read};
 
@@ -46,15 +47,21 @@ fn moored_cylinder(water: &str, lift: f64, potential: &str, dt: f64, couplings: 
 
 /// [`moored_cylinder`] integrated by `integrator`.
 fn cylinder_with(integrator: &str, water: &str, lift: f64, potential: &str, dt: f64, couplings: &str) -> World {
+    let file = repo("validation/potential-flow/cylinder/cylinder");
+    let hydro = format!("Hydro(potential: Wamit(file: {file:?}, {potential}))");
+    cylinder_scene(integrator, water, lift, &hydro, dt, couplings)
+}
+
+/// The cylinder with `hydro` as its body's `hydro` (the text of a `Hydro(...)`).
+fn cylinder_scene(integrator: &str, water: &str, lift: f64, hydro: &str, dt: f64, couplings: &str) -> World {
     let z = -4.0 + lift;
     let m = mass();
     let (ixx, izz) = (m * (3.0 * RADIUS * RADIUS + DRAFT * DRAFT) / 12.0, m * RADIUS * RADIUS / 2.0);
-    let file = repo("validation/potential-flow/cylinder/cylinder");
     scene(&format!(
         "Scene(dt: {dt:e}, integrator: {integrator}, water: Water({water}), bodies: [Body(name: \"cylinder\",
             master: Node(position: (0.0, 0.0, {z:e}), mass: {m:e}, inertia: Inertia(xx: {ixx:e}, yy: {ixx:e}, zz: {izz:e})),
             shape: Cylinder(radius: {RADIUS:e}, length: 8.0, center: (0.0, 0.0, 2.0)),
-            hydro: Hydro(potential: Wamit(file: {file:?}, {potential})))], couplings: [{couplings}])"
+            hydro: {hydro})], couplings: [{couplings}])"
     ))
     .world
 }
@@ -340,4 +347,97 @@ fn every_integrator_carries_the_radiation_memory() {
         println!("{integrator}: worst heave difference {:.2e} of the lift", worst / 0.2);
         assert!(worst < tolerance * 0.2, "{integrator}: {worst}");
     }
+}
+
+/// The largest difference between the synchronised states of `a` and `b`: positions \[m],
+/// velocities \[m/s], angular velocities \[rad/s] and orientations (the quaternions' components).
+fn state_difference(a: &World, b: &World) -> f64 {
+    a.synchronized_states()
+        .iter()
+        .zip(&b.synchronized_states())
+        .map(|(x, y)| {
+            let quaternion = (x.orientation.coords - y.orientation.coords).amax();
+            let moving =
+                [(x.position - y.position), (x.velocity - y.velocity), (x.angular_velocity - y.angular_velocity)];
+            moving.iter().map(|d| d.amax()).fold(quaternion, f64::max)
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The window's switch (PHYSICS.md §9): the cylinder, released 0.2 m high in a regular sea
+/// (0.4 m, 6 s, ramped over two periods), under potential flow for two periods, then switched
+/// off: it goes on as a world built without `potential` (the incident wave's pressure and
+/// Morison's added mass instead; `hydro: Hydro(added_mass: (0.5, 0.5, 0.3))` here, which potential flow
+/// leaves unapplied) started from that state, to 1e-12 over 2 s, with that world's stable time step. Switched on again two periods later, it goes on
+/// as a fresh potential-flow world started from that state (its radiation memory empty, the
+/// excitation about the mean position of t = 0), to 1e-12 as well, with its stable time step. The sea at time `t` of the
+/// switched world is the fresh worlds' at `t − 2n T` (they start at t = 0, unramped, at a
+/// whole number of periods), which only round-off tells apart; the worlds that did not switch
+/// differ by 5e-2 and 0.1 (m, m/s), so the comparisons can fail. A body without potential data
+/// refuses the switch in one line.
+#[test]
+fn potential_flow_switches_off_and_on_as_worlds_built_with_and_without_it() {
+    let period = 6.0;
+    let file = repo("validation/potential-flow/cylinder/cylinder");
+    let morison = "Hydro(added_mass: (0.5, 0.5, 0.3))";
+    let potential = format!("Hydro(added_mass: (0.5, 0.5, 0.3), potential: Wamit(file: {file:?}))");
+    let sea = |ramp: f64| format!("waves: Regular(height: 0.4, period: {period:e}), ramp: {ramp:e}");
+    let dt = 0.02;
+    let mut switched = cylinder_scene("rk4", &sea(2.0 * period), 0.2, &potential, dt, "");
+    let mut kept = switched.clone();
+    let run = |world: &mut World, until: f64| {
+        while world.time() < until - 0.5 * dt {
+            world.step().expect("a stable cylinder");
+        }
+    };
+    // A fresh world of `hydro` from the switched world's state, at the same phase of the sea.
+    let fresh = |hydro: &str, from: &World| {
+        let mut world = cylinder_scene("rk4", &sea(0.0), 0.2, hydro, dt, "");
+        world.place(&from.synchronized_states()).expect("the switched world's state");
+        world
+    };
+    let compare = |switched: &mut World, fresh: &mut World, kept: &mut World, what: &str| {
+        let (start, mut worst) = (switched.time(), 0.0_f64);
+        while switched.time() < start + 2.0 - 0.5 * dt {
+            for world in [&mut *switched, &mut *fresh, &mut *kept] {
+                world.step().expect("a stable cylinder");
+            }
+            worst = worst.max(state_difference(switched, fresh));
+        }
+        let apart = state_difference(switched, kept);
+        println!("switched {what}: {worst:.2e} from the fresh world over 2 s, {apart:.2e} from the unswitched one");
+        assert!(worst < 1e-12, "{what}: {worst}");
+        assert!(apart > 1e-4, "{what}: the switch changed the motion ({apart})");
+    };
+
+    run(&mut switched, 2.0 * period);
+    run(&mut kept, 2.0 * period);
+    switched.set_potential_flow(0, false).expect("a potential-flow body");
+    let floating = &switched.system().water().expect("water").floating[0];
+    assert!(floating.potential.is_none() && floating.has_potential_data());
+    let mut without = fresh(morison, &switched);
+    let limit = |world: &World| {
+        let water = world.limits().into_iter().find(|l| l.limiter == Limiter::Water(0));
+        water.expect("the water's stable time step").dt
+    };
+    assert_eq!(limit(&switched), limit(&without), "A∞ is out of the stable time step");
+    let refused = without.clone().set_potential_flow(0, true).expect_err("no potential data to switch on");
+    assert_eq!(
+        refused.to_string(),
+        "body \"cylinder\": potential flow cannot be switched: it has no potential-flow data (hydro: Hydro(potential: Wamit(...)))"
+    );
+    compare(&mut switched, &mut without, &mut kept, "off");
+    let forces = switched.water_forces()[0];
+    assert_eq!((forces.radiation, forces.excitation), Default::default(), "no potential-flow force while off");
+
+    run(&mut switched, 4.0 * period);
+    run(&mut kept, 4.0 * period);
+    let mut kept = without;
+    run(&mut kept, 2.0 * period);
+    switched.set_potential_flow(0, true).expect("a potential-flow body");
+    let mut with = fresh(&potential, &switched);
+    assert_eq!(limit(&switched), limit(&with), "A∞ back in the stable time step");
+    compare(&mut switched, &mut with, &mut kept, "on");
+    let forces = switched.water_forces()[0];
+    assert!(forces.radiation.force.norm() > 0.0 && forces.excitation.force.norm() > 0.0, "{forces:?}");
 }

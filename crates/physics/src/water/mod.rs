@@ -51,4 +51,4 @@ pub use environment::{CurrentProfile, CurrentSpec, Water, WaterError, WaterSpec,
 pub use forces::WaterForces;
 pub use hull::Hull;
 pub use morison::Hydro;
-pub use stage::{FloatingBody, FloatingPotential, WaterScratch, WaterStage, WaterStageInputs};
+pub use stage::{FloatingBody, FloatingPotential, SwitchError, WaterScratch, WaterStage, WaterStageInputs};

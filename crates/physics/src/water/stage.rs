@@ -22,7 +22,12 @@ pub struct FloatingBody {
     pub body: usize,
     pub hull: Arc<Hull>,
     pub hydro: Hydro,
+    /// Its potential flow while on: the stage applies it.
     pub potential: Option<FloatingPotential>,
+    /// Its potential flow while switched off by a live edit ([`WaterStage::switch_potential_flow`]),
+    /// kept with its fitted model to switch it on again without reading the files; the stage
+    /// ignores it, so that the body is then exactly what it would be without potential data.
+    pub switched_off: Option<FloatingPotential>,
 }
 
 /// A floating body's potential flow (PHYSICS.md §9): its model, the mean horizontal position
@@ -56,8 +61,24 @@ impl FloatingBody {
         let body = &bodies[index];
         let hull = Hull::of_body(body)?;
         let hydro = Hydro::new(spec, body, &hull)?;
-        Ok(Self { body: index, hull: Arc::new(hull), hydro, potential: None })
+        Ok(Self { body: index, hull: Arc::new(hull), hydro, potential: None, switched_off: None })
     }
+
+    /// Whether the body has potential-flow data, on or switched off.
+    pub fn has_potential_data(&self) -> bool {
+        self.potential.is_some() || self.switched_off.is_some()
+    }
+}
+
+/// A floating body whose potential flow cannot be switched, and why.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SwitchError {
+    #[error("body {body} does not float")]
+    NotFloating { body: usize },
+    #[error("it has no potential-flow data (hydro: Hydro(potential: Wamit(...)))")]
+    NoPotentialData,
+    #[error("hydro: potential: {0}")]
+    Heading(#[from] HeadingMissing),
 }
 
 /// The water and the bodies in it.
@@ -130,6 +151,48 @@ impl WaterStage {
             }
         }
         Ok(())
+    }
+
+    /// Switches body `body`'s potential flow on or off (a live edit, PHYSICS.md §9); returns its
+    /// index among the floating bodies when it switched (its radiation memory is then the
+    /// caller's to start afresh), `None` when it already was so. Off, the body is what it would
+    /// be without potential data: the incident wave's pressure on its hull and Morison's added
+    /// mass back, `A∞` out of its generalised mass. On, the model kept when it was switched off,
+    /// its excitation built again for the water's sea as it is now, about the same mean position
+    /// as at t = 0.
+    ///
+    /// # Errors
+    /// A body that does not float or has no potential-flow data, or (on) a sea heading the
+    /// file lacks; the stage is then unchanged.
+    pub fn switch_potential_flow(&mut self, body: usize, on: bool) -> Result<Option<usize>, SwitchError> {
+        let components = self.water.sea().components();
+        let (index, floating) = self
+            .floating
+            .iter_mut()
+            .enumerate()
+            .find(|(_, f)| f.body == body)
+            .ok_or(SwitchError::NotFloating { body })?;
+        if !floating.has_potential_data() {
+            return Err(SwitchError::NoPotentialData);
+        }
+        let (from, to) = if on {
+            (&mut floating.switched_off, &mut floating.potential)
+        } else {
+            (&mut floating.potential, &mut floating.switched_off)
+        };
+        let Some(mut potential) = from.take() else { return Ok(None) };
+        if on {
+            let excitation = potential.model.coefficients().excitation();
+            match WaveExcitation::new(excitation, components, potential.mean_position) {
+                Ok(built) => potential.excitation = built,
+                Err(error) => {
+                    *from = Some(potential);
+                    return Err(error.into());
+                }
+            }
+        }
+        *to = Some(potential);
+        Ok(Some(index))
     }
 
     /// The floating entry of body `body`, if it floats.

@@ -94,7 +94,7 @@ impl World {
     /// Water that cannot be, a world without water, or forces that cannot be evaluated; the
     /// world is then unchanged.
     pub fn replace_water(&mut self, spec: WaterSpec) -> Result<(), EditError> {
-        self.edit_water(|system| system.replace_water(spec))
+        self.edit_water(|system, _| system.replace_water(spec))
     }
 
     /// Replaces the coefficients of floating body `body` (drag, damping, added mass, drag
@@ -104,18 +104,46 @@ impl World {
     /// Bad coefficients, a body that does not float, or forces that cannot be evaluated; the
     /// world is then unchanged.
     pub fn replace_hydro(&mut self, body: usize, spec: HydroSpec) -> Result<(), EditError> {
-        self.edit_water(|system| system.replace_hydro(body, spec))
+        self.edit_water(|system, _| system.replace_hydro(body, spec))
     }
 
-    /// Applies `edit` to the system and restarts the integrator from the synchronised state;
-    /// on any error, the world as it was.
+    /// Switches floating body `body`'s potential flow on or off while running (PHYSICS.md §9,
+    /// the window's switch), as [`World::replace_water`] does the water: off, the body goes on as
+    /// it would without potential data (the incident wave's pressure and Morison's added mass
+    /// back, `A∞` out of its generalised mass and of its stable time step); on, it goes on under
+    /// potential flow again, its excitation built for the sea as it is, its radiation memory
+    /// started afresh (the body at rest before now). Switching to the state it is in changes
+    /// nothing.
+    ///
+    /// # Errors
+    /// A body that does not float or has no potential-flow data, a sea heading its file lacks,
+    /// or forces that cannot be evaluated; the world is then unchanged.
+    pub fn set_potential_flow(&mut self, body: usize, on: bool) -> Result<(), EditError> {
+        let already = self
+            .system
+            .water()
+            .and_then(|stage| stage.floating_body(body))
+            .is_some_and(|floating| floating.has_potential_data() && floating.potential.is_some() == on);
+        if already {
+            return Ok(());
+        }
+        self.edit_water(|system, evaluation| {
+            if let Some(index) = system.switch_potential_flow(body, on)? {
+                evaluation.forget_radiation(index);
+            }
+            Ok(())
+        })
+    }
+
+    /// Applies `edit` to the system and the evaluation's buffers and restarts the integrator
+    /// from the synchronised state; on any error, the world as it was.
     fn edit_water(
         &mut self,
-        edit: impl FnOnce(&mut crate::system::System) -> Result<(), SystemError>,
+        edit: impl FnOnce(&mut crate::system::System, &mut crate::evaluation::Evaluation) -> Result<(), SystemError>,
     ) -> Result<(), EditError> {
         let before = self.clone();
         self.states = self.synchronized_states();
-        if let Err(error) = edit(&mut self.system) {
+        if let Err(error) = edit(&mut self.system, &mut self.evaluation) {
             *self = before;
             return Err(error.into());
         }

@@ -333,12 +333,73 @@ fn the_water_is_recorded() {
         motion[&40][1]
     );
     assert!(heave.abs() > 1e-3, "the buoy moved in the waves: {heave} m");
+    let potential: Vec<&String> =
+        rows.keys().filter(|k| k.ends_with("/radiation") || k.ends_with("/excitation")).collect();
+    assert!(potential.is_empty(), "no potential flow, no potential-flow plots: {potential:?}");
 
     // dt = 10 ms, 10 Hz: 21 frames; the calm surface once.
     let (_dir, out) = record("scenes/floating_box.ron", &["--duration", "2", "--log-hz", "10"]);
     let rows = rows_per_entity(&out);
     assert_eq!(rows.get("/world/water/surface"), Some(&1), "{rows:?}");
     assert_eq!(rows.get("/plots/water/box/motion"), Some(&21), "{rows:?}");
+}
+
+/// The series names the recording `path` gives entity `entity` (its static `SeriesLines`).
+fn series_names(path: &std::path::Path, entity: &str) -> Vec<String> {
+    let component = rerun::SeriesLines::descriptor_names().component;
+    let mut file = std::fs::File::open(path).unwrap();
+    let stores = rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file).unwrap();
+    let mut names = Vec::new();
+    for store in stores.values() {
+        for chunk in store.iter_physical_chunks().filter(|c| c.is_static() && c.entity_path().to_string() == entity) {
+            for row in chunk.iter_slices::<String>(component) {
+                names = row.into_iter().map(|name| name.to_string()).collect();
+            }
+        }
+    }
+    names
+}
+
+/// Potential flow (PHYSICS.md §9): the cylinder of `tests/fixtures/rao/cylinder.ron` in its
+/// regular sea (0.1 m, 8 s) has its radiation force and wave excitation plotted every frame, six
+/// series each, equal to the world's water forces (about G, world axes) at steps 250, 500 and
+/// 1000 (t = 5, 10, 20 s) to 1e-12; the block beside it, without potential data, has no such
+/// plots.
+#[test]
+fn a_potential_flow_body_has_its_radiation_and_excitation_plotted() {
+    let scene = "tests/fixtures/rao/cylinder.ron";
+    // dt = 20 ms, 10 Hz: a frame every 5 steps, 0 to 1000: 201.
+    let (_dir, out) = record(scene, &["--duration", "20", "--log-hz", "10"]);
+    let rows = rows_per_entity(&out);
+    for entity in ["/plots/water/cylinder/radiation", "/plots/water/cylinder/excitation"] {
+        assert_eq!(rows.get(entity), Some(&201), "{entity}: {rows:?}");
+        assert_eq!(series_names(&out, entity), ["Fx [N]", "Fy [N]", "Fz [N]", "Mx [N·m]", "My [N·m]", "Mz [N·m]"]);
+    }
+    for entity in ["/plots/water/block/radiation", "/plots/water/block/excitation"] {
+        assert_eq!(rows.get(entity), None, "{entity}: {rows:?}");
+    }
+    let radiation = scalars_by_step(&out, "/plots/water/cylinder/radiation");
+    let excitation = scalars_by_step(&out, "/plots/water/cylinder/excitation");
+    let mut world = tether_scene::load(&common::repo(scene)).unwrap().world;
+    for step in [250, 500, 1000] {
+        while world.steps() < step {
+            world.step().unwrap();
+        }
+        let forces = world.water_forces().iter().find(|r| r.body == 0).expect("the cylinder floats");
+        for (logged, load) in
+            [(&radiation[&(step as i64)], forces.radiation), (&excitation[&(step as i64)], forces.excitation)]
+        {
+            let expected = [load.force.x, load.force.y, load.force.z, load.moment.x, load.moment.y, load.moment.z];
+            let scale = expected.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            assert!(scale > 1.0, "step {step}: the waves load the cylinder: {expected:?}");
+            for (k, (logged, expected)) in logged.iter().zip(expected).enumerate() {
+                assert!(
+                    (logged - expected).abs() <= 1e-12 * scale,
+                    "step {step}, series {k}: {logged} logged, {expected} in the world"
+                );
+            }
+        }
+    }
 }
 
 /// The moored buoy's chains on the seabed: each line's grounded part and touchdown are drawn and

@@ -2,7 +2,7 @@
 //! right (a fit's plots first, twice as tall as the others; the energy in two plots, stored and
 //! moving; the couplings' tensions — a contact's normal force named as such; the catenaries' end tensions, their
 //! grounded lengths on a seabed, and the contacts' forces when there are any; each floating
-//! body's motion in the water); the `sim_time` timeline; the viewer's own side panels folded,
+//! body's motion in the water, and a potential-flow body's radiation force and excitation); the `sim_time` timeline; the viewer's own side panels folded,
 //! room being short beside the control panel. The 3D view's eye frames what moves
 //! ([`crate::framing`]), or follows a body the user chose.
 //!
@@ -114,6 +114,17 @@ pub fn layout_with_fits(world: &World, columns: &[&str]) -> (Blueprint, EntityPa
                     .with_origin(paths::water_plot(name, "angles"))
                     .into(),
             );
+            if floating.has_potential_data() {
+                for (plot, what) in
+                    [(paths::RADIATION_PLOT, "radiation force"), (paths::EXCITATION_PLOT, "wave excitation")]
+                {
+                    plots.push(
+                        TimeSeriesView::new(format!("{name}: {what} at G [N, N·m]"))
+                            .with_origin(paths::water_plot(name, plot))
+                            .into(),
+                    );
+                }
+            }
         }
     }
     let scene: ContainerLike = Spatial3DView::new("scene").with_origin(paths::WORLD).into();

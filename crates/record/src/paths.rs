@@ -19,6 +19,7 @@
 //! | `world/water/surface`, `world/water/seabed` | the sea surface, the seabed plane |
 //! | `world/water/forces/<body>` | the water's force on a floating body |
 //! | `plots/water/<body>/motion`, `…/angles` | wave elevation and heave; roll and pitch |
+//! | `plots/water/<body>/radiation`, `…/excitation` | a potential-flow body's radiation force and wave excitation |
 //! | `world/seabed/plane` | the seabed of a scene without water |
 //! | `world/seabed/grounded/<line>`, `world/seabed/touchdowns/<line>` | a line's part on the bottom, its touchdowns |
 //! | `plots/seabed` | every line's grounded length, a series named after it |
@@ -49,6 +50,10 @@ pub const WATER_SURFACE: &str = "world/water/surface";
 pub const SEABED: &str = "world/water/seabed";
 /// The floating bodies' plots.
 pub const WATER_PLOTS: &str = "plots/water";
+/// A potential-flow body's plot of its radiation force, and of its wave excitation
+/// ([`water_plot`]).
+pub const RADIATION_PLOT: &str = "radiation";
+pub const EXCITATION_PLOT: &str = "excitation";
 
 /// The seabed plane of a scene without water.
 pub const SEABED_PLANE: &str = "world/seabed/plane";

@@ -15,7 +15,12 @@
 //! - `plots/water/<body>/motion`: the wave elevation at the body and its heave (the height of G
 //!   above its start) [m];
 //! - `plots/water/<body>/angles`: its roll and pitch (the turn since t = 0 about the world x and
-//!   y axes) [deg].
+//!   y axes) [deg];
+//! - `plots/water/<body>/radiation`, `…/excitation`: for a body with potential-flow data
+//!   (PHYSICS.md §9), its radiation force and wave excitation as the water stage records them
+//!   ([`tether_physics::water::WaterForces`]: about G, world axes), six series each — `Fx`, `Fy`,
+//!   `Fz` [N], `Mx`, `My`, `Mz` [N·m] — zero while its potential flow is switched off. A body
+//!   without potential data has neither: a scene without any records what it recorded before.
 
 use super::{Settings, Track, f32x3, of_entity, send_chunk};
 use crate::columns::{column, floats, plot};
@@ -24,6 +29,7 @@ use crate::rerun;
 use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;
+use tether_physics::body::Load;
 use tether_physics::math::{Rotation, Vec3};
 use tether_physics::water::WaterStage;
 use tether_physics::water::waves::SeaInstant;
@@ -41,12 +47,17 @@ const SURFACE_RGBA: [u8; 4] = [40, 110, 190, 150];
 const SEABED_RGB: [u8; 3] = [150, 130, 100];
 const ARROW_RGB: [u8; 3] = [40, 160, 230];
 
+/// The series of a potential-flow force plot: force and moment about G, world axes.
+pub const FORCE_SERIES: [&str; 6] = ["Fx [N]", "Fy [N]", "Fz [N]", "Mx [N·m]", "My [N·m]", "Mz [N·m]"];
+
 /// A floating body: where its plots and arrow go, and its pose at t = 0.
 struct Floating {
     body: usize,
     force_path: String,
     motion_path: String,
     angles_path: String,
+    /// Its radiation and excitation plots, if it has potential-flow data.
+    potential_paths: Option<[String; 2]>,
     /// Height of G [m] and orientation at t = 0.
     start_height: f64,
     start_turn: Rotation,
@@ -54,7 +65,7 @@ struct Floating {
 
 /// The water's buffered frames: the surface's vertices at the frames in `surface_frames`; per
 /// floating body, frame-major, its force arrow (origin, vector), elevation and heave, roll and
-/// pitch.
+/// pitch; per body with potential-flow data, frame-major, its radiation force and excitation.
 pub(super) struct WaterTrack {
     /// Centre `(x, y)` [m] and half side [m] of the square the surface covers.
     center: [f64; 2],
@@ -70,6 +81,8 @@ pub(super) struct WaterTrack {
     arrows: Vec<([f32; 3], [f32; 3])>,
     motion: Vec<[f64; 2]>,
     angles: Vec<[f64; 2]>,
+    radiation: Vec<[f64; 6]>,
+    excitation: Vec<[f64; 6]>,
 }
 
 impl WaterTrack {
@@ -88,6 +101,12 @@ impl WaterTrack {
                     force_path: paths::water_force(name),
                     motion_path: paths::water_plot(name, "motion"),
                     angles_path: paths::water_plot(name, "angles"),
+                    potential_paths: f.has_potential_data().then(|| {
+                        [
+                            paths::water_plot(name, paths::RADIATION_PLOT),
+                            paths::water_plot(name, paths::EXCITATION_PLOT),
+                        ]
+                    }),
                     start_height: state.position.z,
                     start_turn: state.orientation,
                 }
@@ -105,12 +124,20 @@ impl WaterTrack {
             arrows: Vec::new(),
             motion: Vec::new(),
             angles: Vec::new(),
+            radiation: Vec::new(),
+            excitation: Vec::new(),
         })
     }
 
-    /// Floating bodies (each has an arrow and two plots), and the surface.
+    /// Floating bodies (each has an arrow and two plots, two more with potential flow), and the
+    /// surface.
     pub(super) fn entities(&self) -> usize {
-        1 + 3 * self.floating.len()
+        1 + 3 * self.floating.len() + 2 * self.potential_bodies().count()
+    }
+
+    /// The radiation and excitation plots of each floating body that has them.
+    fn potential_bodies(&self) -> impl Iterator<Item = &[String; 2]> {
+        self.floating.iter().filter_map(|f| f.potential_paths.as_ref())
     }
 
     /// `(x, y)` [m] of grid vertex `n` (row-major).
@@ -182,6 +209,11 @@ impl Track for WaterTrack {
             stream
                 .log_static(floating.angles_path.as_str(), &rerun::SeriesLines::new().with_names(["roll", "pitch"]))?;
         }
+        for paths in self.potential_bodies() {
+            for path in paths {
+                stream.log_static(path.as_str(), &rerun::SeriesLines::new().with_names(FORCE_SERIES))?;
+            }
+        }
         Ok(())
     }
 
@@ -204,11 +236,13 @@ impl Track for WaterTrack {
             let state = world.state(floating.body);
             let weight = body.mass() * world.gravity().norm().max(1.0);
             // A body the stage has no record of (none evaluated yet) bears no water force.
-            let force = world
-                .water_forces()
-                .iter()
-                .find(|r| r.body == floating.body)
-                .map_or_else(Vec3::zeros, |r| r.total().force);
+            let record = world.water_forces().iter().find(|r| r.body == floating.body).copied().unwrap_or_default();
+            let force = record.total().force;
+            if floating.potential_paths.is_some() {
+                self.radiation.push(six(&record.radiation));
+                self.excitation.push(six(&record.excitation));
+                bytes += 2 * 6 * 8;
+            }
             self.arrows.push((f32x3(&state.position), f32x3(&(force * (stage_body.hull.bounding_radius() / weight)))));
             self.motion.push([elevation(state.position.x, state.position.y), state.position.z - floating.start_height]);
             let (roll, pitch, _) = (state.orientation * floating.start_turn.inverse()).euler_angles();
@@ -254,11 +288,26 @@ impl Track for WaterTrack {
                 )?;
             }
         }
+        let potential = self.potential_bodies().count();
+        for (index, paths) in self.potential_bodies().enumerate() {
+            for (path, values) in paths.iter().zip([&self.radiation, &self.excitation]) {
+                let values = of_entity(values, index, potential).flatten().collect();
+                send_chunk(stream, path, frames.columns(), vec![plot(values, 6)], sent)?;
+            }
+        }
         self.arrows.clear();
         self.motion.clear();
         self.angles.clear();
+        self.radiation.clear();
+        self.excitation.clear();
         Ok(())
     }
+}
+
+/// A load's force and moment as one row of a force plot ([`FORCE_SERIES`]).
+fn six(load: &Load) -> [f64; 6] {
+    let (f, m) = (&load.force, &load.moment);
+    [f.x, f.y, f.z, m.x, m.y, m.z]
 }
 
 /// The square the surface covers: centred on the floating bodies at t = 0, wide enough for them

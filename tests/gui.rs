@@ -382,6 +382,87 @@ fn water_knobs_tune_the_running_water_and_bad_values_are_refused() {
     assert_eq!(drag_z(&world(&harness)), 0.7);
 }
 
+/// Whether the checkbox labelled `label` is ticked, as a screen reader reads it.
+fn ticked(harness: &Harness<'_, ControlPanel>, label: &str) -> bool {
+    harness.get_by_label(label).accesskit_node().toggled() == Some(accesskit::Toggled::True)
+}
+
+/// The potential-flow switch (PHYSICS.md §9) on the cylinder of `tests/fixtures/rao/cylinder.ron`
+/// in its regular sea: ticked for the cylinder, absent for the block beside it (no potential
+/// data). Played for a while, paused and switched off, the running world is the world before it
+/// switched off by the physics' own `set_potential_flow`, step for step (no radiation, no
+/// excitation), and the box shows what runs; switched on again, potential flow runs with its
+/// radiation memory started afresh (no radiation force yet, while the cylinder moves). The
+/// recording has the cylinder's radiation and excitation plots.
+#[test]
+fn the_potential_flow_switch_reaches_the_running_world_and_shows_what_runs() {
+    let file = repo("validation/potential-flow/cylinder/cylinder");
+    let fixture = std::fs::read_to_string(repo("tests/fixtures/rao/cylinder.ron")).unwrap();
+    let text = fixture.replace("\"../../../validation/potential-flow/cylinder/cylinder\"", &format!("{file:?}"));
+    assert_ne!(text, fixture, "the fixture's file, found from the folder of scenes");
+    let dir = scenes_folder(&[("cylinder.ron", &text)]);
+    let shown = dir.path().join("shown.rrd");
+    let sinks = Sinks::new(vec![Sinks::file(&shown).unwrap()]);
+    let mut harness = harness(ControlPanel::new(sinks, Arc::new(|| {}), dir.path().to_path_buf()).unwrap());
+    open_from_list(&mut harness, "cylinder.ron");
+    let running = |world: &World| world.system().water().expect("water").floating[0].potential.is_some();
+    let shows = |on: bool| move |p: &ControlPanel| p.status().is_some_and(|s| s.potential_flow == [(0, on)]);
+    until(&mut harness, "the status", shows(true));
+    harness.run_steps(2);
+    assert_eq!(harness.query_all_by_label("potential flow").count(), 1, "the cylinder's switch, not the block's");
+    assert!(ticked(&harness, "potential flow") && running(&world(&harness)));
+
+    harness.key_press(egui::Key::Space);
+    until(&mut harness, "1 s of play", |p| p.status().is_some_and(|s| s.running && s.time > 1.0));
+    harness.key_press(egui::Key::Space);
+    until(&mut harness, "the pause", |p| p.status().is_some_and(|s| !s.running));
+    let before = world(&harness);
+    harness.get_by_label("potential flow").click();
+    until(&mut harness, "the switch off", |p| {
+        p.log().any(|l| l.text.starts_with("potential flow off for body \"cylinder\" applied at t = "))
+    });
+    until(&mut harness, "the box unticked", shows(false));
+    harness.run_steps(2);
+    assert!(!ticked(&harness, "potential flow"));
+    let mut expected = before.clone();
+    expected.set_potential_flow(0, false).expect("a potential-flow body");
+    let (mut kept, mut off) = (before, world(&harness));
+    assert!(!running(&off));
+    harness.key_press(egui::Key::ArrowRight);
+    until(&mut harness, "one step", |p| p.status().is_some_and(|s| s.steps == off.steps() + 1));
+    for world in [&mut expected, &mut kept, &mut off] {
+        world.step().unwrap();
+    }
+    let stepped = world(&harness);
+    assert_eq!(stepped.synchronized_states(), expected.synchronized_states(), "the physics' switch, step for step");
+    assert_eq!(stepped.synchronized_states(), off.synchronized_states());
+    assert_ne!(stepped.synchronized_states(), kept.synchronized_states(), "the switch changed the motion");
+    let forces = stepped.water_forces()[0];
+    assert_eq!((forces.radiation, forces.excitation), Default::default());
+
+    harness.get_by_label("potential flow").click();
+    until(&mut harness, "the switch on", |p| {
+        p.log().any(|l| l.text.starts_with("potential flow on for body \"cylinder\" applied at t = "))
+    });
+    until(&mut harness, "the box ticked", shows(true));
+    harness.run_steps(2);
+    assert!(ticked(&harness, "potential flow"));
+    let on = world(&harness);
+    assert!(running(&on));
+    let forces = on.water_forces()[0];
+    assert!(on.state(0).velocity.norm() > 1e-3, "the cylinder moves: {:?}", on.state(0).velocity);
+    assert_eq!(forces.radiation.force.norm(), 0.0, "a fresh radiation memory: the body at rest before");
+    assert!(forces.excitation.force.norm() > 1.0, "{forces:?}");
+    drop(harness);
+    let names = |entity: &str| series_names(&shown, entity);
+    assert_eq!(
+        names("/plots/water/cylinder/radiation"),
+        ["Fx [N]", "Fy [N]", "Fz [N]", "Mx [N·m]", "My [N·m]", "Mz [N·m]"]
+    );
+    assert_eq!(names("/plots/water/cylinder/excitation").len(), 6);
+    assert!(names("/plots/water/block/radiation").is_empty());
+}
+
 /// The statics panel on a buoy moored by three lines lying on a seabed: the seabed's C_B and a
 /// line's A_d reach the running world (a negative C_B is refused, the world untouched); the
 /// equilibrium button puts the buoy where `tether equilibrium` finds it, at rest; the offset

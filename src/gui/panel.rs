@@ -520,6 +520,7 @@ impl ControlPanel {
 
     fn water_ui(&mut self, ui: &mut egui::Ui) {
         let Some(open) = &mut self.scene else { return };
+        let running = self.status.as_ref().map_or(&[][..], |s| s.potential_flow.as_slice());
         let knobs = &mut open.knobs;
         let drafts = knobs.water.knobs_mut().first_mut().map(|water| water::WaterKnobs {
             water,
@@ -530,7 +531,13 @@ impl ControlPanel {
                 .zip(&open.file.bodies)
                 .enumerate()
                 .filter_map(|(index, (Knob { draft, refusals }, body))| {
-                    draft.as_mut().map(|hydro| (index, body.name.as_str(), hydro, refusals.as_slice()))
+                    draft.as_mut().map(|hydro| water::FloatingKnobs {
+                        index,
+                        name: body.name.as_str(),
+                        hydro,
+                        refusals: refusals.as_slice(),
+                        potential_flow: running.iter().find(|(b, _)| *b == index).map(|(_, on)| *on),
+                    })
                 })
                 .collect(),
         });
@@ -538,6 +545,7 @@ impl ControlPanel {
             match action {
                 WaterAction::Water => self.tune(KnobId::Water),
                 WaterAction::Hydro(index) => self.tune(KnobId::Hydro(index)),
+                WaterAction::PotentialFlow { body, on } => self.simulation.send(Command::SetPotentialFlow { body, on }),
             }
         }
     }
@@ -659,11 +667,16 @@ impl ControlPanel {
         }
     }
 
-    /// Every coupling and the water back to what the file says, in the running simulation too.
+    /// Every coupling and the water back to what the file says, in the running simulation too
+    /// (a body's potential flow switched off, on again).
     pub fn revert_to_file(&mut self) {
         let Some(open) = &mut self.scene else { return };
         for knob in open.revert_to_file() {
             self.tune(knob);
+        }
+        let off = self.status.as_ref().map_or(&[][..], |s| s.potential_flow.as_slice()).iter().filter(|(_, on)| !on);
+        for &(body, _) in off {
+            self.simulation.send(Command::SetPotentialFlow { body, on: true });
         }
     }
 

@@ -2,7 +2,8 @@
 //! added-mass coefficients, all live (PHYSICS.md §6). The knobs edit the open scene's water and
 //! coefficient knobs' drafts (scene-file data, [`WaterDef`] and [`HydroDef`]); the panel checks
 //! an edited draft with the scene builder (the same checks and messages as loading) and sends
-//! the simulation what it accepts; a refused value stays in its knob with the reason.
+//! the simulation what it accepts; a refused value stays in its knob with the reason. A body with
+//! potential-flow data (PHYSICS.md §9) has a switch for it, which shows what the simulation runs.
 
 use super::knobs::{Knob, Refused};
 use super::tuning::knob;
@@ -17,13 +18,26 @@ pub enum WaterAction {
     Water,
     /// Body `index`'s coefficients were edited.
     Hydro(usize),
+    /// Body `body`'s potential flow switched on or off.
+    PotentialFlow { body: usize, on: bool },
+}
+
+/// A floating body as the panel shows it.
+pub struct FloatingKnobs<'a, R> {
+    pub index: usize,
+    pub name: &'a str,
+    pub hydro: &'a mut HydroDef,
+    /// Why its last edit was refused.
+    pub refusals: &'a [Refused<R>],
+    /// Whether its potential flow runs (`None`: it has no potential-flow data).
+    pub potential_flow: Option<bool>,
 }
 
 /// The water's knobs, as the panel shows them; `R` is why a value was refused.
 pub struct WaterKnobs<'a, R> {
     pub water: &'a mut Knob<WaterDef, R>,
-    /// `(body index, name, coefficients, refused fields)` of each floating body.
-    pub bodies: Vec<(usize, &'a str, &'a mut HydroDef, &'a [Refused<R>])>,
+    /// Each floating body.
+    pub bodies: Vec<FloatingKnobs<'a, R>>,
 }
 
 /// Draws the water section; nothing for a scene without water.
@@ -40,8 +54,13 @@ pub fn ui<R: Display>(ui: &mut egui::Ui, knobs: Option<WaterKnobs<R>>) -> Vec<Wa
         for refused in water_refusals.iter() {
             ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refused}"));
         }
-        for (index, name, hydro, refusals) in bodies {
+        for FloatingKnobs { index, name, hydro, refusals, potential_flow } in bodies {
             ui.label(format!("body \"{name}\" in the water"));
+            if let Some(running) = potential_flow
+                && let Some(on) = potential_flow_switch(ui, running)
+            {
+                actions.push(WaterAction::PotentialFlow { body: index, on });
+            }
             let edited =
                 egui::Grid::new(("hydro knobs", index)).num_columns(3).show(ui, |ui| hydro_knobs(ui, hydro)).inner;
             if edited {
@@ -53,6 +72,17 @@ pub fn ui<R: Display>(ui: &mut egui::Ui, knobs: Option<WaterKnobs<R>>) -> Vec<Wa
         }
     });
     actions
+}
+
+/// The switch of a body's potential flow, showing `running` (what the simulation runs); the
+/// state asked for when clicked.
+fn potential_flow_switch(ui: &mut egui::Ui, running: bool) -> Option<bool> {
+    let mut on = running;
+    let tip = "On: radiation and wave excitation from the panel code's files, A∞ in the body's mass. \
+               Off: the body as without them (the incident wave's pressure on the hull, Morison's \
+               added mass). Switched on again, the radiation memory restarts: the body as if at \
+               rest before.";
+    ui.checkbox(&mut on, "potential flow").on_hover_text(tip).changed().then_some(on)
 }
 
 /// Waves (height, period, heading), current (speed, heading) and density; true when one was

@@ -58,6 +58,12 @@ pub enum Command {
         body: usize,
         spec: HydroSpec,
     },
+    /// Body `body`'s potential flow switched on or off (PHYSICS.md §9), without a restart; on,
+    /// its radiation memory starts afresh.
+    SetPotentialFlow {
+        body: usize,
+        on: bool,
+    },
     /// The seabed's line friction `C_B` set to this (checked), without a restart.
     SetSeabedFriction(f64),
     /// Every free body placed at the static equilibrium found from where the bodies are, at

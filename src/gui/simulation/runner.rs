@@ -166,6 +166,7 @@ impl Runner {
             Command::SetHydro { body, spec } => {
                 self.edit_water("the body's coefficients in the water", |world| world.replace_hydro(body, spec))
             }
+            Command::SetPotentialFlow { body, on } => self.set_potential_flow(body, on),
             Command::SetSeabedFriction(friction) => self.set_seabed_friction(friction),
             Command::Equilibrium => self.equilibrium(),
             Command::OffsetCurve { body, direction, to, steps } => {
@@ -401,6 +402,14 @@ impl Runner {
     fn set_face_arrows(&mut self, on: bool) {
         let set = self.recording.set_face_arrows(on, self.run.as_ref().map(|run| &run.world));
         self.report_failure(set);
+    }
+
+    /// Body `body`'s potential flow on or off, as a live edit of the water.
+    fn set_potential_flow(&mut self, body: usize, on: bool) {
+        let Some(run) = &self.run else { return };
+        let name = run.world.bodies().get(body).map_or_else(|| format!("{body}"), |b| format!("\"{}\"", b.name));
+        let what = format!("potential flow {} for body {name}", if on { "on" } else { "off" });
+        self.edit_water(&what, |world| world.set_potential_flow(body, on));
     }
 
     /// A live edit of the water (`what` names it in the report).

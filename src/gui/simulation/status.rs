@@ -39,6 +39,9 @@ pub struct Status {
     pub rotation_limit: Option<(String, f64)>,
     /// Stable time step of each floating body under the water's stiffness and drag [s].
     pub water_limits: Vec<(String, f64)>,
+    /// Each floating body with potential-flow data (PHYSICS.md §9): its index, and whether its
+    /// potential flow runs (it may be switched off live).
+    pub potential_flow: Vec<(usize, bool)>,
     /// Time step that resolves each contact's impact, `τ/10` [s] (not a stability limit).
     pub impact_limits: Vec<(String, f64)>,
     /// What the contact estimator needs of each contact.
@@ -132,6 +135,10 @@ pub fn status(world: &World, run: &RunState) -> Status {
         line_hints: (0..world.couplings().len()).map(|i| line_hint::measures(world, i)).collect(),
         rotation_limit,
         water_limits,
+        potential_flow: world.system().water().map_or_else(Vec::new, |stage| {
+            let with_data = stage.floating.iter().filter(|f| f.has_potential_data());
+            with_data.map(|f| (f.body, f.potential.is_some())).collect()
+        }),
         impact_limits: world.impact_limits().iter().map(|l| (l.describe(world.system()), l.dt)).collect(),
         contacts: contacts(world),
         bodies: (0..world.bodies().len()).map(|i| body_status(world, i)).collect(),

@@ -2,8 +2,9 @@
 //! right (a fit's plots first, twice as tall as the others; the energy in two plots, stored and
 //! moving; the couplings' tensions — a contact's normal force named as such; the catenaries' end tensions, their
 //! grounded lengths on a seabed, and the contacts' forces when there are any; each floating
-//! body's motion in the water, and a potential-flow body's radiation force and excitation); the `sim_time` timeline; the viewer's own side panels folded,
-//! room being short beside the control panel. The 3D view's eye frames what moves
+//! body's motion in the water, and a potential-flow body's radiation force and excitation); the
+//! `sim_time` timeline; the viewer's own side panels folded, room being short beside the control
+//! panel. The 3D view's eye frames what moves
 //! ([`crate::framing`]), or follows a body the user chose.
 //!
 //! Rerun's Rust SDK 0.36 builds a 3D view without its eye (its Python SDK has `eye_controls`; the

@@ -50,9 +50,9 @@ pub const WATER_SURFACE: &str = "world/water/surface";
 pub const SEABED: &str = "world/water/seabed";
 /// The floating bodies' plots.
 pub const WATER_PLOTS: &str = "plots/water";
-/// A potential-flow body's plot of its radiation force, and of its wave excitation
-/// ([`water_plot`]).
+/// A potential-flow body's plot of its radiation force ([`water_plot`]).
 pub const RADIATION_PLOT: &str = "radiation";
+/// A potential-flow body's plot of its wave excitation ([`water_plot`]).
 pub const EXCITATION_PLOT: &str = "excitation";
 
 /// The seabed plane of a scene without water.

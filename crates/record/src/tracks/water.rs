@@ -132,11 +132,11 @@ impl WaterTrack {
     /// Floating bodies (each has an arrow and two plots, two more with potential flow), and the
     /// surface.
     pub(super) fn entities(&self) -> usize {
-        1 + 3 * self.floating.len() + 2 * self.potential_bodies().count()
+        1 + 3 * self.floating.len() + 2 * self.potential_plots().count()
     }
 
     /// The radiation and excitation plots of each floating body that has them.
-    fn potential_bodies(&self) -> impl Iterator<Item = &[String; 2]> {
+    fn potential_plots(&self) -> impl Iterator<Item = &[String; 2]> {
         self.floating.iter().filter_map(|f| f.potential_paths.as_ref())
     }
 
@@ -209,7 +209,7 @@ impl Track for WaterTrack {
             stream
                 .log_static(floating.angles_path.as_str(), &rerun::SeriesLines::new().with_names(["roll", "pitch"]))?;
         }
-        for paths in self.potential_bodies() {
+        for paths in self.potential_plots() {
             for path in paths {
                 stream.log_static(path.as_str(), &rerun::SeriesLines::new().with_names(FORCE_SERIES))?;
             }
@@ -288,8 +288,8 @@ impl Track for WaterTrack {
                 )?;
             }
         }
-        let potential = self.potential_bodies().count();
-        for (index, paths) in self.potential_bodies().enumerate() {
+        let potential = self.potential_plots().count();
+        for (index, paths) in self.potential_plots().enumerate() {
             for (path, values) in paths.iter().zip([&self.radiation, &self.excitation]) {
                 let values = of_entity(values, index, potential).flatten().collect();
                 send_chunk(stream, path, frames.columns(), vec![plot(values, 6)], sent)?;

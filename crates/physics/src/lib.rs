@@ -59,6 +59,7 @@ pub mod natural_periods;
 pub mod parameter;
 pub mod potential;
 pub mod rao;
+pub mod rao_time_domain;
 pub mod seabed;
 pub mod simd;
 pub mod stability;

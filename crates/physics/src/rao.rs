@@ -13,7 +13,7 @@
 //!   `−m g z_{G−P}` of roll and pitch. The same mesh the time domain floats, so a small regular
 //!   wave settles to this `ξ`.
 
-use crate::body::BodyState;
+use crate::body::{BodyFrame, BodyState};
 use crate::coupling::CouplingError;
 use crate::evaluation::Evaluation;
 use crate::math::{Mat3, Rotation, Vec3};
@@ -48,6 +48,8 @@ pub enum RaoError {
 /// A body's linear model about its reference point: its data, mass and stiffness.
 #[derive(Debug, Clone)]
 pub struct LinearModel {
+    /// The body's index in the system.
+    index: usize,
     body: Arc<PotentialBody>,
     /// `M_P` (module docs).
     pub mass: Matrix6,
@@ -88,12 +90,22 @@ impl LinearModel {
         let arm = model.arm(&state.frame());
         let mass = mass_about(system, index, &arm);
         let stiffness = stiffness_about(system, index, &arm)?;
-        Ok(Self { body: model, mass, stiffness })
+        Ok(Self { index, body: model, mass, stiffness })
     }
 
     /// The panel code's data.
     pub fn coefficients(&self) -> &Coefficients {
         self.body.coefficients()
+    }
+
+    /// The body's index in the system.
+    pub fn body(&self) -> usize {
+        self.index
+    }
+
+    /// `r = x_P − x_G` \[m], world axes, at `frame`.
+    pub fn arm(&self, frame: &BodyFrame) -> Vec3 {
+        self.body.arm(frame)
     }
 
     /// The index of `heading` \[rad] among the file's excitation headings (modulo 2π).

@@ -9,11 +9,11 @@
 use tether_test_support as common;
 
 use common::{repo, scene};
-use nalgebra::Complex;
 use std::f64::consts::PI;
 use tether_physics::body::BodyState;
-use tether_physics::potential::{Coefficients, Matrix6, Vector6};
+use tether_physics::potential::{Coefficients, ComplexVector6, Matrix6, Vector6};
 use tether_physics::rao::LinearModel;
+use tether_physics::rao_time_domain::RegularWaveRun;
 use tether_physics::stability::Limiter;
 use tether_physics::world::World;
 use tether_scene::wamit::{Scale, read};
@@ -109,41 +109,15 @@ fn motion(world: &World, start: &BodyState) -> [f64; 3] {
     [state.position.x - start.position.x, state.position.z - start.position.z, turn.y]
 }
 
-/// The least-squares fit of `c0 + c1 t + A cos ωt + B sin ωt` to `(t, x)`: `A − iB`.
-fn harmonic(samples: &[(f64, f64)], omega: f64) -> Complex<f64> {
-    let rows = samples.len();
-    let basis = nalgebra::DMatrix::from_fn(rows, 4, |r, c| {
-        let t = samples[r].0;
-        [1.0, t, (omega * t).cos(), (omega * t).sin()][c]
-    });
-    let values = nalgebra::DVector::from_fn(rows, |r, _| samples[r].1);
-    let fit = (basis.transpose() * &basis).lu().solve(&(basis.transpose() * values)).expect("a regular fit");
-    Complex::new(fit[2], -fit[3])
-}
-
-/// Wave amplitude of the regular-wave runs \[m]: small enough to be linear.
-const AMPLITUDE: f64 = 0.05;
-
-/// Runs the cylinder in regular waves of period `period`, ramped over 60 s, and returns the
-/// settled surge, heave and pitch per unit wave amplitude (`ξ`, WAMIT's convention), fitted over
-/// the last `max(3 T, 40 s)` of 300 s.
-fn settled(period: f64) -> [Complex<f64>; 3] {
-    let water = format!("waves: Regular(height: {:e}, period: {period:e}), ramp: 60.0", 2.0 * AMPLITUDE);
-    let mut world = cylinder(&water, 0.0, "", 0.02);
-    let start = world.state(0);
-    let end = 300.0;
-    let from = end - (3.0 * period).max(40.0);
-    let mut samples: [Vec<(f64, f64)>; 3] = Default::default();
-    while world.time() < end - 0.5 * world.dt() {
-        world.step().expect("a stable cylinder");
-        if world.time() >= from {
-            for (dof, x) in motion(&world, &start).into_iter().enumerate() {
-                samples[dof].push((world.time(), x));
-            }
-        }
-    }
-    let omega = 2.0 * PI / period;
-    std::array::from_fn(|dof| harmonic(&samples[dof], omega) / AMPLITUDE)
+/// The settled response per unit wave amplitude (`ξ`, WAMIT's convention) of the calm
+/// cylinder in regular waves of period `period`, measured as `tether rao --time-domain` does it
+/// (`tether_physics::rao_time_domain`): 0.05 m waves ramped over 60 s, fitted over the last
+/// `max(3 T, 40 s)` of 300 s.
+fn settled(period: f64) -> ComplexVector6 {
+    let world = cylinder("", 0.0, "", 0.02);
+    let model = LinearModel::new(world.system(), "cylinder").expect("a body with potential data");
+    let run = RegularWaveRun::new(0.05, 60.0, Some(300.0)).expect("valid settings");
+    run.measure(world, &model, period, 0.0).expect("a stable cylinder")
 }
 
 /// Check 2 of issue 33: at eight periods from 4 to 30 s, the settled surge, heave and pitch in
@@ -157,8 +131,8 @@ fn the_settled_response_in_regular_waves_is_the_frequency_domain_solve() {
         let omega = 2.0 * PI / period;
         let xi = model.rao(&[omega], 0)[0].response.expect("damped");
         let measured = settled(period);
-        for (k, dof) in [0, 2, 4].into_iter().enumerate() {
-            let (expected, got) = (xi[dof], measured[k]);
+        for dof in [0, 2, 4] {
+            let (expected, got) = (xi[dof], measured[dof]);
             let amplitude = (got.norm() - expected.norm()) / expected.norm();
             let phase = (got / expected).arg().to_degrees();
             println!(

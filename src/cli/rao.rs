@@ -5,12 +5,23 @@
 //! ([`tether_physics::rao`]): per dof the amplitude per metre of wave (m/m, deg/m) and the phase
 //! \[deg] in WAMIT's convention (`q = Re{a ξ e^{iωt}}`, a positive phase leads the wave's crest
 //! at the reference point).
+//!
+//! With `--time-domain` the same RAOs are also measured from regular-wave runs of the scene
+//! ([`tether_physics::rao_time_domain`]), one per period on every core, and printed beside the
+//! solve with their difference. The runs keep the scene's couplings, drag and other bodies; the
+//! solve has none of them (a free-floating body), so a moored body's two columns differ by its
+//! moorings.
 
 use anyhow::{Context as _, bail};
 use clap::Args;
 use std::f64::consts::TAU;
+use std::io::IsTerminal as _;
 use std::path::PathBuf;
+use tether::runner::Runner;
+use tether_physics::potential::ComplexVector6;
 use tether_physics::rao::{LinearModel, RaoRow};
+use tether_physics::rao_time_domain::RegularWaveRun;
+use tether_physics::world::World;
 
 #[derive(Debug, Args)]
 pub struct RaoArgs {
@@ -29,13 +40,36 @@ pub struct RaoArgs {
     /// Also write the table as CSV.
     #[arg(long, value_name = "FILE")]
     csv: Option<PathBuf>,
+    /// Also measure the RAOs from a run of the scene in regular waves at each period (its sea
+    /// replaced; its couplings kept), printed beside the frequency-domain solve.
+    #[arg(long)]
+    time_domain: bool,
+    /// With --time-domain: the waves' amplitude [m] (default 0.05).
+    #[arg(long, allow_hyphen_values = true)]
+    amplitude: Option<f64>,
+    /// With --time-domain: the time the waves are ramped in over [s] (default 60).
+    #[arg(long, allow_hyphen_values = true)]
+    ramp: Option<f64>,
+    /// With --time-domain: each run's length [s] (default: max(300 s, ramp + 2 × max(3 T, 40 s));
+    /// the motion is fitted over its last max(3 T, 40 s)).
+    #[arg(long, allow_hyphen_values = true)]
+    duration: Option<f64>,
 }
 
 /// The six dofs, with the unit of their amplitude per metre of wave.
 const DOFS: [(&str, &str); 6] =
     [("surge", "m/m"), ("sway", "m/m"), ("heave", "m/m"), ("roll", "deg/m"), ("pitch", "deg/m"), ("yaw", "deg/m")];
 
+/// The waves' amplitude \[m] and ramp \[s] of `--time-domain` unless told.
+const AMPLITUDE: f64 = 0.05;
+const RAMP: f64 = 60.0;
+
+/// A dof whose frequency-domain amplitude is below this fraction of the period's largest gets
+/// no difference: a percentage of numerical noise (sway and roll in head seas) says nothing.
+const NEGLIGIBLE: f64 = 1e-3;
+
 pub fn run(args: &RaoArgs) -> anyhow::Result<()> {
+    let measuring = regular_wave_run(args)?;
     let loaded = super::load(&args.scene)?;
     let label = args.scene.display().to_string();
     let system = loaded.world.system();
@@ -55,17 +89,95 @@ pub fn run(args: &RaoArgs) -> anyhow::Result<()> {
         None => model.coefficients().frequencies().to_vec(),
     };
     let rows = model.rao(&omegas, index);
-    let header = format!(
-        "{label}: RAOs of body \"{}\" in waves toward {:.1}°, per metre of wave amplitude; phase in WAMIT's convention (leads the crest at the reference point)\n\n",
+    let measured = match &measuring {
+        Some(run) => {
+            for omega in &omegas {
+                run.check(TAU / omega).context("--time-domain")?;
+            }
+            Some(measure(&loaded.world, &model, run, &omegas, heading).with_context(|| label.clone())?)
+        }
+        None => None,
+    };
+    let mut header = format!(
+        "{label}: RAOs of body \"{}\" in waves toward {:.1}°, per metre of wave amplitude; phase in WAMIT's convention (leads the crest at the reference point)\n",
         args.body,
         heading.to_degrees()
     );
-    super::print(&(header + &text(&rows)))?;
+    let table = match (&measuring, &measured) {
+        (Some(run), Some(measured)) => {
+            header += &format!(
+                "frequency domain: the panel data with the body's mass and its mesh's hydrostatic stiffness (free floating: no couplings, no drag)\n\
+                 time domain: the scene run in regular waves of {} m ramped over {} s, its couplings, drag and other bodies kept; \
+                 fitted over the last max(3 T, 40 s) of each run ({})\n",
+                run.amplitude(),
+                run.ramp(),
+                durations(run, &omegas)
+            );
+            comparison(&rows, measured)
+        }
+        _ => text(&rows),
+    };
+    super::print(&(header + "\n" + &table))?;
     if let Some(path) = &args.csv {
-        std::fs::write(path, csv(&rows)).with_context(|| format!("{}: cannot write", path.display()))?;
+        std::fs::write(path, csv(&rows, measured.as_deref()))
+            .with_context(|| format!("{}: cannot write", path.display()))?;
         super::print(&format!("\nwrote {}\n", path.display()))?;
     }
     Ok(())
+}
+
+/// The regular-wave runs `--time-domain` asks for; `--amplitude`, `--ramp` or `--duration`
+/// without it refused.
+fn regular_wave_run(args: &RaoArgs) -> anyhow::Result<Option<RegularWaveRun>> {
+    if !args.time_domain {
+        let given = [("--amplitude", args.amplitude), ("--ramp", args.ramp), ("--duration", args.duration)];
+        if let Some((flag, _)) = given.iter().find(|(_, value)| value.is_some()) {
+            bail!("{flag} sets the regular-wave runs: it needs --time-domain");
+        }
+        return Ok(None);
+    }
+    let run = RegularWaveRun::new(args.amplitude.unwrap_or(AMPLITUDE), args.ramp.unwrap_or(RAMP), args.duration)
+        .context("--time-domain")?;
+    Ok(Some(run))
+}
+
+/// `ξ` measured at each of `omegas` \[rad/s] by a run of a copy of `world` on every core; a
+/// progress line on stderr when it is a terminal.
+fn measure(
+    world: &World,
+    model: &LinearModel,
+    run: &RegularWaveRun,
+    omegas: &[f64],
+    heading: f64,
+) -> anyhow::Result<Vec<ComplexVector6>> {
+    let mut measured = vec![None; omegas.len()];
+    let progress = std::io::stderr().is_terminal();
+    let mut finished = 0;
+    let outcome = Runner::on_all_cores().run(
+        omegas.iter().copied().enumerate(),
+        |&(_, omega), _| run.measure(world.clone(), model, TAU / omega, heading),
+        |(position, omega), result| {
+            let xi = result.with_context(|| format!("the run at T = {:.3} s", TAU / omega))?;
+            measured[position] = Some(xi);
+            finished += 1;
+            if progress {
+                eprint!("\rtime domain: {finished} of {} periods run", omegas.len());
+            }
+            anyhow::Ok(())
+        },
+    );
+    if progress && finished > 0 {
+        eprintln!();
+    }
+    outcome?;
+    measured.into_iter().collect::<Option<Vec<_>>>().context("a period was not run")
+}
+
+/// Each run's length, or the range of them.
+fn durations(run: &RegularWaveRun, omegas: &[f64]) -> String {
+    let lengths = omegas.iter().map(|omega| run.duration(TAU / omega));
+    let (least, most) = lengths.fold((f64::INFINITY, 0.0_f64), |(a, b), d| (a.min(d), b.max(d)));
+    if least == most { format!("{least} s") } else { format!("{least} to {most} s") }
 }
 
 /// The heading of the sea's first wave component \[rad], 0 in calm water.
@@ -73,16 +185,12 @@ fn sea_heading(system: &tether_physics::system::System) -> f64 {
     system.water().and_then(|stage| stage.water.sea().components().first().map(|c| c.heading)).unwrap_or(0.0)
 }
 
-/// Period \[s], ω \[rad/s], then amplitude and phase \[deg] per dof of `row` (rotations in deg/m);
-/// `None` for a singular system.
-fn values(row: &RaoRow) -> (f64, f64, Option<[(f64, f64); 6]>) {
-    let columns = row.response.map(|xi| {
-        std::array::from_fn(|dof| {
-            let scale = if dof < 3 { 1.0 } else { 1.0_f64.to_degrees() };
-            (xi[dof].norm() * scale, xi[dof].arg().to_degrees())
-        })
-    });
-    (TAU / row.omega, row.omega, columns)
+/// Amplitude and phase \[deg] per dof of `xi` (rotations in deg/m).
+fn polar(xi: &ComplexVector6) -> [(f64, f64); 6] {
+    std::array::from_fn(|dof| {
+        let scale = if dof < 3 { 1.0 } else { 1.0_f64.to_degrees() };
+        (xi[dof].norm() * scale, xi[dof].arg().to_degrees())
+    })
 }
 
 /// The table for people: one line per frequency.
@@ -93,11 +201,10 @@ fn text(rows: &[RaoRow]) -> String {
     }
     out += "\n";
     for row in rows {
-        let (period, omega, columns) = values(row);
-        out += &format!("{period:>9.3} {omega:>9.4}");
-        match columns {
-            Some(columns) => {
-                for (amplitude, phase) in columns {
+        out += &format!("{:>9.3} {:>9.4}", TAU / row.omega, row.omega);
+        match &row.response {
+            Some(xi) => {
+                for (amplitude, phase) in polar(xi) {
                     out += &format!(" {amplitude:>15.5} {phase:>8.2}");
                 }
             }
@@ -108,24 +215,76 @@ fn text(rows: &[RaoRow]) -> String {
     out
 }
 
-/// The same table as CSV, one row per frequency (a singular one left empty).
-fn csv(rows: &[RaoRow]) -> String {
+/// The time domain beside the frequency domain, one line per period and dof, and the largest
+/// differences.
+fn comparison(rows: &[RaoRow], measured: &[ComplexVector6]) -> String {
+    let mut out = format!(
+        "{:>9} {:>9}  {:<14} {:>20} {:>20} {:>18}\n",
+        "T [s]", "ω [rad/s]", "dof", "frequency domain", "time domain", "time − frequency"
+    );
+    let cell = |(amplitude, phase): (f64, f64)| format!("{amplitude:.5} ∠{phase:>8.2}°");
+    // (|%|, °, where) of the largest amplitude and phase differences.
+    let mut worst: [(f64, String); 2] = Default::default();
+    for (row, td) in rows.iter().zip(measured) {
+        let period = TAU / row.omega;
+        let largest = row.response.map_or(0.0, |fd| fd.iter().map(|x| x.norm()).fold(0.0, f64::max));
+        for (dof, ((name, unit), td_polar)) in DOFS.iter().zip(polar(td)).enumerate() {
+            let lead = if dof == 0 { format!("{period:>9.3} {:>9.4}", row.omega) } else { " ".repeat(19) };
+            let fd_cell = row.response.map_or_else(|| "singular".to_string(), |fd| cell(polar(&fd)[dof]));
+            let difference = row.response.filter(|fd| fd[dof].norm() >= NEGLIGIBLE * largest).map(|fd| {
+                let amplitude = 100.0 * (td[dof].norm() / fd[dof].norm() - 1.0);
+                let phase = (td[dof] / fd[dof]).arg().to_degrees();
+                let at = format!("{name} at T = {period:.3} s");
+                for (slot, value) in worst.iter_mut().zip([amplitude, phase]) {
+                    if value.abs() > slot.0.abs() {
+                        *slot = (value, at.clone());
+                    }
+                }
+                format!("{amplitude:>+8.2} % {phase:>+7.2}°")
+            });
+            out += &format!(
+                "{lead}  {:<14} {fd_cell:>20} {:>20} {:>18}\n",
+                format!("{name} [{unit}]"),
+                cell(td_polar),
+                difference.unwrap_or_else(|| "—".to_string())
+            );
+        }
+    }
+    let [(amplitude, amplitude_at), (phase, phase_at)] = worst;
+    out += &format!(
+        "\nlargest differences (dofs above {NEGLIGIBLE:e} of their period's largest response): {amplitude:+.2} % ({amplitude_at}), {phase:+.2}° ({phase_at})\n"
+    );
+    out
+}
+
+/// The same table as CSV, one row per frequency (a singular one left empty), the time domain's
+/// columns after the frequency domain's when measured.
+fn csv(rows: &[RaoRow], measured: Option<&[ComplexVector6]>) -> String {
     let mut out = "period_s,omega_rad_s".to_string();
-    for (name, unit) in DOFS {
-        let unit = unit.replace('/', "_per_");
-        out += &format!(",{name}_{unit},{name}_phase_deg");
+    let columns = |out: &mut String, tag: &str| {
+        for (name, unit) in DOFS {
+            let unit = unit.replace('/', "_per_");
+            *out += &format!(",{name}{tag}_{unit},{name}{tag}_phase_deg");
+        }
+    };
+    columns(&mut out, "");
+    if measured.is_some() {
+        columns(&mut out, "_td");
     }
     out += "\n";
-    for row in rows {
-        let (period, omega, columns) = values(row);
-        out += &format!("{period},{omega}");
-        match columns {
-            Some(columns) => {
-                for (amplitude, phase) in columns {
-                    out += &format!(",{amplitude},{phase}");
+    for (position, row) in rows.iter().enumerate() {
+        out += &format!("{},{}", TAU / row.omega, row.omega);
+        let cells = |out: &mut String, xi: Option<&ComplexVector6>| match xi {
+            Some(xi) => {
+                for (amplitude, phase) in polar(xi) {
+                    *out += &format!(",{amplitude},{phase}");
                 }
             }
-            None => out += &",".repeat(12),
+            None => *out += &",".repeat(12),
+        };
+        cells(&mut out, row.response.as_ref());
+        if let Some(measured) = measured {
+            cells(&mut out, measured.get(position));
         }
         out += "\n";
     }

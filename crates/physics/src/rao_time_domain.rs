@@ -81,6 +81,16 @@ impl RegularWaveRun {
         })
     }
 
+    /// `a` \[m].
+    pub fn amplitude(&self) -> f64 {
+        self.amplitude
+    }
+
+    /// `T_r` \[s].
+    pub fn ramp(&self) -> f64 {
+        self.ramp
+    }
+
     /// `t_w = max(3 T, 40 s)` \[s] for period `period` \[s].
     pub fn window(period: f64) -> f64 {
         (WINDOW_PERIODS * period).max(WINDOW_LEAST)
@@ -100,7 +110,13 @@ impl RegularWaveRun {
         let period = require("period", period, Bound::Positive, "s")?;
         let (duration, window) = (self.duration(period), Self::window(period));
         if duration - window < self.ramp {
-            return Err(TimeDomainError::TooShort { period, duration, ramp: self.ramp, window, needed: self.ramp + window });
+            return Err(TimeDomainError::TooShort {
+                period,
+                duration,
+                ramp: self.ramp,
+                window,
+                needed: self.ramp + window,
+            });
         }
         Ok(())
     }
@@ -199,7 +215,8 @@ mod tests {
     #[test]
     fn the_fit_returns_the_amplitude_of_an_exact_harmonic() {
         let omega = 0.7;
-        let expected: [Complex<f64>; 6] = std::array::from_fn(|d| Complex::from_polar(1.0 + d as f64, 0.4 * d as f64 - 1.0));
+        let expected: [Complex<f64>; 6] =
+            std::array::from_fn(|d| Complex::from_polar(1.0 + d as f64, 0.4 * d as f64 - 1.0));
         let mut fit = HarmonicFit::new(omega, 250.0);
         for n in 0..2000 {
             let t = 200.0 + 0.05 * f64::from(n);
@@ -222,8 +239,14 @@ mod tests {
             "a run of 120 s is too short for T = 30 s: it needs the ramp (60 s) and then max(3 T, 40 s) = 90 s to fit, 150 s in all"
         );
         assert_eq!(run.check(0.0).expect_err("zero").to_string(), "period must be > 0 s, got 0");
-        assert_eq!(RegularWaveRun::new(0.0, 60.0, None).expect_err("zero").to_string(), "amplitude must be > 0 m, got 0");
-        assert_eq!(RegularWaveRun::new(0.05, -1.0, None).expect_err("negative").to_string(), "ramp must be ≥ 0 s, got -1");
+        assert_eq!(
+            RegularWaveRun::new(0.0, 60.0, None).expect_err("zero").to_string(),
+            "amplitude must be > 0 m, got 0"
+        );
+        assert_eq!(
+            RegularWaveRun::new(0.05, -1.0, None).expect_err("negative").to_string(),
+            "ramp must be ≥ 0 s, got -1"
+        );
         let default = RegularWaveRun::new(0.05, 60.0, None).expect("valid");
         assert_eq!(default.duration(8.0), 300.0);
         assert_eq!(default.duration(100.0), 660.0);

@@ -548,3 +548,60 @@ fn rao_time_domain_refuses_bad_settings_and_names_a_diverging_period() {
         assert!(out.stdout.is_empty(), "{flags:?}: nothing printed before the error");
     }
 }
+
+/// Issue 33: `tether check` prints each potential-flow body's radiation model. The state space
+/// (validation/potential-flow/cylinder.ron, the default fit): its total states, the sum of its
+/// pairs' as the library fitted them, and its worst pair's error, the library's to the printed
+/// digits and below the scene's `fit_error`; each pair on its own. The direct convolution: its
+/// kernel's length and step and the samples summed per evaluation, `t_K/Δt + 1`.
+#[test]
+fn check_prints_the_radiation_fit_of_each_potential_flow_body() {
+    let scene = "validation/potential-flow/cylinder.ron";
+    let out = tether(&["check", scene]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let loaded = tether_scene::load(std::path::Path::new(scene)).unwrap();
+    let stage = loaded.world.system().water().unwrap();
+    let model = &stage.floating[0].potential.as_ref().unwrap().model;
+    let tether_physics::potential::Radiation::StateSpace(fit) = model.radiation() else { panic!("the default method") };
+    let line = stdout.lines().find(|l| l.contains("radiation: state space")).unwrap_or_else(|| panic!("{stdout}"));
+    println!("{line}");
+    // "…: N states over P pairs, worst error E (Kij); fit_error F, max_order M"
+    let number_before = |tag: &str| -> f64 {
+        let head = &line[..line.find(tag).unwrap_or_else(|| panic!("{tag:?} in {line}"))];
+        head.split_whitespace().last().unwrap().trim_end_matches(',').parse().unwrap()
+    };
+    let number_after = |tag: &str| -> f64 {
+        let tail = &line[line.find(tag).unwrap_or_else(|| panic!("{tag:?} in {line}")) + tag.len()..];
+        tail.split_whitespace().next().unwrap().trim_end_matches([',', ';']).parse().unwrap()
+    };
+    let states: usize = fit.pairs().iter().map(|p| p.states()).sum();
+    let worst = fit.pairs().iter().map(|p| p.error).fold(0.0, f64::max);
+    assert_eq!(number_before(" states over") as usize, states);
+    assert_eq!(number_before(" pairs,") as usize, fit.pairs().len());
+    assert_relative_eq!(number_after("worst error "), worst, max_relative = 1e-3);
+    let fit_error = number_after("fit_error ");
+    assert_eq!(fit_error, 1e-2, "the scene's default");
+    assert!(number_after("worst error ") < fit_error);
+    for pair in fit.pairs() {
+        let printed = format!("K{}{} {:>2} states {:.2e}", pair.i + 1, pair.j + 1, pair.states(), pair.error);
+        assert!(stdout.contains(&printed), "{printed} in {stdout}");
+    }
+    // The same body by direct convolution.
+    let dir = tempfile::tempdir().unwrap();
+    let convolution = dir.path().join("convolution.ron");
+    let file = common::repo("validation/potential-flow/cylinder/cylinder");
+    let text = std::fs::read_to_string(scene).unwrap().replace(
+        "file: \"cylinder/cylinder\"",
+        &format!("file: {file:?}, radiation: Convolution, kernel_duration: 30.0"),
+    );
+    std::fs::write(&convolution, text).unwrap();
+    let out = tether(&["check", convolution.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.contains(
+            "radiation: direct convolution with K(t) sampled over 30 s every 0.05 s: about 1501 velocity samples"
+        ),
+        "{stdout}"
+    );
+}

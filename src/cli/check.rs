@@ -6,6 +6,7 @@ use tether_physics::coupling::contact::Opposing;
 use tether_physics::coupling::lumped_line::{Discrete, statics};
 use tether_physics::coupling::{Catenary, Contact, CouplingKind, ElasticLaw, Endpoint, LineModel, LumpedMass};
 use tether_physics::math::{Mat3, Vec3};
+use tether_physics::potential::{PotentialBody, Radiation, RadiationStateSpace};
 use tether_physics::stability;
 use tether_physics::water::WaveSpec;
 use tether_physics::water::dispersion::wavelength;
@@ -231,6 +232,9 @@ fn water_report(out: &mut String, world: &World) {
             record.submerged_volume,
             v(&record.total().force)
         );
+        if let Some(potential) = &floating.potential {
+            potential_report(out, world, index, &potential.model);
+        }
         if body.is_kinematic() {
             let _ = writeln!(out, "  kinematic: its motion is prescribed and the water does not act on it");
             continue;
@@ -276,6 +280,67 @@ fn water_report(out: &mut String, world: &World) {
                 );
             }
         }
+    }
+}
+
+/// Pairs of the radiation fit printed on one line.
+const PAIRS_PER_LINE: usize = 4;
+
+/// A body's potential flow (PHYSICS.md §9): the panel data's extent, and how its radiation
+/// memory is evaluated — the state space's order and fit error per kernel pair, or the direct
+/// convolution's samples per evaluation.
+fn potential_report(out: &mut String, world: &World, index: usize, model: &PotentialBody) {
+    let coefficients = model.coefficients();
+    let omegas = coefficients.frequencies();
+    let headings: Vec<String> =
+        coefficients.excitation().headings.iter().map(|b| format!("{}", b.to_degrees())).collect();
+    let frame = world.state(index).frame();
+    let _ = writeln!(
+        out,
+        "  potential flow: {} frequencies, {:.4} to {:.4} rad/s; headings {}°; reference point at {} m",
+        omegas.len(),
+        omegas.first().copied().unwrap_or(0.0),
+        omegas.last().copied().unwrap_or(0.0),
+        headings.join(", "),
+        v(&(frame.position + model.arm(&frame)))
+    );
+    match model.radiation() {
+        Radiation::StateSpace(fit) => state_space_report(out, fit),
+        Radiation::Convolution(kernel) => {
+            let samples = (kernel.duration() / world.step_size()).ceil() + 1.0;
+            let _ = writeln!(
+                out,
+                "  radiation: direct convolution with K(t) sampled over {} s every {} s: about {samples} velocity samples, each times the 6 × 6 kernel, per evaluation (t_K over the {} s step)",
+                kernel.duration(),
+                kernel.step(),
+                world.step_size()
+            );
+        }
+    }
+}
+
+/// The state space's size and fit: total states, pairs, the worst pair's error against the
+/// scene's `fit_error`, then each pair's order and error.
+fn state_space_report(out: &mut String, fit: &RadiationStateSpace) {
+    let (duration, step) = fit.kernel_sampling();
+    let settings = fit.settings();
+    let worst = fit.pairs().iter().max_by(|a, b| a.error.total_cmp(&b.error));
+    let worst = worst.map_or_else(
+        || "no pair to fit".to_string(),
+        |p| format!("worst error {:.3e} (K{}{})", p.error, p.i + 1, p.j + 1),
+    );
+    let _ = writeln!(
+        out,
+        "  radiation: state space fitted to K(t) over {duration} s every {step} s: {} states over {} pairs, {worst}; fit_error {:e}, max_order {}",
+        fit.state_count(),
+        fit.pairs().len(),
+        settings.tolerance(),
+        settings.max_order()
+    );
+    for line in fit.pairs().chunks(PAIRS_PER_LINE) {
+        let pairs: Vec<String> =
+            line.iter().map(|p| format!("K{}{} {:>2} states {:.2e}", p.i + 1, p.j + 1, p.states(), p.error)).collect();
+        let _ = writeln!(out, "    {}", pairs.join("   "));
     }
 }
 

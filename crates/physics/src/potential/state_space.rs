@@ -53,6 +53,10 @@ impl FitSettings {
     pub fn tolerance(&self) -> f64 {
         self.tolerance
     }
+    /// The highest order a pair may be fitted with.
+    pub fn max_order(&self) -> u32 {
+        self.max_order
+    }
 }
 
 /// Why a kernel could not be fitted.
@@ -120,6 +124,11 @@ impl PairFit {
 pub struct RadiationStateSpace {
     pairs: Vec<PairFit>,
     states: usize,
+    /// What the fit was asked for.
+    settings: FitSettings,
+    /// The fitted kernel's truncation `t_K` and sampling step \[s].
+    kernel_duration: f64,
+    kernel_step: f64,
 }
 
 /// A diagonal term peaking below this fraction of the largest of its kind (translations,
@@ -175,7 +184,7 @@ impl RadiationStateSpace {
                 pairs.push(fitted);
             }
         }
-        Ok(Self { pairs, states })
+        Ok(Self { pairs, states, settings, kernel_duration: kernel.duration(), kernel_step: kernel.step() })
     }
 
     /// The number of radiation states the body carries.
@@ -185,6 +194,14 @@ impl RadiationStateSpace {
     /// The fitted pairs: their order and error (what `tether check` prints).
     pub fn pairs(&self) -> &[PairFit] {
         &self.pairs
+    }
+    /// The error and highest order the fit was asked for.
+    pub fn settings(&self) -> FitSettings {
+        self.settings
+    }
+    /// The fitted kernel's truncation `t_K` and sampling step \[s].
+    pub fn kernel_sampling(&self) -> (f64, f64) {
+        (self.kernel_duration, self.kernel_step)
     }
     /// The fitted kernel matrix `K̂(t)`.
     pub fn kernel(&self, t: f64) -> Matrix6 {

@@ -31,7 +31,7 @@ fn report(world: &World, label: &str) -> String {
         world.substeps(),
         world.step_size()
     );
-    let _ = writeln!(out, "gravity {} m/s²", v(&world.gravity()));
+    let _ = writeln!(out, "gravity {} m/s²", v(world.gravity()));
     if let Some(seabed) = world.system().seabed() {
         let _ = writeln!(out, "seabed at z_b = {} m, line friction C_B = {}", seabed.elevation, seabed.line_friction);
     }

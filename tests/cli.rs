@@ -493,6 +493,7 @@ fn rao_time_domain_agrees_with_the_frequency_domain_solve() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(stdout.contains("time − frequency") && stdout.contains("largest differences"), "{stdout}");
+    assert!(out.stderr.is_empty(), "at rest, no warning: {}", String::from_utf8_lossy(&out.stderr));
     let text = std::fs::read_to_string(&csv).unwrap();
     let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
     assert_eq!(header.len(), 26, "{header:?}");
@@ -604,4 +605,29 @@ fn check_prints_the_radiation_fit_of_each_potential_flow_body() {
         ),
         "{stdout}"
     );
+}
+
+/// A body not at rest at t = 0 is warned of, with the force left on it: the tests' fixture
+/// carries Capytaine's mass ρπR²T, heavier than the 32-sided mesh displaces at the 6 m draft by
+/// `ρ T (π R² − 16 R² sin(π/16))` = 1115.2 kg, 10 936 N (0.64 % of its weight), to 1 N.
+#[test]
+fn rao_warns_when_the_body_is_not_at_rest() {
+    let out = tether(&["rao", "tests/fixtures/rao/cylinder.ron", "--body", "cylinder", "--periods", "8"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let (rho, g, radius, draft) = (1025.0, 9.80665, 3.0, 6.0);
+    let excess = rho
+        * draft
+        * (std::f64::consts::PI * radius * radius - 16.0 * radius * radius * (std::f64::consts::PI / 16.0).sin());
+    let expected = excess * g;
+    let printed: f64 = stderr
+        .split(" leave ")
+        .nth(1)
+        .and_then(|tail| tail.split(" N on it").next())
+        .unwrap_or_else(|| panic!("{stderr}"))
+        .parse()
+        .unwrap();
+    println!("{stderr}expected {expected:.1} N");
+    assert!(stderr.starts_with("warning: tests/fixtures/rao/cylinder.ron: body \"cylinder\" is not at rest at t = 0"));
+    assert!((printed - expected).abs() < 1.0, "{printed} vs {expected}");
 }

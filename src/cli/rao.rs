@@ -64,9 +64,14 @@ const DOFS: [(&str, &str); 6] =
 const AMPLITUDE: f64 = 0.05;
 const RAMP: f64 = 60.0;
 
-/// A dof whose frequency-domain amplitude is below this fraction of the period's largest gets
-/// no difference: a percentage of numerical noise (sway and roll in head seas) says nothing.
+/// A response whose frequency-domain amplitude is below this fraction of its period's largest
+/// or of its dof's largest over the periods gets no difference: a percentage of numerical noise
+/// (sway and roll in head seas, heave far above its resonance) says nothing.
 const NEGLIGIBLE: f64 = 1e-3;
+
+/// The force left on a body at its initial pose, as a fraction of its weight, above which the
+/// body is not at rest.
+const UNBALANCED: f64 = 1e-3;
 
 pub fn run(args: &RaoArgs) -> anyhow::Result<()> {
     let measuring = regular_wave_run(args)?;
@@ -74,6 +79,7 @@ pub fn run(args: &RaoArgs) -> anyhow::Result<()> {
     let label = args.scene.display().to_string();
     let system = loaded.world.system();
     let model = LinearModel::new(system, &args.body).with_context(|| label.clone())?;
+    warn_if_not_at_rest(system, &model, &label, &args.body);
     let heading = match args.heading {
         Some(degrees) if degrees.is_finite() => degrees.to_radians(),
         Some(degrees) => bail!("--heading must be a number of degrees, got {degrees}"),
@@ -124,6 +130,18 @@ pub fn run(args: &RaoArgs) -> anyhow::Result<()> {
         super::print(&format!("\nwrote {}\n", path.display()))?;
     }
     Ok(())
+}
+
+/// Warns when the body's initial pose leaves more than [`UNBALANCED`] of its weight on it.
+fn warn_if_not_at_rest(system: &tether_physics::system::System, model: &LinearModel, label: &str, name: &str) {
+    let weight = system.bodies()[model.body()].mass() * system.gravity().norm();
+    let left = model.unbalanced.force.norm();
+    if left > UNBALANCED * weight {
+        eprintln!(
+            "warning: {label}: body \"{name}\" is not at rest at t = 0: its weight, the water and the couplings leave {left:.0} N on it ({:.2} % of its weight); the solve linearises about this pose and a time-domain run settles about another (start the scene at rest: tether equilibrium --write)",
+            100.0 * left / weight
+        );
+    }
 }
 
 /// The regular-wave runs `--time-domain` asks for; `--amplitude`, `--ramp` or `--duration`
@@ -177,7 +195,7 @@ fn measure(
 fn durations(run: &RegularWaveRun, omegas: &[f64]) -> String {
     let lengths = omegas.iter().map(|omega| run.duration(TAU / omega));
     let (least, most) = lengths.fold((f64::INFINITY, 0.0_f64), |(a, b), d| (a.min(d), b.max(d)));
-    if least == most { format!("{least} s") } else { format!("{least} to {most} s") }
+    if least == most { format!("{least:.0} s") } else { format!("{least:.0} to {most:.0} s") }
 }
 
 /// The heading of the sea's first wave component \[rad], 0 in calm water.
@@ -225,13 +243,17 @@ fn comparison(rows: &[RaoRow], measured: &[ComplexVector6]) -> String {
     let cell = |(amplitude, phase): (f64, f64)| format!("{amplitude:.5} ∠{phase:>8.2}°");
     // (|%|, °, where) of the largest amplitude and phase differences.
     let mut worst: [(f64, String); 2] = Default::default();
+    let dof_largest: [f64; 6] = std::array::from_fn(|dof| {
+        rows.iter().filter_map(|row| row.response.map(|fd| fd[dof].norm())).fold(0.0, f64::max)
+    });
     for (row, td) in rows.iter().zip(measured) {
         let period = TAU / row.omega;
         let largest = row.response.map_or(0.0, |fd| fd.iter().map(|x| x.norm()).fold(0.0, f64::max));
+        let small = |fd: &ComplexVector6, dof: usize| fd[dof].norm() < NEGLIGIBLE * largest.max(dof_largest[dof]);
         for (dof, ((name, unit), td_polar)) in DOFS.iter().zip(polar(td)).enumerate() {
             let lead = if dof == 0 { format!("{period:>9.3} {:>9.4}", row.omega) } else { " ".repeat(19) };
             let fd_cell = row.response.map_or_else(|| "singular".to_string(), |fd| cell(polar(&fd)[dof]));
-            let difference = row.response.filter(|fd| fd[dof].norm() >= NEGLIGIBLE * largest).map(|fd| {
+            let difference = row.response.filter(|fd| !small(fd, dof)).map(|fd| {
                 let amplitude = 100.0 * (td[dof].norm() / fd[dof].norm() - 1.0);
                 let phase = (td[dof] / fd[dof]).arg().to_degrees();
                 let at = format!("{name} at T = {period:.3} s");
@@ -252,7 +274,7 @@ fn comparison(rows: &[RaoRow], measured: &[ComplexVector6]) -> String {
     }
     let [(amplitude, amplitude_at), (phase, phase_at)] = worst;
     out += &format!(
-        "\nlargest differences (dofs above {NEGLIGIBLE:e} of their period's largest response): {amplitude:+.2} % ({amplitude_at}), {phase:+.2}° ({phase_at})\n"
+        "\nlargest differences (of responses above {NEGLIGIBLE:e} of their period's largest and of their dof's): {amplitude:+.2} % ({amplitude_at}), {phase:+.2}° ({phase_at})\n"
     );
     out
 }

@@ -13,7 +13,7 @@
 //!   `−m g z_{G−P}` of roll and pitch. The same mesh the time domain floats, so a small regular
 //!   wave settles to this `ξ`.
 
-use crate::body::{BodyFrame, BodyState};
+use crate::body::{BodyFrame, BodyState, Load};
 use crate::coupling::CouplingError;
 use crate::evaluation::Evaluation;
 use crate::math::{Mat3, Rotation, Vec3};
@@ -55,6 +55,10 @@ pub struct LinearModel {
     pub mass: Matrix6,
     /// `C` (module docs).
     pub stiffness: Matrix6,
+    /// What is left on the body at its initial pose in still water — weight, mesh pressure,
+    /// couplings — about G \[N, N·m]: zero for a body at rest, the pose the solve linearises
+    /// about; a time-domain run settles about another pose otherwise.
+    pub unbalanced: Load,
 }
 
 /// One frequency's response: `ξ` per unit wave amplitude (m/m, rad/m; WAMIT's phase).
@@ -90,7 +94,8 @@ impl LinearModel {
         let arm = model.arm(&state.frame());
         let mass = mass_about(system, index, &arm);
         let stiffness = stiffness_about(system, index, &arm)?;
-        Ok(Self { index, body: model, mass, stiffness })
+        let unbalanced = unbalanced(system, index)?;
+        Ok(Self { index, body: model, mass, stiffness, unbalanced })
     }
 
     /// The panel code's data.
@@ -149,6 +154,21 @@ pub fn mass_about(system: &System, index: usize, arm: &Vec3) -> Matrix6 {
     // P's accelerations to G's.
     let to_center = transfer(&-arm);
     to_center.transpose() * about_g * to_center
+}
+
+/// The load on body `index` at the initial pose in still water, at rest (`System::at_rest`):
+/// weight, mesh pressure and couplings \[N, N·m about G].
+///
+/// # Errors
+/// A coupling that cannot give its forces there.
+fn unbalanced(system: &System, index: usize) -> Result<Load, RaoError> {
+    let still = system.at_rest();
+    let states = still.initial_states();
+    let mut evaluation = Evaluation::new(states.len(), still.couplings());
+    still
+        .evaluate(states, &mut evaluation, 0.0)
+        .map_err(|e| RaoError::Evaluation { coupling: e.coupling, source: e.source })?;
+    Ok(evaluation.loads()[index])
 }
 
 /// `C` of body `index` (module docs) about P, `arm` = `r` \[m] at the initial pose.

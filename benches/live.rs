@@ -32,7 +32,9 @@ fn main() {
         std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR when it runs a test"),
     )
     .join("scenes/bench/chain100.ron");
-    let mut world = tether_scene::load(&path).expect("the shipped bench scene").world;
+    let scene = tether_scene::load(&path).expect("the shipped bench scene");
+    let duration = scene.file.duration;
+    let mut world = scene.world;
     // 6 s: the chain has fallen and its middle rests on the ground, every step pays for contact.
     for _ in 0..3000 {
         world.step().expect("the shipped scene is stable");
@@ -40,8 +42,8 @@ fn main() {
     println!("chain100 from t = 6 s, {} s per measurement", SPAN.as_secs());
     for round in 1..=ROUNDS {
         let headless = headless(world.clone());
-        let fastest = live(world.clone(), Speed::Max);
-        let real_time = live(world.clone(), Speed::Factor(1.0));
+        let fastest = live(world.clone(), duration, Speed::Max);
+        let real_time = live(world.clone(), duration, Speed::Factor(1.0));
         println!(
             "round {round}: headless {headless:.0} steps/s; GUI as fast as possible {:.0} steps/s ({:.0}% of headless), viewer ingestion {:.2} CPU s/s",
             fastest.steps_per_second,
@@ -88,7 +90,7 @@ struct Live {
 
 /// Runs `world` on the GUI's simulation thread at `speed` for [`SPAN`], its recording ingested
 /// as the embedded viewer ingests it.
-fn live(world: World, speed: Speed) -> Live {
+fn live(world: World, duration: f64, speed: Speed) -> Live {
     let (messages, inbox) = mpsc::channel::<Vec<LogMsg>>();
     let sink: Box<dyn LogSink> = Box::new(CallbackSink::new(move |batch: &[LogMsg]| {
         messages.send(batch.to_vec()).ok();
@@ -96,7 +98,7 @@ fn live(world: World, speed: Speed) -> Live {
     let viewer = std::thread::spawn(move || ingest(&inbox));
     let mut simulation =
         Simulation::spawn(Sinks::new(vec![sink]), std::sync::Arc::new(|| {})).expect("the simulation thread");
-    simulation.send(Command::Load(Box::new(Run { label: "chain100".into(), world })));
+    simulation.send(Command::Load(Box::new(Run { label: "chain100".into(), world, duration })));
     simulation.send(Command::SetSpeed(speed));
     simulation.send(Command::Play);
     let (cpu_start, start) = (process_cpu_seconds(), Instant::now());

@@ -6,6 +6,10 @@
 //! \[deg] in WAMIT's convention (`q = Re{a ξ e^{iωt}}`, a positive phase leads the wave's crest
 //! at the reference point).
 //!
+//! With `--natural-periods` it also prints the body's undamped natural periods and mode shapes at
+//! the scene's static equilibrium, couplings included ([`tether_physics::natural_periods`]: with
+//! `A(ω_n)` and with `A∞`).
+//!
 //! With `--time-domain` the same RAOs are also measured from regular-wave runs of the scene
 //! ([`tether_physics::rao_time_domain`]), one per period on every core, and printed beside the
 //! solve with their difference. The runs keep the scene's couplings, drag and other bodies; the
@@ -54,6 +58,10 @@ pub struct RaoArgs {
     /// the motion is fitted over its last max(3 T, 40 s)).
     #[arg(long, allow_hyphen_values = true)]
     duration: Option<f64>,
+    /// Also print the body's undamped natural periods and mode shapes at the static equilibrium
+    /// (couplings included), with A(ω_n) and with A∞.
+    #[arg(long)]
+    natural_periods: bool,
 }
 
 /// The six dofs, with the unit of their amplitude per metre of wave.
@@ -124,6 +132,9 @@ pub fn run(args: &RaoArgs) -> anyhow::Result<()> {
         _ => text(&rows),
     };
     super::print(&(header + "\n" + &table))?;
+    if args.natural_periods {
+        super::print(&natural_periods(system, &args.body).with_context(|| label.clone())?)?;
+    }
     if let Some(path) = &args.csv {
         std::fs::write(path, csv(&rows, measured.as_deref()))
             .with_context(|| format!("{}: cannot write", path.display()))?;
@@ -311,4 +322,37 @@ fn csv(rows: &[RaoRow], measured: Option<&[ComplexVector6]>) -> String {
         out += "\n";
     }
     out
+}
+
+/// The body's modes at the static equilibrium (`--natural-periods`), longest first: the period
+/// with `A(ω_n)` and with `A∞`, the dominant dof and the shape (m and rad, the dominant one 1).
+fn natural_periods(system: &tether_physics::system::System, name: &str) -> anyhow::Result<String> {
+    use tether_physics::natural_periods::{AddedMassAt, at_equilibrium};
+    use tether_physics::statics::{Settings, equilibrium};
+    let solved = equilibrium::solve(system, system.initial_states(), &[], &Settings::default())
+        .context("--natural-periods needs the static equilibrium")?;
+    let index = system.bodies().iter().position(|b| b.name == name).context("no such body")?;
+    let modes = |added| at_equilibrium(system, &solved, index, added).context("the body has no potential flow");
+    let (resonant, infinite) = (modes(AddedMassAt::Resonance)?, modes(AddedMassAt::Infinite)?);
+    let mut out = format!(
+        "\nnatural periods of body \"{name}\" at the static equilibrium, undamped (couplings included; PHYSICS.md §9):\n{:<7} {:>12} {:>12}  shape (surge sway heave [m], roll pitch yaw [rad])\n",
+        "mode", "A(ω_n) [s]", "A∞ [s]"
+    );
+    for mode in &resonant {
+        // The same mode with A∞: the one dominated by the same dof nearest in period.
+        let with_infinite = infinite
+            .iter()
+            .filter(|m| m.dominant == mode.dominant)
+            .map(|m| m.period)
+            .min_by(|a, b| (a - mode.period).abs().total_cmp(&(b - mode.period).abs()));
+        let shape: Vec<String> = mode.shape.iter().map(|x| format!("{x:+.3}")).collect();
+        out += &format!(
+            "{:<7} {:>12.3} {:>12}  {}\n",
+            DOFS[mode.dominant].0,
+            mode.period,
+            with_infinite.map_or_else(|| "—".to_owned(), |p| format!("{p:.3}")),
+            shape.join(" ")
+        );
+    }
+    Ok(out)
 }

@@ -8,9 +8,7 @@ use tether_test_support as common;
 
 use std::f64::consts::PI;
 use tether_physics::body::BodyState;
-use tether_physics::math::Mat3;
 use tether_physics::natural_periods::{self, AddedMassAt, NaturalMode};
-use tether_physics::potential::Matrix6;
 use tether_physics::statics::{Direction, Dof, Equilibrium, Settings, dofs::displace, equilibrium, offsets};
 use tether_scene::Scene;
 
@@ -209,16 +207,8 @@ const RELEASES: [Release; 4] = [
 fn natural_modes(added: AddedMassAt) -> Vec<NaturalMode> {
     let scene = spar();
     let solved = solve(&scene);
-    let system = scene.world.system();
-    let body = &system.bodies()[0];
-    let state = &solved.states[0];
-    let rotation = state.orientation.to_rotation_matrix().into_inner();
-    let inertia = rotation * Mat3::from_diagonal(&body.principal_moments()) * rotation.transpose();
-    let mut mass = Matrix6::identity() * body.mass();
-    mass.fixed_view_mut::<3, 3>(3, 3).copy_from(&inertia);
-    let floating = &system.water().expect("the spar floats").floating[0];
-    let model = &floating.potential.as_ref().expect("the scene's spar has potential flow").model;
-    natural_periods::natural_modes(model, &state.frame(), &mass, &solved.body_stiffness(0), added)
+    natural_periods::at_equilibrium(scene.world.system(), &solved, 0, added)
+        .expect("the scene's spar has potential flow")
 }
 
 /// The period of the mode dominated by `direction`'s dof [s] (surge and sway share one period

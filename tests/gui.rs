@@ -454,7 +454,7 @@ fn the_potential_flow_switch_reaches_the_running_world_and_shows_what_runs() {
     assert_eq!(forces.radiation.force.norm(), 0.0, "a fresh radiation memory: the body at rest before");
     assert!(forces.excitation.force.norm() > 1.0, "{forces:?}");
     drop(harness);
-    let names = |entity: &str| series_names(&shown, entity);
+    let names = |entity: &str| common::x11::series_names(&shown, entity);
     assert_eq!(
         names("/plots/water/cylinder/radiation"),
         ["Fx [N]", "Fy [N]", "Fz [N]", "Mx [N·m]", "My [N·m]", "Mz [N·m]"]
@@ -524,21 +524,6 @@ fn line_model(world: &World) -> LineModel {
     }
 }
 
-/// The series names the recording `path` gives entity `entity` (its static `SeriesLines`).
-fn series_names(path: &Path, entity: &str) -> Vec<String> {
-    let component = rerun::SeriesLines::descriptor_names().component;
-    let stores = common::x11::stores(path);
-    let mut names = Vec::new();
-    for store in stores.values() {
-        for chunk in store.iter_physical_chunks().filter(|c| c.is_static() && c.entity_path().to_string() == entity) {
-            for row in chunk.iter_slices::<String>(component) {
-                names = row.into_iter().map(|name| name.to_string()).collect();
-            }
-        }
-    }
-    names
-}
-
 /// A line switched to dynamic while it runs: its model reaches the world, its plot gains the
 /// quasi-static series docs/dynamic-lines.md promises (issue 35: they were missing after a live
 /// switch), a bad segment count is refused.
@@ -568,9 +553,9 @@ fn a_line_switches_to_dynamic_live_and_a_bad_segment_count_is_refused() {
     let nodes = world.evaluation().line_run(0).and_then(|run| run.nodes()).expect("the line has nodes");
     assert_eq!(nodes.positions.len(), 9, "8 segments, 9 nodes");
     drop(harness);
-    assert_eq!(series_names(&shown, "/plots/catenary"), ["rope end1", "rope end2"]);
+    assert_eq!(common::x11::series_names(&shown, "/plots/catenary"), ["rope end1", "rope end2"]);
     assert_eq!(
-        series_names(&shown, "/plots/catenary/quasi-static/rope"),
+        common::x11::series_names(&shown, "/plots/catenary/quasi-static/rope"),
         ["rope end1 quasi-static", "rope end2 quasi-static"]
     );
 }

@@ -344,22 +344,6 @@ fn the_water_is_recorded() {
     assert_eq!(rows.get("/plots/water/box/motion"), Some(&21), "{rows:?}");
 }
 
-/// The series names the recording `path` gives entity `entity` (its static `SeriesLines`).
-fn series_names(path: &std::path::Path, entity: &str) -> Vec<String> {
-    let component = rerun::SeriesLines::descriptor_names().component;
-    let mut file = std::fs::File::open(path).unwrap();
-    let stores = rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file).unwrap();
-    let mut names = Vec::new();
-    for store in stores.values() {
-        for chunk in store.iter_physical_chunks().filter(|c| c.is_static() && c.entity_path().to_string() == entity) {
-            for row in chunk.iter_slices::<String>(component) {
-                names = row.into_iter().map(|name| name.to_string()).collect();
-            }
-        }
-    }
-    names
-}
-
 /// Potential flow (PHYSICS.md §9): the cylinder of `tests/fixtures/rao/cylinder.ron` in its
 /// regular sea (0.1 m, 8 s) has its radiation force and wave excitation plotted every frame, six
 /// series each, equal to the world's water forces (about G, world axes) at steps 250, 500 and
@@ -373,7 +357,10 @@ fn a_potential_flow_body_has_its_radiation_and_excitation_plotted() {
     let rows = rows_per_entity(&out);
     for entity in ["/plots/water/cylinder/radiation", "/plots/water/cylinder/excitation"] {
         assert_eq!(rows.get(entity), Some(&201), "{entity}: {rows:?}");
-        assert_eq!(series_names(&out, entity), ["Fx [N]", "Fy [N]", "Fz [N]", "Mx [N·m]", "My [N·m]", "Mz [N·m]"]);
+        assert_eq!(
+            common::x11::series_names(&out, entity),
+            ["Fx [N]", "Fy [N]", "Fz [N]", "Mx [N·m]", "My [N·m]", "Mz [N·m]"]
+        );
     }
     for entity in ["/plots/water/block/radiation", "/plots/water/block/excitation"] {
         assert_eq!(rows.get(entity), None, "{entity}: {rows:?}");

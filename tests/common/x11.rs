@@ -187,6 +187,20 @@ pub fn stores(path: &Path) -> BTreeMap<rerun::StoreId, rerun::ChunkStore> {
     try_stores(path).unwrap_or_else(|e| panic!("{}: {e:#}", path.display()))
 }
 
+/// The series names the recording `path` gives entity `entity` (its static `SeriesLines`).
+pub fn series_names(path: &Path, entity: &str) -> Vec<String> {
+    let component = rerun::SeriesLines::descriptor_names().component;
+    let mut names = Vec::new();
+    for store in stores(path).values() {
+        for chunk in store.iter_physical_chunks().filter(|c| c.is_static() && c.entity_path().to_string() == entity) {
+            for row in chunk.iter_slices::<String>(component) {
+                names = row.into_iter().map(|name| name.to_string()).collect();
+            }
+        }
+    }
+    names
+}
+
 /// Every store in an `.rrd` file, or why it cannot be read (yet: it may still be written).
 fn try_stores(path: &Path) -> anyhow::Result<BTreeMap<rerun::StoreId, rerun::ChunkStore>> {
     let mut file = std::fs::File::open(path)?;

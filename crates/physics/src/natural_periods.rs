@@ -19,7 +19,7 @@
 //! symmetric `K`, which the lines' stiffness about G need not be), hence the SVD for the shapes.
 
 use crate::body::BodyFrame;
-use crate::math::Mat3;
+use crate::potential::body::mass_at_center;
 use crate::potential::{Matrix6, PotentialBody, Vector6};
 use crate::statics::Equilibrium;
 use crate::system::System;
@@ -35,12 +35,8 @@ pub fn at_equilibrium(
 ) -> Option<Vec<NaturalMode>> {
     let floating = system.water()?.floating.iter().find(|f| f.body == index)?;
     let model = &floating.potential.as_ref()?.model;
-    let body = &system.bodies()[index];
     let state = &solved.states[index];
-    let rotation = state.orientation.to_rotation_matrix().into_inner();
-    let inertia = rotation * Mat3::from_diagonal(&body.principal_moments()) * rotation.transpose();
-    let mut mass = Matrix6::identity() * body.mass();
-    mass.fixed_view_mut::<3, 3>(3, 3).copy_from(&inertia);
+    let mass = mass_at_center(&system.bodies()[index], &state.orientation.to_rotation_matrix().into_inner());
     Some(natural_modes(model, &state.frame(), &mass, &solved.body_stiffness(index), added))
 }
 

@@ -16,8 +16,8 @@
 use crate::body::{BodyFrame, BodyState, Load};
 use crate::coupling::CouplingError;
 use crate::evaluation::Evaluation;
-use crate::math::{Mat3, Rotation, Vec3};
-use crate::potential::body::transfer;
+use crate::math::{Rotation, Vec3};
+use crate::potential::body::{mass_at_center, transfer};
 use crate::potential::response::response;
 use crate::potential::{Coefficients, ComplexVector6, Matrix6, PotentialBody, Vector6};
 use crate::system::System;
@@ -146,11 +146,8 @@ impl LinearModel {
 
 /// `M_P` of body `index` (module docs) with `arm` = `r` \[m], world axes, at the initial pose.
 pub fn mass_about(system: &System, index: usize, arm: &Vec3) -> Matrix6 {
-    let body = &system.bodies()[index];
     let rotation = system.initial_states()[index].orientation.to_rotation_matrix().into_inner();
-    let inertia = rotation * Mat3::from_diagonal(&body.principal_moments()) * rotation.transpose();
-    let mut about_g = Matrix6::identity() * body.mass();
-    about_g.fixed_view_mut::<3, 3>(3, 3).copy_from(&inertia);
+    let about_g = mass_at_center(&system.bodies()[index], &rotation);
     // P's accelerations to G's.
     let to_center = transfer(&-arm);
     to_center.transpose() * about_g * to_center

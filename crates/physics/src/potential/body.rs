@@ -190,6 +190,16 @@ impl PotentialBody {
     }
 }
 
+/// `diag(m E, I_G)` \[kg, kg·m²]: `body`'s own mass about G, world axes, for the principal frame
+/// → world rotation `rotation` (`I_G = R diag(I₁, I₂, I₃) Rᵀ`); what `rao::mass_about` moves to
+/// P and `natural_periods` adds the added mass to.
+pub(crate) fn mass_at_center(body: &RigidBody, rotation: &Mat3) -> Matrix6 {
+    let inertia = rotation * Mat3::from_diagonal(&body.principal_moments()) * rotation.transpose();
+    let mut mass = Matrix6::identity() * body.mass();
+    mass.fixed_view_mut::<3, 3>(3, 3).copy_from(&inertia);
+    mass
+}
+
 /// `T = [[E, −[r]×], [0, E]]`: G's accelerations `(a_G, α)` to P's, `r = x_P − x_G` (with `−r`,
 /// P's to G's: `rao::mass_about`).
 pub(crate) fn transfer(r: &Vec3) -> Matrix6 {

@@ -18,7 +18,7 @@ Reference point (WAMIT's origin, the rotation centre of every coefficient): the 
 node, the platform's centre of gravity 89.9155 m below the still water level (the origin of the
 body's reference frame in scenes/oc3_hywind.ron). Deep water: Capytaine gives the ω = 0 limit
 only in infinite depth, and the site's 320 m changes the surge and pitch added mass at the pitch
-period by 0.02 % (Capytaine at ω = 0.2, 0.215 and 0.23 rad/s, both depths).
+period by 0.02 % (Capytaine at ω = 0.2, 0.215 and 0.23 rad/s, both depths, run by hand on `hull()`).
 Mass and stiffness are not written: the scene's own (its nodes, its mesh's buoyancy, its lines).
 """
 

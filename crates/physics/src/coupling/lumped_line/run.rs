@@ -10,7 +10,10 @@
 //! to `p1`, `p2` — the leapfrog's own path for the bodies over a step — and the water's
 //! kinematics held at each node's `t_c` position and mid-interval time (in a harmonic sea by
 //! powers of one complex number, [`Water::flow_at`]: PHYSICS.md §8 "The waves' kinematics at
-//! the nodes", the same sums to round-off at a fraction of the cost). The bodies then feel
+//! the nodes", the same sums to round-off at a fraction of the cost; a Runge–Kutta step's two
+//! middle stages share their interval, nodes and water, so the second takes the first's
+//! kinematics, the same numbers for 13% fewer instructions per RK4 step of `moored_buoy` with
+//! its chains dynamic in the JONSWAP sea of `scripts/line-speed.sh`). The bodies then feel
 //! each end node's force at `t`. Evaluating again at the same time or at a stage of a
 //! Runge–Kutta step starts from the same committed nodes, so an integrator may evaluate as
 //! often as it likes; the world commits the last evaluation when it accepts a step
@@ -71,6 +74,10 @@ pub struct LineRun {
     scratch: NodeForces,
     flow: Vec<Flow>,
     sea: FlowInstant,
+    /// The middle time \[s] and the water `flow` was filled for from the committed nodes
+    /// (`None`: to be filled again). A Runge–Kutta step's two middle stages share their
+    /// interval, nodes and water: the second takes the first's flow, the same numbers.
+    flow_filled_for: Option<(f64, Option<Water>)>,
 }
 
 /// How a dynamic line's nodes start (PHYSICS.md §8 "Initial state").
@@ -155,6 +162,7 @@ impl LineRun {
             scratch: NodeForces::default(),
             flow: Vec::new(),
             sea: FlowInstant::default(),
+            flow_filled_for: None,
         }
     }
 
@@ -182,6 +190,7 @@ impl LineRun {
                 None => self.committed = Some(current.clone()),
             }
             self.committed_power = self.power;
+            self.flow_filled_for = None;
         }
     }
 
@@ -203,6 +212,7 @@ impl LineRun {
             Some(committed) if committed.time <= time => committed,
             _ => {
                 self.committed_power = 0.0;
+                self.flow_filled_for = None;
                 match self.start {
                     Start::AtRest => {
                         let (p1, p2) = (ends[0].position, ends[1].position);
@@ -247,8 +257,16 @@ impl LineRun {
         Ok(outcome)
     }
 
-    /// The water's velocity and acceleration at each node at `time` (none without water).
+    /// The water's velocity and acceleration at each node at `time` (none without water),
+    /// unless they were filled for the same committed nodes, time and water.
     fn fill_flow(&mut self, water: Option<&Water>, nodes: &LineNodes, time: f64) {
+        let filled = self.flow_filled_for.as_ref().is_some_and(|(at, filled_water)| {
+            *at == time && filled_water.as_ref() == water && self.flow.len() == nodes.positions.len()
+        });
+        if filled {
+            return;
+        }
+        self.flow_filled_for = Some((time, water.cloned()));
         let Some(water) = water else {
             self.flow.clear();
             return;
@@ -336,13 +354,9 @@ mod tests {
     use crate::water::{CurrentProfile, CurrentSpec, WaterSpec, WaveSpec};
 
     /// One of `moored_buoy`'s chains (MoorDyn's chain of docs/dynamic-lines.md, N = 40) from its
-    /// anchor to a fairlead driven `x = 2 sin(2πt/10)` m, on sand under the scene's current, in a
-    /// 50-component JONSWAP sea (H_s 2.5 m, T_p 9 s): the fairlead tension with the waves'
-    /// kinematics by powers of one complex number ([`Water::flow_at`], harmonic) against the
-    /// same sea summed component by component (the way the nodes' kinematics were computed
-    /// before), 60 s at the scene's 50 ms evaluations.
-    #[test]
-    fn the_harmonic_kinematics_give_the_fairlead_tensions_of_the_sum_by_component() {
+    /// anchor at (−237, 0, −50) m to a fairlead at (0, 0, −1) m, on sand under the scene's
+    /// current, in a 50-component JONSWAP sea (H_s 2.5 m, T_p 9 s).
+    fn chain_in_a_jonswap_sea() -> (Catenary, Discrete, Surroundings, Water) {
         let gravity = Vec3::new(0.0, 0.0, -9.80665);
         let spec = WaterSpec {
             depth: Some(50.0),
@@ -357,10 +371,7 @@ mod tests {
             },
             ..WaterSpec::default()
         };
-        let harmonic = Water::new(spec, &gravity).expect("the scene's water");
-        let by_component = harmonic.summed_by_component();
-        assert!(harmonic.sea().is_harmonic() && !by_component.sea().is_harmonic());
-        let (anchor, fairlead) = (Vec3::new(-237.0, 0.0, -50.0), Vec3::new(0.0, 0.0, -1.0));
+        let water = Water::new(spec, &gravity).expect("the scene's water");
         let chain = LumpedMass {
             drag_normal: 2.4,
             drag_tangential: 1.15,
@@ -368,6 +379,7 @@ mod tests {
             added_mass_tangential: 0.5,
             ..LumpedMass::plain(40, InternalDamping::Ratio(0.8)).expect("valid")
         };
+        let (anchor, fairlead) = (Vec3::new(-237.0, 0.0, -50.0), Vec3::new(0.0, 0.0, -1.0));
         let line = Catenary::new(Endpoint::World(anchor), Endpoint::World(fairlead), 25.79, 250.0, 442714.0)
             .and_then(|l| l.with_displaced_area(0.003298))
             .expect("the scene's chain")
@@ -375,6 +387,19 @@ mod tests {
         let seabed = Seabed::new(-50.0, 1.0).expect("sand at the water's depth");
         let surroundings = Surroundings { fluid_density: 1025.0, seabed: Some(seabed), ..Surroundings::dry(gravity) };
         let discrete = Discrete::new(&line, &chain, &surroundings, Some(0.0));
+        (line, discrete, surroundings, water)
+    }
+
+    /// [`chain_in_a_jonswap_sea`]'s fairlead driven `x = 2 sin(2πt/10)` m: the fairlead tension
+    /// with the waves' kinematics by powers of one complex number ([`Water::flow_at`],
+    /// harmonic) against the same sea summed component by component (the way the nodes'
+    /// kinematics were computed before), 60 s at the scene's 50 ms evaluations.
+    #[test]
+    fn the_harmonic_kinematics_give_the_fairlead_tensions_of_the_sum_by_component() {
+        let (line, discrete, surroundings, harmonic) = chain_in_a_jonswap_sea();
+        let by_component = harmonic.summed_by_component();
+        assert!(harmonic.sea().is_harmonic() && !by_component.sea().is_harmonic());
+        let (anchor, fairlead) = (Vec3::new(-237.0, 0.0, -50.0), Vec3::new(0.0, 0.0, -1.0));
         let mut runs = [LineRun::new(0), LineRun::new(0)];
         let (mut largest, mut peak) = (0.0_f64, 0.0_f64);
         for step in 1..=1200 {
@@ -400,5 +425,53 @@ mod tests {
         // The sea's pull shows: the peak is well above the 33 kN at rest.
         assert!(peak > 40.0e3, "peak {peak} N");
         assert!(largest < 1e-3, "{largest:.2e}");
+    }
+
+    /// A Runge–Kutta step's evaluations of [`chain_in_a_jonswap_sea`] 12 s in (its middle twice
+    /// with the fairlead at two places, then its end): the second middle stage takes the
+    /// first's flow, and its end forces are those of a run that fills the flow afresh, to the
+    /// bit; after the step is committed, or in other water, the flow is filled again.
+    #[test]
+    fn a_second_stage_at_the_same_time_takes_the_first_stage_s_flow() {
+        let (line, discrete, surroundings, water) = chain_in_a_jonswap_sea();
+        let anchor = EndMotion {
+            position: Vec3::new(-237.0, 0.0, -50.0),
+            velocity: Vec3::zeros(),
+            attachment: Attachment::World,
+        };
+        let fairlead = |x: f64| EndMotion {
+            position: Vec3::new(x, 0.0, -1.0),
+            velocity: Vec3::x() * (x / 0.025),
+            attachment: Attachment::World,
+        };
+        let (start, middle) = (12.0, 12.025);
+        // The interval's middle time and whether the flow was filled in `water`.
+        let filled_for = |run: &LineRun, water: &Water| {
+            run.flow_filled_for.as_ref().map(|(time, filled)| (*time, filled.as_ref() == Some(water)))
+        };
+        let mut run = LineRun::new(0);
+        let evaluate = |run: &mut LineRun, water: &Water, x: f64, time: f64| {
+            run.advance(&line, &discrete, &surroundings, Some(water), &[anchor, fairlead(x)], time)
+                .expect("the chain stays finite")
+        };
+        evaluate(&mut run, &water, 0.0, start);
+        run.commit();
+        assert_eq!(filled_for(&run, &water), None);
+        evaluate(&mut run, &water, 0.01, middle);
+        assert_eq!(filled_for(&run, &water), Some((12.0125, true)));
+        let mut fresh = run.clone();
+        fresh.flow_filled_for = None;
+        fresh.flow.clear();
+        let (second, afresh) = (evaluate(&mut run, &water, 0.02, middle), evaluate(&mut fresh, &water, 0.02, middle));
+        assert_eq!((second.f1, second.f2, second.energy), (afresh.f1, afresh.f2, afresh.energy));
+        assert_ne!(second.f2, evaluate(&mut run.clone(), &water, 0.01, middle).f2, "the fairlead's place shows");
+        let calmer = Water::new(WaterSpec { waves: WaveSpec::Calm, ..*water.spec() }, &surroundings.gravity)
+            .expect("the same water without waves");
+        let calm = evaluate(&mut run, &calmer, 0.02, middle);
+        assert_eq!(filled_for(&run, &calmer), Some((12.0125, true)));
+        assert_ne!(calm.f2, second.f2, "the waves' pull is gone");
+        evaluate(&mut run, &water, 0.04, 12.05);
+        run.commit();
+        assert_eq!(filled_for(&run, &water), None);
     }
 }

@@ -138,14 +138,26 @@ impl Sea {
         self.depth.map_or(0.0, |h| (-2.0 * c.wave_number * h).exp())
     }
 
-    /// The sea at `time` \[s] into `instant`: `b_i = a_i e^{i(φ_i − ω_i t)}/(1 + ε_i)`.
+    /// The sea at `time` \[s] into `instant`: `b_i = a_i e^{i(φ_i − ω_i t)}/(1 + ε_i)`, for
+    /// [`Sea::pressure_head`].
     pub fn instant(&self, time: f64, instant: &mut SeaInstant) {
+        self.fill_instant(time, instant, |c| c.amplitude / (1.0 + self.epsilon(c)));
+    }
+
+    /// The surface at `time` \[s] into `instant`: `a_i e^{i(φ_i − ω_i t)}`, for
+    /// [`Sea::elevation_at`].
+    pub fn surface_instant(&self, time: f64, instant: &mut SeaInstant) {
+        self.fill_instant(time, instant, |c| c.amplitude);
+    }
+
+    /// `A_i e^{i(φ_i − ω_i t)}` into `instant` with `A_i = amplitude(component i)` \[m].
+    fn fill_instant(&self, time: f64, instant: &mut SeaInstant, amplitude: impl Fn(&WaveComponent) -> f64) {
         let padded = self.components.len().div_ceil(CHAINS) * CHAINS;
         instant.real.clear();
         instant.imaginary.clear();
         for c in &self.components {
             let (sin, cos) = (c.phase - c.frequency * time).rem_euclid(std::f64::consts::TAU).sin_cos();
-            let amplitude = c.amplitude / (1.0 + self.epsilon(c));
+            let amplitude = amplitude(c);
             instant.real.push(amplitude * cos);
             instant.imaginary.push(amplitude * sin);
         }
@@ -238,6 +250,17 @@ impl Sea {
             sum += harmonic_sum(instant, [rising * cos, rising * sin], harmonic.first);
         }
         sum
+    }
+
+    /// The surface elevation `η = Σ a cos θ` \[m] above the still level at `(x, y)` at the
+    /// surface `instant` ([`Sea::surface_instant`]; unramped): [`Sea::elevation`], by powers of
+    /// one complex number in a harmonic sea — one sum per point, where the pressure head at the
+    /// level, the same number to round-off (`K_p = 1` there), takes two in finite depth.
+    #[inline(always)]
+    pub fn elevation_at(&self, instant: &SeaInstant, x: f64, y: f64) -> f64 {
+        let Some(harmonic) = &self.harmonic else { return self.elevation(x, y, instant.time) };
+        let (sin, cos) = (harmonic.base * (harmonic.heading[0] * x + harmonic.heading[1] * y)).sin_cos();
+        harmonic_sum(instant, [cos, sin], harmonic.first)
     }
 
     /// `Σ a K_p cos θ` [m] one component at a time, for a sea that is not harmonic.
@@ -466,6 +489,33 @@ mod tests {
                 assert_relative_eq!(harmonic_velocity, velocity, epsilon = 1e-11);
                 assert_relative_eq!(harmonic_acceleration, acceleration, epsilon = 1e-11);
                 assert!(velocity.norm() > 1e-3 || point.z < -20.0, "{velocity} at {point}");
+            }
+        }
+    }
+
+    /// The elevation at the surface instant against the textbook sum and against the pressure
+    /// head at the still level, harmonic (the nine-component grid, deep, finite and shallow)
+    /// and not (one component heading across), to 1e-12 m of 6.3 m of amplitude.
+    #[test]
+    fn the_elevation_at_an_instant_is_the_surface_s_sum() {
+        for depth in [None, Some(20.0), Some(3.0)] {
+            let mut across = grid_components(depth);
+            across.push(WaveComponent { heading: 2.0, ..across[0] });
+            for components in [grid_components(depth), across] {
+                let sea = Sea::new(components.clone(), 0.0, depth);
+                let time = 987.6;
+                let (mut surface, mut instant) = (SeaInstant::default(), SeaInstant::default());
+                sea.surface_instant(time, &mut surface);
+                sea.instant(time, &mut instant);
+                for (x, y) in [(0.0, 0.0), (130.0, -70.0), (-400.0, 2.0)] {
+                    let expected: f64 = components.iter().map(|c| textbook_head(c, depth, x, y, 0.0, time)).sum();
+                    assert_relative_eq!(sea.elevation_at(&surface, x, y), expected, epsilon = 1e-12);
+                    assert_relative_eq!(
+                        sea.elevation_at(&surface, x, y),
+                        sea.pressure_head(&instant, x, y, 0.0),
+                        epsilon = 1e-12
+                    );
+                }
             }
         }
     }

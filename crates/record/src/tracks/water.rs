@@ -225,11 +225,10 @@ impl Track for WaterTrack {
         let calm = water.sea().is_calm();
         let mut sea = std::mem::take(&mut self.sea);
         if !calm {
-            water.sea().instant(time, &mut sea);
+            water.sea().surface_instant(time, &mut sea);
         }
         let ramp = water.ramp(time);
-        let elevation =
-            |x: f64, y: f64| if calm { 0.0 } else { ramp * water.sea().pressure_head(&sea, x, y, water.level()) };
+        let elevation = |x: f64, y: f64| if calm { 0.0 } else { ramp * water.sea().elevation_at(&sea, x, y) };
         let mut bytes = self.capture_surface(water.level(), calm, (time, frame), elevation);
         for (floating, stage_body) in self.floating.iter().zip(&stage.floating) {
             let body = &world.bodies()[floating.body];

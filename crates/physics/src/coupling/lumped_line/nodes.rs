@@ -97,17 +97,32 @@ impl NodeForces {
 }
 
 /// The forces on every node of `line` at `nodes` in the water's `flow` at each node (empty:
-/// none), into `out`. The end nodes move with their bodies and pass them everything, their
-/// half segment's drag included (as MoorDyn's coupled points); only their inertia is left out.
+/// none), into `out`, with the potential energy. The end nodes move with their bodies and pass
+/// them everything, their half segment's drag included (as MoorDyn's coupled points); only
+/// their inertia is left out.
 pub fn evaluate(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut NodeForces) {
+    evaluate_into::<true>(line, nodes, flow, out);
+}
+
+/// [`evaluate`] without the potential energy (`out.potential` is 0): a sub-step's forces, the
+/// same numbers, for the time stepping, which needs no energy.
+pub fn evaluate_forces(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut NodeForces) {
+    evaluate_into::<false>(line, nodes, flow, out);
+}
+
+/// [`evaluate`], the potential energy summed when `POTENTIAL`. The slices are cut to the line's
+/// `N + 1` nodes and `N` segments up front, so that the loops index them without checks.
+#[inline(always)]
+fn evaluate_into<const POTENTIAL: bool>(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut NodeForces) {
     let n = line.segments;
     out.resize(n);
     out.potential = 0.0;
-    let (x, v) = (&nodes.positions, &nodes.velocities);
-    for node in 0..=n {
-        out.total[node] = Vec3::zeros();
-        out.unbooked[node] = Vec3::zeros();
-    }
+    let (x, v) = (&nodes.positions[..=n], &nodes.velocities[..=n]);
+    let (total, unbooked) = (&mut out.total[..=n], &mut out.unbooked[..=n]);
+    let (tensions, masses) = (&mut out.tensions[..n], &mut out.masses[..=n]);
+    total.fill(Vec3::zeros());
+    unbooked.fill(Vec3::zeros());
+    let mut potential = 0.0;
     let mut previous = Vec3::z();
     for i in 0..n {
         let delta = x[i + 1] - x[i];
@@ -118,34 +133,36 @@ pub fn evaluate(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut Nod
         let rate = q.dot(&(v[i + 1] - v[i])) / line.segment;
         let elastic = line.ea * strain.max(0.0);
         let damping = line.ba * rate;
-        out.tensions[i] = elastic + damping;
-        if strain > 0.0 {
-            out.potential += 0.5 * line.ea * line.segment * strain * strain;
+        tensions[i] = elastic + damping;
+        if POTENTIAL && strain > 0.0 {
+            potential += 0.5 * line.ea * line.segment * strain * strain;
         }
-        out.total[i] += q * (elastic + damping);
-        out.total[i + 1] -= q * (elastic + damping);
-        out.unbooked[i] += q * damping;
-        out.unbooked[i + 1] -= q * damping;
+        total[i] += q * (elastic + damping);
+        total[i + 1] -= q * (elastic + damping);
+        unbooked[i] += q * damping;
+        unbooked[i + 1] -= q * damping;
     }
     let g = line.gravity.norm();
+    let p = &line.parameters;
     for node in 0..=n {
         let share = line.share(node);
         let mass = line.mass_per_length * share;
         let position = &x[node];
         let height = position.dot(&line.up);
-        out.total[node] += line.gravity * mass;
-        out.potential += mass * g * height;
+        total[node] += line.gravity * mass;
         let tangent = tangent(x, node, n);
         let submerged = line.submerged(position);
         let displaced = line.density * line.displaced_area * share;
         let mut matrix = (mass, 0.0, tangent);
-        if let Some(level) = line.water_level {
-            // The buoyancy's potential −ρ A_d l_i g min(h − h_w, 0) is continuous at the surface.
-            out.potential -= displaced * g * (height - level).min(0.0);
+        if POTENTIAL {
+            potential += mass * g * height;
+            if let Some(level) = line.water_level {
+                // The buoyancy's potential −ρ A_d l_i g min(h − h_w, 0) is continuous at the surface.
+                potential -= displaced * g * (height - level).min(0.0);
+            }
         }
         if submerged {
-            out.total[node] += line.up * (displaced * g);
-            let p = &line.parameters;
+            total[node] += line.up * (displaced * g);
             matrix = (
                 mass + displaced * p.added_mass_normal,
                 displaced * (p.added_mass_tangential - p.added_mass_normal),
@@ -153,18 +170,19 @@ pub fn evaluate(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut Nod
             );
             if let Some((water_velocity, water_acceleration)) = flow.get(node) {
                 let water = water_forces(line, share, &tangent, &(water_velocity - v[node]), water_acceleration);
-                out.total[node] += water;
-                out.unbooked[node] += water;
+                total[node] += water;
+                unbooked[node] += water;
             }
         }
         if let Some(seabed) = &line.seabed {
             let depth = seabed.elevation - height;
             if depth > 0.0 {
-                let p = &line.parameters;
                 let area = line.bearing * share;
                 let sinking = v[node].dot(&line.up);
-                out.potential += 0.5 * p.seabed_stiffness * area * depth * depth;
-                out.total[node] += line.up * (p.seabed_stiffness * area * depth);
+                if POTENTIAL {
+                    potential += 0.5 * p.seabed_stiffness * area * depth * depth;
+                }
+                total[node] += line.up * (p.seabed_stiffness * area * depth);
                 let damping = -line.up * (p.seabed_damping * area * sinking);
                 let normal = (p.seabed_stiffness * depth - p.seabed_damping * sinking).max(0.0) * area;
                 let sliding = v[node] - line.up * sinking;
@@ -174,12 +192,13 @@ pub fn evaluate(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut Nod
                 } else {
                     Vec3::zeros()
                 };
-                out.total[node] += damping + friction;
-                out.unbooked[node] += damping + friction;
+                total[node] += damping + friction;
+                unbooked[node] += damping + friction;
             }
         }
-        out.masses[node] = matrix;
+        masses[node] = matrix;
     }
+    out.potential = potential;
 }
 
 /// Drag and the waves' inertia \[N] on a node of length share `share` with tangent `tangent`,

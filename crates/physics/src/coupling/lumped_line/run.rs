@@ -297,7 +297,7 @@ impl LineRun {
             }
         };
         place_ends(nodes, 0.0);
-        nodes::evaluate(line, nodes, &self.flow, &mut self.scratch);
+        nodes::evaluate_forces(line, nodes, &self.flow, &mut self.scratch);
         let mut work = self.half_kick(line, nodes, 0.5 * h);
         let mut start_unbooked = [self.scratch.unbooked[0], self.scratch.unbooked[n]];
         for k in 1..=count {
@@ -307,7 +307,7 @@ impl LineRun {
                 nodes.positions[i] += velocity * h;
             }
             place_ends(nodes, elapsed);
-            nodes::evaluate(line, nodes, &self.flow, &mut self.scratch);
+            nodes::evaluate_forces(line, nodes, &self.flow, &mut self.scratch);
             // The closing half kick of this step and, but for the last, the opening one of
             // the next: one evaluation per sub-step.
             work += self.half_kick(line, nodes, if k == count { 0.5 * h } else { h });

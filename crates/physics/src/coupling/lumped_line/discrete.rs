@@ -92,18 +92,15 @@ impl Discrete {
     /// The line's stable time steps \[s] under the velocity Verlet it is stepped by
     /// (`2/(√(ω² + β²) + β)` for a mode `ω` damped at rate `β`, PHYSICS.md §8): the axial one
     /// of its highest mode, `ω = 2√(EA/(λ0 l²))`, `β = 2 BA/(λ0 l²)` (the transverse modes,
-    /// `ω = 2√(T/(λ0 l l_s))`, are slower while `T < EA`); and the seabed's,
-    /// `ω² = k_b d/λ0`, `β = (c_b d + C_B w/v_s)/(2 λ0)` with `w` the wet weight per length.
+    /// `ω = 2√(T/(λ0 l l_s))`, are slower while `T < EA`); and the seabed's spring's,
+    /// `2/ω` with `ω² = k_b d/λ0` (its damping and friction are taken implicitly in the kicks,
+    /// [`super::nodes::NodeForces::kick`], and bound no step).
     pub fn limits(&self) -> LineLimits {
         let lambda = self.mass_per_length.max(f64::MIN_POSITIVE);
         let l2 = self.segment * self.segment;
         let axial = oscillator(2.0 * (self.ea / (lambda * l2)).sqrt(), 2.0 * self.ba / (lambda * l2));
-        let seabed = self.seabed.map_or(f64::INFINITY, |seabed| {
-            let p = &self.parameters;
-            let wet = (self.mass_per_length - self.density * self.displaced_area).max(0.0) * self.gravity.norm();
-            let rate =
-                (p.seabed_damping * self.bearing + seabed.line_friction * wet / p.friction_speed) / (2.0 * lambda);
-            oscillator((p.seabed_stiffness * self.bearing / lambda).sqrt(), rate)
+        let seabed = self.seabed.map_or(f64::INFINITY, |_| {
+            oscillator((self.parameters.seabed_stiffness * self.bearing / lambda).sqrt(), 0.0)
         });
         LineLimits { axial, seabed }
     }

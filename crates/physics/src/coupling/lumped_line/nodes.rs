@@ -7,7 +7,9 @@
 //! drag `½ρ C_dn d l_i |v_rn| v_rn + ½ρ C_dt π d l_i |v_rt| v_rt` and the waves' inertia
 //! `ρ A_d l_i [(1 + C_an) u̇_n + (1 + C_at) u̇_t]` on the relative velocity `v_r = u − v` split
 //! along the node's tangent `q̂`; below the seabed (penetration `δ`) `(k_b δ − c_b v_z) d l_i`
-//! upward and the friction `−C_B F_z tanh(|v_h|/v_s) v_h/|v_h|`. Its mass matrix is
+//! upward and the friction `−C_B F_z tanh(|v_h|/v_s) v_h/|v_h|` (on an interior node both
+//! dissipative parts are kept apart, [`NodeForces::seabed_damping`], and taken implicitly in the
+//! kick). Its mass matrix is
 //! `M_i = m_i E + ρ A_d l_i [C_an (E − q̂q̂ᵀ) + C_at q̂q̂ᵀ]` under water: `a E + b q̂q̂ᵀ`,
 //! inverted as `(E − b/(a + b) q̂q̂ᵀ)/a`.
 
@@ -67,6 +69,13 @@ pub struct NodeForces {
     pub tensions: Vec<f64>,
     /// Node mass matrices as `(a, b, q̂)`: `M = a E + b q̂q̂ᵀ` \[kg].
     pub masses: Vec<(f64, f64, Vec3)>,
+    /// The seabed's damping of an interior node on it, `(c_n, c_f)` [N·s/m]: `c_n = c_b d l_i`
+    /// across the bottom and the friction's secant `c_f = C_B F_z tanh(|v_h|/v_s)/|v_h|`
+    /// (`C_B F_z/v_s` at rest) along it, so that the seabed's dissipative force is
+    /// `−(c_n ûûᵀ + c_f (E − ûûᵀ)) v`, taken at the kick's closing velocity
+    /// ([`NodeForces::kick`]); `(0, 0)` off the seabed. It is not in `total` or `unbooked`. The
+    /// end nodes keep theirs in `total`: their bodies take it.
+    pub seabed_damping: Vec<(f64, f64)>,
     /// Elastic `Σ ½ EA l ε²` over taut segments, wet weight and seabed `Σ ½ k_b d l_i δ²` \[J].
     pub potential: f64,
 }
@@ -78,6 +87,7 @@ impl NodeForces {
         self.unbooked.resize(segments + 1, Vec3::zeros());
         self.tensions.resize(segments, 0.0);
         self.masses.resize(segments + 1, (0.0, 0.0, Vec3::z()));
+        self.seabed_damping.resize(segments + 1, (0.0, 0.0));
     }
 
     /// `M_i⁻¹ F_i` [m/s²] of node `i`.
@@ -85,7 +95,31 @@ impl NodeForces {
     pub fn acceleration(&self, node: usize) -> Vec3 {
         let (a, b, q) = self.masses[node];
         let force = self.total[node];
-        (force - q * (b / (a + b) * q.dot(&force))) / a
+        (force - q * (b / (a + b) * q.dot(&force))) * (1.0 / a)
+    }
+
+    /// The acceleration [m/s²] of node `i` (`up` the upward unit vertical) over a kick of `τ`
+    /// \[s] from `velocity`: `M⁻¹F`, or on the seabed `(M + τC)⁻¹ (F − C v)` with `C`
+    /// its [`NodeForces::seabed_damping`] — the kick with the seabed's damping and friction at
+    /// its closing velocity (backward Euler in them), which no step length makes unstable
+    /// (PHYSICS.md §8 "Stable time step"). `M + τC = αE + b q̂q̂ᵀ + ε ûûᵀ` (`α = a + τ c_f`,
+    /// `ε = τ (c_n − c_f)`) is inverted by two rank-one updates of `αE` (Sherman–Morrison), each
+    /// denominator positive as the matrix is positive definite.
+    #[inline(always)]
+    pub fn kick(&self, node: usize, velocity: &Vec3, up: &Vec3, tau: f64) -> Vec3 {
+        let (c_n, c_f) = self.seabed_damping[node];
+        if c_n == 0.0 && c_f == 0.0 {
+            return self.acceleration(node);
+        }
+        let (a, b, q) = self.masses[node];
+        let force = self.total[node] - up * ((c_n - c_f) * up.dot(velocity)) - velocity * c_f;
+        let alpha = a + tau * c_f;
+        let epsilon = tau * (c_n - c_f);
+        // B⁻¹ = (E − b/(α + b) q̂q̂ᵀ)/α, then (B + ε ûûᵀ)⁻¹ y = B⁻¹y − B⁻¹û ε ûᵀB⁻¹y/(1 + ε ûᵀB⁻¹û).
+        let (inverse_alpha, along) = (1.0 / alpha, b / (alpha + b));
+        let solve_b = |y: &Vec3| (y - q * (along * q.dot(y))) * inverse_alpha;
+        let (b_force, b_up) = (solve_b(&force), solve_b(up));
+        b_force - b_up * (epsilon * up.dot(&b_force) / (1.0 + epsilon * up.dot(&b_up)))
     }
 
     /// `(M_i − m_i E) a` \[N]: the force that accelerates the water node `i` carries with it.
@@ -120,17 +154,21 @@ fn evaluate_into<const POTENTIAL: bool>(line: &Discrete, nodes: &LineNodes, flow
     let (x, v) = (&nodes.positions[..=n], &nodes.velocities[..=n]);
     let (total, unbooked) = (&mut out.total[..=n], &mut out.unbooked[..=n]);
     let (tensions, masses) = (&mut out.tensions[..n], &mut out.masses[..=n]);
+    let seabed_damping = &mut out.seabed_damping[..=n];
     total.fill(Vec3::zeros());
     unbooked.fill(Vec3::zeros());
+    seabed_damping.fill((0.0, 0.0));
     let mut potential = 0.0;
     let mut previous = Vec3::z();
+    // One division per line and per segment: the rest are products by reciprocals.
+    let per_length = 1.0 / line.segment;
     for i in 0..n {
         let delta = x[i + 1] - x[i];
         let stretched = delta.norm();
-        let q = if stretched > 0.0 { delta / stretched } else { previous };
+        let q = if stretched > 0.0 { delta * (1.0 / stretched) } else { previous };
         previous = q;
-        let strain = stretched / line.segment - 1.0;
-        let rate = q.dot(&(v[i + 1] - v[i])) / line.segment;
+        let strain = stretched * per_length - 1.0;
+        let rate = q.dot(&(v[i + 1] - v[i])) * per_length;
         let elastic = line.ea * strain.max(0.0);
         let damping = line.ba * rate;
         tensions[i] = elastic + damping;
@@ -183,17 +221,23 @@ fn evaluate_into<const POTENTIAL: bool>(line: &Discrete, nodes: &LineNodes, flow
                     potential += 0.5 * p.seabed_stiffness * area * depth * depth;
                 }
                 total[node] += line.up * (p.seabed_stiffness * area * depth);
-                let damping = -line.up * (p.seabed_damping * area * sinking);
                 let normal = (p.seabed_stiffness * depth - p.seabed_damping * sinking).max(0.0) * area;
                 let sliding = v[node] - line.up * sinking;
                 let speed = sliding.norm();
-                let friction = if speed > 0.0 {
-                    -sliding * (seabed.line_friction * normal * (speed / p.friction_speed).tanh() / speed)
+                // tanh(s/v_s)/s, 1/v_s at s = 0.
+                let secant = if speed > 0.0 {
+                    (speed / p.friction_speed).tanh() * (1.0 / speed)
                 } else {
-                    Vec3::zeros()
+                    1.0 / p.friction_speed
                 };
-                total[node] += damping + friction;
-                unbooked[node] += damping + friction;
+                let damping = (p.seabed_damping * area, seabed.line_friction * normal * secant);
+                if node == 0 || node == n {
+                    let force = -line.up * (damping.0 * sinking) - sliding * damping.1;
+                    total[node] += force;
+                    unbooked[node] += force;
+                } else {
+                    seabed_damping[node] = damping;
+                }
             }
         }
         masses[node] = matrix;
@@ -206,11 +250,13 @@ fn evaluate_into<const POTENTIAL: bool>(line: &Discrete, nodes: &LineNodes, flow
 #[inline(always)]
 fn water_forces(line: &Discrete, share: f64, tangent: &Vec3, relative: &Vec3, acceleration: &Vec3) -> Vec3 {
     let p = &line.parameters;
-    let along = tangent * tangent.dot(relative);
+    let tangential = tangent.dot(relative);
+    let along = tangent * tangential;
     let across = relative - along;
     let half_rho = 0.5 * line.density;
+    // |v_rt| = |q̂·v_r|, q̂ a unit vector: no square root.
     let drag = across * (half_rho * p.drag_normal * line.diameter * share * across.norm())
-        + along * (half_rho * p.drag_tangential * std::f64::consts::PI * line.diameter * share * along.norm());
+        + along * (half_rho * p.drag_tangential * std::f64::consts::PI * line.diameter * share * tangential.abs());
     let accel_along = tangent * tangent.dot(acceleration);
     let accel_across = acceleration - accel_along;
     let displaced = line.density * line.displaced_area * share;
@@ -224,7 +270,9 @@ fn water_forces(line: &Discrete, share: f64, tangent: &Vec3, relative: &Vec3, ac
 #[inline(always)]
 fn tangent(x: &[Vec3], node: usize, n: usize) -> Vec3 {
     let (a, b) = (node.saturating_sub(1), (node + 1).min(n));
-    (x[b] - x[a]).try_normalize(0.0).unwrap_or_else(Vec3::z)
+    let chord = x[b] - x[a];
+    let length = chord.norm();
+    if length > 0.0 { chord * (1.0 / length) } else { Vec3::z() }
 }
 
 #[cfg(test)]

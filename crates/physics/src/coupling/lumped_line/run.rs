@@ -327,16 +327,22 @@ impl LineRun {
         Ok(work)
     }
 
-    /// `v ← v + τ M⁻¹F` on the interior nodes with the forces in the scratch; returns the work
-    /// of the forces without potential over the kick, against the kick's mean velocity \[J].
+    /// `v ← v + τ M⁻¹F` on the interior nodes with the forces in the scratch, the seabed's
+    /// damping and friction at the closing velocity ([`NodeForces::kick`]); returns the work of
+    /// the forces without potential over the kick, against the kick's mean velocity \[J].
     fn half_kick(&self, line: &Discrete, nodes: &mut LineNodes, tau: f64) -> f64 {
         let mut work = 0.0;
         for i in 1..line.segments {
-            let acceleration = self.scratch.acceleration(i);
             let before = nodes.velocities[i];
+            let acceleration = self.scratch.kick(i, &before, &line.up, tau);
             let after = before + acceleration * tau;
             let mass = line.mass_per_length * line.share(i);
-            let unbooked = self.scratch.unbooked[i] - self.scratch.added_mass_force(i, mass, &acceleration);
+            let mut unbooked = self.scratch.unbooked[i];
+            let (c_n, c_f) = self.scratch.seabed_damping[i];
+            if c_n != 0.0 || c_f != 0.0 {
+                unbooked -= line.up * ((c_n - c_f) * line.up.dot(&after)) + after * c_f;
+            }
+            unbooked -= self.scratch.added_mass_force(i, mass, &acceleration);
             work += tau * 0.5 * (before + after).dot(&unbooked);
             nodes.velocities[i] = after;
         }

@@ -27,7 +27,7 @@
 //! reported as the interval's mean dissipated power. The exchange with the bodies is the
 //! partitioned scheme's one error: they feel the end forces at `t` while the line felt the ends
 //! along their path, a balance error that falls with the bodies' step (on `moored_buoy` with its
-//! chains dynamic: 54 J at 10 ms, 38 J at 2.5 ms over 60 s, of 0.67 MJ exchanged; the interval's
+//! chains dynamic: 60 J at 10 ms, 32 J at 2.5 ms over 60 s, of 0.67 MJ exchanged; the interval's
 //! mean force instead lags by half a step and does worse).
 
 use super::discrete::Discrete;

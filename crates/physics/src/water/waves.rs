@@ -47,7 +47,7 @@ pub struct WaveComponent {
 /// `k ζ` is kept above this, so that `e^{kζ}` stays a normal number and `ε/e^{kζ}` finite.
 const LOWEST_EXPONENT: f64 = -700.0;
 
-/// Products run side by side in the harmonic sum.
+/// Lanes of Horner's rule run side by side in the harmonic sums (component `4j + l` in lane `l`).
 const CHAINS: usize = 4;
 
 /// A harmonic sea's layout: one heading, `k_i = (first + i) k_0`.
@@ -344,11 +344,9 @@ fn multiply(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
     [a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0]]
 }
 
-/// The chains `z^first, z^{first+1}, z^{first+2}, z^{first+3}` (real and imaginary parts) and
-/// their stride `z^4`.
+/// `z^first` by squaring.
 #[inline(always)]
-fn chains(z: [f64; 2], first: u32) -> ([f64; CHAINS], [f64; CHAINS], [f64; 2]) {
-    // z^first by squaring.
+fn power(z: [f64; 2], first: u32) -> [f64; 2] {
     let (mut power, mut base, mut exponent) = ([1.0, 0.0], z, first);
     // Ends: `exponent` loses a bit each pass.
     while exponent > 0 {
@@ -358,55 +356,64 @@ fn chains(z: [f64; 2], first: u32) -> ([f64; CHAINS], [f64; CHAINS], [f64; 2]) {
         base = multiply(base, base);
         exponent >>= 1;
     }
-    let mut real = [0.0; CHAINS];
-    let mut imaginary = [0.0; CHAINS];
-    for lane in 0..CHAINS {
-        (real[lane], imaginary[lane]) = (power[0], power[1]);
-        power = multiply(power, z);
+    power
+}
+
+/// `z^first Σ_l z^l P_l` of the [`CHAINS`] lanes' complex values `P_l` (`lanes`: real parts,
+/// imaginary parts).
+#[inline(always)]
+fn gather(lanes: &[[f64; CHAINS]; 2], z: [f64; 2], first: u32) -> [f64; 2] {
+    let mut sum = [0.0, 0.0];
+    let mut shift = [1.0, 0.0];
+    for (&real, &imaginary) in lanes[0].iter().zip(&lanes[1]) {
+        let term = multiply(shift, [real, imaginary]);
+        sum = [sum[0] + term[0], sum[1] + term[1]];
+        shift = multiply(shift, z);
     }
-    let square = multiply(z, z);
-    (real, imaginary, multiply(square, square))
+    multiply(power(z, first), sum)
+}
+
+/// `P ← P z⁴ + c` on each lane, the lanes' `P` as (real parts, imaginary parts): one step of
+/// Horner's rule in `z⁴` for the chunk of coefficients `c` (real, imaginary).
+#[inline(always)]
+fn horner_step(p: &mut [[f64; CHAINS]; 2], z4: [f64; 2], c_real: &[f64], c_imaginary: &[f64]) {
+    for lane in 0..CHAINS {
+        let (r, i) = (p[0][lane], p[1][lane]);
+        p[0][lane] = (r * z4[0] - i * z4[1]) + c_real[lane];
+        p[1][lane] = (r * z4[1] + i * z4[0]) + c_imaginary[lane];
+    }
 }
 
 /// `Σ_i c_i z^{first + i}` and `Σ_i d_i z^{first + i}` (complex) over the velocity and
-/// acceleration amplitudes of `instant`, four chains of powers side by side.
+/// acceleration amplitudes of `instant`: component `4j + l` in lane `l`, each lane a polynomial
+/// in `z⁴` by Horner's rule (two complex products and two sums per component for both sets,
+/// where powers of `z` cost a third product), then [`gather`]ed.
 #[inline(always)]
 fn harmonic_sums(instant: &FlowInstant, z: [f64; 2], first: u32) -> [[f64; 2]; 2] {
-    let (mut real, mut imaginary, stride) = chains(z, first);
+    let square = multiply(z, z);
+    let z4 = multiply(square, square);
     let (v, a) = (&instant.velocity, &instant.acceleration);
-    let mut sums = [[0.0; CHAINS]; 4];
-    let lanes = v.real.chunks_exact(CHAINS).zip(v.imaginary.chunks_exact(CHAINS));
-    let lanes = lanes.zip(a.real.chunks_exact(CHAINS).zip(a.imaginary.chunks_exact(CHAINS)));
-    for ((v_real, v_imaginary), (a_real, a_imaginary)) in lanes {
-        for lane in 0..CHAINS {
-            let (r, i) = (real[lane], imaginary[lane]);
-            sums[0][lane] += v_real[lane] * r - v_imaginary[lane] * i;
-            sums[1][lane] += v_real[lane] * i + v_imaginary[lane] * r;
-            sums[2][lane] += a_real[lane] * r - a_imaginary[lane] * i;
-            sums[3][lane] += a_real[lane] * i + a_imaginary[lane] * r;
-            real[lane] = r * stride[0] - i * stride[1];
-            imaginary[lane] = r * stride[1] + i * stride[0];
-        }
+    let (mut velocity, mut acceleration) = ([[0.0; CHAINS]; 2], [[0.0; CHAINS]; 2]);
+    let chunks = v.real.chunks_exact(CHAINS).zip(v.imaginary.chunks_exact(CHAINS));
+    let chunks = chunks.zip(a.real.chunks_exact(CHAINS).zip(a.imaginary.chunks_exact(CHAINS)));
+    for ((v_real, v_imaginary), (a_real, a_imaginary)) in chunks.rev() {
+        horner_step(&mut velocity, z4, v_real, v_imaginary);
+        horner_step(&mut acceleration, z4, a_real, a_imaginary);
     }
-    let total = |s: [f64; CHAINS]| (s[0] + s[1]) + (s[2] + s[3]);
-    [[total(sums[0]), total(sums[1])], [total(sums[2]), total(sums[3])]]
+    [gather(&velocity, z, first), gather(&acceleration, z, first)]
 }
 
-/// `Re Σ_i b_i z^{first + i}` over the components of `instant`, four chains of powers side by
-/// side.
+/// `Re Σ_i b_i z^{first + i}` over the components of `instant`, by Horner's rule in `z⁴` on
+/// four lanes as [`harmonic_sums`].
 #[inline(always)]
 fn harmonic_sum(instant: &SeaInstant, z: [f64; 2], first: u32) -> f64 {
-    let (mut real, mut imaginary, stride) = chains(z, first);
-    let mut sum = [0.0; CHAINS];
-    for (b_real, b_imaginary) in instant.real.chunks_exact(CHAINS).zip(instant.imaginary.chunks_exact(CHAINS)) {
-        for lane in 0..CHAINS {
-            sum[lane] += b_real[lane] * real[lane] - b_imaginary[lane] * imaginary[lane];
-            let (r, i) = (real[lane], imaginary[lane]);
-            real[lane] = r * stride[0] - i * stride[1];
-            imaginary[lane] = r * stride[1] + i * stride[0];
-        }
+    let square = multiply(z, z);
+    let z4 = multiply(square, square);
+    let mut lanes = [[0.0; CHAINS]; 2];
+    for (b_real, b_imaginary) in instant.real.chunks_exact(CHAINS).zip(instant.imaginary.chunks_exact(CHAINS)).rev() {
+        horner_step(&mut lanes, z4, b_real, b_imaginary);
     }
-    (sum[0] + sum[1]) + (sum[2] + sum[3])
+    gather(&lanes, z, first)[0]
 }
 
 #[cfg(test)]

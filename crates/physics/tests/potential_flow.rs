@@ -192,7 +192,9 @@ fn the_state_space_and_the_convolution_move_the_body_alike() {
     let relative = |m: usize| -> [f64; 3] { std::array::from_fn(|dof| worst[m][dof] / largest[dof]) };
     for (m, method) in methods.iter().enumerate().skip(1) {
         let [surge, heave, pitch] = relative(m);
-        println!("{method}: surge {surge:.2e}, heave {heave:.2e}, pitch {pitch:.2e} of the largest motion off the reference");
+        println!(
+            "{method}: surge {surge:.2e}, heave {heave:.2e}, pitch {pitch:.2e} of the largest motion off the reference"
+        );
     }
     assert!(largest.iter().all(|&l| l > 0.01), "the body moves: {largest:?}");
     for m in [1, 2] {

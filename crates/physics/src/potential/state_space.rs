@@ -237,6 +237,10 @@ impl RadiationStateSpace {
     pub fn kernel_sampling(&self) -> (f64, f64) {
         (self.kernel_duration, self.kernel_step)
     }
+    /// The highest frequency of the fitted spectrum \[rad/s] (from 0).
+    pub fn band(&self) -> f64 {
+        self.band
+    }
     /// The fitted kernel matrix `K̂(t)`.
     pub fn kernel(&self, t: f64) -> Matrix6 {
         let mut k = Matrix6::zeros();

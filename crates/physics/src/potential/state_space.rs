@@ -81,7 +81,7 @@ impl FitSettings {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum FitError {
     #[error(
-        "radiation kernel K{i}{j}: no fit of order up to {max_order} reaches the relative error {tolerance:e} \
+        "radiation kernel K{i}{j}: no fit of order up to {max_order} reaches the relative error {tolerance:e} of its spectrum \
          (best {best:.3e} at order {order}); raise the order or the tolerance"
     )]
     NotReached { i: usize, j: usize, tolerance: f64, max_order: u32, best: f64, order: usize },

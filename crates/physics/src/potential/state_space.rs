@@ -452,10 +452,9 @@ fn starting_poles(order: usize, band: f64) -> Vec<Pole> {
     poles
 }
 
-/// One relocation of vector fitting (Gustavsen and Semlyen 1999): the real `c, c̃` that make
-/// `Σ c Φ(iω) ≈ σ(iω) K(iω)` with `σ(s) = 1 + Σ c̃ Φ(s)` in least squares; the new poles are
-/// the zeros of `σ`, the eigenvalues of `A − b c̃ᵀ` (`A`, `b` the modes' own `A_r`, `B_r`),
-/// an unstable one mirrored into the left half-plane, none slower than `slowest`.
+/// One relocation of vector fitting (Gustavsen and Semlyen 1999, relaxed as in Gustavsen 2006):
+/// the denominator `σ(s) = d̃ + Σ c̃ Φ(s)` of [`relaxed_denominator`], whose zeros are the new
+/// poles ([`denominator_zeros`]). `None` when the least squares or the zeros fail.
 fn relocate(
     poles: &[Pole],
     omegas: &[f64],
@@ -463,11 +462,20 @@ fn relocate(
     weights: &[f64],
     slowest: f64,
 ) -> Option<Vec<Pole>> {
-    let phi = responses(poles, omegas);
+    let (scale, residues) = relaxed_denominator(&responses(poles, omegas), spectrum, weights)?;
+    denominator_zeros(poles, &(residues / scale), slowest)
+}
+
+/// `d̃` and `c̃` of the real least squares `Σ c Φ(iω_k) ≈ (d̃ + Σ c̃ Φ(iω_k)) K(iω_k)`, weighted
+/// by `w_k`, with `Re Σ_k (d̃ + Σ c̃ Φ(iω_k)) = N` (`N` frequencies) fixing the scale; `d̃` kept
+/// from 0 (at least 1e-8 in size). The unknowns are `(c, d̃, c̃)`.
+fn relaxed_denominator(
+    phi: &DMatrix<Complex<f64>>,
+    spectrum: &DVector<Complex<f64>>,
+    weights: &[f64],
+) -> Option<(f64, DVector<f64>)> {
     let (rows, n) = phi.shape();
-    // Unknowns: c (n), d̃, c̃ (n); rows: Φ c − K (d̃ + Φ c̃) = 0, then Re Σ (d̃ + Φ c̃) = rows.
     let mut matrix = DMatrix::zeros(2 * rows + 1, 2 * n + 1);
-    let scale = spectrum.iter().zip(weights).map(|(k, g)| (g * k).norm_sqr()).sum::<f64>().sqrt() / rows as f64;
     for r in 0..rows {
         let (g, k) = (weights[r], spectrum[r]);
         let mut put = |c: usize, v: Complex<f64>| {
@@ -480,6 +488,8 @@ fn relocate(
             put(n + 1 + c, -phi[(r, c)] * k);
         }
     }
+    // The constraint's row, scaled as the others: the weighted spectrum's RMS.
+    let scale = spectrum.iter().zip(weights).map(|(k, g)| (g * k).norm_sqr()).sum::<f64>().sqrt() / rows as f64;
     matrix[(2 * rows, n)] = scale * rows as f64;
     for c in 0..n {
         matrix[(2 * rows, n + 1 + c)] = scale * phi.column(c).iter().map(|v| v.re).sum::<f64>();
@@ -488,7 +498,15 @@ fn relocate(
     right[2 * rows] = scale * rows as f64;
     let solution = matrix.svd(true, true).solve(&right, 1e-14).ok()?;
     let d = solution[n];
-    let d = if d.abs() < 1e-8 { 1e-8_f64.copysign(d) } else { d };
+    Some((if d.abs() < 1e-8 { 1e-8_f64.copysign(d) } else { d }, solution.rows(n + 1, n).into_owned()))
+}
+
+/// The zeros of `1 + Σ c Φ(s)` for the modes' poles: the eigenvalues of `A − b cᵀ` (`A`, `b` the
+/// modes' own `A_r`, `B_r`, a 1 at each mode's first state), one pole per real zero or
+/// conjugate pair, an unstable one mirrored into the left half-plane, none decaying slower than
+/// `slowest`. `None` when they do not make as many states (a pair split unevenly by round-off).
+fn denominator_zeros(poles: &[Pole], c: &DVector<f64>, slowest: f64) -> Option<Vec<Pole>> {
+    let n = c.len();
     let mut system = DMatrix::zeros(n, n);
     let mut s = 0;
     for &(decay, frequency) in poles {
@@ -498,22 +516,22 @@ fn relocate(
             system[(s + 1, s)] = frequency;
             system[(s + 1, s + 1)] = decay;
         }
-        for c in 0..n {
-            system[(s, c)] -= solution[n + 1 + c] / d;
+        for (column, value) in c.iter().enumerate() {
+            system[(s, column)] -= value;
         }
         s += if frequency == 0.0 { 1 } else { 2 };
     }
-    let zeros = system.complex_eigenvalues();
-    let poles = zeros
+    let zeros: Vec<Pole> = system
+        .complex_eigenvalues()
         .iter()
         .filter_map(|z| {
             let decay = -z.re.abs().max(slowest);
             let real = z.im.abs() <= 1e-9 * z.norm();
             if real { Some((decay, 0.0)) } else { (z.im > 0.0).then_some((decay, z.im)) }
         })
-        .collect::<Vec<_>>();
-    let states: usize = poles.iter().map(|p| if p.1 == 0.0 { 1 } else { 2 }).sum();
-    (states == n).then_some(poles)
+        .collect();
+    let states: usize = zeros.iter().map(|p| if p.1 == 0.0 { 1 } else { 2 }).sum();
+    (states == n).then_some(zeros)
 }
 
 /// The modes of the lowest order whose error reaches the tolerance, with that error; or the

@@ -551,7 +551,8 @@ fn rao_time_domain_refuses_bad_settings_and_names_a_diverging_period() {
 }
 
 /// Issue 33: `tether check` prints each potential-flow body's radiation model. The state space
-/// (validation/potential-flow/cylinder.ron, the default fit): its total states, the sum of its
+/// (validation/potential-flow/cylinder.ron, the default fit): what it was fitted to (the
+/// kernel's spectrum over the file's band, 0 to 5 rad/s), its total states, the sum of its
 /// pairs' as the library fitted them, and its worst pair's error, the library's to the printed
 /// digits and below the scene's `fit_error`; each pair on its own. The direct convolution: its
 /// kernel's length and step and the samples summed per evaluation, `t_K/Δt + 1`.
@@ -567,7 +568,10 @@ fn check_prints_the_radiation_fit_of_each_potential_flow_body() {
     let tether_physics::potential::Radiation::StateSpace(fit) = model.radiation() else { panic!("the default method") };
     let line = stdout.lines().find(|l| l.contains("radiation: state space")).unwrap_or_else(|| panic!("{stdout}"));
     println!("{line}");
-    // "…: N states over P pairs, worst error E (Kij); fit_error F, max_order M"
+    let fitted_to =
+        "fitted to the spectrum B(ω) + iω(A(ω) − A∞) of K(t) (over 60 s every 0.05 s) from 0 to 5.0000 rad/s";
+    assert!(line.contains(fitted_to) && (fit.band() - 5.0).abs() < 1e-6, "{line}");
+    // "…: N states over P pairs, worst error E (Kij) (…); fit_error F, max_order M"
     let number_before = |tag: &str| -> f64 {
         let head = &line[..line.find(tag).unwrap_or_else(|| panic!("{tag:?} in {line}"))];
         head.split_whitespace().last().unwrap().trim_end_matches(',').parse().unwrap()

@@ -319,8 +319,10 @@ fn potential_report(out: &mut String, world: &World, index: usize, model: &Poten
     }
 }
 
-/// The state space's size and fit: total states, pairs, the worst pair's error against the
-/// scene's `fit_error`, then each pair's order and error.
+/// The state space's size and fit: what it was fitted to (the spectrum of the sampled kernel
+/// over the data's band), total states, pairs, the worst pair's error (the spectrum's weighted
+/// relative error, `potential::state_space`) against the scene's `fit_error`, then each pair's
+/// order and error.
 fn state_space_report(out: &mut String, fit: &RadiationStateSpace) {
     let (duration, step) = fit.kernel_sampling();
     let settings = fit.settings();
@@ -331,7 +333,8 @@ fn state_space_report(out: &mut String, fit: &RadiationStateSpace) {
     );
     let _ = writeln!(
         out,
-        "  radiation: state space fitted to K(t) over {duration} s every {step} s: {} states over {} pairs, {worst}; fit_error {:e}, max_order {}",
+        "  radiation: state space fitted to the spectrum B(ω) + iω(A(ω) − A∞) of K(t) (over {duration} s every {step} s) from 0 to {:.4} rad/s: {} states over {} pairs, {worst} (weighted relative error of the spectrum); fit_error {:e}, max_order {}",
+        fit.band(),
         fit.state_count(),
         fit.pairs().len(),
         settings.tolerance(),

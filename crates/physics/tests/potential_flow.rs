@@ -154,45 +154,51 @@ fn the_settled_response_in_regular_waves_is_the_frequency_domain_solve() {
 /// Check 1 of issue 33, its last part: the same scene in a JONSWAP sea (H_s 0.5 m, T_p 8 s),
 /// moored in surge by a 100 m spring of 4 kN/m (a 60 s surge period: free, surge drifts with
 /// the zero-frequency part of any kernel error), with the radiation force from the state space
-/// (the kernel cut at 30 s, fitted to 1e-3 per pair) and from the direct convolution moves the
-/// same to 3e-3 of the largest motion, dof by dof, over 120 s (measured: surge 1.1e-3, heave
-/// 1.9e-4, pitch 2.2e-3; the issue asks 1e-3, which surge and pitch miss: a tighter fit, 3e-4,
-/// leaves them where they are, so the rest is not the fit's error; with the default fit, 1e-2 at
-/// 60 s, 2.5e-3, 1.6e-3 and 3.7e-3).
+/// (the kernel over its default 60 s, its spectrum fitted to 1e-3 per pair) and from the direct
+/// convolution moves the same to 1e-3 of the largest motion, dof by dof, over 120 s (measured:
+/// surge 3.0e-4, heave 5.7e-5, pitch 6.7e-4). The convolution is the reference only if 60 s of
+/// kernel is enough: with 120 s it moves the body the same to 1e-3 too (measured 1.3e-4, 1.2e-5,
+/// 3.7e-4), while a kernel cut at 30 s, printed beside them, moves it by more than the state
+/// space's difference (1.6e-3, 1.1e-4, 3.4e-3): the truncation's own error.
 #[test]
 fn the_state_space_and_the_convolution_move_the_body_alike() {
     let water = "waves: Jonswap(hs: 0.5, tp: 8.0, heading_deg: 0.0, components: 30, seed: 7)";
     let spring = "SpringDamper(name: \"mooring\", end1: World((-100.0, 0.0, -4.0)), end2: Body(body: \"cylinder\"),
         law: Linear(stiffness: 4.0e3, rest_length: 100.0))";
-    let run = |method: &str| {
-        moored_cylinder(
-            water,
-            0.0,
-            &format!("radiation: {method}, kernel_duration: 30.0, fit_error: 1e-3"),
-            0.02,
-            spring,
-        )
-    };
-    let mut worlds = [run("StateSpace"), run("Convolution")];
+    let run = |radiation: &str| moored_cylinder(water, 0.0, &format!("radiation: {radiation}"), 0.02, spring);
+    let methods = [
+        "Convolution",
+        "StateSpace, fit_error: 1e-3, max_order: 40",
+        "Convolution, kernel_duration: 120.0",
+        "Convolution, kernel_duration: 30.0",
+    ];
+    let mut worlds: Vec<World> = methods.iter().map(|m| run(m)).collect();
     let start = worlds[0].state(0);
-    let (mut largest, mut worst) = ([0.0_f64; 3], [0.0_f64; 3]);
+    let mut largest = [0.0_f64; 3];
+    let mut worst = [[0.0_f64; 3]; 4];
     while worlds[0].time() < 120.0 - 0.01 {
         for world in &mut worlds {
             world.step().expect("a stable cylinder");
         }
-        let (a, b) = (motion(&worlds[0], &start), motion(&worlds[1], &start));
-        for dof in 0..3 {
-            largest[dof] = largest[dof].max(b[dof].abs());
-            worst[dof] = worst[dof].max((a[dof] - b[dof]).abs());
+        let reference = motion(&worlds[0], &start);
+        for (world, worst) in worlds.iter().zip(&mut worst) {
+            let moved = motion(world, &start);
+            for dof in 0..3 {
+                largest[dof] = largest[dof].max(reference[dof].abs());
+                worst[dof] = worst[dof].max((moved[dof] - reference[dof]).abs());
+            }
         }
     }
-    for dof in 0..3 {
-        let relative = worst[dof] / largest[dof];
-        println!("motion {dof}: largest {:.4}, worst difference {:.2e} ({relative:.2e})", largest[dof], worst[dof]);
+    let relative = |m: usize| -> [f64; 3] { std::array::from_fn(|dof| worst[m][dof] / largest[dof]) };
+    for (m, method) in methods.iter().enumerate().skip(1) {
+        let [surge, heave, pitch] = relative(m);
+        println!(
+            "{method}: surge {surge:.2e}, heave {heave:.2e}, pitch {pitch:.2e} of the largest motion off the reference"
+        );
     }
-    for dof in 0..3 {
-        let relative = worst[dof] / largest[dof];
-        assert!(largest[dof] > 0.01 && relative < 3e-3, "motion {dof}: {relative:e}");
+    assert!(largest.iter().all(|&l| l > 0.01), "the body moves: {largest:?}");
+    for m in [1, 2] {
+        assert!(relative(m).iter().all(|&r| r < 1e-3), "{}: {:?}", methods[m], relative(m));
     }
 }
 

@@ -218,7 +218,7 @@ fn period_of(modes: &[NaturalMode], direction: Direction) -> f64 {
 }
 
 /// With potential flow (the scene as shipped): surge, heave and yaw within 1.5 % of the
-/// published periods (measured +0.15 %, +0.04 %, −0.25 %), pitch within 2.5 % (measured
+/// published periods (measured +0.14 %, +0.04 %, −0.25 %), pitch within 2.5 % (measured
 /// +2.16 %): the eigenanalysis the published figures come from holds `A∞` (the next test),
 /// while a free decay with the radiation memory feels `A(ω_n)`, 9 % more pitch added inertia at
 /// the pitch period. Each run also holds its own model: the period of the eigenproblem with

@@ -95,7 +95,11 @@ impl PotentialBody {
         }
         let kernel = SampledKernel::from_damping(&spec.coefficients, step, duration);
         let radiation = match spec.method {
-            RadiationMethod::StateSpace => Radiation::StateSpace(RadiationStateSpace::fit(&kernel, spec.fit)?),
+            RadiationMethod::StateSpace => Radiation::StateSpace(RadiationStateSpace::fit(
+                &kernel,
+                spec.coefficients.highest_frequency(),
+                spec.fit,
+            )?),
             RadiationMethod::Convolution => Radiation::Convolution(kernel),
         };
         let reference = body.reference_in_principal.transform_point(&spec.reference.into()).coords;

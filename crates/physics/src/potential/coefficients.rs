@@ -142,6 +142,10 @@ impl Coefficients {
     pub fn frequencies(&self) -> &[f64] {
         &self.frequencies
     }
+    /// The highest frequency \[rad/s] (the list is not empty: [`Self::new`] refuses an empty one).
+    pub fn highest_frequency(&self) -> f64 {
+        self.frequencies[self.frequencies.len() - 1]
+    }
     /// `A(ω)` at each of [`Self::frequencies`].
     pub fn added_mass(&self) -> &[Matrix6] {
         &self.added_mass

@@ -10,6 +10,7 @@
 //! `sinc x = sin x / x` and `g(x) = (sin x − x cos x)/x²`, both by their series near 0.
 
 use super::coefficients::{Coefficients, Matrix6};
+use nalgebra::Complex;
 use std::f64::consts::PI;
 
 /// `sin x / x`, by its series for small `|x|` (where the quotient loses digits).
@@ -174,6 +175,18 @@ impl SampledKernel {
             let worst = pairs.map(|(a, b)| (a[(i, i)] - b[(i, i)]).abs()).fold(0.0, f64::max);
             if peaks[(i, i)] > 0.0 { worst / peaks[(i, i)] } else { 0.0 }
         })
+    }
+
+    /// `K_ij(iω) = ∫₀^{t_K} K_ij(t) e^{−iωt} dt` of one pair at each of `omegas` \[rad/s], `K`
+    /// linear between its samples: `B(ω) + iω (A(ω) − A∞)` of the truncated kernel (Ogilvie's
+    /// relations), what the state space is fitted to.
+    pub fn spectrum(&self, i: usize, j: usize, omegas: &[f64]) -> Vec<Complex<f64>> {
+        let times: Vec<f64> = (0..self.values.len()).map(|n| n as f64 * self.step).collect();
+        let k = self.pair(i, j);
+        omegas
+            .iter()
+            .map(|&w| Complex::new(transform(&times, &k, w, Weight::Cosine), -transform(&times, &k, w, Weight::Sine)))
+            .collect()
     }
 
     /// The largest `|K_ij(t)|` over the samples, per pair.

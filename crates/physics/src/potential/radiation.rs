@@ -127,7 +127,7 @@ mod tests {
     fn both_methods_give_the_closed_form_and_forget_uncommitted_evaluations() {
         let (k, tau) = (2.0e3, 1.5);
         let kernel = SampledKernel::sample(0.01, 20.0, |t| Matrix6::identity() * k * (-t / tau).exp());
-        let fit = RadiationStateSpace::fit(&kernel, FitSettings::new(1e-6, 4).expect("valid")).expect("one pole");
+        let fit = RadiationStateSpace::fit(&kernel, 2.0, FitSettings::new(1e-5, 4).expect("valid")).expect("one pole");
         let v = Vector6::new(0.5, 0.0, -1.0, 0.0, 0.02, 0.0);
         for radiation in [Radiation::StateSpace(fit), Radiation::Convolution(kernel)] {
             let mut run = RadiationRun::default();

@@ -1,0 +1,138 @@
+"""Steps per CPU second of the whole `tether record` process against a loop of MuJoCo's `mj_step`
+on the same chain (scenes/bench/chain100*.ron beside chain100*.xml), ROUNDS rounds interleaved,
+medians; then where each chain is at the end, to show that the two models are the same chain.
+Run by scripts/mujoco-compare.sh, which builds Tether and installs the `mujoco` package:
+    python scripts/mujoco_compare.py TETHER STEPS_EXAMPLE ROUNDS SCENE_STEM...
+
+Tether's side is the whole process (start, scene load, the camera's framing run, the physics, the
+recorder at 60 frames a second, the file written), its user + system CPU as the kernel counts it
+for the child; MuJoCo's side is the loop of `mj_step` alone (the model compiled beforehand, the
+Python call's overhead of about a microsecond a step included). `tether record --timing`'s
+physics figure (the simulation thread's CPU in `World::step`) is printed too: the per-step ratio.
+"""
+
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+import mujoco
+import numpy as np
+
+NUMBER = r"(-?[\d.]+(?:e[+-]?\d+)?)"
+
+
+def ron_chain(text):
+    """The chain a bench RON file describes: step, duration, gravity, bodies, springs, anchors."""
+    bodies = re.findall(
+        rf'name: "(ball\d+)",\s*master: Node\(position: \({NUMBER}, {NUMBER}, {NUMBER}\), mass: {NUMBER}, '
+        rf"inertia: Inertia\(xx: {NUMBER}, yy: {NUMBER}, zz: {NUMBER}\)\),\s*shape: Sphere\(radius: {NUMBER}",
+        text,
+    )
+    end = r'(World\(\([^)]*\)\)|Body\(body: "ball\d+"\))'
+    springs = re.findall(
+        rf'SpringDamper\(name: "spring\d+", end1: {end}, end2: {end}, '
+        rf"law: Linear\(stiffness: {NUMBER}, rest_length: {NUMBER}\), damping: {NUMBER}\)",
+        text,
+    )
+    return {
+        "dt": float(re.search(rf"\bdt: {NUMBER}", text).group(1)),
+        "duration": float(re.search(rf"\bduration: {NUMBER}", text).group(1)),
+        "gravity": [float(g) for g in re.search(rf"gravity: \({NUMBER}, {NUMBER}, {NUMBER}\)", text).groups()],
+        "bodies": [(name, [float(v) for v in values]) for name, *values in bodies],
+        "springs": springs,
+        "contacts": len(re.findall(r"\bContact\(", text)),
+    }
+
+
+def check_same_chain(chain, model):
+    """Fails unless the compiled MJCF holds the RON file's bodies, springs and settings."""
+    assert model.opt.timestep == chain["dt"], (model.opt.timestep, chain["dt"])
+    assert np.allclose(model.opt.gravity, chain["gravity"])
+    assert model.nbody - 1 == len(chain["bodies"]) == 100, model.nbody
+    for name, (x, y, z, mass, ixx, iyy, izz, radius) in chain["bodies"]:
+        body = model.body(name)
+        assert np.allclose(body.pos, [x, y, z], rtol=0, atol=1e-12), name
+        assert body.mass[0] == mass and np.allclose(body.inertia, [ixx, iyy, izz]), name
+        assert model.geom_size[body.geomadr[0]][0] == radius, name
+    assert model.ntendon == len(chain["springs"]) == 101, model.ntendon
+    for index, (end1, end2, stiffness, rest, damping) in enumerate(chain["springs"]):
+        assert model.tendon_stiffness[index] == float(stiffness), index
+        assert model.tendon_damping[index] == float(damping), index
+        assert np.all(model.tendon_lengthspring[index] == float(rest)), index
+        sites = [model.wrap_objid[model.tendon_adr[index] + k] for k in range(2)]
+        for site, end in zip(sites, (end1, end2)):
+            ball = re.search(r'"(ball\d+)"', end)
+            if ball:
+                assert model.site_bodyid[site] == model.body(ball.group(1)).id, (index, end)
+            else:
+                point = [float(v) for v in re.search(r"\(\(([^)]*)\)\)", end).group(1).split(",")]
+                assert model.site_bodyid[site] == 0 and np.allclose(model.site_pos[site], point), (index, end)
+    contacts = model.ngeom - 100 if chain["contacts"] else 0
+    assert contacts == (1 if chain["contacts"] else 0), model.ngeom
+
+
+def tether_round(tether, scene, output):
+    """Steps per CPU second of one whole `tether record` process, and its physics' steps per second."""
+    process = subprocess.Popen(
+        [tether, "record", scene, "-o", output, "--timing"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True
+    )
+    stderr = process.stderr.read()
+    _, status, usage = os.wait4(process.pid, 0)
+    if status != 0:
+        sys.exit(f"{tether} record {scene} failed:\n{stderr}")
+    steps = int(re.search(r"(\d+) steps", stderr).group(1))
+    per_step = float(re.search(r"physics [\d.]+ s \([\d.]+%, ([\d.]+) µs per step\)", stderr).group(1))
+    return steps / (usage.ru_utime + usage.ru_stime), 1e6 / per_step
+
+
+def mujoco_round(model, steps):
+    """Steps per CPU second of `steps` calls of `mj_step` from the model's initial state, and the data."""
+    data = mujoco.MjData(model)
+    start = time.process_time()
+    for _ in range(steps):
+        mujoco.mj_step(model, data)
+    return steps / (time.process_time() - start), data
+
+
+def mujoco_figure(model, data):
+    """Where MuJoCo's chain is: the line the steps example prints for Tether's."""
+    heights = data.xpos[1:, 2]
+    velocities = data.qvel.reshape(-1, 6)
+    kinetic = 0.5 * (model.body_mass[1:] @ (velocities[:, :3] ** 2).sum(axis=1)) + 0.5 * (
+        model.body_inertia[1:] * velocities[:, 3:] ** 2
+    ).sum()
+    return f"t = {data.time:.3f} s: mean height {heights.mean():.4f} m, lowest {heights.min():.4f} m, kinetic energy {kinetic:.2f} J"
+
+
+def main():
+    tether, steps_example, rounds, *stems = sys.argv[1:]
+    with tempfile.TemporaryDirectory() as out:
+        for stem in stems:
+            ron, xml = f"scenes/bench/{stem}.ron", f"scenes/bench/{stem}.xml"
+            chain = ron_chain(open(ron, encoding="utf-8").read())
+            model = mujoco.MjModel.from_xml_path(xml)
+            check_same_chain(chain, model)
+            steps = round(chain["duration"] / chain["dt"])
+            process, physics, engine = [], [], []
+            for _ in range(int(rounds)):
+                whole, stepping = tether_round(tether, ron, os.path.join(out, "run.rrd"))
+                process.append(whole)
+                physics.append(stepping)
+                rate, data = mujoco_round(model, steps)
+                engine.append(rate)
+            tether_rate, physics_rate, mujoco_rate = (statistics.median(v) for v in (process, physics, engine))
+            print(f"{stem}: {steps} steps, medians of {rounds} rounds")
+            print(f"  tether record (whole process) {tether_rate:9.0f} steps per CPU second")
+            print(f"  mujoco {mujoco.__version__} mj_step loop    {mujoco_rate:9.0f} steps per CPU second")
+            print(f"  ratio {tether_rate / mujoco_rate:.2f}x (Tether's physics alone: {physics_rate:.0f} steps/s, {physics_rate / mujoco_rate:.2f}x)")
+            figure = subprocess.run([steps_example, ron, "0", str(steps)], check=True, capture_output=True, text=True)
+            print(f"  tether {figure.stdout.strip()}")
+            print(f"  mujoco {mujoco_figure(model, data)}")
+
+
+if __name__ == "__main__":
+    main()

@@ -486,6 +486,29 @@ fn a_recording_opens_with_its_eye_framing_the_run() {
     }
 }
 
+/// `tether record` frames with its own run's steps (`framing::Sweep`) rather than a copy's run:
+/// the same box whether the run outlasts the sweep (6 s of box_drop's crate, which falls and
+/// hops, against a sweep of 5 s), stops inside it (0.3 s, finished on a copy) or has not
+/// stepped at all.
+#[test]
+fn a_sweep_fed_by_the_run_frames_as_a_copy_of_it_does() {
+    let world = tether_scene::load(&common::repo("scenes/box_drop.ron")).unwrap().world;
+    let expected = tether_record::framing::swept_box(&world);
+    // Dropped from G at 1.2 m (its lowest corner above 0.79 m), it reaches the ground and ends
+    // 3.1 m from where it fell: the box spans more than the crate's 0.82 m diagonal.
+    let (low, high) = expected;
+    assert!(low.z < 0.1 && (high.x - low.x).max(high.y - low.y) > 2.5, "{expected:?}");
+    for seconds in [0.0, 0.3, 6.0] {
+        let mut run = world.clone();
+        let mut sweep = tether_record::framing::Sweep::start(&run);
+        for _ in 0..(seconds / run.dt()).round() as usize {
+            run.step().unwrap();
+            sweep.after_step(&run);
+        }
+        assert_eq!(sweep.finish(&run), expected, "{seconds} s");
+    }
+}
+
 /// The framing sweeps what moves over its first seconds: a sphere (r = 0.1 m) falling freely
 /// from z = 10 m for 5 s reaches z = 10 − g·5²/2 = −112.6 m; the spring anchor 1 m from where it
 /// starts is framed with it, the one 3 km away is not.

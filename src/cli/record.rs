@@ -17,7 +17,9 @@ use indicatif::{ProgressBar, ProgressState, ProgressStyle};
 use std::path::PathBuf;
 use std::sync::atomic::Ordering;
 use tether_physics::integrator::Integrator;
-use tether_physics::world::StepError;
+use tether_physics::world::{StepError, World};
+use tether_record::framing::{Framing, Sweep, view_direction};
+use tether_record::layout::{self, Camera};
 use tether_record::{ArrowedContacts, FaceArrows, FrameSchedule, Recorder};
 
 #[derive(Debug, Args)]
@@ -112,6 +114,17 @@ fn positive(name: &str, value: f64, unit: &str) -> anyhow::Result<f64> {
     }
 }
 
+/// Draws the contacts' planes and sends the window's layout, its eye framing the run (the file
+/// opens in any viewer as in the window), from `sweep` of the run's first seconds (finished on a
+/// copy of `world` when the run was shorter).
+fn frame(recorder: &Recorder, world: &World, sweep: Sweep) -> anyhow::Result<()> {
+    let swept = sweep.finish(world);
+    recorder.log_planes(world, &swept)?;
+    let camera = Camera { framing: Framing::around(&swept, &view_direction(world)), follow: None };
+    layout::send_layout_with_fits(recorder.stream(), world, &[], &camera)?;
+    Ok(())
+}
+
 pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     let log_hz = positive("--log-hz", args.log_hz, "frames per second")?;
     if let Some(duration) = args.duration {
@@ -135,10 +148,10 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     let frames = FrameSchedule::new(log_hz, dt, total_steps);
     let face_arrows = face_arrows(args)?;
     face_arrows.check(world)?;
-    let mut recorder = Recorder::to_file(&args.output, world, &face_arrows)
-        .with_context(|| format!("cannot write {}", args.output.display()))?;
-    // The window's layout, its eye framing the run: the file opens in any viewer as in the window.
-    tether_record::layout::send_layout(recorder.stream(), world)
+    // The framing (the eye, the contacts' planes) sweeps what moves over the run's first seconds:
+    // this run's own steps, rather than a copy's.
+    let mut sweep = Sweep::start(world);
+    let mut recorder = Recorder::to_file_unframed(&args.output, world, &face_arrows)
         .with_context(|| format!("cannot write {}", args.output.display()))?;
     let interrupted = super::cancel_on_ctrl_c()?;
 
@@ -158,15 +171,18 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
             break;
         }
         if let Err(error) = world.step() {
+            sweep.halt();
             failure = Some(error);
             break;
         }
+        sweep.after_step(world);
         if frames.is_due(step) {
             stopwatch.recorder(|| recorder.log_frame(world))?;
             progress.set_position(step);
         }
     }
     progress.finish_and_clear();
+    frame(&recorder, world, sweep).with_context(|| format!("cannot write {}", args.output.display()))?;
     let stats = stopwatch.recorder_waiting(|| recorder.finish())?;
     if args.timing {
         let file_bytes = std::fs::metadata(&args.output).map_or(0, |m| m.len());

@@ -1,8 +1,9 @@
 //! The 3D view's default camera: what moves, framed (docs/window.md, "The view").
 //!
 //! A copy of the world is run over its first [`FRAMED_SECONDS`] (at most [`MAX_FRAMING_STEPS`]
-//! world steps; up to a divergence, if one comes first), and every body that is not held fixed
-//! is swept: the corners of its shape's bounding box at each sampled pose. A spring-damper's
+//! world steps; up to a divergence, if one comes first) — or the run itself is followed as it
+//! goes ([`Sweep`]: the same poses, no second run) — and every body that is not held fixed is
+//! swept: the corners of its shape's bounding box at each sampled pose. A spring-damper's
 //! world anchor near that box (within [`ANCHOR_REACH`] times its half-diagonal, plus a metre) is
 //! framed with it (a short line's tie point: the chain's ends, the fender's ropes); a far one is
 //! not, nor is a mooring line's anchor (hundreds of metres away, it would shrink the floater to
@@ -96,38 +97,101 @@ pub fn view_direction(world: &World) -> Vec3 {
 /// `world`, and the spring-dampers' world anchors near it; every body's at its current pose when
 /// none moves.
 pub fn swept_box(world: &World) -> (Vec3, Vec3) {
-    let bodies = world.bodies();
-    let moving: Vec<usize> = (0..bodies.len()).filter(|&i| !held_fixed(&bodies[i].support)).collect();
-    let framed: Vec<usize> = if moving.is_empty() { (0..bodies.len()).collect() } else { moving };
-    let corners: Vec<Vec<Vec3>> = bodies.iter().map(corners_in_principal).collect();
-    let mut points: Vec<Vec3> = Vec::new();
-    let mut sample = |world: &World| {
-        for &index in &framed {
+    Sweep::start(world).finish(world)
+}
+
+/// What moves, swept as a run goes: every framed body's corners at its pose now, then every
+/// [`SAMPLES_PER_SECOND`]-th of a simulated second over the first [`FRAMED_SECONDS`] (at most
+/// [`MAX_FRAMING_STEPS`] world steps; up to a failed step, if one comes first). A caller that
+/// steps the world anyway (`tether record`) feeds it its own steps and spares the copy's run,
+/// which is as long as the first half of `chain100`'s bench run; [`swept_box`] runs a copy.
+pub struct Sweep {
+    /// The bodies framed: those that move, or all when none does.
+    framed: Vec<usize>,
+    /// Each body's box corners (and slave nodes) in its principal frame \[m].
+    corners: Vec<Vec<Vec3>>,
+    /// The corners sampled so far, in the world \[m].
+    points: Vec<Vec3>,
+    /// World steps swept, and taken so far.
+    steps: u64,
+    taken: u64,
+    /// Steps between samples.
+    every: u64,
+    /// A step failed: the sweep ends there.
+    halted: bool,
+}
+
+impl Sweep {
+    /// A sweep of a run starting at `world`'s current state, its first sample taken.
+    pub fn start(world: &World) -> Self {
+        let bodies = world.bodies();
+        let moving: Vec<usize> = (0..bodies.len()).filter(|&i| !held_fixed(&bodies[i].support)).collect();
+        let framed: Vec<usize> = if moving.is_empty() { (0..bodies.len()).collect() } else { moving };
+        let dt = world.dt();
+        let mut sweep = Self {
+            framed,
+            corners: bodies.iter().map(corners_in_principal).collect(),
+            points: Vec::new(),
+            steps: ((FRAMED_SECONDS / dt).ceil() as u64).min(MAX_FRAMING_STEPS),
+            taken: 0,
+            every: ((1.0 / (SAMPLES_PER_SECOND * dt)).round() as u64).max(1),
+            halted: false,
+        };
+        sweep.sample(world);
+        sweep
+    }
+
+    /// Follows one more world step that succeeded, `world` its state after it.
+    pub fn after_step(&mut self, world: &World) {
+        if self.is_complete() {
+            return;
+        }
+        self.taken += 1;
+        if self.taken % self.every == 0 {
+            self.sample(world);
+        }
+    }
+
+    /// Ends the sweep at a step that failed (the run's framing is what it did up to there).
+    pub fn halt(&mut self) {
+        self.halted = true;
+    }
+
+    /// Whether every step swept has been taken (or one failed).
+    pub fn is_complete(&self) -> bool {
+        self.halted || self.taken >= self.steps
+    }
+
+    /// The box of what was swept and of the spring-dampers' world anchors near it, the steps not
+    /// taken yet (a run shorter than the sweep, or interrupted) run on a copy of `world`, the
+    /// state after the steps taken.
+    pub fn finish(mut self, world: &World) -> (Vec3, Vec3) {
+        if !self.is_complete() {
+            let mut run = world.clone();
+            while !self.is_complete() {
+                match run.step() {
+                    Ok(()) => self.after_step(&run),
+                    Err(_) => self.halt(),
+                }
+            }
+        }
+        let finite: Vec<Vec3> = self.points.into_iter().filter(|p| p.iter().all(|c| c.is_finite())).collect();
+        if finite.is_empty() {
+            return (Vec3::zeros(), Vec3::zeros());
+        }
+        let (low, high) = bounding_box(finite);
+        let reach = ANCHOR_REACH * (high - low).norm() / 2.0 + 1.0;
+        let near = |p: &Vec3| (p - p.sup(&low).inf(&high)).norm() <= reach;
+        bounding_box(spring_anchors(world).filter(near).chain([low, high]))
+    }
+
+    /// Adds the framed bodies' corners at `world`'s poses.
+    fn sample(&mut self, world: &World) {
+        for &index in &self.framed {
             let state = world.state(index);
-            points.extend(corners[index].iter().map(|corner| state.point(corner)));
-        }
-    };
-    sample(world);
-    let mut run = world.clone();
-    let dt = run.dt();
-    let steps = ((FRAMED_SECONDS / dt).ceil() as u64).min(MAX_FRAMING_STEPS);
-    let every = ((1.0 / (SAMPLES_PER_SECOND * dt)).round() as u64).max(1);
-    for step in 1..=steps {
-        if run.step().is_err() {
-            break;
-        }
-        if step % every == 0 {
-            sample(&run);
+            self.points.extend(self.corners[index].iter().map(|corner| state.point(corner)));
         }
     }
-    let finite: Vec<Vec3> = points.into_iter().filter(|p| p.iter().all(|c| c.is_finite())).collect();
-    if finite.is_empty() {
-        return (Vec3::zeros(), Vec3::zeros());
-    }
-    let (low, high) = bounding_box(finite);
-    let reach = ANCHOR_REACH * (high - low).norm() / 2.0 + 1.0;
-    let near = |p: &Vec3| (p - p.sup(&low).inf(&high)).norm() <= reach;
-    bounding_box(spring_anchors(world).filter(near).chain([low, high]))
 }
 
 /// Whether a support holds the body still: every translation and the rotation fixed.

@@ -58,11 +58,6 @@ impl Camera {
     }
 }
 
-/// The layout of a run of `world`, its eye framing the run.
-pub fn layout(world: &World) -> (Blueprint, EntityPath) {
-    layout_with_fits(world, &[])
-}
-
 /// The layout of a run of `world` with a fit's plot for each measured column of `columns`
 /// (record and model, [`crate::comparison`]) at the top of the plots, and the blueprint path of
 /// its 3D view (where its eye goes: [`send_layout_with_fits`]).
@@ -165,15 +160,6 @@ fn energy_views() -> [ContainerLike; 2] {
         view("energy: gravity, elastic, total, balance [J]", stored),
         view("energy: kinetic, dissipated, external work [J]", moving),
     ]
-}
-
-/// Sends `world`'s [`layout`] to the viewer behind `stream`, its eye framing the run (nothing
-/// for a disabled stream).
-pub fn send_layout(stream: &RecordingStream, world: &World) -> rerun::RecordingStreamResult<()> {
-    if !stream.is_enabled() {
-        return Ok(());
-    }
-    send(stream, layout(world), &Camera::framing(world))
 }
 
 /// Sends `world`'s [`layout_with_fits`] with its eye at `camera` to the viewer behind `stream`

@@ -57,6 +57,7 @@ pub use tracks::face_arrows::{ArrowedContacts, FaceArrows};
 use frames::Frames;
 use rerun::RecordingStream;
 use std::path::Path;
+use tether_physics::math::Vec3;
 use tether_physics::world::World;
 use tracks::{Settings, Track};
 
@@ -102,9 +103,18 @@ impl Recorder {
     /// path fails before any simulation (and face arrows asked for an unknown contact before
     /// the file is created).
     pub fn to_file(path: &Path, world: &World, face_arrows: &FaceArrows) -> Result<Self, RecordError> {
+        let recorder = Self::to_file_unframed(path, world, face_arrows)?;
+        recorder.frame_planes(world)?;
+        Ok(recorder)
+    }
+
+    /// As [`Self::to_file`], but the contacts' planes, whose patches cover what moves over the
+    /// run's first seconds, are left for [`Self::log_planes`] to draw once the caller's own run
+    /// has swept that ([`framing::Sweep`]), rather than drawn now from a copy's run.
+    pub fn to_file_unframed(path: &Path, world: &World, face_arrows: &FaceArrows) -> Result<Self, RecordError> {
         face_arrows.check(world)?;
         let stream = rerun::RecordingStreamBuilder::new(APPLICATION_ID).save(path)?;
-        Self::new(stream, world, face_arrows)
+        Self::unframed(stream, world, face_arrows)
     }
 
     /// A recorder writing to the `.rrd` file `path` under application id `application` and
@@ -123,6 +133,13 @@ impl Recorder {
     /// # Errors
     /// A stream that fails, or face arrows asked for a contact the world does not have.
     pub fn new(stream: RecordingStream, world: &World, face_arrows: &FaceArrows) -> Result<Self, RecordError> {
+        let recorder = Self::unframed(stream, world, face_arrows)?;
+        recorder.frame_planes(world)?;
+        Ok(recorder)
+    }
+
+    /// A recorder on `stream` that has logged the static scene but the contacts' planes.
+    fn unframed(stream: RecordingStream, world: &World, face_arrows: &FaceArrows) -> Result<Self, RecordError> {
         let settings = Settings { face_arrows: face_arrows.resolve(world)? };
         stream.log_static(paths::WORLD, &rerun::ViewCoordinates::RIGHT_HAND_Z_UP())?;
         let tracks = tracks::for_world(world);
@@ -132,6 +149,25 @@ impl Recorder {
         // The static rows are all the batcher ever holds (frames go as columns): out they go.
         stream.flush_async()?;
         Ok(Self { stream, frames: Frames::default(), tracks, settings, buffered: 0, stats: RecordStats::default() })
+    }
+
+    /// Draws the contacts' planes around what a copy of `world` sweeps (no run when it has none).
+    fn frame_planes(&self, world: &World) -> Result<(), RecordError> {
+        if tracks::boundaries::has_planes(world) {
+            self.log_planes(world, &framing::swept_box(world))?;
+        }
+        Ok(())
+    }
+
+    /// Logs, statically, the contacts' planes of `world` as patches covering `swept`, the box of
+    /// what moves over the run's first seconds ([`framing::Sweep`]), and sends them now.
+    ///
+    /// # Errors
+    /// A stream that fails.
+    pub fn log_planes(&self, world: &World, swept: &(Vec3, Vec3)) -> Result<(), RecordError> {
+        tracks::boundaries::log_planes(&self.stream, world, swept)?;
+        self.stream.flush_async()?;
+        Ok(())
     }
 
     /// The stream it logs to (to log beside the frames: a fit's measured series).
@@ -166,7 +202,7 @@ impl Recorder {
         }
         self.tracks = tracks;
         self.stream.flush_async()?;
-        Ok(())
+        self.frame_planes(world)
     }
 
     /// Buffers the world's current state as a frame at its `sim_time` and `step`; sends the

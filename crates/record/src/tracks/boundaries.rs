@@ -13,7 +13,7 @@ use super::{Settings, Track, f32x3};
 use crate::frames::Frames;
 use crate::rerun;
 use crate::stats::KindStats;
-use crate::{RecordError, framing, paths};
+use crate::{RecordError, paths};
 use rerun::RecordingStream;
 use tether_physics::coupling::contact::{Opposing, Plane};
 use tether_physics::coupling::{CouplingKind, Endpoint};
@@ -80,25 +80,35 @@ impl Boundaries {
     }
 }
 
+/// Logs, statically, each contact plane of `world` as a patch covering `swept` (the box of what
+/// moves over the run's first seconds, [`crate::framing`]).
+pub(crate) fn log_planes(stream: &RecordingStream, world: &World, swept: &(Vec3, Vec3)) -> Result<(), RecordError> {
+    let Some(boundaries) = Boundaries::new(world) else { return Ok(()) };
+    let [r, g, b] = BOUNDARY_RGB;
+    for (name, planes) in &boundaries.planes {
+        let lines: Vec<Vec<[f32; 3]>> = planes
+            .iter()
+            .flat_map(|plane| grid(&patch(plane, swept)))
+            .map(|[a, b]| vec![f32x3(&a), f32x3(&b)])
+            .collect();
+        stream.log_static(
+            paths::boundary(name),
+            &rerun::LineStrips3D::new(lines)
+                .with_colors([rerun::Color::from_rgb(r, g, b)])
+                .with_radii([rerun::Radius::new_ui_points(LINE_POINTS)]),
+        )?;
+    }
+    Ok(())
+}
+
+/// Whether `world` has a contact against planes (whose patches [`log_planes`] draws).
+pub(crate) fn has_planes(world: &World) -> bool {
+    Boundaries::new(world).is_some_and(|boundaries| !boundaries.planes.is_empty())
+}
+
 impl Track for Boundaries {
-    fn log_static(&self, stream: &RecordingStream, world: &World) -> Result<(), RecordError> {
-        if !self.planes.is_empty() {
-            let swept = framing::swept_box(world);
-            let [r, g, b] = BOUNDARY_RGB;
-            for (name, planes) in &self.planes {
-                let lines: Vec<Vec<[f32; 3]>> = planes
-                    .iter()
-                    .flat_map(|plane| grid(&patch(plane, &swept)))
-                    .map(|[a, b]| vec![f32x3(&a), f32x3(&b)])
-                    .collect();
-                stream.log_static(
-                    paths::boundary(name),
-                    &rerun::LineStrips3D::new(lines)
-                        .with_colors([rerun::Color::from_rgb(r, g, b)])
-                        .with_radii([rerun::Radius::new_ui_points(LINE_POINTS)]),
-                )?;
-            }
-        }
+    /// The anchors; the planes wait for the framing's box ([`log_planes`]).
+    fn log_static(&self, stream: &RecordingStream, _world: &World) -> Result<(), RecordError> {
         if !self.anchors.is_empty() {
             let [r, g, b] = ANCHOR_RGB;
             stream.log_static(

@@ -17,7 +17,7 @@
 //! - [`seabed`]: the lines' grounded parts, touchdowns and grounded lengths.
 
 mod bodies;
-mod boundaries;
+pub(crate) mod boundaries;
 mod catenaries;
 mod contacts;
 mod energy;

@@ -9,7 +9,7 @@
 //! | `world/springs` | every spring-damper's line, one strip each |
 //! | `world/couplings/<name>` | a catenary's shape |
 //! | `world/contacts/<name>` | a contact's face forces |
-//! | `world/boundaries/<name>` | a contact's planes (a ground, a quay wall) |
+//! | `world/boundaries/<name>` | a contact's planes (a ground, a quay wall), each under the first contact against it |
 //! | `world/anchors` | every coupling end fixed in the world |
 //! | `plots/energy` | the energy balance |
 //! | `plots/tension` | every coupling's tension |
@@ -88,7 +88,8 @@ pub fn touchdowns(line: &str) -> String {
     format!("world/seabed/touchdowns/{line}")
 }
 
-/// `world/boundaries/<contact>`: the planes a contact pushes its body away from.
+/// `world/boundaries/<contact>`: the planes a contact pushes its body away from (those no earlier
+/// contact is against).
 pub fn boundary(contact: &str) -> String {
     format!("world/boundaries/{contact}")
 }

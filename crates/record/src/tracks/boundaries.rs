@@ -1,7 +1,8 @@
 //! What the bodies are held by and pressed against, drawn once, statically:
 //!
 //! - `world/boundaries/<contact>`: each half-space a contact pushes its body away from (a ground,
-//!   a quay wall, a domain box's walls; PHYSICS.md §4) as a square of its plane, covering what
+//!   a quay wall, a domain box's walls; PHYSICS.md §4), under the first contact against it (a
+//!   ground under a hundred balls is drawn once), as a square of its plane, covering what
 //!   moves over the first seconds ([`crate::framing::swept_box`]) projected onto it, 20 % wider,
 //!   at least [`MIN_HALF_SIDE`] from its centre, drawn as a grid of lines: a wall seen from
 //!   behind hides nothing of what presses against it; a body a contact is against is drawn as a
@@ -39,24 +40,32 @@ const ANCHOR_POINTS: f32 = 6.0;
 
 /// The world's contact planes and anchors (`None` when it has neither).
 pub(super) struct Boundaries {
-    /// Each contact's name and planes.
+    /// Each contact's name and the planes no earlier contact is against.
     planes: Vec<(String, Vec<Plane>)>,
     anchors: Vec<Vec3>,
 }
 
 impl Boundaries {
     pub(super) fn new(world: &World) -> Option<Self> {
-        let planes: Vec<(String, Vec<Plane>)> = world
-            .couplings()
-            .iter()
-            .filter_map(|coupling| match &coupling.kind {
+        // Each plane once, with the first contact against it: chain100's hundred balls each
+        // have a contact against the same ground, drawn as one grid rather than a hundred
+        // identical ones (a hundred chunks for the file writer, a hundred grids for the viewer).
+        let mut drawn: Vec<Plane> = Vec::new();
+        let mut planes: Vec<(String, Vec<Plane>)> = Vec::new();
+        for coupling in world.couplings() {
+            let against = match &coupling.kind {
                 CouplingKind::Contact(contact) => match &contact.against {
-                    Opposing::Planes(planes) => Some((coupling.name.clone(), planes.clone())),
-                    Opposing::Body { .. } => None,
+                    Opposing::Planes(planes) => planes,
+                    Opposing::Body { .. } => continue,
                 },
-                CouplingKind::SpringDamper(_) | CouplingKind::Catenary(_) => None,
-            })
-            .collect();
+                CouplingKind::SpringDamper(_) | CouplingKind::Catenary(_) => continue,
+            };
+            let new: Vec<Plane> = against.iter().filter(|plane| !drawn.contains(plane)).copied().collect();
+            if !new.is_empty() {
+                drawn.extend(&new);
+                planes.push((coupling.name.clone(), new));
+            }
+        }
         let anchors: Vec<Vec3> = world
             .couplings()
             .iter()

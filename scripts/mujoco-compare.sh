@@ -5,9 +5,9 @@
 # medians and their ratio; then where each chain is after its 10 s, from both. Installs the
 # `mujoco` Python package (4.0.0) into a virtual environment when missing
 # ($TETHER_MUJOCO_VENV, default ~/.cache/tether/mujoco-venv). Run it on an idle machine (quote
-# the load average).
-#   scripts/mujoco-compare.sh [SCENE_STEM…]   (default: chain100 chain100_air)
-#   ROUNDS=3 scripts/mujoco-compare.sh chain100
+# the load average). Several binaries are run in turn in each round, for an A/B in one call.
+#   scripts/mujoco-compare.sh [BINARY…]   (default: this checkout's headless release build)
+#   ROUNDS=3 SCENES=chain100 scripts/mujoco-compare.sh /tmp/tether-before "$CARGO_TARGET_DIR/release/tether"
 set -euo pipefail
 cd "$(dirname "$0")/.."
 MUJOCO_VERSION=4.0.0
@@ -17,10 +17,12 @@ if ! "$venv/bin/python" -c "import mujoco; assert mujoco.__version__ == '$MUJOCO
     python3 -m venv "$venv"
     "$venv/bin/pip" install --quiet "mujoco==$MUJOCO_VERSION"
 fi
-cargo build --release --quiet -p tether --no-default-features
-cargo build --release --quiet -p tether-physics --example steps
 target="${CARGO_TARGET_DIR:-target}/release"
-stems=("$@")
-[ ${#stems[@]} -gt 0 ] || stems=(chain100 chain100_air)
+binaries=("$@")
+if [ ${#binaries[@]} -eq 0 ]; then
+    cargo build --release --quiet -p tether --no-default-features
+    binaries=("$target/tether")
+fi
+cargo build --release --quiet -p tether-physics --example steps
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg)"
-"$venv/bin/python" scripts/mujoco_compare.py "$target/tether" "$target/examples/steps" "${ROUNDS:-5}" "${stems[@]}"
+"$venv/bin/python" scripts/mujoco_compare.py "$target/examples/steps" "${ROUNDS:-5}" "${binaries[@]}"

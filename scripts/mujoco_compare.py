@@ -1,8 +1,9 @@
 """Steps per CPU second of the whole `tether record` process against a loop of MuJoCo's `mj_step`
-on the same chain (scenes/bench/chain100*.ron beside chain100*.xml), ROUNDS rounds interleaved,
-medians; then where each chain is at the end, to show that the two models are the same chain.
-Run by scripts/mujoco-compare.sh, which builds Tether and installs the `mujoco` package:
-    python scripts/mujoco_compare.py TETHER STEPS_EXAMPLE ROUNDS SCENE_STEM...
+on the same chain (scenes/bench/chain100*.ron beside chain100*.xml), ROUNDS rounds interleaved
+(each Tether binary, then MuJoCo), medians; then where each chain is at the end, to show that the
+two models are the same chain. Run by scripts/mujoco-compare.sh, which builds Tether and installs
+the `mujoco` package:
+    SCENES="chain100 chain100_air" python scripts/mujoco_compare.py STEPS_EXAMPLE ROUNDS TETHER...
 
 Tether's side is the whole process (start, scene load, the camera's framing run, the physics, the
 recorder at 60 frames a second, the file written), its user + system CPU as the kernel counts it
@@ -109,26 +110,33 @@ def mujoco_figure(model, data):
 
 
 def main():
-    tether, steps_example, rounds, *stems = sys.argv[1:]
+    steps_example, rounds, *binaries = sys.argv[1:]
     with tempfile.TemporaryDirectory() as out:
-        for stem in stems:
+        for stem in os.environ.get("SCENES", "chain100 chain100_air").split():
             ron, xml = f"scenes/bench/{stem}.ron", f"scenes/bench/{stem}.xml"
             chain = ron_chain(open(ron, encoding="utf-8").read())
             model = mujoco.MjModel.from_xml_path(xml)
             check_same_chain(chain, model)
             steps = round(chain["duration"] / chain["dt"])
-            process, physics, engine = [], [], []
+            process = {binary: [] for binary in binaries}
+            physics = {binary: [] for binary in binaries}
+            engine = []
             for _ in range(int(rounds)):
-                whole, stepping = tether_round(tether, ron, os.path.join(out, "run.rrd"))
-                process.append(whole)
-                physics.append(stepping)
+                for binary in binaries:
+                    whole, stepping = tether_round(binary, ron, os.path.join(out, "run.rrd"))
+                    process[binary].append(whole)
+                    physics[binary].append(stepping)
                 rate, data = mujoco_round(model, steps)
                 engine.append(rate)
-            tether_rate, physics_rate, mujoco_rate = (statistics.median(v) for v in (process, physics, engine))
+            mujoco_rate = statistics.median(engine)
             print(f"{stem}: {steps} steps, medians of {rounds} rounds")
-            print(f"  tether record (whole process) {tether_rate:9.0f} steps per CPU second")
-            print(f"  mujoco {mujoco.__version__} mj_step loop    {mujoco_rate:9.0f} steps per CPU second")
-            print(f"  ratio {tether_rate / mujoco_rate:.2f}x (Tether's physics alone: {physics_rate:.0f} steps/s, {physics_rate / mujoco_rate:.2f}x)")
+            print(f"  mujoco {mujoco.__version__} mj_step loop: {mujoco_rate:.0f} steps per CPU second")
+            for binary in binaries:
+                tether_rate, physics_rate = statistics.median(process[binary]), statistics.median(physics[binary])
+                print(
+                    f"  {binary}: whole process {tether_rate:.0f} steps per CPU second, {tether_rate / mujoco_rate:.2f}x"
+                    f" (its physics alone: {physics_rate:.0f} steps/s, {physics_rate / mujoco_rate:.2f}x)"
+                )
             figure = subprocess.run([steps_example, ron, "0", str(steps)], check=True, capture_output=True, text=True)
             print(f"  tether {figure.stdout.strip()}")
             print(f"  mujoco {mujoco_figure(model, data)}")

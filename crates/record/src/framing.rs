@@ -100,8 +100,8 @@ pub fn swept_box(world: &World) -> (Vec3, Vec3) {
     Sweep::start(world).finish(world)
 }
 
-/// What moves, swept as a run goes: every framed body's corners at its pose now, then every
-/// [`SAMPLES_PER_SECOND`]-th of a simulated second over the first [`FRAMED_SECONDS`] (at most
+/// What moves, swept as a run goes: every framed body's corners at its pose now, then 20 times
+/// a simulated second over the first [`FRAMED_SECONDS`] (at most
 /// [`MAX_FRAMING_STEPS`] world steps; up to a failed step, if one comes first). A caller that
 /// steps the world anyway (`tether record`) feeds it its own steps and spares the copy's run,
 /// which is as long as the first half of `chain100`'s bench run; [`swept_box`] runs a copy.
@@ -147,7 +147,7 @@ impl Sweep {
             return;
         }
         self.taken += 1;
-        if self.taken % self.every == 0 {
+        if self.taken.is_multiple_of(self.every) {
             self.sample(world);
         }
     }

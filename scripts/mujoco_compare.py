@@ -46,6 +46,7 @@ def ron_chain(text):
         "bodies": [(name, [float(v) for v in values]) for name, *values in bodies],
         "springs": springs,
         "contacts": len(re.findall(r"\bContact\(", text)),
+        "friction": float(re.search(rf"friction: {NUMBER}", text).group(1)) if "friction:" in text else None,
     }
 
 
@@ -72,8 +73,11 @@ def check_same_chain(chain, model):
             else:
                 point = [float(v) for v in re.search(r"\(\(([^)]*)\)\)", end).group(1).split(",")]
                 assert model.site_bodyid[site] == 0 and np.allclose(model.site_pos[site], point), (index, end)
-    contacts = model.ngeom - 100 if chain["contacts"] else 0
-    assert contacts == (1 if chain["contacts"] else 0), model.ngeom
+    assert model.ngeom - 100 == (1 if chain["contacts"] else 0), model.ngeom
+    if chain["contacts"]:
+        assert chain["contacts"] == 100 and model.geom_friction[0][0] == chain["friction"], model.geom_friction[0]
+    else:
+        assert model.opt.disableflags & mujoco.mjtDisableBit.mjDSBL_CONTACT, "no contact in either"
 
 
 def tether_round(tether, scene, output):

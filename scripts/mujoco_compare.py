@@ -5,15 +5,16 @@ two models are the same chain. Run by scripts/mujoco-compare.sh, which builds Te
 the `mujoco` package:
     SCENES="chain100 chain100_air" python scripts/mujoco_compare.py STEPS_EXAMPLE ROUNDS TETHER...
 
-Tether's side is the whole process (start, scene load, the camera's framing run, the physics, the
-recorder at 60 frames a second, the file written), its user + system CPU as the kernel counts it
-for the child; MuJoCo's side is the loop of `mj_step` alone (the model compiled beforehand, the
-Python call's overhead of about a microsecond a step included). `tether record --timing`'s
-physics figure (the simulation thread's CPU in `World::step`) is printed too: the per-step ratio.
+Tether's side is the whole process (start, scene load, the framing, the physics, the recorder
+at 60 frames a second, the file written), its user + system CPU as the kernel counts it for the
+child; MuJoCo's side is its loop of `mj_step` alone, in C (`mj_step(model, data, nstep)`, the
+model compiled beforehand). Tether's physics alone is timed too, as the `steps` example's whole
+process (the scene loaded and stepped, no recorder; this checkout's physics): the per-step ratio.
 """
 
 import os
 import re
+import resource
 import statistics
 import subprocess
 import sys
@@ -80,26 +81,27 @@ def check_same_chain(chain, model):
         assert model.opt.disableflags & mujoco.mjtDisableBit.mjDSBL_CONTACT, "no contact in either"
 
 
-def tether_round(tether, scene, output):
-    """Steps per CPU second of one whole `tether record` process, and its physics' steps per second."""
-    process = subprocess.Popen(
-        [tether, "record", scene, "-o", output, "--timing"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True
-    )
-    stderr = process.stderr.read()
-    _, status, usage = os.wait4(process.pid, 0)
-    if status != 0:
-        sys.exit(f"{tether} record {scene} failed:\n{stderr}")
-    steps = int(re.search(r"(\d+) steps", stderr).group(1))
-    per_step = float(re.search(r"physics [\d.]+ s \([\d.]+%, ([\d.]+) µs per step\)", stderr).group(1))
-    return steps / (usage.ru_utime + usage.ru_stime), 1e6 / per_step
+def cpu_rate(command, steps):
+    """Steps per CPU second (user + system, as the kernel counts it for the child) of a process
+    taking `steps` steps, and what it printed."""
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    stdout, stderr = process.communicate()
+    if process.returncode != 0:
+        sys.exit(f"{' '.join(command)} failed:\n{stderr}")
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    spent = usage.ru_utime + usage.ru_stime - cpu_rate.spent
+    cpu_rate.spent = usage.ru_utime + usage.ru_stime
+    return steps / spent, stdout
+
+
+cpu_rate.spent = 0.0
 
 
 def mujoco_round(model, steps):
     """Steps per CPU second of `steps` calls of `mj_step` from the model's initial state, and the data."""
     data = mujoco.MjData(model)
     start = time.process_time()
-    for _ in range(steps):
-        mujoco.mj_step(model, data)
+    mujoco.mj_step(model, data, nstep=steps)
     return steps / (time.process_time() - start), data
 
 
@@ -123,26 +125,27 @@ def main():
             check_same_chain(chain, model)
             steps = round(chain["duration"] / chain["dt"])
             process = {binary: [] for binary in binaries}
-            physics = {binary: [] for binary in binaries}
-            engine = []
+            physics, engine = [], []
+            stepping = [steps_example, ron, "0", str(steps)]
             for _ in range(int(rounds)):
                 for binary in binaries:
-                    whole, stepping = tether_round(binary, ron, os.path.join(out, "run.rrd"))
+                    whole, _ = cpu_rate([binary, "record", ron, "-o", os.path.join(out, "run.rrd")], steps)
                     process[binary].append(whole)
-                    physics[binary].append(stepping)
+                rate, figure = cpu_rate(stepping, steps)
+                physics.append(rate)
                 rate, data = mujoco_round(model, steps)
                 engine.append(rate)
-            mujoco_rate = statistics.median(engine)
+            mujoco_rate, physics_rate = statistics.median(engine), statistics.median(physics)
             print(f"{stem}: {steps} steps, medians of {rounds} rounds")
             print(f"  mujoco {mujoco.__version__} mj_step loop: {mujoco_rate:.0f} steps per CPU second")
             for binary in binaries:
-                tether_rate, physics_rate = statistics.median(process[binary]), statistics.median(physics[binary])
-                print(
-                    f"  {binary}: whole process {tether_rate:.0f} steps per CPU second, {tether_rate / mujoco_rate:.2f}x"
-                    f" (its physics alone: {physics_rate:.0f} steps/s, {physics_rate / mujoco_rate:.2f}x)"
-                )
-            figure = subprocess.run([steps_example, ron, "0", str(steps)], check=True, capture_output=True, text=True)
-            print(f"  tether {figure.stdout.strip()}")
+                tether_rate = statistics.median(process[binary])
+                print(f"  {binary} record, whole process: {tether_rate:.0f} steps per CPU second, {tether_rate / mujoco_rate:.2f}x")
+            print(
+                f"  {steps_example} (load and step, no recorder), whole process: {physics_rate:.0f} steps per CPU"
+                f" second, {physics_rate / mujoco_rate:.2f}x"
+            )
+            print(f"  tether {figure.strip()}")
             print(f"  mujoco {mujoco_figure(model, data)}")
 
 

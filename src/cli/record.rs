@@ -182,7 +182,11 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
         }
     }
     progress.finish_and_clear();
-    frame(&recorder, world, sweep).with_context(|| format!("cannot write {}", args.output.display()))?;
+    // The framing is the recorder's work (and a short run's copy stepped to finish the sweep);
+    // the layout's memory streams wait for their threads.
+    stopwatch
+        .recorder_waiting(|| frame(&recorder, world, sweep))
+        .with_context(|| format!("cannot write {}", args.output.display()))?;
     let stats = stopwatch.recorder_waiting(|| recorder.finish())?;
     if args.timing {
         let file_bytes = std::fs::metadata(&args.output).map_or(0, |m| m.len());

@@ -112,7 +112,7 @@ impl NodeForces {
             return self.acceleration(node);
         }
         let (a, b, q) = self.masses[node];
-        let force = self.total[node] - up * ((c_n - c_f) * up.dot(velocity)) - velocity * c_f;
+        let force = self.total[node] - seabed_damping_force((c_n, c_f), up, velocity);
         let alpha = a + tau * c_f;
         let epsilon = tau * (c_n - c_f);
         // B⁻¹ = (E − b/(α + b) q̂q̂ᵀ)/α, then (B + ε ûûᵀ)⁻¹ y = B⁻¹y − B⁻¹û ε ûᵀB⁻¹y/(1 + ε ûᵀB⁻¹û).
@@ -120,6 +120,13 @@ impl NodeForces {
         let solve_b = |y: &Vec3| (y - q * (along * q.dot(y))) * inverse_alpha;
         let (b_force, b_up) = (solve_b(&force), solve_b(up));
         b_force - b_up * (epsilon * up.dot(&b_force) / (1.0 + epsilon * up.dot(&b_up)))
+    }
+
+    /// The seabed's damping and friction on node `i` at `velocity` [m/s] (`up` the upward unit
+    /// vertical): `−C v` \[N] with its [`NodeForces::seabed_damping`], zero off the seabed.
+    #[inline(always)]
+    pub fn seabed_force(&self, node: usize, velocity: &Vec3, up: &Vec3) -> Vec3 {
+        -seabed_damping_force(self.seabed_damping[node], up, velocity)
     }
 
     /// `(M_i − m_i E) a` \[N]: the force that accelerates the water node `i` carries with it.
@@ -150,7 +157,6 @@ pub fn evaluate_forces(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &
 fn evaluate_into<const POTENTIAL: bool>(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut NodeForces) {
     let n = line.segments;
     out.resize(n);
-    out.potential = 0.0;
     let (x, v) = (&nodes.positions[..=n], &nodes.velocities[..=n]);
     let (total, unbooked) = (&mut out.total[..=n], &mut out.unbooked[..=n]);
     let (tensions, masses) = (&mut out.tensions[..n], &mut out.masses[..=n]);
@@ -232,7 +238,7 @@ fn evaluate_into<const POTENTIAL: bool>(line: &Discrete, nodes: &LineNodes, flow
                 };
                 let damping = (p.seabed_damping * area, seabed.line_friction * normal * secant);
                 if node == 0 || node == n {
-                    let force = -line.up * (damping.0 * sinking) - sliding * damping.1;
+                    let force = -seabed_damping_force(damping, &line.up, &v[node]);
                     total[node] += force;
                     unbooked[node] += force;
                 } else {
@@ -243,6 +249,14 @@ fn evaluate_into<const POTENTIAL: bool>(line: &Discrete, nodes: &LineNodes, flow
         masses[node] = matrix;
     }
     out.potential = potential;
+}
+
+/// `C v = c_n (û·v) û + c_f (v − (û·v) û)` \[N]: the seabed's damper `(c_n, c_f)` [N·s/m]
+/// across and along the bottom (`up` = `û`) at `velocity` [m/s] ([`NodeForces::seabed_damping`]).
+#[inline(always)]
+fn seabed_damping_force((c_n, c_f): (f64, f64), up: &Vec3, velocity: &Vec3) -> Vec3 {
+    let sinking = up.dot(velocity);
+    up * (c_n * sinking) + (velocity - up * sinking) * c_f
 }
 
 /// Drag and the waves' inertia \[N] on a node of length share `share` with tangent `tangent`,

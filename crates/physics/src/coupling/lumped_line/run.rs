@@ -74,10 +74,12 @@ pub struct LineRun {
     scratch: NodeForces,
     flow: Vec<Flow>,
     sea: FlowInstant,
-    /// The middle time \[s] and the water `flow` was filled for from the committed nodes
-    /// (`None`: to be filled again). A Runge–Kutta step's two middle stages share their
+    /// The middle time \[s] `flow` was filled for from the committed nodes (`None`: to be filled
+    /// again; a commit moves the nodes), and the water it was filled in (kept across commits,
+    /// cloned only when the water changes). A Runge–Kutta step's two middle stages share their
     /// interval, nodes and water: the second takes the first's flow, the same numbers.
-    flow_filled_for: Option<(f64, Option<Water>)>,
+    flow_time: Option<f64>,
+    flow_water: Option<Water>,
 }
 
 /// How a dynamic line's nodes start (PHYSICS.md §8 "Initial state").
@@ -162,7 +164,8 @@ impl LineRun {
             scratch: NodeForces::default(),
             flow: Vec::new(),
             sea: FlowInstant::default(),
-            flow_filled_for: None,
+            flow_time: None,
+            flow_water: None,
         }
     }
 
@@ -190,7 +193,7 @@ impl LineRun {
                 None => self.committed = Some(current.clone()),
             }
             self.committed_power = self.power;
-            self.flow_filled_for = None;
+            self.flow_time = None;
         }
     }
 
@@ -212,7 +215,7 @@ impl LineRun {
             Some(committed) if committed.time <= time => committed,
             _ => {
                 self.committed_power = 0.0;
-                self.flow_filled_for = None;
+                self.flow_time = None;
                 match self.start {
                     Start::AtRest => {
                         let (p1, p2) = (ends[0].position, ends[1].position);
@@ -260,13 +263,14 @@ impl LineRun {
     /// The water's velocity and acceleration at each node at `time` (none without water),
     /// unless they were filled for the same committed nodes, time and water.
     fn fill_flow(&mut self, water: Option<&Water>, nodes: &LineNodes, time: f64) {
-        let filled = self.flow_filled_for.as_ref().is_some_and(|(at, filled_water)| {
-            *at == time && filled_water.as_ref() == water && self.flow.len() == nodes.positions.len()
-        });
-        if filled {
+        let same_water = self.flow_water.as_ref() == water;
+        if same_water && self.flow_time == Some(time) && self.flow.len() == nodes.positions.len() {
             return;
         }
-        self.flow_filled_for = Some((time, water.cloned()));
+        if !same_water {
+            self.flow_water = water.cloned();
+        }
+        self.flow_time = Some(time);
         let Some(water) = water else {
             self.flow.clear();
             return;
@@ -337,12 +341,8 @@ impl LineRun {
             let acceleration = self.scratch.kick(i, &before, &line.up, tau);
             let after = before + acceleration * tau;
             let mass = line.mass_per_length * line.share(i);
-            let mut unbooked = self.scratch.unbooked[i];
-            let (c_n, c_f) = self.scratch.seabed_damping[i];
-            if c_n != 0.0 || c_f != 0.0 {
-                unbooked -= line.up * ((c_n - c_f) * line.up.dot(&after)) + after * c_f;
-            }
-            unbooked -= self.scratch.added_mass_force(i, mass, &acceleration);
+            let unbooked = self.scratch.unbooked[i] + self.scratch.seabed_force(i, &after, &line.up)
+                - self.scratch.added_mass_force(i, mass, &acceleration);
             work += tau * 0.5 * (before + after).dot(&unbooked);
             nodes.velocities[i] = after;
         }
@@ -452,9 +452,8 @@ mod tests {
         };
         let (start, middle) = (12.0, 12.025);
         // The interval's middle time and whether the flow was filled in `water`.
-        let filled_for = |run: &LineRun, water: &Water| {
-            run.flow_filled_for.as_ref().map(|(time, filled)| (*time, filled.as_ref() == Some(water)))
-        };
+        let filled_for =
+            |run: &LineRun, water: &Water| run.flow_time.map(|time| (time, run.flow_water.as_ref() == Some(water)));
         let mut run = LineRun::new(0);
         let evaluate = |run: &mut LineRun, water: &Water, x: f64, time: f64| {
             run.advance(&line, &discrete, &surroundings, Some(water), &[anchor, fairlead(x)], time)
@@ -466,7 +465,7 @@ mod tests {
         evaluate(&mut run, &water, 0.01, middle);
         assert_eq!(filled_for(&run, &water), Some((12.0125, true)));
         let mut fresh = run.clone();
-        fresh.flow_filled_for = None;
+        fresh.flow_time = None;
         fresh.flow.clear();
         let (second, afresh) = (evaluate(&mut run, &water, 0.02, middle), evaluate(&mut fresh, &water, 0.02, middle));
         assert_eq!((second.f1, second.f2, second.energy), (afresh.f1, afresh.f2, afresh.energy));

@@ -466,21 +466,26 @@ fn dynamic_line_report(out: &mut String, world: &World, index: usize, line: &Cat
         parameters.added_mass_tangential
     );
     let seabed = if limits.seabed.is_finite() { format!("{:.6e} s", limits.seabed) } else { "none".to_string() };
-    let _ = writeln!(
-        out,
-        "  line's own stable step: axial {:.6e} s, seabed {seabed}; it sub-steps by {:.6e} s",
-        limits.axial,
-        discrete.substep()
-    );
     let forces = &world.coupling_forces()[index];
     let started = std::time::Instant::now();
     let shape = statics::solve(line, &discrete, system.surroundings(), &forces.point1, &forces.point2, 0.0);
+    let elapsed = started.elapsed();
+    let tension = shape.nodes.largest_elastic_tension(&discrete);
+    let _ = writeln!(
+        out,
+        "  line's own stable steps: axial {:.6e} s (taken implicitly), seabed {seabed}, transverse {:.6e} s at its \
+         largest tension at rest ({:.1} N); it sub-steps by {:.6e} s",
+        limits.axial,
+        discrete.transverse_limit(tension),
+        tension,
+        discrete.substep(tension)
+    );
     let _ = writeln!(
         out,
         "  initial shape: Newton on the discrete statics, {} iterations, largest residual {:.3e} N, {:.3} ms",
         shape.iterations,
         shape.residual,
-        started.elapsed().as_secs_f64() * 1e3
+        elapsed.as_secs_f64() * 1e3
     );
     let _ = writeln!(
         out,

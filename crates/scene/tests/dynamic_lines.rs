@@ -28,10 +28,11 @@ fn regex_dt(text: &str, dt: f64) -> String {
 }
 
 /// Over 60 s of the buoy's gust release in its wave and current (drag, damping, seabed
-/// friction on every node), the balance closes to 1e-4 of the largest energy the run exchanges
-/// (kinetic, dissipated or put in); at 2.5 ms it drifts 32 J of 0.67 MJ (printed), at 10 ms
-/// 60 J (this test with its step set to 10 ms by hand; the partitioned exchange with the buoy,
-/// first order in the bodies' step).
+/// friction on every node), the balance closes to 2.5e-4 of the largest energy the run
+/// exchanges (kinetic, dissipated or put in): at 2.5 ms it drifts 121 J of 0.67 MJ (1.8e-4,
+/// printed) — the partitioned exchange with the buoy, first order in the bodies' step (32 J when
+/// the chains sub-stepped explicitly at 1.2 ms), and the chains' own sub-steps, 18 ms since
+/// their segments are taken implicitly (PHYSICS.md §8).
 #[test]
 fn the_moored_buoy_on_dynamic_chains_keeps_its_energy_balance() {
     let mut scene = common::scene(&dynamic_buoy(20, "leapfrog", 0.0025));
@@ -46,7 +47,7 @@ fn the_moored_buoy_on_dynamic_chains_keeps_its_energy_balance() {
         exchanged = exchanged.max(now.kinetic).max(now.dissipated.abs()).max(now.external_work.abs());
     }
     eprintln!("balance drift {worst:.1} J of {exchanged:.0} J exchanged");
-    assert!(worst < 1e-4 * exchanged.max(1.0), "balance drift {worst} J of {exchanged} J exchanged");
+    assert!(worst < 2.5e-4 * exchanged.max(1.0), "balance drift {worst} J of {exchanged} J exchanged");
 }
 
 /// `text` with the first `from` after its `couplings:` replaced by `to` (the comment above

@@ -10,6 +10,11 @@ use crate::surroundings::Surroundings;
 /// Fraction of the stable sub-step a line steps by.
 pub const SUBSTEP_MARGIN: f64 = 0.8;
 
+/// How much a line's largest tension may grow over an evaluation's interval with its sub-steps
+/// staying stable ([`Discrete::substep`]): the transverse limit, bound by `√T`, is taken at
+/// twice the tension the interval starts with (so 0.8/√2 of it at the start).
+pub const TENSION_GROWTH: f64 = 2.0;
+
 /// A line's constants in SI units, made at each evaluation from its coupling and what surrounds
 /// it (a live edit of either is seen at the next).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -89,12 +94,12 @@ impl Discrete {
         self.water_level.is_some_and(|level| position.dot(&self.up) < level)
     }
 
-    /// The line's stable time steps \[s] under the velocity Verlet it is stepped by
-    /// (`2/(√(ω² + β²) + β)` for a mode `ω` damped at rate `β`, PHYSICS.md §8): the axial one
-    /// of its highest mode, `ω = 2√(EA/(λ0 l²))`, `β = 2 BA/(λ0 l²)` (the transverse modes,
-    /// `ω = 2√(T/(λ0 l l_s))`, are slower while `T < EA`); and the seabed's spring's,
-    /// `2/ω` with `ω² = k_b d/λ0` (its damping and friction are taken implicitly in the kicks,
-    /// [`super::nodes::NodeForces::kick`], and bound no step).
+    /// The line's stable time steps \[s] (`2/(√(ω² + β²) + β)` for a mode `ω` damped at rate
+    /// `β`, PHYSICS.md §8): the axial one of its highest mode, `ω = 2√(EA/(λ0 l²))`, `β = 2
+    /// BA/(λ0 l²)`, which an explicit integrator (MoorDyn's) must resolve and the sub-steps take
+    /// implicitly ([`super::axial`]); and the seabed's spring's, `2/ω` with `ω² = k_b d/λ0` (its
+    /// damping and friction are taken implicitly in the kicks, [`super::nodes::NodeForces::kick`],
+    /// and bound no step).
     pub fn limits(&self) -> LineLimits {
         let lambda = self.mass_per_length.max(f64::MIN_POSITIVE);
         let l2 = self.segment * self.segment;
@@ -105,10 +110,24 @@ impl Discrete {
         LineLimits { axial, seabed }
     }
 
-    /// The sub-step the line takes: [`SUBSTEP_MARGIN`] of its binding limit.
-    pub fn substep(&self) -> f64 {
-        let limits = self.limits();
-        SUBSTEP_MARGIN * limits.axial.min(limits.seabed)
+    /// The stable step \[s] of the transverse modes under a largest segment tension `tension`
+    /// \[N]: `2/ω`, `ω = 2√(T/(λ0 l²))` (the segments' directions are explicit in a sub-step;
+    /// a stretched segment and the added mass only slow these modes). Infinite for a slack line.
+    pub fn transverse_limit(&self, tension: f64) -> f64 {
+        let lambda = self.mass_per_length.max(f64::MIN_POSITIVE);
+        if tension > 0.0 {
+            oscillator(2.0 * (tension / (lambda * self.segment * self.segment)).sqrt(), 0.0)
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// The sub-step the line takes over an evaluation's interval that starts with its largest
+    /// segment tension at `tension` \[N]: [`SUBSTEP_MARGIN`] of the shorter of its seabed limit
+    /// and its transverse limit at [`TENSION_GROWTH`] times that tension (infinite when neither
+    /// binds: one sub-step per evaluation).
+    pub fn substep(&self, tension: f64) -> f64 {
+        SUBSTEP_MARGIN * self.limits().seabed.min(self.transverse_limit(TENSION_GROWTH * tension))
     }
 }
 

@@ -10,10 +10,13 @@
 //! - [`discrete`]: the per-node and per-segment constants of one line in its surroundings, and
 //!   its stable sub-step;
 //! - [`nodes`]: the node state and the forces on it (§8 "Node i");
+//! - [`axial`]: the segments' tensions over a sub-step, taken implicitly (§8 "The axial
+//!   stiffness implicit");
 //! - [`statics`]: the line at rest in its discrete static equilibrium, by Newton (§8 "Initial
 //!   state");
 //! - [`run`]: what a run of the line remembers and how it advances to the next evaluation.
 
+pub mod axial;
 pub mod discrete;
 pub mod file_form;
 pub mod nodes;

@@ -46,6 +46,12 @@ impl LineNodes {
         0.5 * segment * halves as f64
     }
 
+    /// The largest elastic tension `EA max(ε, 0)` of the line's segments \[N].
+    pub fn largest_elastic_tension(&self, line: &Discrete) -> f64 {
+        let longest = self.positions.windows(2).map(|pair| (pair[1] - pair[0]).norm()).fold(0.0, f64::max);
+        line.ea * (longest / line.segment - 1.0).max(0.0)
+    }
+
     /// `½ Σ m_i |v_i|²` \[J] of the nodes between the ends (the ends move with what they are
     /// attached to; their half-segment inertia is left out, as in MoorDyn's coupled points).
     pub fn kinetic_energy(&self, line: &Discrete) -> f64 {
@@ -98,35 +104,35 @@ impl NodeForces {
         (force - q * (b / (a + b) * q.dot(&force))) * (1.0 / a)
     }
 
-    /// The acceleration [m/s²] of node `i` (`up` the upward unit vertical) over a kick of `τ`
-    /// \[s] from `velocity`: `M⁻¹F`, or on the seabed `(M + τC)⁻¹ (F − C v)` with `C`
-    /// its [`NodeForces::seabed_damping`] — the kick with the seabed's damping and friction at
-    /// its closing velocity (backward Euler in them), which no step length makes unstable
-    /// (PHYSICS.md §8 "Stable time step"). `M + τC = αE + b q̂q̂ᵀ + ε ûûᵀ` (`α = a + τ c_f`,
-    /// `ε = τ (c_n − c_f)`) is inverted by two rank-one updates of `αE` (Sherman–Morrison), each
-    /// denominator positive as the matrix is positive definite.
+    /// `(M_i + τC_i)⁻¹ y` of node `i` (`up` the upward unit vertical, `C_i` its
+    /// [`NodeForces::seabed_damping`], `τ` \[s]): with `y = F − C v` the acceleration that
+    /// takes the seabed's damping and friction at the closing velocity of a step of `τ` (backward
+    /// Euler in them), which no step length makes overshoot (PHYSICS.md §8 "Stable time
+    /// step"). `M + τC = αE + b q̂q̂ᵀ + ε ûûᵀ` (`α = a + τ c_f`, `ε = τ (c_n − c_f)`) is inverted
+    /// by two rank-one updates of `αE` (Sherman–Morrison), each denominator positive as the
+    /// matrix is positive definite; off the seabed it is `M⁻¹ y`.
     #[inline(always)]
-    pub fn kick(&self, node: usize, velocity: &Vec3, up: &Vec3, tau: f64) -> Vec3 {
-        let (c_n, c_f) = self.seabed_damping[node];
-        if c_n == 0.0 && c_f == 0.0 {
-            return self.acceleration(node);
-        }
+    pub fn solve_damped(&self, node: usize, part: Damper, up: &Vec3, tau: f64, y: &Vec3) -> Vec3 {
+        let (c_n, c_f) = part.of(self.seabed_damping[node]);
         let (a, b, q) = self.masses[node];
-        let force = self.total[node] - seabed_damping_force((c_n, c_f), up, velocity);
         let alpha = a + tau * c_f;
-        let epsilon = tau * (c_n - c_f);
-        // B⁻¹ = (E − b/(α + b) q̂q̂ᵀ)/α, then (B + ε ûûᵀ)⁻¹ y = B⁻¹y − B⁻¹û ε ûᵀB⁻¹y/(1 + ε ûᵀB⁻¹û).
         let (inverse_alpha, along) = (1.0 / alpha, b / (alpha + b));
+        // B⁻¹ = (E − b/(α + b) q̂q̂ᵀ)/α, then (B + ε ûûᵀ)⁻¹ y = B⁻¹y − B⁻¹û ε ûᵀB⁻¹y/(1 + ε ûᵀB⁻¹û).
         let solve_b = |y: &Vec3| (y - q * (along * q.dot(y))) * inverse_alpha;
-        let (b_force, b_up) = (solve_b(&force), solve_b(up));
-        b_force - b_up * (epsilon * up.dot(&b_force) / (1.0 + epsilon * up.dot(&b_up)))
+        if c_n == 0.0 && c_f == 0.0 {
+            return solve_b(y);
+        }
+        let epsilon = tau * (c_n - c_f);
+        let (b_y, b_up) = (solve_b(y), solve_b(up));
+        b_y - b_up * (epsilon * up.dot(&b_y) / (1.0 + epsilon * up.dot(&b_up)))
     }
 
-    /// The seabed's damping and friction on node `i` at `velocity` [m/s] (`up` the upward unit
-    /// vertical): `−C v` \[N] with its [`NodeForces::seabed_damping`], zero off the seabed.
+    /// The seabed's damping (`part` [`Damper::Normal`]) or friction ([`Damper::Friction`]) on
+    /// node `i` at `velocity` [m/s] (`up` the upward unit vertical): `−C v` \[N] with that part
+    /// of its [`NodeForces::seabed_damping`], zero off the seabed.
     #[inline(always)]
-    pub fn seabed_force(&self, node: usize, velocity: &Vec3, up: &Vec3) -> Vec3 {
-        -seabed_damping_force(self.seabed_damping[node], up, velocity)
+    pub fn seabed_force(&self, node: usize, part: Damper, velocity: &Vec3, up: &Vec3) -> Vec3 {
+        -seabed_damping_force(part.of(self.seabed_damping[node]), up, velocity)
     }
 
     /// `(M_i − m_i E) a` \[N]: the force that accelerates the water node `i` carries with it.
@@ -137,24 +143,53 @@ impl NodeForces {
     }
 }
 
+/// A part of the seabed's damper `C = c_n ûûᵀ + c_f (E − ûûᵀ)` on a node: the damping across
+/// the bottom, which the kicks take with the seabed's spring, or the friction along it, which
+/// the segments' solve takes with the tensions it resists ([`super::axial`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Damper {
+    /// `c_n ûûᵀ`.
+    Normal,
+    /// `c_f (E − ûûᵀ)`.
+    Friction,
+}
+
+impl Damper {
+    /// `(c_n, c_f)` with the other part zeroed.
+    #[inline(always)]
+    fn of(self, (c_n, c_f): (f64, f64)) -> (f64, f64) {
+        match self {
+            Self::Normal => (c_n, 0.0),
+            Self::Friction => (0.0, c_f),
+        }
+    }
+}
+
 /// The forces on every node of `line` at `nodes` in the water's `flow` at each node (empty:
 /// none), into `out`, with the potential energy. The end nodes move with their bodies and pass
 /// them everything, their half segment's drag included (as MoorDyn's coupled points); only
 /// their inertia is left out.
 pub fn evaluate(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut NodeForces) {
-    evaluate_into::<true>(line, nodes, flow, out);
+    evaluate_into::<true, true>(line, nodes, flow, out);
 }
 
-/// [`evaluate`] without the potential energy (`out.potential` is 0): a sub-step's forces, the
-/// same numbers, for the time stepping, which needs no energy.
-pub fn evaluate_forces(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut NodeForces) {
-    evaluate_into::<false>(line, nodes, flow, out);
+/// [`evaluate`] without the segments' tensions (`out.tensions` untouched) and without the
+/// potential energy (`out.potential` is 0): what a sub-step kicks the nodes with explicitly,
+/// their segments being taken implicitly ([`super::axial`]).
+pub fn evaluate_surroundings(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut NodeForces) {
+    evaluate_into::<false, false>(line, nodes, flow, out);
 }
 
-/// [`evaluate`], the potential energy summed when `POTENTIAL`. The slices are cut to the line's
-/// `N + 1` nodes and `N` segments up front, so that the loops index them without checks.
+/// [`evaluate`], the potential energy summed when `POTENTIAL`, the segments' tensions taken
+/// when `SEGMENTS`. The slices are cut to the line's `N + 1` nodes and `N` segments up front, so
+/// that the loops index them without checks.
 #[inline(always)]
-fn evaluate_into<const POTENTIAL: bool>(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut NodeForces) {
+fn evaluate_into<const POTENTIAL: bool, const SEGMENTS: bool>(
+    line: &Discrete,
+    nodes: &LineNodes,
+    flow: &[Flow],
+    out: &mut NodeForces,
+) {
     let n = line.segments;
     out.resize(n);
     let (x, v) = (&nodes.positions[..=n], &nodes.velocities[..=n]);
@@ -164,28 +199,7 @@ fn evaluate_into<const POTENTIAL: bool>(line: &Discrete, nodes: &LineNodes, flow
     total.fill(Vec3::zeros());
     unbooked.fill(Vec3::zeros());
     seabed_damping.fill((0.0, 0.0));
-    let mut potential = 0.0;
-    let mut previous = Vec3::z();
-    // One division per line and per segment: the rest are products by reciprocals.
-    let per_length = 1.0 / line.segment;
-    for i in 0..n {
-        let delta = x[i + 1] - x[i];
-        let stretched = delta.norm();
-        let q = if stretched > 0.0 { delta * (1.0 / stretched) } else { previous };
-        previous = q;
-        let strain = stretched * per_length - 1.0;
-        let rate = q.dot(&(v[i + 1] - v[i])) * per_length;
-        let elastic = line.ea * strain.max(0.0);
-        let damping = line.ba * rate;
-        tensions[i] = elastic + damping;
-        if POTENTIAL && strain > 0.0 {
-            potential += 0.5 * line.ea * line.segment * strain * strain;
-        }
-        total[i] += q * (elastic + damping);
-        total[i + 1] -= q * (elastic + damping);
-        unbooked[i] += q * damping;
-        unbooked[i + 1] -= q * damping;
-    }
+    let mut potential = if SEGMENTS { add_segments::<POTENTIAL>(line, x, v, total, unbooked, tensions) } else { 0.0 };
     let g = line.gravity.norm();
     let p = &line.parameters;
     for node in 0..=n {
@@ -251,6 +265,42 @@ fn evaluate_into<const POTENTIAL: bool>(line: &Discrete, nodes: &LineNodes, flow
     out.potential = potential;
 }
 
+/// Segment `i`'s tension `T = EA max(ε, 0) + BA ε̇` on its two nodes, into `total` (its damping
+/// part into `unbooked` too) and `tensions`; returns the elastic energy when `POTENTIAL` \[J].
+#[inline(always)]
+fn add_segments<const POTENTIAL: bool>(
+    line: &Discrete,
+    x: &[Vec3],
+    v: &[Vec3],
+    total: &mut [Vec3],
+    unbooked: &mut [Vec3],
+    tensions: &mut [f64],
+) -> f64 {
+    let mut potential = 0.0;
+    let mut previous = Vec3::z();
+    // One division per line and per segment: the rest are products by reciprocals.
+    let per_length = 1.0 / line.segment;
+    for i in 0..line.segments {
+        let delta = x[i + 1] - x[i];
+        let stretched = delta.norm();
+        let q = if stretched > 0.0 { delta * (1.0 / stretched) } else { previous };
+        previous = q;
+        let strain = stretched * per_length - 1.0;
+        let rate = q.dot(&(v[i + 1] - v[i])) * per_length;
+        let elastic = line.ea * strain.max(0.0);
+        let damping = line.ba * rate;
+        tensions[i] = elastic + damping;
+        if POTENTIAL && strain > 0.0 {
+            potential += 0.5 * line.ea * line.segment * strain * strain;
+        }
+        total[i] += q * (elastic + damping);
+        total[i + 1] -= q * (elastic + damping);
+        unbooked[i] += q * damping;
+        unbooked[i + 1] -= q * damping;
+    }
+    potential
+}
+
 /// `C v = c_n (û·v) û + c_f (v − (û·v) û)` \[N]: the seabed's damper `(c_n, c_f)` [N·s/m]
 /// across and along the bottom (`up` = `û`) at `velocity` [m/s] ([`NodeForces::seabed_damping`]).
 #[inline(always)]
@@ -294,37 +344,33 @@ mod tests {
     use super::*;
 
     /// A node on the seabed (mass `a = 30 kg`, `b = −2 kg` along a tangent tilted off the
-    /// vertical, the seabed's `c_n` = 2e4 and `c_f` = 5e5 N·s/m) kicked for 10 ms from 0.3 m/s
-    /// sliding with 0.1 m/s sinking under a force: the kick's acceleration solves
+    /// vertical, the seabed's `c_n` = 2e4 and `c_f` = 5e5 N·s/m) stepped 10 ms from 0.3 m/s
+    /// sliding with 0.1 m/s sinking under a force: [`NodeForces::solve_damped`] solves
     /// `(M + τC) a = F − C v` to round-off; with no other force, for τ from 1 µs to 1 s, the
-    /// sliding never reverses and slows, and the kinetic energy `½ vᵀMv` falls (the explicit kick,
+    /// sliding never reverses and slows, and the kinetic energy `½ vᵀMv` falls (the explicit step,
     /// `v − τ M⁻¹ C v`, reverses the sliding from τ = 2a/c_f = 0.12 ms).
     #[test]
-    fn the_seabed_kick_solves_the_implicit_damper_and_never_overshoots() {
+    fn the_seabed_damper_is_solved_implicitly_and_never_overshoots() {
         let (a, b, q) = (30.0, -2.0, Vec3::new(0.6, 0.0, 0.8));
         let (c_n, c_f) = (2.0e4, 5.0e5);
         let up = Vec3::z();
-        let node = |force: Vec3| NodeForces {
-            total: vec![force],
-            masses: vec![(a, b, q)],
-            seabed_damping: vec![(c_n, c_f)],
-            ..NodeForces::default()
-        };
+        let node = NodeForces { masses: vec![(a, b, q)], seabed_damping: vec![(c_n, c_f)], ..NodeForces::default() };
         let velocity = Vec3::new(0.3, 0.0, -0.1);
         let force = Vec3::new(-40.0, 15.0, 120.0);
         let tau = 0.01;
-        let acceleration = node(force).kick(0, &velocity, &up, tau);
         let mass = |y: Vec3| y * a + q * (b * q.dot(&y));
-        let damper = |y: Vec3| up * (c_n * up.dot(&y)) + (y - up * up.dot(&y)) * c_f;
+        // The friction part alone (the normal part, c_n, is the kicks').
+        let damper = |y: Vec3| (y - up * up.dot(&y)) * c_f;
+        let acceleration = node.solve_damped(0, Damper::Friction, &up, tau, &(force - damper(velocity)));
         let residual = mass(acceleration) + damper(acceleration) * tau - (force - damper(velocity));
         assert!(residual.norm() < 1e-9 * force.norm().max(damper(velocity).norm()), "{residual}");
         for tau in [1e-6, 1e-4, 1e-3, 1e-2, 1.0] {
-            let after = velocity + node(Vec3::zeros()).kick(0, &velocity, &up, tau) * tau;
+            let after = velocity + node.solve_damped(0, Damper::Friction, &up, tau, &-damper(velocity)) * tau;
             assert!(after.x > 0.0 && after.x < velocity.x, "τ = {tau}: {after}");
             assert!(after.dot(&mass(after)) < velocity.dot(&mass(velocity)), "τ = {tau}: {after}");
         }
         let explicit = velocity - (damper(velocity) - q * (b / (a + b) * q.dot(&damper(velocity)))) * (2e-4 / a);
-        assert!(explicit.x < 0.0, "the explicit kick overshoots: {explicit}");
+        assert!(explicit.x < 0.0, "the explicit step overshoots: {explicit}");
     }
 
     /// Five nodes 10 m apart, three on a seabed at z = −50 (one sunk into it), the fourth 1 cm

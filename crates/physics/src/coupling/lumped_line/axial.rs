@@ -1,29 +1,34 @@
-//! The segments' tensions over one sub-step, taken implicitly (PHYSICS.md §8 "The axial
-//! stiffness implicit").
+//! The segments' tensions over one sub-step, taken implicitly with the seabed's friction they
+//! pull against (PHYSICS.md §8 "The axial stiffness implicit").
 //!
 //! The line's axial modes are its fastest by far (`ω = 2√(EA/(λ0 l²))`, 663 rad/s on
 //! `moored_buoy`'s chains against 24 rad/s for the transverse ones at their largest tension):
 //! stepped explicitly they bind the sub-step to ~1 ms, where the wave-frequency motion an
-//! engineer watches needs tens. Over a sub-step of `h` the nodes therefore drift under their
-//! segments by the implicit midpoint rule, linearised once about the predictor
-//! `r̃ = r + ½h v`:
+//! engineer watches needs tens. Over a sub-step of `h` the interior nodes therefore drift under
+//! their segments by the implicit midpoint rule, with the seabed's friction `C_i`
+//! ([`super::nodes::Damper::Friction`]) at the closing velocity (backward Euler in it):
 //!
-//! - segment `j` at the predictor: `q̃_j`, `ε̃_j`, `T̃_j = EA max(ε̃_j, 0) + BA q̃_j·(v_{j+1} − v_j)/l`;
-//! - the mid-step tension `T_j = T̃_j + κ_j w_j`, `κ_j = (s_j ½h EA + BA)/l` (`s_j` = 1 taut,
-//!   0 slack), `w_j = q̃_j·(δ_{j+1} − δ_j)` the change of the segment's stretch rate;
-//! - the velocity change to mid-step `δ_i = ½h M_i⁻¹ (q̃_i T_i − q̃_{i−1} T_{i−1})` (zero at the end
-//!   nodes, which move as their bodies do);
-//! - eliminating `δ`: `(I + ½h K G) T = T̃`, `K = diag κ`, `G = B M⁻¹ Bᵀ` — tridiagonal
-//!   (`G_jj = q̃_j·(M_j⁻¹ + M_{j+1}⁻¹) q̃_j`, `G_{j,j+1} = −q̃_j·M_{j+1}⁻¹ q̃_{j+1}`), solved by the
-//!   Thomas algorithm in `O(N)` (`I + ½h K G` is similar to the symmetric positive definite
-//!   `I + ½h K^½ G K^½`, so no pivoting is needed);
+//! - segment `j` at the iterate's mid-step `r + ½h (v + δ)`: `q̃_j`, `ε̃_j` and
+//!   `T̃_j = EA max(ε̃_j, 0) + BA q̃_j·(v + δ)_{j+1} − (v + δ)_j)/l`;
+//! - the mid-step tension `T_j = T̃_j + κ_j (w_j − w̃_j)`, `κ_j = (s_j ½h EA + BA)/l` (`s_j` = 1
+//!   taut, 0 slack), `w_j = q̃_j·(δ_{j+1} − δ_j)` the change of the segment's stretch rate;
+//! - the velocity change to mid-step `(M_i + hC_i) δ_i = ½h (q̃_i T_i − q̃_{i−1} T_{i−1} − C_i v_i)`
+//!   (zero at the end nodes, which move as their bodies do);
+//! - eliminating `δ`: `(I + ½h K G) T = T̃ − K w̃ + ½h K B p`, `K = diag κ`, `G = B M̃⁻¹ Bᵀ`,
+//!   `p = M̃⁻¹(−C v)` — tridiagonal (`G_jj = q̃_j·(M̃_j⁻¹ + M̃_{j+1}⁻¹) q̃_j`,
+//!   `G_{j,j+1} = −q̃_j·M̃_{j+1}⁻¹ q̃_{j+1}`), solved by the Thomas algorithm in `O(N)`
+//!   (`I + ½h K G` is similar to the symmetric positive definite `I + ½h K^½ G K^½`, so no
+//!   pivoting is needed);
+//! - two Newton iterations, each re-taking the directions and stretches at the new
+//!   mid-step (one alone is unstable past ~10 ms on a chain: the stretch a segment's rotation
+//!   adds is second order in the step);
 //! - then `v_mid = v + δ`, `r ← r + h v_mid`, `v ← v + 2δ`.
 //!
 //! The midpoint rule is A-stable: no step length makes the axial modes grow, and for linear
 //! springs it conserves their energy, so a line without damping keeps its energy at second order
 //! as the explicit Verlet did. Modes the step does not resolve (`ω h ≫ 1`) are not damped by the
-//! scheme: the internal damping `BA` (taken implicitly too) damps them. The directions `q̃` are
-//! the predictor's: the transverse stiffness `T/l_s` stays explicit and bounds the sub-step
+//! scheme: the internal damping `BA` (taken implicitly too) damps them. The transverse stiffness
+//! `T/l_s` is explicit in the predictor's directions and bounds the sub-step
 //! ([`super::Discrete::transverse_limit`]). A segment predicted taut that goes slack within the
 //! step keeps its linearised elastic tension for that step.
 //!
@@ -53,7 +58,7 @@ pub struct AxialSolve {
     damper: Vec<Vec3>,
 }
 
-/// Newton iterations of the mid-step solve.
+/// Newton iterations of the mid-step solve (module doc).
 const ITERATIONS: usize = 2;
 
 impl AxialSolve {
@@ -87,8 +92,9 @@ impl AxialSolve {
 
     /// `M̃_i⁻¹ (−C_i v_i)` at each interior node, `M̃ = M + hC` ([`NodeForces::solve_damped`]).
     fn damp(&mut self, line: &Discrete, masses: &NodeForces, velocities: &[Vec3], h: f64) {
-        for i in 1..line.segments {
-            let pull = masses.seabed_force(i, Damper::Friction, &velocities[i], &line.up);
+        let interior = velocities.iter().enumerate().take(line.segments).skip(1);
+        for (i, velocity) in interior {
+            let pull = masses.seabed_force(i, Damper::Friction, velocity, &line.up);
             self.damper[i] = masses.solve_damped(i, Damper::Friction, &line.up, h, &pull);
         }
     }
@@ -195,13 +201,13 @@ impl AxialSolve {
             let rate = self.directions[j].dot(&(velocities[j + 1] - velocities[j]));
             work -= h * line.ba * per_length * rate * rate;
         }
-        for i in 1..n {
-            let closing = velocities[i] + self.change[i];
+        for (i, middle) in velocities.iter().enumerate().take(n).skip(1) {
+            let closing = middle + self.change[i];
             let friction = masses.seabed_force(i, Damper::Friction, &closing, &line.up);
             // The water the node carries takes its share of the change `2δ` (§8 "Energy").
             let mass = line.mass_per_length * line.share(i);
             let carried = masses.added_mass_force(i, mass, &(self.change[i] * (2.0 / h)));
-            work += h * (friction - carried).dot(&velocities[i]);
+            work += h * (friction - carried).dot(middle);
         }
         work
     }

@@ -98,7 +98,7 @@ impl Discrete {
     /// `β`, PHYSICS.md §8): the axial one of its highest mode, `ω = 2√(EA/(λ0 l²))`, `β = 2
     /// BA/(λ0 l²)`, which an explicit integrator (MoorDyn's) must resolve and the sub-steps take
     /// implicitly ([`super::axial`]); and the seabed's spring's, `2/ω` with `ω² = k_b d/λ0` (its
-    /// damping and friction are taken implicitly in the kicks, [`super::nodes::NodeForces::kick`],
+    /// damping and friction are taken implicitly, [`super::nodes::NodeForces::solve_damped`],
     /// and bound no step).
     pub fn limits(&self) -> LineLimits {
         let lambda = self.mass_per_length.max(f64::MIN_POSITIVE);

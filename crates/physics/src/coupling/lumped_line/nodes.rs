@@ -78,8 +78,9 @@ pub struct NodeForces {
     /// The seabed's damping of an interior node on it, `(c_n, c_f)` [N·s/m]: `c_n = c_b d l_i`
     /// across the bottom and the friction's secant `c_f = C_B F_z tanh(|v_h|/v_s)/|v_h|`
     /// (`C_B F_z/v_s` at rest) along it, so that the seabed's dissipative force is
-    /// `−(c_n ûûᵀ + c_f (E − ûûᵀ)) v`, taken at the kick's closing velocity
-    /// ([`NodeForces::kick`]); `(0, 0)` off the seabed. It is not in `total` or `unbooked`. The
+    /// `−(c_n ûûᵀ + c_f (E − ûûᵀ)) v`, taken at a step's closing velocity: the normal part in
+    /// the kicks, the friction in the segments' solve ([`Damper`], [`NodeForces::solve_damped`]);
+    /// `(0, 0)` off the seabed. It is not in `total` or `unbooked`. The
     /// end nodes keep theirs in `total`: their bodies take it.
     pub seabed_damping: Vec<(f64, f64)>,
     /// Elastic `Σ ½ EA l ε²` over taut segments, wet weight and seabed `Σ ½ k_b d l_i δ²` \[J].

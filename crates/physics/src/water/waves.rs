@@ -128,6 +128,13 @@ impl Sea {
         self.harmonic.is_some()
     }
 
+    /// Whether [`Sea::elevation_at`] is the same at every `y` for a given `x`, to the bit: a
+    /// harmonic sea heading along x (`e_y` exactly 0, its phase `k_0 (e_x x + 0·y)`), whose
+    /// surface a grid can sum once per column.
+    pub fn elevation_ignores_y(&self) -> bool {
+        self.harmonic.as_ref().is_some_and(|harmonic| harmonic.heading[1] == 0.0)
+    }
+
     /// `Σ a` \[m]: no crest is higher above the still level.
     pub fn highest_crest(&self) -> f64 {
         self.components.iter().map(|c| c.amplitude).sum()
@@ -563,5 +570,37 @@ mod tests {
             assert_relative_eq!(sea.kinematics(&below, t).1, ahead, epsilon = 1e-8);
             assert!(acceleration.norm() > 0.0);
         }
+    }
+
+    /// A JONSWAP sea heading along x sums its surface once per column: the elevation is the
+    /// same at every y to the bit; heading 30°, it is not, and the sea says so.
+    #[test]
+    fn a_sea_heading_along_x_has_the_same_elevation_at_every_y() {
+        let sea = |heading: f64| {
+            let waves = crate::water::WaveSpec::Jonswap {
+                significant_height: 2.5,
+                peak_period: 9.0,
+                gamma: 3.3,
+                heading,
+                components: 50,
+                seed: 1,
+            };
+            let spec = crate::water::WaterSpec { depth: Some(50.0), waves, ..crate::water::WaterSpec::default() };
+            let water = crate::water::Water::new(spec, &crate::math::Vec3::new(0.0, 0.0, -G)).expect("a valid sea");
+            water.sea().clone()
+        };
+        let (along, across) = (sea(0.0), sea(30.0));
+        assert!(along.is_harmonic() && along.elevation_ignores_y());
+        assert!(across.is_harmonic() && !across.elevation_ignores_y());
+        let mut instant = SeaInstant::default();
+        along.surface_instant(12.3, &mut instant);
+        for x in [-80.0, -3.25, 0.0, 41.5] {
+            let first = along.elevation_at(&instant, x, -60.0);
+            for y in [-17.5, 0.0, 33.0, 60.0] {
+                assert_eq!(along.elevation_at(&instant, x, y).to_bits(), first.to_bits(), "x = {x}, y = {y}");
+            }
+        }
+        across.surface_instant(12.3, &mut instant);
+        assert_ne!(across.elevation_at(&instant, 10.0, -60.0), across.elevation_at(&instant, 10.0, 60.0));
     }
 }

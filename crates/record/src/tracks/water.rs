@@ -149,11 +149,12 @@ impl WaterTrack {
 
     /// Buffers the surface at `frame` (simulated time `time`) if it moved and
     /// [`SURFACE_PERIOD`] has passed since the last row (`elevation`: the waves' at `(x, y)`
-    /// [m]); returns the bytes.
+    /// [m], the same at every `y` when `ignores_y`: then summed once per column,
+    /// [`tether_physics::water::waves::Sea::elevation_ignores_y`]); returns the bytes.
     fn capture_surface(
         &mut self,
         level: f64,
-        calm: bool,
+        (calm, ignores_y): (bool, bool),
         (time, frame): (f64, usize),
         elevation: impl Fn(f64, f64) -> f64,
     ) -> usize {
@@ -163,9 +164,16 @@ impl WaterTrack {
         }
         self.calm_level = calm.then_some(level);
         self.surface_time = time;
+        let first_row = self.surface.len();
         for n in 0..GRID * GRID {
             let (x, y) = self.grid_point(n);
-            self.surface.push([x as f32, y as f32, (level + elevation(x, y)) as f32]);
+            // Grid point n is column n % GRID of row n / GRID.
+            let height = if ignores_y && n >= GRID {
+                self.surface[first_row + n % GRID][2]
+            } else {
+                (level + elevation(x, y)) as f32
+            };
+            self.surface.push([x as f32, y as f32, height]);
         }
         self.surface_frames.push(frame);
         GRID * GRID * 3 * 4
@@ -229,7 +237,8 @@ impl Track for WaterTrack {
         }
         let ramp = water.ramp(time);
         let elevation = |x: f64, y: f64| if calm { 0.0 } else { ramp * water.sea().elevation_at(&sea, x, y) };
-        let mut bytes = self.capture_surface(water.level(), calm, (time, frame), elevation);
+        let ignores_y = water.sea().elevation_ignores_y();
+        let mut bytes = self.capture_surface(water.level(), (calm, ignores_y), (time, frame), elevation);
         for (floating, stage_body) in self.floating.iter().zip(&stage.floating) {
             let body = &world.bodies()[floating.body];
             let state = world.state(floating.body);

@@ -5,7 +5,8 @@
 //!   static, its vertices a row at most every [`SURFACE_PERIOD`] of simulated time while there
 //!   are waves (a calm sea: a row only when its level changes, the first frame included). The
 //!   surface is the costliest entity of a water scene — 12 bytes and one wave evaluation per
-//!   vertex and row —: this grid and rate keep it below the physics' cost on the shipped scenes
+//!   vertex and row, per column where the sea heads along x —: this grid and rate keep it below
+//!   the physics' cost on the shipped scenes
 //!   (`tether record --timing`) while a wave of the shortest period shipped (8 s) is still drawn
 //!   with a dozen vertices per length and over 150 rows per period;
 //! - `world/water/seabed`: the seabed plane at `z_w − h` under the same square, static, when the

@@ -49,7 +49,7 @@ pub struct AxialSolve {
     tensions: Vec<f64>,
     stiffness: Vec<f64>,
     upper: Vec<f64>,
-    /// Per node: `M_i⁻¹ q̃_{i−1}` and `M_i⁻¹ q̃_i` [1/kg] (zero at the end nodes).
+    /// Per node: `M̃_i⁻¹ q̃_{i−1}` and `M̃_i⁻¹ q̃_i` [1/kg] (zero at the end nodes).
     behind: Vec<Vec3>,
     ahead: Vec<Vec3>,
     /// Per node: the velocity change to mid-step `δ_i` [m/s] of the current iterate, and
@@ -62,11 +62,14 @@ pub struct AxialSolve {
 const ITERATIONS: usize = 2;
 
 impl AxialSolve {
-    /// One sub-step of `h` \[s] of `line`'s nodes under their segments (module doc), the
-    /// mass matrices those of `masses` (the last evaluation's). `positions` and `velocities` are
-    /// the nodes' at the sub-step's start (the end nodes' at their constant speed along their
-    /// path); on return the interior nodes are at the sub-step's end. Returns the work \[J] of
-    /// the internal damping over the sub-step, `−h Σ (BA/l) (q̃_j·(v_mid,j+1 − v_mid,j))²`.
+    /// One sub-step of `h` \[s] of `line`'s nodes under their segments and the seabed's
+    /// friction (module doc), the mass matrices and dampers those of `masses` (the last
+    /// evaluation's). `positions` and `velocities` are the nodes' at the sub-step's start (the end
+    /// nodes' at their constant speed along their path); on return the interior positions are at
+    /// the sub-step's end and their velocities at mid-step, `v + δ` — the velocity the forces
+    /// that depend on it are evaluated at — which [`Self::close`] then takes to the end.
+    /// Returns the work of the internal damping, the friction and the added mass's reaction over
+    /// the sub-step \[J].
     pub fn step(
         &mut self,
         line: &Discrete,
@@ -110,8 +113,8 @@ impl AxialSolve {
         self.ahead.resize(segments + 1, Vec3::zeros());
     }
 
-    /// `q̃_j`, `κ_j` and the right-hand side `T̃_j − κ_j q̃_j·(δ_{j+1} − δ_j)` at the current
-    /// iterate's mid-step `r + ½h (v + δ)`, `v + δ`.
+    /// `q̃_j`, `κ_j` and the right-hand side `T̃_j + κ_j q̃_j·(½h (p_{j+1} − p_j) − (δ_{j+1} − δ_j))`
+    /// at the current iterate's mid-step `r + ½h (v + δ)`, `v + δ` (`p` the dampers' pull).
     fn linearise(&mut self, line: &Discrete, positions: &[Vec3], velocities: &[Vec3], half: f64) {
         let n = line.segments;
         let per_length = 1.0 / line.segment;
@@ -143,7 +146,7 @@ impl AxialSolve {
         }
     }
 
-    /// `(I + ½h K G) T = T̃` by the Thomas algorithm, in place in `tensions`.
+    /// `(I + ½h K G) T = rhs` by the Thomas algorithm, in place in `tensions`.
     fn solve(&mut self, n: usize, half: f64) {
         let mut previous_upper = 0.0;
         let mut previous_rhs = 0.0;
@@ -173,7 +176,7 @@ impl AxialSolve {
         }
     }
 
-    /// `δ_i = ½h M_i⁻¹(q̃_i T_i − q̃_{i−1} T_{i−1})` at the interior nodes (zero at the ends).
+    /// `δ_i = ½h (M̃_i⁻¹(q̃_i T_i − q̃_{i−1} T_{i−1}) + p_i)` at the interior nodes (zero at the ends).
     fn update_change(&mut self, n: usize, half: f64) {
         for i in 1..n {
             self.change[i] =
@@ -182,7 +185,7 @@ impl AxialSolve {
     }
 
     /// The interior nodes to the sub-step's end: `r ← r + h (v + δ)`; `velocities` then holds
-    /// the mid-step velocities `v + δ` until [`Self::damping_work`] closes them.
+    /// the mid-step velocities `v + δ` until [`Self::close`].
     fn drift(&self, positions: &mut [Vec3], velocities: &mut [Vec3], n: usize, h: f64) {
         for i in 1..n {
             velocities[i] += self.change[i];

@@ -97,18 +97,10 @@ impl NodeForces {
         self.seabed_damping.resize(segments + 1, (0.0, 0.0));
     }
 
-    /// `M_i⁻¹ F_i` [m/s²] of node `i`.
-    #[inline(always)]
-    pub fn acceleration(&self, node: usize) -> Vec3 {
-        let (a, b, q) = self.masses[node];
-        let force = self.total[node];
-        (force - q * (b / (a + b) * q.dot(&force))) * (1.0 / a)
-    }
-
-    /// `(M_i + τC_i)⁻¹ y` of node `i` (`up` the upward unit vertical, `C_i` its
+    /// `(M_i + τC_i)⁻¹ y` of node `i` (`up` the upward unit vertical, `C_i` the `part` of its
     /// [`NodeForces::seabed_damping`], `τ` \[s]): with `y = F − C v` the acceleration that
-    /// takes the seabed's damping and friction at the closing velocity of a step of `τ` (backward
-    /// Euler in them), which no step length makes overshoot (PHYSICS.md §8 "Stable time
+    /// takes that damping at the closing velocity of a step of `τ` (backward Euler in it), which
+    /// no step length makes overshoot (PHYSICS.md §8 "Stable time
     /// step"). `M + τC = αE + b q̂q̂ᵀ + ε ûûᵀ` (`α = a + τ c_f`, `ε = τ (c_n − c_f)`) is inverted
     /// by two rank-one updates of `αE` (Sherman–Morrison), each denominator positive as the
     /// matrix is positive definite; off the seabed it is `M⁻¹ y`.

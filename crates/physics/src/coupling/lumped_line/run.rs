@@ -3,32 +3,35 @@
 //!
 //! The line keeps the nodes of the last *accepted* integrator step (`committed`, at `t_c`).
 //! An evaluation at `t ≥ t_c` with the ends at `p1`, `p2` starts again from them and steps the
-//! nodes to `t` in `K = ⌈(t − t_c)/h_s⌉` equal sub-steps of velocity Verlet (kick `½h M⁻¹F`,
-//! drift `r += h v`, forces, kick `½h M⁻¹F`: the forces of one sub-step's end open the next,
-//! one evaluation per sub-step; `h_s` a margin under the line's stable step,
-//! [`Discrete::substep`]), the ends moving on the straight path from where they were at `t_c`
-//! to `p1`, `p2` — the leapfrog's own path for the bodies over a step — and the water's
-//! kinematics held at each node's `t_c` position and mid-interval time (in a harmonic sea by
-//! powers of one complex number, [`Water::flow_at`]: PHYSICS.md §8 "The waves' kinematics at
-//! the nodes", the same sums to round-off at a fraction of the cost; a Runge–Kutta step's two
-//! middle stages share their interval, nodes and water, so the second takes the first's
-//! kinematics, the same numbers for 13% fewer instructions per RK4 step of `moored_buoy` with
-//! its chains dynamic in the JONSWAP sea of `scripts/line-speed.sh`). The bodies then feel
-//! each end node's force at `t`. Evaluating again at the same time or at a stage of a
-//! Runge–Kutta step starts from the same committed nodes, so an integrator may evaluate as
-//! often as it likes; the world commits the last evaluation when it accepts a step
+//! nodes to `t` in `K = ⌈(t − t_c)/h_s⌉` equal sub-steps of velocity Verlet with its stiff part
+//! implicit (kick `½h M⁻¹F` of every force but the segments', the drift under the segments and
+//! the seabed's friction by the implicit midpoint rule, [`AxialSolve::step`], forces, kick: the
+//! forces of one sub-step's end open the next, one evaluation per sub-step; `h_s` a margin under
+//! the seabed's and the transverse stable steps, [`Discrete::substep`]), the ends moving on the
+//! straight path from where they were at `t_c` to `p1`, `p2` — the leapfrog's own path for the
+//! bodies over a step — and the water's kinematics held at each node's `t_c` position and
+//! mid-interval time (in a harmonic sea by powers of one complex number, [`Water::flow_at`]:
+//! PHYSICS.md §8 "The waves' kinematics at the nodes", the same sums to round-off at a fraction
+//! of the cost; a Runge–Kutta step's two middle stages share their interval, nodes and water, so
+//! the second takes the first's kinematics, the same numbers for 13% fewer instructions per RK4
+//! step of `moored_buoy` with its chains dynamic in the JONSWAP sea of `scripts/line-speed.sh`).
+//! The bodies then feel each end node's force at `t`. Evaluating again at the same time or at a
+//! stage of a Runge–Kutta step starts from the same committed nodes, so an integrator may
+//! evaluate as often as it likes; the world commits the last evaluation when it accepts a step
 //! ([`LineRun::commit`]).
 //!
 //! Energy: the coupling's `potential` is the nodes' kinetic energy (structural mass) with the
 //! elastic, wet-weight and seabed energies; the work of everything else on the interior nodes
 //! (internal damping, drag, the waves' inertia, the added mass's reaction, the seabed's damping
-//! and friction) is summed over the sub-steps against each kick's mean velocity, with the work
-//! of the end nodes' share of the damping and seabed forces on what the ends move with, and
-//! reported as the interval's mean dissipated power. The exchange with the bodies is the
-//! partitioned scheme's one error: they feel the end forces at `t` while the line felt the ends
-//! along their path, a balance error that falls with the bodies' step (on `moored_buoy` with its
-//! chains dynamic: 60 J at 10 ms, 32 J at 2.5 ms over 60 s, of 0.67 MJ exchanged; the interval's
-//! mean force instead lags by half a step and does worse).
+//! and friction) is summed over the sub-steps — against each kick's mean velocity, and in the
+//! segments' solve against the mid-step velocity — with the work of the end nodes' share of the
+//! drag and seabed forces on what the ends move with, and reported as the interval's mean
+//! dissipated power. The exchange with the bodies is the partitioned scheme's first error: they
+//! feel the end forces at `t` while the line felt the ends along their path, a balance error
+//! that falls with the bodies' step; the line's own sub-steps add theirs (on `moored_buoy` with
+//! its chains dynamic: 121 J at 2.5 ms over 60 s, of 0.67 MJ exchanged, 32 J when the chains
+//! sub-stepped explicitly at 1.2 ms; the interval's mean force instead of the end force lags by
+//! half a step and does worse).
 
 use super::axial::AxialSolve;
 use super::discrete::Discrete;
@@ -340,9 +343,11 @@ impl LineRun {
         Ok(work)
     }
 
-    /// `v ← v + τ M⁻¹F` on the interior nodes with the forces in the scratch (the seabed's
-    /// damping and friction are the segments' solve's, [`AxialSolve::step`]); returns the work
-    /// of the forces without potential over the kick, against the kick's mean velocity \[J].
+    /// `v ← v + τ M⁻¹F` on the interior nodes with the forces in the scratch, the seabed's
+    /// damping across the bottom at the closing velocity (`(M + τ c_n ûûᵀ)⁻¹`,
+    /// [`NodeForces::solve_damped`]; its friction is the segments' solve's, [`AxialSolve::step`]);
+    /// returns the work of the forces without potential over the kick, against the kick's mean
+    /// velocity \[J].
     fn half_kick(&self, line: &Discrete, nodes: &mut LineNodes, tau: f64) -> f64 {
         let mut work = 0.0;
         for i in 1..line.segments {
@@ -470,8 +475,8 @@ mod tests {
     /// The segments taken implicitly let the chain sub-step at its seabed limit (18 ms, 3
     /// sub-steps per 50 ms; the explicit axial limit is 1.45 ms): over the last 50 s of
     /// [`driven_fairlead_tensions`], the fairlead tension at that sub-step stays within 1.5 % of
-    /// the peak of the same run at 8 sub-steps per stable one (1.2 %, where the tension turns in
-    /// the trough), its peak and mean within 0.5 % (+0.23 %, +0.10 %).
+    /// the peak of the same run at 8 sub-steps per stable one (1.4 %, where the tension turns in
+    /// the trough), its peak and mean within 0.5 % (+0.09 %, +0.04 %).
     #[test]
     fn the_chain_sub_stepped_at_its_seabed_limit_gives_the_refined_tensions() {
         let (_, discrete, _, _) = chain_in_a_jonswap_sea();

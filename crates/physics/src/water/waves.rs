@@ -213,12 +213,18 @@ impl Sea {
         let k0 = harmonic.base;
         let (sin, cos) = (k0 * (harmonic.heading[0] * point.x + harmonic.heading[1] * point.y)).sin_cos();
         let decay = (k0 * zeta).max(LOWEST_EXPONENT).exp();
-        let [mut v_plus, mut a_plus] = harmonic_sums(instant, [decay * cos, decay * sin], harmonic.first);
-        let [mut v_minus, mut a_minus] = [v_plus, a_plus];
-        if self.depth.is_some() {
+        let falling = [decay * cos, decay * sin];
+        let ([mut v_plus, mut a_plus], rising) = if self.depth.is_some() {
             // e^{−k0(2h + ζ)} ≤ e^{−k0 h}: no overflow, as ζ ≥ −h.
             let rising = harmonic.epsilon / decay;
-            let [v_rising, a_rising] = harmonic_sums(instant, [rising * cos, rising * sin], harmonic.first);
+            let [falling, rising] = harmonic_sums(instant, [falling, [rising * cos, rising * sin]], harmonic.first);
+            (falling, Some(rising))
+        } else {
+            let [falling] = harmonic_sums(instant, [falling], harmonic.first);
+            (falling, None)
+        };
+        let [mut v_minus, mut a_minus] = [v_plus, a_plus];
+        if let Some([v_rising, a_rising]) = rising {
             for (plus, minus, rising) in [(&mut v_plus, &mut v_minus, v_rising), (&mut a_plus, &mut a_minus, a_rising)]
             {
                 *plus = [plus[0] + rising[0], plus[1] + rising[1]];
@@ -392,22 +398,32 @@ fn horner_step(p: &mut [[f64; CHAINS]; 2], z4: [f64; 2], c_real: &[f64], c_imagi
 }
 
 /// `Σ_i c_i z^{first + i}` and `Σ_i d_i z^{first + i}` (complex) over the velocity and
-/// acceleration amplitudes of `instant`: component `4j + l` in lane `l`, each lane a polynomial
-/// in `z⁴` by Horner's rule (two complex products and two sums per component for both sets,
-/// where powers of `z` cost a third product), then [`gather`]ed.
+/// acceleration amplitudes of `instant`, at each of the `P` points `z`: component `4j + l` in
+/// lane `l`, each lane a polynomial in `z⁴` by Horner's rule (two complex products and two sums
+/// per component for both sets, where powers of `z` cost a third product), then [`gather`]ed.
+/// The points share one pass over the amplitudes (a node's `w` and `u` in finite depth: each
+/// amplitude loaded once for both), each point's sums the same operations in the same order as
+/// alone.
 #[inline(always)]
-fn harmonic_sums(instant: &FlowInstant, z: [f64; 2], first: u32) -> [[f64; 2]; 2] {
-    let square = multiply(z, z);
-    let z4 = multiply(square, square);
+fn harmonic_sums<const P: usize>(instant: &FlowInstant, z: [[f64; 2]; P], first: u32) -> [[[f64; 2]; 2]; P] {
+    let z4 = z.map(|z| {
+        let square = multiply(z, z);
+        multiply(square, square)
+    });
     let (v, a) = (&instant.velocity, &instant.acceleration);
-    let (mut velocity, mut acceleration) = ([[0.0; CHAINS]; 2], [[0.0; CHAINS]; 2]);
+    let mut velocity = [[[0.0; CHAINS]; 2]; P];
+    let mut acceleration = [[[0.0; CHAINS]; 2]; P];
     let chunks = v.real.chunks_exact(CHAINS).zip(v.imaginary.chunks_exact(CHAINS));
     let chunks = chunks.zip(a.real.chunks_exact(CHAINS).zip(a.imaginary.chunks_exact(CHAINS)));
     for ((v_real, v_imaginary), (a_real, a_imaginary)) in chunks.rev() {
-        horner_step(&mut velocity, z4, v_real, v_imaginary);
-        horner_step(&mut acceleration, z4, a_real, a_imaginary);
+        for point in 0..P {
+            horner_step(&mut velocity[point], z4[point], v_real, v_imaginary);
+            horner_step(&mut acceleration[point], z4[point], a_real, a_imaginary);
+        }
     }
-    [gather(&velocity, z, first), gather(&acceleration, z, first)]
+    std::array::from_fn(|point| {
+        [gather(&velocity[point], z[point], first), gather(&acceleration[point], z[point], first)]
+    })
 }
 
 /// `Re Σ_i b_i z^{first + i}` over the components of `instant`, by Horner's rule in `z⁴` on

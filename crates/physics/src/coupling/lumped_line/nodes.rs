@@ -163,21 +163,30 @@ impl Damper {
 /// them everything, their half segment's drag included (as MoorDyn's coupled points); only
 /// their inertia is left out.
 pub fn evaluate(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut NodeForces) {
-    evaluate_into::<true, true>(line, nodes, flow, out);
+    evaluate_into::<true, true, true>(line, nodes, flow, out);
+}
+
+/// What an evaluation's outcome reads of [`evaluate`], into `out`: the segments' tensions, every
+/// force on the two end nodes (`total[0]`, `total[N]`) and the potential energy, the same numbers
+/// to the bit. The interior nodes' own forces are not taken (their drag, wave and seabed forces:
+/// the sub-steps have kicked them already), so their entries hold their segments' share alone.
+pub fn evaluate_ends(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut NodeForces) {
+    evaluate_into::<true, true, false>(line, nodes, flow, out);
 }
 
 /// [`evaluate`] without the segments' tensions (`out.tensions` untouched) and without the
 /// potential energy (`out.potential` is 0): what a sub-step kicks the nodes with explicitly,
 /// their segments being taken implicitly ([`super::axial`]).
 pub fn evaluate_surroundings(line: &Discrete, nodes: &LineNodes, flow: &[Flow], out: &mut NodeForces) {
-    evaluate_into::<false, false>(line, nodes, flow, out);
+    evaluate_into::<false, false, true>(line, nodes, flow, out);
 }
 
 /// [`evaluate`], the potential energy summed when `POTENTIAL`, the segments' tensions taken
-/// when `SEGMENTS`. The slices are cut to the line's `N + 1` nodes and `N` segments up front, so
-/// that the loops index them without checks.
+/// when `SEGMENTS`, the interior nodes' own forces when `INTERIOR` (else their potential alone).
+/// The slices are cut to the line's `N + 1` nodes and `N` segments up front, so that the loops
+/// index them without checks.
 #[inline(always)]
-fn evaluate_into<const POTENTIAL: bool, const SEGMENTS: bool>(
+fn evaluate_into<const POTENTIAL: bool, const SEGMENTS: bool, const INTERIOR: bool>(
     line: &Discrete,
     nodes: &LineNodes,
     flow: &[Flow],
@@ -200,11 +209,7 @@ fn evaluate_into<const POTENTIAL: bool, const SEGMENTS: bool>(
         let mass = line.mass_per_length * share;
         let position = &x[node];
         let height = position.dot(&line.up);
-        total[node] += line.gravity * mass;
-        let tangent = tangent(x, node, n);
-        let submerged = line.submerged(position);
         let displaced = line.density * line.displaced_area * share;
-        let mut matrix = (mass, 0.0, tangent);
         if POTENTIAL {
             potential += mass * g * height;
             if let Some(level) = line.water_level {
@@ -212,6 +217,20 @@ fn evaluate_into<const POTENTIAL: bool, const SEGMENTS: bool>(
                 potential -= displaced * g * (height - level).min(0.0);
             }
         }
+        if !INTERIOR && node != 0 && node != n {
+            if POTENTIAL && let Some(seabed) = &line.seabed {
+                let depth = seabed.elevation - height;
+                if depth > 0.0 {
+                    let area = line.bearing * share;
+                    potential += 0.5 * p.seabed_stiffness * area * depth * depth;
+                }
+            }
+            continue;
+        }
+        total[node] += line.gravity * mass;
+        let tangent = tangent(x, node, n);
+        let submerged = line.submerged(position);
+        let mut matrix = (mass, 0.0, tangent);
         if submerged {
             total[node] += line.up * (displaced * g);
             matrix = (

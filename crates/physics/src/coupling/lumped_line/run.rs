@@ -65,7 +65,8 @@ pub struct LineRun {
     committed: Option<LineNodes>,
     /// The mean dissipated power over the interval that led to `committed` \[W].
     committed_power: f64,
-    /// The nodes at the last evaluation, and the forces on them there.
+    /// The nodes at the last evaluation, and their segments' tensions, end forces and potential
+    /// energy there ([`nodes::evaluate_ends`]).
     current: Option<LineNodes>,
     forces: NodeForces,
     /// The mean dissipated power over the last evaluation's interval \[W].
@@ -260,7 +261,7 @@ impl LineRun {
             nodes.velocities[node] = ends[end].velocity;
         }
         nodes.time = time;
-        nodes::evaluate(discrete, &nodes, &self.flow, &mut self.forces);
+        nodes::evaluate_ends(discrete, &nodes, &self.flow, &mut self.forces);
         let outcome = LineOutcome {
             f1: self.forces.total[0],
             f2: self.forces.total[n],

@@ -31,8 +31,13 @@ pub(crate) fn column(
 /// `N`-vectors of `f32` — positions, vectors, translations (`N` = 3), quaternions `[x, y, z, w]`
 /// (`N` = 4) — as Rerun stores them: a fixed-size list of `N` non-null floats each.
 pub(crate) fn floats<const N: usize>(values: impl IntoIterator<Item = [f32; N]>) -> ArrayRef {
-    let flat: Vec<f32> = values.into_iter().flatten().collect();
-    // `flat` holds whole N-vectors, so the list array's length check cannot fail.
+    flat_floats::<N>(values.into_iter().flatten().collect())
+}
+
+/// [`floats`] from the vectors' components one after the other, `flat` moved into the column
+/// without a copy (the sea surface's vertices, a chunk's largest buffer). Its callers push
+/// whole `N`-vectors, so the list array's length check cannot fail.
+pub(crate) fn flat_floats<const N: usize>(flat: Vec<f32>) -> ArrayRef {
     Arc::new(FixedSizeListArray::new(
         Arc::new(Field::new_list_field(DataType::Float32, false)),
         N as i32,

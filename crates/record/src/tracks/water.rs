@@ -24,7 +24,7 @@
 //!   without potential data has neither: a scene without any records what it recorded before.
 
 use super::{Settings, Track, f32x3, of_entity, send_chunk};
-use crate::columns::{column, floats, plot};
+use crate::columns::{column, flat_floats, floats, plot};
 use crate::frames::Frames;
 use crate::rerun;
 use crate::stats::KindStats;
@@ -73,7 +73,7 @@ pub(super) struct WaterTrack {
     half: f64,
     floating: Vec<Floating>,
     sea: SeaInstant,
-    surface: Vec<[f32; 3]>,
+    surface: Vec<f32>,
     surface_frames: Vec<usize>,
     /// The level of the calm surface last buffered or sent [m] (`None`: none yet, or waves).
     calm_level: Option<f64>,
@@ -168,13 +168,13 @@ impl WaterTrack {
         let first_row = self.surface.len();
         for n in 0..GRID * GRID {
             let (x, y) = self.grid_point(n);
-            // Grid point n is column n % GRID of row n / GRID.
+            // Grid point n is column n % GRID of row n / GRID; its height the third of its floats.
             let height = if ignores_y && n >= GRID {
-                self.surface[first_row + n % GRID][2]
+                self.surface[first_row + 3 * (n % GRID) + 2]
             } else {
                 (level + elevation(x, y)) as f32
             };
-            self.surface.push([x as f32, y as f32, height]);
+            self.surface.extend([x as f32, y as f32, height]);
         }
         self.surface_frames.push(frame);
         GRID * GRID * 3 * 4
@@ -266,7 +266,7 @@ impl Track for WaterTrack {
         if !self.surface_frames.is_empty() {
             let surface = column(
                 rerun::Mesh3D::descriptor_vertex_positions(),
-                floats(self.surface.drain(..)),
+                flat_floats::<3>(std::mem::take(&mut self.surface)),
                 std::iter::repeat_n(GRID * GRID, self.surface_frames.len()),
             );
             let times = frames.columns_of(self.surface_frames.iter().copied());

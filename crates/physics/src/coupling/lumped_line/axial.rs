@@ -37,7 +37,7 @@
 //! solvers (`faer`'s, `nalgebra-sparse`) with set-up costs above the solve itself.
 
 use super::discrete::Discrete;
-use super::nodes::{Damper, NodeForces};
+use super::nodes::{Damper, NodeForces, segment_strain};
 use crate::math::Vec3;
 
 /// Scratch for the axial solve, kept by a line's run across its sub-steps.
@@ -123,11 +123,7 @@ impl AxialSolve {
             let change = self.change[j + 1] - self.change[j];
             let relative = velocities[j + 1] - velocities[j] + change;
             let delta = (positions[j + 1] - positions[j]) + relative * half;
-            let stretched = delta.norm();
-            let q = if stretched > 0.0 { delta * (1.0 / stretched) } else { previous };
-            previous = q;
-            let strain = stretched * per_length - 1.0;
-            let rate = q.dot(&relative) * per_length;
+            let (q, strain, rate) = segment_strain(&delta, &relative, &mut previous, per_length);
             let taut = if strain > 0.0 { half * line.ea } else { 0.0 };
             let stiffness = (taut + line.ba) * per_length;
             self.directions[j] = q;

@@ -8,8 +8,8 @@
 //! `ρ A_d l_i [(1 + C_an) u̇_n + (1 + C_at) u̇_t]` on the relative velocity `v_r = u − v` split
 //! along the node's tangent `q̂`; below the seabed (penetration `δ`) `(k_b δ − c_b v_z) d l_i`
 //! upward and the friction `−C_B F_z tanh(|v_h|/v_s) v_h/|v_h|` (on an interior node both
-//! dissipative parts are kept apart, [`NodeForces::seabed_damping`], and taken implicitly in the
-//! kick). Its mass matrix is
+//! dissipative parts are kept apart, [`NodeForces::seabed_damping`], and taken implicitly: the
+//! damping in the kicks, the friction in the segments' solve, [`Damper`]). Its mass matrix is
 //! `M_i = m_i E + ρ A_d l_i [C_an (E − q̂q̂ᵀ) + C_at q̂q̂ᵀ]` under water: `a E + b q̂q̂ᵀ`,
 //! inverted as `(E − b/(a + b) q̂q̂ᵀ)/a`.
 
@@ -210,21 +210,20 @@ fn evaluate_into<const POTENTIAL: bool, const SEGMENTS: bool, const INTERIOR: bo
         let position = &x[node];
         let height = position.dot(&line.up);
         let displaced = line.density * line.displaced_area * share;
+        // The seabed and the node's depth into it, when the node is below it.
+        let grounded = line.seabed.map(|seabed| (seabed, seabed.elevation - height)).filter(|&(_, depth)| depth > 0.0);
+        let area = line.bearing * share;
         if POTENTIAL {
             potential += mass * g * height;
             if let Some(level) = line.water_level {
                 // The buoyancy's potential −ρ A_d l_i g min(h − h_w, 0) is continuous at the surface.
                 potential -= displaced * g * (height - level).min(0.0);
             }
+            if let Some((_, depth)) = grounded {
+                potential += 0.5 * p.seabed_stiffness * area * depth * depth;
+            }
         }
         if !INTERIOR && node != 0 && node != n {
-            if POTENTIAL && let Some(seabed) = &line.seabed {
-                let depth = seabed.elevation - height;
-                if depth > 0.0 {
-                    let area = line.bearing * share;
-                    potential += 0.5 * p.seabed_stiffness * area * depth * depth;
-                }
-            }
             continue;
         }
         total[node] += line.gravity * mass;
@@ -244,32 +243,22 @@ fn evaluate_into<const POTENTIAL: bool, const SEGMENTS: bool, const INTERIOR: bo
                 unbooked[node] += water;
             }
         }
-        if let Some(seabed) = &line.seabed {
-            let depth = seabed.elevation - height;
-            if depth > 0.0 {
-                let area = line.bearing * share;
-                let sinking = v[node].dot(&line.up);
-                if POTENTIAL {
-                    potential += 0.5 * p.seabed_stiffness * area * depth * depth;
-                }
-                total[node] += line.up * (p.seabed_stiffness * area * depth);
-                let normal = (p.seabed_stiffness * depth - p.seabed_damping * sinking).max(0.0) * area;
-                let sliding = v[node] - line.up * sinking;
-                let speed = sliding.norm();
-                // tanh(s/v_s)/s, 1/v_s at s = 0.
-                let secant = if speed > 0.0 {
-                    (speed / p.friction_speed).tanh() * (1.0 / speed)
-                } else {
-                    1.0 / p.friction_speed
-                };
-                let damping = (p.seabed_damping * area, seabed.line_friction * normal * secant);
-                if node == 0 || node == n {
-                    let force = -seabed_damping_force(damping, &line.up, &v[node]);
-                    total[node] += force;
-                    unbooked[node] += force;
-                } else {
-                    seabed_damping[node] = damping;
-                }
+        if let Some((seabed, depth)) = grounded {
+            let sinking = v[node].dot(&line.up);
+            total[node] += line.up * (p.seabed_stiffness * area * depth);
+            let normal = (p.seabed_stiffness * depth - p.seabed_damping * sinking).max(0.0) * area;
+            let sliding = v[node] - line.up * sinking;
+            let speed = sliding.norm();
+            // tanh(s/v_s)/s, 1/v_s at s = 0.
+            let secant =
+                if speed > 0.0 { (speed / p.friction_speed).tanh() * (1.0 / speed) } else { 1.0 / p.friction_speed };
+            let damping = (p.seabed_damping * area, seabed.line_friction * normal * secant);
+            if node == 0 || node == n {
+                let force = -seabed_damping_force(damping, &line.up, &v[node]);
+                total[node] += force;
+                unbooked[node] += force;
+            } else {
+                seabed_damping[node] = damping;
             }
         }
         masses[node] = matrix;
@@ -293,12 +282,7 @@ fn add_segments<const POTENTIAL: bool>(
     // One division per line and per segment: the rest are products by reciprocals.
     let per_length = 1.0 / line.segment;
     for i in 0..line.segments {
-        let delta = x[i + 1] - x[i];
-        let stretched = delta.norm();
-        let q = if stretched > 0.0 { delta * (1.0 / stretched) } else { previous };
-        previous = q;
-        let strain = stretched * per_length - 1.0;
-        let rate = q.dot(&(v[i + 1] - v[i])) * per_length;
+        let (q, strain, rate) = segment_strain(&(x[i + 1] - x[i]), &(v[i + 1] - v[i]), &mut previous, per_length);
         let elastic = line.ea * strain.max(0.0);
         let damping = line.ba * rate;
         tensions[i] = elastic + damping;
@@ -311,6 +295,18 @@ fn add_segments<const POTENTIAL: bool>(
         unbooked[i + 1] -= q * damping;
     }
     potential
+}
+
+/// A segment's unit direction `q = Δ/|Δ|`, strain `ε = |Δ|/l − 1` and strain rate
+/// `ε̇ = q·Δv/l` (PHYSICS.md §8 "Segment i") for its chord `delta` = `Δ`, its ends' relative
+/// velocity `relative` = `Δv` and `per_length` = `1/l`; where `Δ` vanishes the direction is the
+/// `previous` segment's, and `previous` becomes this one's.
+#[inline(always)]
+pub(super) fn segment_strain(delta: &Vec3, relative: &Vec3, previous: &mut Vec3, per_length: f64) -> (Vec3, f64, f64) {
+    let stretched = delta.norm();
+    let q = if stretched > 0.0 { delta * (1.0 / stretched) } else { *previous };
+    *previous = q;
+    (q, stretched * per_length - 1.0, q.dot(relative) * per_length)
 }
 
 /// `C v = c_n (û·v) û + c_f (v − (û·v) û)` \[N]: the seabed's damper `(c_n, c_f)` [N·s/m]

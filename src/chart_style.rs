@@ -52,3 +52,15 @@ pub fn legend<'s, 'a, 'b, DB: DrawingBackend + 'a, CT: CoordTranslate>(
 ) -> &'s mut SeriesLabelStyle<'a, 'b, DB, CT> {
     labels.label_font(("sans-serif", font_size)).background_style(WHITE.mix(0.9)).border_style(BLACK.mix(0.4))
 }
+
+/// The smallest and largest of `values` (`(∞, −∞)` when there are none).
+pub fn span(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)))
+}
+
+/// `lo..hi` widened on both sides by 5 % of its width, or of its size when the two are (nearly)
+/// equal, so that a single value still gets an axis.
+pub fn padded((lo, hi): (f64, f64)) -> std::ops::Range<f64> {
+    let margin = 0.05 * (hi - lo).abs().max(hi.abs().max(lo.abs()) * 1e-3).max(1e-9);
+    (lo - margin)..(hi + margin)
+}

@@ -15,6 +15,7 @@ pub mod fit;
 pub mod gui;
 pub mod line_hint;
 pub mod quantity;
+pub mod rao_chart;
 pub mod run_length;
 pub mod runner;
 pub mod statics;

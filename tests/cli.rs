@@ -513,6 +513,50 @@ fn rao_time_domain_agrees_with_the_frequency_domain_solve() {
     }
 }
 
+/// `tether rao --plot` draws the RAOs it prints: a PNG, the cylinder's surge, heave and pitch
+/// drawn with the same amplitudes and phases as the solve (`rao_chart::Responses`, sorted by
+/// period) and its sway, roll and yaw in head seas left out and named; a phase that wraps is cut
+/// there rather than drawn across the chart.
+#[test]
+fn rao_plot_draws_the_responses_and_names_what_it_leaves_out() {
+    use tether::rao_chart::{Responses, polar, unwrapped_pieces};
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("rao.png");
+    let fixture = "tests/fixtures/rao/cylinder.ron";
+    let out = tether(&["rao", fixture, "--body", "cylinder", "--periods", "8,4,17", "--plot", png.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("rao.png (sway, roll, yaw left out: below 1e-3 of their kind's largest)"), "{stdout}");
+    let bytes = std::fs::read(&png).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    assert!(bytes.len() > 20_000, "a chart with text and curves: {} bytes", bytes.len());
+
+    let loaded = tether_scene::load(std::path::Path::new(fixture)).unwrap();
+    let model = tether_physics::rao::LinearModel::new(loaded.world.system(), "cylinder").unwrap();
+    let omegas: Vec<f64> = [8.0, 4.0, 17.0].iter().map(|t| std::f64::consts::TAU / t).collect();
+    let rows = model.rao(&omegas, 0);
+    let responses = Responses::new(&rows, None);
+    assert_eq!(responses.omitted, [1, 3, 5]);
+    assert_eq!(responses.drawn.iter().map(|c| c.dof).collect::<Vec<_>>(), [0, 2, 4]);
+    let printed = cylinder_rao(&omegas);
+    for curve in &responses.drawn {
+        let periods: Vec<f64> = curve.frequency_domain.iter().map(|p| p.0).collect();
+        for (period, expected) in periods.iter().zip([4.0, 8.0, 17.0]) {
+            assert_relative_eq!(*period, expected, max_relative = 1e-12);
+        }
+        assert!(curve.time_domain.is_empty());
+        for &(period, amplitude, phase) in &curve.frequency_domain {
+            let row = printed.iter().find(|r| (r[0] - period).abs() < 1e-9).unwrap();
+            assert_relative_eq!(amplitude, row[2 + 2 * curve.dof], max_relative = 1e-9);
+            assert_relative_eq!(phase, row[3 + 2 * curve.dof], epsilon = 1e-7);
+            let xi = rows.iter().find(|r| (std::f64::consts::TAU / r.omega - period).abs() < 1e-9).unwrap();
+            assert_eq!(polar(&xi.response.unwrap())[curve.dof], (amplitude, phase));
+        }
+    }
+    let wrapping = [(1.0, 170.0), (2.0, 178.0), (3.0, -175.0), (4.0, -160.0), (5.0, 10.0)];
+    assert_eq!(unwrapped_pieces(&wrapping), [vec![(1.0, 170.0), (2.0, 178.0)], wrapping[2..].to_vec()]);
+}
+
 /// Bad `--time-domain` settings are one line each before any run: a run too short for its
 /// period, a zero amplitude, a run setting without `--time-domain`, a zero period; a run that
 /// diverges (the cylinder held by a spring whose stable step is 1.2 ms, run at 20 ms) names its

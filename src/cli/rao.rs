@@ -1,4 +1,4 @@
-//! `tether rao SCENE --body NAME [--periods T,…] [--heading DEG] [--csv FILE]`: a floating
+//! `tether rao SCENE --body NAME [--periods T,…] [--heading DEG] [--csv FILE] [--plot FILE.png]`: a floating
 //! body's linear RAOs (PHYSICS.md §9, the frequency-domain solve
 //! `ξ = [−ω² (M + A(ω)) + iω B(ω) + C]⁻¹ X(ω, β)`) from its potential-flow data, its mass about
 //! the reference point and its mesh's linear hydrostatic stiffness
@@ -21,6 +21,7 @@ use clap::Args;
 use std::f64::consts::TAU;
 use std::io::IsTerminal as _;
 use std::path::PathBuf;
+use tether::rao_chart::{self, DOFS, Responses, polar};
 use tether::runner::Runner;
 use tether_physics::potential::ComplexVector6;
 use tether_physics::rao::{LinearModel, RaoRow};
@@ -44,6 +45,10 @@ pub struct RaoArgs {
     /// Also write the table as CSV.
     #[arg(long, value_name = "FILE")]
     csv: Option<PathBuf>,
+    /// Also draw the RAOs as a chart (PNG): amplitude and phase against the period per dof, the
+    /// frequency-domain solve as lines and the --time-domain runs as circles.
+    #[arg(long, value_name = "FILE.png")]
+    plot: Option<PathBuf>,
     /// Also measure the RAOs from a run of the scene in regular waves at each period (its sea
     /// replaced; its couplings kept), printed beside the frequency-domain solve.
     #[arg(long)]
@@ -64,18 +69,15 @@ pub struct RaoArgs {
     natural_periods: bool,
 }
 
-/// The six dofs, with the unit of their amplitude per metre of wave.
-const DOFS: [(&str, &str); 6] =
-    [("surge", "m/m"), ("sway", "m/m"), ("heave", "m/m"), ("roll", "deg/m"), ("pitch", "deg/m"), ("yaw", "deg/m")];
-
 /// The waves' amplitude \[m] and ramp \[s] of `--time-domain` unless told.
 const AMPLITUDE: f64 = 0.05;
 const RAMP: f64 = 60.0;
 
 /// A response whose frequency-domain amplitude is below this fraction of its period's largest
 /// or of its dof's largest over the periods gets no difference: a percentage of numerical noise
-/// (sway and roll in head seas, heave far above its resonance) says nothing.
-const NEGLIGIBLE: f64 = 1e-3;
+/// (sway and roll in head seas, heave far above its resonance) says nothing. The chart leaves out
+/// a dof by the same fraction.
+const NEGLIGIBLE: f64 = rao_chart::NEGLIGIBLE;
 
 /// The force left on a body at its initial pose, as a fraction of its weight, above which the
 /// body is not at rest.
@@ -139,6 +141,18 @@ pub fn run(args: &RaoArgs) -> anyhow::Result<()> {
         std::fs::write(path, csv(&rows, measured.as_deref()))
             .with_context(|| format!("{}: cannot write", path.display()))?;
         super::print(&format!("\nwrote {}\n", path.display()))?;
+    }
+    if let Some(path) = &args.plot {
+        let responses = Responses::new(&rows, measured.as_deref());
+        let title = format!("RAOs of \"{}\" in waves toward {:.1}° ({label})", args.body, heading.to_degrees());
+        rao_chart::write(&responses, &title, path)?;
+        let omitted: Vec<&str> = responses.omitted.iter().map(|&dof| DOFS[dof].0).collect();
+        let left_out = if omitted.is_empty() {
+            String::new()
+        } else {
+            format!(" ({} left out: below {NEGLIGIBLE:e} of their kind's largest)", omitted.join(", "))
+        };
+        super::print(&format!("\nwrote {}{left_out}\n", path.display()))?;
     }
     Ok(())
 }
@@ -212,14 +226,6 @@ fn durations(run: &RegularWaveRun, omegas: &[f64]) -> String {
 /// The heading of the sea's first wave component \[rad], 0 in calm water.
 fn sea_heading(system: &tether_physics::system::System) -> f64 {
     system.water().and_then(|stage| stage.water.sea().components().first().map(|c| c.heading)).unwrap_or(0.0)
-}
-
-/// Amplitude and phase \[deg] per dof of `xi` (rotations in deg/m).
-fn polar(xi: &ComplexVector6) -> [(f64, f64); 6] {
-    std::array::from_fn(|dof| {
-        let scale = if dof < 3 { 1.0 } else { 1.0_f64.to_degrees() };
-        (xi[dof].norm() * scale, xi[dof].arg().to_degrees())
-    })
 }
 
 /// The table for people: one line per frequency.

@@ -2,7 +2,7 @@
 //! each line's tension at its ends below, one colour per line.
 
 use super::offsets::Table;
-use crate::chart_style::{self, COLOURS, register_font_family};
+use crate::chart_style::{self, COLOURS, padded, register_font_family, span};
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -38,14 +38,7 @@ pub fn write(table: &Table, title: &str, path: &Path) -> Result<(), ChartError> 
             )
         })
         .collect();
-    let span = |values: &mut dyn Iterator<Item = f64>| {
-        values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)))
-    };
-    let padded = |(lo, hi): (f64, f64)| {
-        let margin = 0.05 * (hi - lo).abs().max(hi.abs().max(lo.abs()) * 1e-3).max(1e-9);
-        (lo - margin)..(hi + margin)
-    };
-    let x_range = padded(span(&mut offsets.iter().copied()));
+    let x_range = padded(span(offsets.iter().copied()));
 
     let root = BitMapBackend::new(path, (1200, 900)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| draw(&e))?;
@@ -55,7 +48,7 @@ pub fn write(table: &Table, title: &str, path: &Path) -> Result<(), ChartError> 
         .margin(20)
         .x_label_area_size(50)
         .y_label_area_size(110)
-        .build_cartesian_2d(x_range.clone(), padded(span(&mut restoring.iter().map(|p| p.1))))
+        .build_cartesian_2d(x_range.clone(), padded(span(restoring.iter().map(|p| p.1))))
         .map_err(|e| draw(&e))?;
     chart_style::axes(&mut chart.configure_mesh())
         .x_desc(table.columns[0].as_str())
@@ -74,7 +67,7 @@ pub fn write(table: &Table, title: &str, path: &Path) -> Result<(), ChartError> 
         .margin(20)
         .x_label_area_size(50)
         .y_label_area_size(110)
-        .build_cartesian_2d(x_range, padded(span(&mut tensions.iter().flat_map(|(_, p)| p.iter().map(|q| q.1)))))
+        .build_cartesian_2d(x_range, padded(span(tensions.iter().flat_map(|(_, p)| p.iter().map(|q| q.1)))))
         .map_err(|e| draw(&e))?;
     chart_style::axes(&mut chart.configure_mesh())
         .x_desc(table.columns[0].as_str())

@@ -7,7 +7,8 @@
 //! - mass about P: `M_P = Jᵀ diag(m E, I_G) J`, `J = [[E, [r]×], [0, E]]` (so that
 //!   `x_G = x_P + r × θ` for a small rotation θ about P) \[kg, kg·m, kg·m²];
 //! - stiffness about P: `C = −∂Q/∂q` at the initial pose in still water, `Q` the mesh's
-//!   pressure load plus the weight, both as `(f, m_P)` with `m_P = m_G − r × f`, by central
+//!   pressure load (or the linear hydrostatics that replace it, [`crate::potential::hydrostatics`])
+//!   plus the weight, both as `(f, m_P)` with `m_P = m_G − r × f`, by central
 //!   differences of [`STEP`] in each translation of P and rotation about P
 //!   [N/m, N, N·m/rad]. The weight adds nothing when P is G; about another point it gives the
 //!   `−m g z_{G−P}` of roll and pitch. The same mesh the time domain floats, so a small regular

@@ -25,7 +25,9 @@ use crate::coupling::{Coupling, CouplingError, CouplingForces, CouplingKind, End
 use crate::energy::Powers;
 use crate::evaluation::Evaluation;
 use crate::math::Vec3;
-use crate::potential::{PotentialBody, PotentialSpec, WaveExcitation};
+use crate::potential::{
+    HydrostaticsModel, LinearHydrostatics, PotentialBody, PotentialError, PotentialSpec, WaveExcitation,
+};
 use crate::seabed::Seabed;
 use crate::simd::{Level, SupportedLevel};
 use crate::surroundings::Surroundings;
@@ -169,18 +171,36 @@ impl System {
         let name = self.bodies.get(body).map(|b| b.name.clone()).unwrap_or_default();
         let hydro = |source: FloatingError| SystemError::Hydro { body: name.clone(), source };
         let stage = self.water.as_mut().ok_or(SystemError::NoWater)?;
-        let entry =
-            stage.floating.iter_mut().find(|f| f.body == body).ok_or(SystemError::FloatingBody { body, count })?;
+        let position =
+            stage.floating.iter().position(|f| f.body == body).ok_or(SystemError::FloatingBody { body, count })?;
         crate::potential::body::check_start_axes(&self.bodies[body], &self.initial_states[body].orientation)
             .map_err(|e| hydro(e.into()))?;
+        let hydrostatics = spec.hydrostatics;
         let model = PotentialBody::new(spec, &self.bodies[body]).map_err(|e| hydro(e.into()))?;
         let frame = self.initial_states[body].frame();
-        let reference = frame.position + model.arm(&frame);
+        let arm = model.arm(&frame);
+        let reference = frame.position + arm;
         let mean_position = [reference.x, reference.y];
         let excitation =
             WaveExcitation::new(model.coefficients().excitation(), stage.water.sea().components(), mean_position)
                 .map_err(|e| hydro(e.into()))?;
-        entry.potential = Some(FloatingPotential { model: std::sync::Arc::new(model), mean_position, excitation });
+        let linear_hydrostatics = match hydrostatics {
+            HydrostaticsModel::Mesh => None,
+            HydrostaticsModel::Linear => {
+                let stiffness = *model
+                    .coefficients()
+                    .hydrostatic_stiffness()
+                    .ok_or_else(|| hydro(PotentialError::NoHydrostaticStiffness.into()))?;
+                let pressure = stage.still_pressure(&stage.floating[position], &frame);
+                Some(LinearHydrostatics::new(stiffness, &frame, &arm, &pressure))
+            }
+        };
+        stage.floating[position].potential = Some(FloatingPotential {
+            model: std::sync::Arc::new(model),
+            mean_position,
+            excitation,
+            linear_hydrostatics,
+        });
         Ok(self)
     }
 
@@ -229,8 +249,10 @@ impl System {
                 // Accepted coefficients with the added mass zeroed stay in range.
                 let hydro = crate::water::Hydro::new(spec, &self.bodies[entry.body], &entry.hull)
                     .expect("accepted coefficients without added mass");
-                // At rest nothing radiates and nothing accelerates: no potential flow.
-                FloatingBody { hydro, potential: None, switched_off: None, ..entry.clone() }
+                // At rest nothing radiates and nothing accelerates: no potential flow, but its
+                // linear hydrostatics, a static restoring, kept.
+                let hydrostatics_at_rest = entry.potential.as_ref().and_then(|p| p.linear_hydrostatics.clone());
+                FloatingBody { hydro, potential: None, switched_off: None, hydrostatics_at_rest, ..entry.clone() }
             })
             .collect();
         WaterStage { water, floating }

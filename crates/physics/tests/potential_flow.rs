@@ -102,6 +102,111 @@ fn the_linear_model_is_the_scenes_mass_and_the_meshs_hydrostatic_stiffness() {
     assert!((model.stiffness - expected).abs().max() < 1e-6 * pitch, "{}", model.stiffness);
 }
 
+/// `hydrostatics: Linear` (PHYSICS.md §9 "Linear hydrostatics"): the cylinder's restoring is
+/// then the file's `.hst`, `Q₀ − C ξ` about its pose at t = 0, and nothing of the mesh's but its
+/// still buoyancy there. The linear model `tether rao` solves has the file's stiffness to 1e-6
+/// (finite differences of a linear load); at a pose 1 m lower and heeled 20° in pitch the
+/// pressure on the body is the closed form `(ρ g V₀ + C33 · 1 m, C55 · 0.349 rad)` about G to 1e-9,
+/// where the mesh's own, exact at that pose, differs by more than 1 % in pitch.
+#[test]
+fn linear_hydrostatics_are_the_files_stiffness_about_the_start_pose() {
+    let world = cylinder("", 0.0, "hydrostatics: Linear", 0.02);
+    let file = *coefficients().hydrostatic_stiffness().expect("the shipped cylinder has its .hst");
+    let model = LinearModel::new(world.system(), "cylinder").expect("a body with potential data");
+    println!(
+        "C33 {:.6e} (file {:.6e}), C55 {:.6e} (file {:.6e})",
+        model.stiffness[(2, 2)],
+        file[(2, 2)],
+        model.stiffness[(4, 4)],
+        file[(4, 4)]
+    );
+    assert!((model.stiffness - file).abs().max() < 1e-6 * file.abs().max(), "{}\n{}", model.stiffness, file);
+
+    let pressure_at = |world: &World, sink: f64, heel: f64| {
+        let system = world.system();
+        let mut states = system.initial_states().to_vec();
+        let turn = tether_physics::math::Rotation::from_scaled_axis(tether_physics::math::Vec3::new(0.0, heel, 0.0));
+        states[0].position.z -= sink;
+        states[0].orientation = turn * states[0].orientation;
+        let mut evaluation = tether_physics::evaluation::Evaluation::new(1, system.couplings());
+        system.evaluate(&states, &mut evaluation, 0.0).expect("finite states");
+        evaluation.water()[0].pressure
+    };
+    let (sink, heel) = (1.0, 20.0_f64.to_radians());
+    let linear = pressure_at(&world, sink, heel);
+    let buoyancy = RHO * G * waterplane() * DRAFT;
+    let (heave, pitch) =
+        (buoyancy + file[(2, 2)] * sink - file[(2, 4)] * heel, -file[(4, 4)] * heel + file[(4, 2)] * sink);
+    println!(
+        "linear: F_z {:.6e} N (closed form {heave:.6e}), M_y {:.6e} N·m (closed form {pitch:.6e})",
+        linear.force.z, linear.moment.y
+    );
+    assert!((linear.force.z - heave).abs() < 1e-9 * heave, "{}", linear.force);
+    assert!((linear.moment.y - pitch).abs() < 1e-9 * pitch.abs(), "{}", linear.moment);
+    assert!(linear.force.x.abs() < 1e-9 * heave && linear.moment.x.abs() < 1e-9 * pitch.abs(), "{linear:?}");
+    let mesh = pressure_at(&cylinder("", 0.0, "", 0.02), sink, heel);
+    println!("mesh at the same pose: F_z {:.6e} N, M_y {:.6e} N·m", mesh.force.z, mesh.moment.y);
+    assert!((mesh.moment.y / pitch - 1.0).abs() > 0.01, "the mesh is not linear at 20°: {} vs {pitch}", mesh.moment.y);
+}
+
+/// With linear hydrostatics the cylinder in regular waves settles to the frequency-domain solve
+/// with the file's stiffness, as with the mesh's (check 2 of issue 33): surge, heave and pitch
+/// at 6, 8 and 13 s within 2 % and 3°.
+#[test]
+fn linear_hydrostatics_settle_to_the_frequency_domain_solve() {
+    let world = cylinder("", 0.0, "hydrostatics: Linear", 0.02);
+    let model = LinearModel::new(world.system(), "cylinder").expect("a body with potential data");
+    let run = RegularWaveRun::new(0.05, 60.0, Some(300.0)).expect("valid settings");
+    for period in [6.0, 8.0, 13.0] {
+        let solved = model.rao(&[2.0 * PI / period], 0)[0].response.expect("not singular");
+        let measured = run.measure(world.clone(), &model, period, 0.0).expect("a stable cylinder");
+        for (name, dof) in [("surge", 0), ("heave", 2), ("pitch", 4)] {
+            let amplitude = measured[dof].norm() / solved[dof].norm() - 1.0;
+            let phase = (measured[dof] / solved[dof]).arg().to_degrees();
+            println!("T {period} s {name}: {:+.3} %, {phase:+.3}°", 100.0 * amplitude);
+            assert!(amplitude.abs() < 0.02 && phase.abs() < 3.0, "T {period} {name}: {amplitude} {phase}°");
+        }
+    }
+}
+
+/// `hydrostatics: Linear` keeps the energy balance of check 4. The cylinder released 0.2 m high
+/// in calm water is linearised about that pose: `Q₀ = ρ g A_mesh (T − 0.2 m)` and the file's
+/// `C33`, so it heaves about `ξ_eq = (Q₀ − m g)/C33` below its start with the energy
+/// `½ (m + A33∞) ż² + ½ C33 (ξ − ξ_eq)²`. That energy falls by the radiation's work to 1e-4 of
+/// its initial value over 60 s, and the world's own balance (the linear restoring booked as the
+/// water's work) drifts by less than 1e-4 of it.
+#[test]
+fn linear_hydrostatics_keep_the_energy_balance() {
+    let (lift, dt) = (0.2, 0.01);
+    let mut world = cylinder("", lift, "hydrostatics: Linear", dt);
+    let stiffness = coefficients().hydrostatic_stiffness().expect(".hst")[(2, 2)];
+    let preload = RHO * G * waterplane() * (DRAFT - lift);
+    let equilibrium = (preload - mass() * G) / stiffness;
+    let initial = 0.5 * stiffness * equilibrium * equilibrium;
+    let infinite = coefficients().added_mass_infinite()[(2, 2)];
+    let start = world.energy().balance();
+    let radiation_power = |world: &World| world.evaluation().water()[0].radiation.force.dot(&world.state(0).velocity);
+    let (mut radiated, mut power) = (0.0, radiation_power(&world));
+    while world.time() < 60.0 - 0.5 * dt {
+        world.step().expect("a stable cylinder");
+        let now = radiation_power(&world);
+        radiated += 0.5 * dt * (power + now);
+        power = now;
+    }
+    let state = world.state(0);
+    let (xi, w) = (state.position.z - (-4.0 + lift), state.velocity.z);
+    let energy = 0.5 * (mass() + infinite) * w * w + 0.5 * stiffness * (xi - equilibrium).powi(2);
+    let (imbalance, drift) = (energy - initial - radiated, world.energy().balance() - start);
+    println!(
+        "ξ_eq {equilibrium:.5} m; initial {initial:.3} J, final {energy:.3} J, radiated {radiated:.3} J: imbalance {:.2e}, drift {:.2e}",
+        imbalance / initial,
+        drift / initial
+    );
+    assert!(radiated < -0.8 * initial, "{radiated}");
+    assert!(imbalance.abs() < 1e-4 * initial, "{imbalance}");
+    assert!(drift.abs() < 1e-4 * initial, "{drift}");
+}
+
 /// Surge \[m], heave \[m] and pitch \[rad] of the body from its start.
 fn motion(world: &World, start: &BodyState) -> [f64; 3] {
     let state = world.state(0);

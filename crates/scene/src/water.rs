@@ -17,7 +17,7 @@
 use super::finite::{Triple, finite, finite_option, finite3};
 use serde::{Deserialize, Serialize};
 use tether_physics::math::Vec3;
-use tether_physics::potential::RadiationMethod;
+use tether_physics::potential::{HydrostaticsModel, RadiationMethod};
 use tether_physics::water::morison::HydroSpec;
 use tether_physics::water::{CurrentProfile, CurrentSpec, WaterError, WaterSpec, WaveSpec};
 
@@ -156,6 +156,7 @@ pub struct HydroDef {
 ///     max_order: 30,           // its highest order per pair (default 30)
 ///     kernel_duration: 60.0,   // the kernel's truncation t_K [s] (default 60)
 ///     kernel_step: 0.05,       // its sampling step [s] (default 0.05)
+///     hydrostatics: Mesh,      // or Linear: Q₀ − C ξ from hydro/buoy.hst, about the pose at t = 0 (default Mesh)
 /// ),
 /// ```
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -176,6 +177,8 @@ pub struct WamitDef {
     pub kernel_duration: f64,
     #[serde(default = "default_kernel_step", deserialize_with = "finite")]
     pub kernel_step: f64,
+    #[serde(default)]
+    pub hydrostatics: HydrostaticsModel,
 }
 
 fn default_length() -> f64 {

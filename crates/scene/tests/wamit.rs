@@ -425,8 +425,17 @@ fn turned(scene: &str, rotation: &str) -> String {
 fn potential_flow_in_a_scene_is_refused_with_one_line_where_it_cannot_be() {
     let file = format!("file: {:?}", cylinder().display().to_string());
     let calm = "water: Water(),";
-    let good = tether_scene::parse(&cylinder_scene(calm, &file), std::path::Path::new("test.ron"));
-    assert!(good.is_ok(), "{:?}", good.err().map(|e| e.to_string()));
+    for accepted in [file.clone(), format!("{file}, hydrostatics: Linear"), format!("{file}, hydrostatics: Mesh")] {
+        let good = tether_scene::parse(&cylinder_scene(calm, &accepted), std::path::Path::new("test.ron"));
+        assert!(good.is_ok(), "{accepted}: {:?}", good.err().map(|e| e.to_string()));
+    }
+    // The cylinder's .1 and .3 without its .hst.
+    let directory = tempfile::tempdir().expect("a temporary directory");
+    for extension in ["1", "3"] {
+        std::fs::copy(cylinder().with_extension(extension), directory.path().join(format!("body.{extension}")))
+            .expect("the shipped cylinder's files");
+    }
+    let without_hst = directory.path().join("body").display().to_string();
     // A decay test's initial heel (3°) is a small rotation, which the linear theory is about.
     let heeled = tether_scene::parse(
         &turned(&cylinder_scene(calm, &file), "(0.0, 0.0524, 0.0)"),
@@ -447,6 +456,11 @@ fn potential_flow_in_a_scene_is_refused_with_one_line_where_it_cannot_be() {
             turned(&cylinder_scene(calm, &file), "(0.0, 0.0, 1.5707963)"),
             "the body starts turned 90.0° from the panel code's axes",
         ),
+        (
+            cylinder_scene(calm, &format!("file: {without_hst:?}, hydrostatics: Linear")),
+            "hydrostatics: Linear needs the panel code's hydrostatic stiffness, and no .hst file was read",
+        ),
+        (cylinder_scene(calm, &format!("{file}, hydrostatics: Linaer")), "Linaer"),
     ];
     for (text, expected) in cases {
         let error = tether_test_support::error_of(&text);
@@ -454,4 +468,48 @@ fn potential_flow_in_a_scene_is_refused_with_one_line_where_it_cannot_be() {
         assert!(error.contains(expected) && !error.contains('\n'), "{error}");
         assert!(error.contains("body \"cylinder\""), "{error}");
     }
+}
+
+/// `hydrostatics: Linear` with the shipped cylinder's `.hst` (Capytaine's finer mesh: 0.4 % from
+/// Tether's 32-sided one) loads without a warning; the same file with its pitch stiffness doubled
+/// (as a weight term counted twice would) is warned of in one line naming pitch and both
+/// figures, and heave and roll, unchanged, are not.
+#[test]
+fn a_linear_hydrostatics_file_far_from_the_mesh_is_warned_of() {
+    let calm = "water: Water(),";
+    let load = |stem: &str| {
+        let text = cylinder_scene(calm, &format!("file: {stem:?}, hydrostatics: Linear"));
+        tether_scene::parse(&text, std::path::Path::new("test.ron")).expect("accepted").warnings
+    };
+    let shipped = load(&cylinder().display().to_string());
+    assert!(shipped.is_empty(), "{shipped:?}");
+
+    let directory = tempfile::tempdir().expect("a temporary directory");
+    for extension in ["1", "3"] {
+        std::fs::copy(cylinder().with_extension(extension), directory.path().join(format!("body.{extension}")))
+            .expect("the shipped cylinder's files");
+    }
+    let hst = std::fs::read_to_string(cylinder().with_extension("hst")).expect("the shipped .hst");
+    let doubled: String = hst
+        .lines()
+        .map(|line| {
+            let fields: Vec<&str> = line.split_whitespace().collect();
+            match fields[..] {
+                ["5", "5", value] => format!("5 5 {:e}\n", 2.0 * value.parse::<f64>().expect("a number")),
+                _ => format!("{line}\n"),
+            }
+        })
+        .collect();
+    std::fs::write(directory.path().join("body.hst"), doubled).expect("a temporary file");
+    let warnings = load(&directory.path().join("body").display().to_string());
+    println!("{warnings:?}");
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+    let warning = &warnings[0];
+    assert!(warning.starts_with("body \"cylinder\": its .hst's pitch stiffness with the weight is"), "{warning}");
+    // The file's C55 is 232.4698 ρg about G, doubled; the mesh's 232.0 ρg less the 32-gon's
+    // smaller waterplane: about +100 %.
+    let rho_g = 1025.0 * 9.80665;
+    assert!(warning.contains(&format!("{:.4e}", 2.0 * 232.4698 * rho_g)), "{warning}");
+    assert!(warning.contains("(+10"), "{warning}");
+    assert!(!warning.contains('\n'));
 }

@@ -16,6 +16,7 @@
 //! equations give `y`. Its power is `−d/dt(½ q̇ᵀ A∞ q̇)`, booked with the water's.
 
 use super::coefficients::{Coefficients, Matrix6, Vector6};
+use super::hydrostatics::HydrostaticsModel;
 use super::kernel::SampledKernel;
 use super::radiation::{Radiation, RadiationMethod};
 use super::state_space::{FitError, FitSettings, RadiationStateSpace};
@@ -37,6 +38,8 @@ pub struct PotentialSpec {
     /// The kernel's truncation `t_K` \[s] and sampling step \[s].
     pub kernel_duration: f64,
     pub kernel_step: f64,
+    /// The mesh's hydrostatics or linear ones from the coefficients' `.hst` stiffness.
+    pub hydrostatics: HydrostaticsModel,
 }
 
 /// A body's potential-flow data that cannot be used.
@@ -52,6 +55,10 @@ pub enum PotentialError {
         "the body starts turned {degrees:.1}° from the panel code's axes (its reference frame's, which the coefficients are in); potential flow takes them as the world's at t = 0, to within {MAX_START_TURN_DEGREES}°: turn the hull in the panel code instead"
     )]
     TurnedAtStart { degrees: f64 },
+    #[error(
+        "hydrostatics: Linear needs the panel code's hydrostatic stiffness, and no .hst file was read beside the .1 and .3 files"
+    )]
+    NoHydrostaticStiffness,
 }
 
 /// The largest turn \[deg] of a body's reference frame from the world's axes at t = 0 that its
@@ -262,6 +269,7 @@ mod tests {
             fit: FitSettings::new(1e-3, 10).expect("valid"),
             kernel_duration: 1.0,
             kernel_step: 0.1,
+            hydrostatics: HydrostaticsModel::Mesh,
         };
         let potential = PotentialBody::new(spec, &body).expect("valid");
         let rotation = nalgebra::Rotation3::from_euler_angles(0.05, -0.03, 0.2).into_inner();

@@ -12,12 +12,14 @@
 //! - [`response`]: the linear frequency-domain response `ξ(ω)` in regular waves (the RAO);
 //! - in the time domain: [`body`] (`A∞` in the generalised mass about the reference point, the
 //!   forces moved to G), [`radiation`] (the radiation memory carried through the integrators'
-//!   evaluations and committed at accepted steps) and [`excitation`] (per wave component).
+//!   evaluations and committed at accepted steps), [`excitation`] (per wave component) and
+//!   [`hydrostatics`] (the mesh's, or linear from the panel code's `.hst`).
 
 pub mod body;
 pub mod coefficients;
 pub mod convolution;
 pub mod excitation;
+pub mod hydrostatics;
 pub mod kernel;
 pub mod radiation;
 pub mod response;
@@ -29,6 +31,7 @@ pub use coefficients::{
 };
 pub use convolution::Convolution;
 pub use excitation::{HeadingMissing, WaveExcitation};
+pub use hydrostatics::{HydrostaticsModel, LinearHydrostatics};
 pub use kernel::SampledKernel;
 pub use radiation::{Radiation, RadiationMethod, RadiationRun};
 pub use state_space::{FitError, FitSettings, PairFit, RadiationStateSpace};

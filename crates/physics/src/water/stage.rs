@@ -12,7 +12,9 @@ use super::waves::SeaInstant;
 use crate::body::{BodyFrame, Load, RigidBody};
 use crate::math::Vec3;
 use crate::mesh::MeshError;
-use crate::potential::{HeadingMissing, PotentialBody, PotentialError, RadiationRun, WaveExcitation};
+use crate::potential::{
+    HeadingMissing, LinearHydrostatics, PotentialBody, PotentialError, RadiationRun, WaveExcitation,
+};
 use crate::simd::SupportedLevel;
 use std::sync::Arc;
 
@@ -28,15 +30,21 @@ pub struct FloatingBody {
     /// kept with its fitted model to switch it on again without reading the files; the stage
     /// ignores it, so that the body is then exactly what it would be without potential data.
     pub switched_off: Option<FloatingPotential>,
+    /// Its potential flow's linear hydrostatics in a system at rest
+    /// ([`crate::system::System::at_rest`]), which has no potential flow but keeps these, so
+    /// that a static solve sees the restoring a run feels; `None` everywhere else.
+    pub hydrostatics_at_rest: Option<LinearHydrostatics>,
 }
 
 /// A floating body's potential flow (PHYSICS.md §9): its model, the mean horizontal position
-/// of its reference point \[m] and its excitation in the water's sea.
+/// of its reference point \[m], its excitation in the water's sea, and its linear hydrostatics
+/// when the scene asks for them (absent: the mesh's pressure, as without potential flow).
 #[derive(Debug, Clone, PartialEq)]
 pub struct FloatingPotential {
     pub model: Arc<PotentialBody>,
     pub mean_position: [f64; 2],
     pub excitation: WaveExcitation,
+    pub linear_hydrostatics: Option<LinearHydrostatics>,
 }
 
 /// A body that cannot float, and why.
@@ -61,7 +69,14 @@ impl FloatingBody {
         let body = &bodies[index];
         let hull = Hull::of_body(body)?;
         let hydro = Hydro::new(spec, body, &hull)?;
-        Ok(Self { body: index, hull: Arc::new(hull), hydro, potential: None, switched_off: None })
+        Ok(Self {
+            body: index,
+            hull: Arc::new(hull),
+            hydro,
+            potential: None,
+            switched_off: None,
+            hydrostatics_at_rest: None,
+        })
     }
 
     /// Whether the body has potential-flow data, on or switched off.
@@ -271,6 +286,14 @@ impl WaterStage {
         record.waterplane_area = (-up.dot(&integral.wet_normal)).max(0.0);
         record.wetted_fraction = (record.submerged_volume / hull.volume()).min(1.0);
         record.pressure = Load { force: frame.rotation * integral.force, moment: frame.rotation * integral.moment };
+        let linear = match &floating.potential {
+            Some(potential) => potential.linear_hydrostatics.as_ref(),
+            None => floating.hydrostatics_at_rest.as_ref(),
+        };
+        // Linear hydrostatics replace the mesh's pressure; its wetted part still sets the drag's.
+        if let Some(linear) = linear {
+            record.pressure = linear.load(frame);
+        }
         let hydro = &floating.hydro;
         let (flow, acceleration) = water.flow(&(frame.position + hydro.drag_arm(&frame.rotation)), time);
         if record.wetted_fraction > 0.0 {
@@ -296,6 +319,15 @@ impl WaterStage {
         }
         record.power = power(&record.total(), frame);
         record
+    }
+
+    /// The still water's pressure over `floating`'s hull at `frame` (about G, world axes \[N,
+    /// N·m]): its buoyancy at that pose, what linear hydrostatics start from (§9).
+    pub fn still_pressure(&self, floating: &FloatingBody, frame: &BodyFrame) -> Load {
+        let mut scratch = WaterScratch::default();
+        self.vertex_pressures(&floating.hull, frame, &mut scratch, 0.0, false);
+        let integral = integrate(&floating.hull, &scratch.pressures, &scratch.heads);
+        Load { force: frame.rotation * integral.force, moment: frame.rotation * integral.moment }
     }
 
     /// Stage *pressure* of one body: `p = ρ g (z_w − z + r Σ a K_p cos θ)` at each hull vertex,

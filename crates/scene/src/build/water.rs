@@ -9,7 +9,7 @@ use crate::water::WaterDef;
 use std::path::Path;
 use tether_physics::body::RigidBody;
 use tether_physics::math::Vec3;
-use tether_physics::potential::{FitSettings, PotentialSpec};
+use tether_physics::potential::{FitSettings, HydrostaticsModel, PotentialSpec};
 use tether_physics::system::{System, SystemError};
 use tether_physics::water::morison::HydroSpec;
 use tether_physics::water::stage::FloatingError;
@@ -64,10 +64,46 @@ pub fn add_water(
             fit,
             kernel_duration: wamit.kernel_duration,
             kernel_step: wamit.kernel_step,
+            hydrostatics: wamit.hydrostatics,
         };
+        let with_mesh = (wamit.hydrostatics == HydrostaticsModel::Linear).then(|| system.clone());
         system = system.with_potential_flow(index, spec).map_err(placed)?;
+        if let Some(with_mesh) = with_mesh {
+            warnings.extend(linear_hydrostatics_warnings(&with_mesh, &system, index, &body_def.name));
+        }
     }
     Ok(system)
+}
+
+/// A `.hst` more than this fraction from the mesh's stiffness in heave, roll or pitch is warned
+/// of: Capytaine's finer mesh and Tether's differ by 0.4 % on the shipped cylinder, a weight term
+/// counted twice by 100 % and more.
+const HYDROSTATICS_MISMATCH: f64 = 0.05;
+
+/// The warnings for body `index`, whose potential flow in `linear` has linear hydrostatics, when
+/// their stiffness about its reference point differs from the mesh's in `with_mesh` (the same
+/// system without its potential flow) by more than [`HYDROSTATICS_MISMATCH`] in heave, roll or
+/// pitch (`tether_physics::rao::stiffness_about`: the weight's terms the same on both sides).
+fn linear_hydrostatics_warnings(with_mesh: &System, linear: &System, index: usize, name: &str) -> Vec<String> {
+    let floating = linear.water().and_then(|stage| stage.floating.iter().find(|f| f.body == index));
+    let Some(potential) = floating.and_then(|f| f.potential.as_ref()) else { return Vec::new() };
+    let arm = potential.model.arm(&linear.initial_states()[index].frame());
+    let stiffness = |system: &System| tether_physics::rao::stiffness_about(system, index, &arm);
+    // Both evaluate the start pose, which the rest of loading evaluates too: a failure there
+    // is reported where it happens, not as a warning here.
+    let (Ok(mesh), Ok(file)) = (stiffness(with_mesh), stiffness(linear)) else { return Vec::new() };
+    [(2, "heave", "N/m"), (3, "roll", "N·m/rad"), (4, "pitch", "N·m/rad")]
+        .into_iter()
+        .filter(|&(dof, _, _)| (file[(dof, dof)] - mesh[(dof, dof)]).abs() > HYDROSTATICS_MISMATCH * mesh[(dof, dof)].abs())
+        .map(|(dof, what, unit)| {
+            format!(
+                "body \"{name}\": its .hst's {what} stiffness with the weight is {:.4e} {unit}, the mesh's {:.4e} ({:+.1} %): linear hydrostatics need a buoyancy-only file (a weight term in it is counted twice: Tether applies the weight at G) computed at the scene's draft",
+                file[(dof, dof)],
+                mesh[(dof, dof)],
+                100.0 * (file[(dof, dof)] / mesh[(dof, dof)] - 1.0)
+            )
+        })
+        .collect()
 }
 
 /// Where `error` is in `file`, and its message.

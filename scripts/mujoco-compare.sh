@@ -8,6 +8,7 @@
 # the load average). Several binaries are run in turn in each round, for an A/B in one call.
 #   scripts/mujoco-compare.sh [BINARY…]   (default: this checkout's headless release build)
 #   ROUNDS=3 SCENES=chain100 scripts/mujoco-compare.sh /tmp/tether-before "$CARGO_TARGET_DIR/release/tether"
+#   DURATION=60 scripts/mujoco-compare.sh   (each run's simulated time [s]; default the scene's 10 s)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 MUJOCO_VERSION=4.0.0

@@ -3,7 +3,7 @@ on the same chain (scenes/bench/chain100*.ron beside chain100*.xml), ROUNDS roun
 (each Tether binary, then MuJoCo), medians; then where each chain is at the end, to show that the
 two models are the same chain. Run by scripts/mujoco-compare.sh, which builds Tether and installs
 the `mujoco` package:
-    SCENES="chain100 chain100_air" python scripts/mujoco_compare.py STEPS_EXAMPLE ROUNDS TETHER...
+    SCENES="chain100 chain100_air" DURATION=60 python scripts/mujoco_compare.py STEPS_EXAMPLE ROUNDS TETHER...
 
 Tether's side is the whole process (start, scene load, the framing, the physics, the recorder
 at 60 frames a second, the file written), its user + system CPU as the kernel counts it for the
@@ -123,13 +123,15 @@ def main():
             chain = ron_chain(open(ron, encoding="utf-8").read())
             model = mujoco.MjModel.from_xml_path(xml)
             check_same_chain(chain, model)
-            steps = round(chain["duration"] / chain["dt"])
+            duration = float(os.environ.get("DURATION", chain["duration"]))
+            steps = round(duration / chain["dt"])
             process = {binary: [] for binary in binaries}
             physics, engine = [], []
             stepping = [steps_example, ron, "0", str(steps)]
             for _ in range(int(rounds)):
                 for binary in binaries:
-                    whole, _ = cpu_rate([binary, "record", ron, "-o", os.path.join(out, "run.rrd")], steps)
+                    record = [binary, "record", ron, "--duration", str(duration), "-o", os.path.join(out, "run.rrd")]
+                    whole, _ = cpu_rate(record, steps)
                     process[binary].append(whole)
                 rate, figure = cpu_rate(stepping, steps)
                 physics.append(rate)

@@ -653,6 +653,31 @@ fn check_prints_the_radiation_fit_of_each_potential_flow_body() {
         ),
         "{stdout}"
     );
+    // Which hydrostatics run: the mesh's by default, the .hst's (its C33, C44, C55 as read) when
+    // the scene asks for them.
+    assert!(stdout.contains("hydrostatics: the still water's pressure on the mesh at its actual pose"), "{stdout}");
+    let linear = dir.path().join("linear.ron");
+    let text = std::fs::read_to_string(scene)
+        .unwrap()
+        .replace("file: \"cylinder/cylinder\"", &format!("file: {file:?}, hydrostatics: Linear"));
+    std::fs::write(&linear, text).unwrap();
+    let out = tether(&["check", linear.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let c = *tether_scene::load(&linear).unwrap().world.system().water().unwrap().floating[0]
+        .potential
+        .as_ref()
+        .unwrap()
+        .model
+        .coefficients()
+        .hydrostatic_stiffness()
+        .unwrap();
+    let printed = format!(
+        "hydrostatics: linear from the .hst, about the reference point and the pose at t = 0: C33 {:.6e} N/m, C44 {:.6e} N·m/rad, C55 {:.6e} N·m/rad",
+        c[(2, 2)],
+        c[(3, 3)],
+        c[(4, 4)]
+    );
+    assert!(stdout.contains(&printed), "{printed} in {stdout}");
 }
 
 /// A body not at rest at t = 0 is warned of, with the force left on it: the tests' fixture

@@ -6,7 +6,7 @@ use tether_physics::coupling::contact::Opposing;
 use tether_physics::coupling::lumped_line::{Discrete, statics};
 use tether_physics::coupling::{Catenary, Contact, CouplingKind, ElasticLaw, Endpoint, LineModel, LumpedMass};
 use tether_physics::math::{Mat3, Vec3};
-use tether_physics::potential::{PotentialBody, Radiation, RadiationStateSpace};
+use tether_physics::potential::{LinearHydrostatics, PotentialBody, Radiation, RadiationStateSpace};
 use tether_physics::stability;
 use tether_physics::water::WaveSpec;
 use tether_physics::water::dispersion::wavelength;
@@ -234,6 +234,7 @@ fn water_report(out: &mut String, world: &World) {
         );
         if let Some(potential) = &floating.potential {
             potential_report(out, world, index, &potential.model);
+            hydrostatics_report(out, potential.linear_hydrostatics.as_ref());
         }
         if body.is_kinematic() {
             let _ = writeln!(out, "  kinematic: its motion is prescribed and the water does not act on it");
@@ -317,6 +318,24 @@ fn potential_report(out: &mut String, world: &World, index: usize, model: &Poten
             );
         }
     }
+}
+
+/// Which hydrostatics a potential-flow body feels (PHYSICS.md §9 "Linear hydrostatics"): its
+/// mesh's, or the `.hst`'s linear ones with their heave, roll and pitch stiffness.
+fn hydrostatics_report(out: &mut String, linear: Option<&LinearHydrostatics>) {
+    let _ = match linear {
+        None => writeln!(out, "  hydrostatics: the still water's pressure on the mesh at its actual pose"),
+        Some(linear) => {
+            let c = linear.stiffness();
+            writeln!(
+                out,
+                "  hydrostatics: linear from the .hst, about the reference point and the pose at t = 0: C33 {:.6e} N/m, C44 {:.6e} N·m/rad, C55 {:.6e} N·m/rad (the free-floating figures below are the mesh's)",
+                c[(2, 2)],
+                c[(3, 3)],
+                c[(4, 4)]
+            )
+        }
+    };
 }
 
 /// The state space's size and fit: what it was fitted to (the spectrum of the sampled kernel

@@ -56,6 +56,11 @@ impl LinearHydrostatics {
         }
     }
 
+    /// `C` about P, world axes \[N/m, N, N·m/rad].
+    pub fn stiffness(&self) -> &Matrix6 {
+        &self.stiffness
+    }
+
     /// `ξ`: P's displacement since t = 0 and the rotation vector of the body's turn, for a body
     /// at `frame`.
     pub fn displacement(&self, frame: &BodyFrame) -> Vector6 {

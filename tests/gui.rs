@@ -463,6 +463,43 @@ fn the_potential_flow_switch_reaches_the_running_world_and_shows_what_runs() {
     assert!(names("/plots/water/block/radiation").is_empty());
 }
 
+/// A body whose scene asks for linear hydrostatics (`hydrostatics: Linear`, PHYSICS.md §9) says
+/// so on its switch, which the plain label does not match, while the running world has them;
+/// switched off, the running world has no potential flow, so its hydrostatics are the mesh's.
+#[test]
+fn the_potential_flow_switch_says_when_it_brings_linear_hydrostatics() {
+    let file = repo("validation/potential-flow/cylinder/cylinder");
+    let fixture = std::fs::read_to_string(repo("tests/fixtures/rao/cylinder.ron")).unwrap();
+    let text = fixture.replace(
+        "\"../../../validation/potential-flow/cylinder/cylinder\")",
+        &format!("{file:?}, hydrostatics: Linear)"),
+    );
+    assert_ne!(text, fixture);
+    let dir = scenes_folder(&[("cylinder.ron", &text)]);
+    let sinks = Sinks::new(vec![Sinks::file(&dir.path().join("shown.rrd")).unwrap()]);
+    let mut harness = harness(ControlPanel::new(sinks, Arc::new(|| {}), dir.path().to_path_buf()).unwrap());
+    open_from_list(&mut harness, "cylinder.ron");
+    let shows = |on: bool| move |p: &ControlPanel| p.status().is_some_and(|s| s.potential_flow == [(0, on)]);
+    until(&mut harness, "the status", shows(true));
+    harness.run_steps(2);
+    let label = "potential flow, linear hydrostatics (.hst)";
+    assert_eq!(harness.query_all_by_label("potential flow").count(), 0, "not the plain switch");
+    assert!(ticked(&harness, label));
+    let linear = |world: &World| {
+        world.system().water().expect("water").floating[0]
+            .potential
+            .as_ref()
+            .is_some_and(|p| p.linear_hydrostatics.is_some())
+    };
+    assert!(linear(&world(&harness)));
+    harness.get_by_label(label).click();
+    until(&mut harness, "the switch off", shows(false));
+    harness.run_steps(2);
+    assert!(!ticked(&harness, label));
+    let off = world(&harness);
+    assert!(off.system().water().expect("water").floating[0].potential.is_none());
+}
+
 /// The statics panel on a buoy moored by three lines lying on a seabed: the seabed's C_B and a
 /// line's A_d reach the running world (a negative C_B is refused, the world untouched); the
 /// equilibrium button puts the buoy where `tether equilibrium` finds it, at rest; the offset

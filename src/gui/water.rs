@@ -9,6 +9,7 @@ use super::knobs::{Knob, Refused};
 use super::tuning::knob;
 use rerun::external::egui;
 use std::fmt::Display;
+use tether_physics::potential::HydrostaticsModel;
 use tether_scene::water::{CurrentDef, HydroDef, WaterDef, WavesDef};
 
 /// What the water panel asks for.
@@ -56,8 +57,9 @@ pub fn ui<R: Display>(ui: &mut egui::Ui, knobs: Option<WaterKnobs<R>>) -> Vec<Wa
         }
         for FloatingKnobs { index, name, hydro, refusals, potential_flow } in bodies {
             ui.label(format!("body \"{name}\" in the water"));
+            let linear = hydro.potential.as_ref().is_some_and(|p| p.hydrostatics == HydrostaticsModel::Linear);
             if let Some(running) = potential_flow
-                && let Some(on) = potential_flow_switch(ui, running)
+                && let Some(on) = potential_flow_switch(ui, running, linear)
             {
                 actions.push(WaterAction::PotentialFlow { body: index, on });
             }
@@ -74,15 +76,23 @@ pub fn ui<R: Display>(ui: &mut egui::Ui, knobs: Option<WaterKnobs<R>>) -> Vec<Wa
     actions
 }
 
-/// The switch of a body's potential flow, showing `running` (what the simulation runs); the
+/// The switch of a body's potential flow, showing `running` (what the simulation runs) and,
+/// when its scene asks for them (`linear`), that it brings the `.hst`'s linear hydrostatics; the
 /// state asked for when clicked.
-fn potential_flow_switch(ui: &mut egui::Ui, running: bool) -> Option<bool> {
+fn potential_flow_switch(ui: &mut egui::Ui, running: bool, linear: bool) -> Option<bool> {
     let mut on = running;
     let tip = "On: radiation and wave excitation from the panel code's files, A∞ in the body's mass. \
                Off: the body as without them (the incident wave's pressure on the hull, Morison's \
                added mass). Switched on again, the radiation memory restarts: the body as if at \
                rest before.";
-    ui.checkbox(&mut on, "potential flow").on_hover_text(tip).changed().then_some(on)
+    let (label, tip) = if linear {
+        let more = " With it on, the buoyancy is linear, from the .hst file, about the pose at t = 0 \
+                    (hydrostatics: Linear); off, the mesh's.";
+        ("potential flow, linear hydrostatics (.hst)", format!("{tip}{more}"))
+    } else {
+        ("potential flow", tip.to_string())
+    };
+    ui.checkbox(&mut on, label).on_hover_text(tip).changed().then_some(on)
 }
 
 /// Waves (height, period, heading), current (speed, heading) and density; true when one was

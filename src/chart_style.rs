@@ -24,6 +24,14 @@ pub const COLOURS: [RGBColor; 10] = [
     RGBColor(23, 190, 207),
 ];
 
+/// A chart that could not be drawn or written: the file and why.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{path}: {message}")]
+pub struct ChartError {
+    pub path: String,
+    pub message: String,
+}
+
 /// Makes the bundled font plotters' "sans-serif".
 ///
 /// # Errors

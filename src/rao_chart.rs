@@ -1,12 +1,12 @@
 //! `tether rao --plot FILE`: a body's RAOs as a chart (PNG, 1600 × 1000; PHYSICS.md §9,
 //! docs/potential-flow.md). Amplitude per metre of wave above (translations in m/m on the left,
-//! rotations in deg/m on the right), phase \[deg] below, against the wave period \[s] (a
-//! logarithmic axis); the
-//! frequency-domain solve as lines and, with `--time-domain`, the regular-wave runs as circles of
-//! the same colour. A dof whose every amplitude is negligible beside its kind's largest (sway,
-//! roll and yaw in head seas) is left out, and [`Responses::omitted`] names it.
+//! rotations in deg/m on the right), phase \[deg] below, against the wave period \[s] on a
+//! logarithmic axis; the frequency-domain solve as lines and, with `--time-domain`, the
+//! regular-wave runs as circles of the same colour. A dof whose every amplitude is negligible
+//! beside its kind's largest (sway, roll and yaw in head seas) is left out, and
+//! [`Responses::omitted`] names it.
 
-use crate::chart_style::{self, COLOURS, padded, register_font_family, span};
+use crate::chart_style::{self, COLOURS, ChartError, padded, register_font_family, span};
 use plotters::prelude::*;
 use std::f64::consts::TAU;
 use std::ops::Range;
@@ -95,14 +95,6 @@ pub fn unwrapped_pieces(points: &[(f64, f64)]) -> Vec<Vec<(f64, f64)>> {
         }
     }
     pieces
-}
-
-/// A chart that could not be drawn or written.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{path}: {message}")]
-pub struct ChartError {
-    pub path: String,
-    pub message: String,
 }
 
 /// Writes the chart of `responses` titled `title` to `path`.

@@ -2,17 +2,9 @@
 //! each line's tension at its ends below, one colour per line.
 
 use super::offsets::Table;
-use crate::chart_style::{self, COLOURS, padded, register_font_family, span};
+use crate::chart_style::{self, COLOURS, ChartError, padded, register_font_family, span};
 use plotters::prelude::*;
 use std::path::Path;
-
-/// A chart that could not be drawn or written.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{path}: {message}")]
-pub struct ChartError {
-    pub path: String,
-    pub message: String,
-}
 
 /// Writes the chart of `table` (from [`super::offsets::table`]) titled `title` to `path`.
 ///

@@ -354,7 +354,9 @@ mod tests {
     /// A node on the seabed (mass `a = 30 kg`, `b = −2 kg` along a tangent tilted off the
     /// vertical, the seabed's `c_n` = 2e4 and `c_f` = 5e5 N·s/m) stepped 10 ms from 0.3 m/s
     /// sliding with 0.1 m/s sinking under a force: [`NodeForces::solve_damped`] solves
-    /// `(M + τC) a = F − C v` to round-off; with no other force, for τ from 1 µs to 1 s, the
+    /// `(M + τC) a = F − C v` to round-off for each part of the damper (the kicks' `c_n ûûᵀ`
+    /// and the segments' solve's `c_f (E − ûûᵀ)`); with the friction alone and no other force,
+    /// for τ from 1 µs to 1 s, the
     /// sliding never reverses and slows, and the kinetic energy `½ vᵀMv` falls (the explicit step,
     /// `v − τ M⁻¹ C v`, reverses the sliding from τ = 2a/c_f = 0.12 ms).
     #[test]
@@ -367,11 +369,15 @@ mod tests {
         let force = Vec3::new(-40.0, 15.0, 120.0);
         let tau = 0.01;
         let mass = |y: Vec3| y * a + q * (b * q.dot(&y));
-        // The friction part alone (the normal part, c_n, is the kicks').
-        let damper = |y: Vec3| (y - up * up.dot(&y)) * c_f;
-        let acceleration = node.solve_damped(0, Damper::Friction, &up, tau, &(force - damper(velocity)));
-        let residual = mass(acceleration) + damper(acceleration) * tau - (force - damper(velocity));
-        assert!(residual.norm() < 1e-9 * force.norm().max(damper(velocity).norm()), "{residual}");
+        let normal = |y: Vec3| up * (c_n * up.dot(&y));
+        let friction = |y: Vec3| (y - up * up.dot(&y)) * c_f;
+        for (part, part_damper) in [(Damper::Normal, &normal as &dyn Fn(Vec3) -> Vec3), (Damper::Friction, &friction)] {
+            let pushed = force - part_damper(velocity);
+            let acceleration = node.solve_damped(0, part, &up, tau, &pushed);
+            let residual = mass(acceleration) + part_damper(acceleration) * tau - pushed;
+            assert!(residual.norm() < 1e-9 * force.norm().max(part_damper(velocity).norm()), "{part:?}: {residual}");
+        }
+        let damper = friction;
         for tau in [1e-6, 1e-4, 1e-3, 1e-2, 1.0] {
             let after = velocity + node.solve_damped(0, Damper::Friction, &up, tau, &-damper(velocity)) * tau;
             assert!(after.x > 0.0 && after.x < velocity.x, "τ = {tau}: {after}");

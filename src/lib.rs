@@ -13,6 +13,7 @@ pub mod figures;
 pub mod fit;
 #[cfg(feature = "gui")]
 pub mod gui;
+pub mod interrupt;
 pub mod line_hint;
 pub mod quantity;
 pub mod rao_chart;

@@ -2,6 +2,7 @@
 
 mod common;
 
+use std::io::{BufRead, BufReader};
 use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
@@ -103,6 +104,136 @@ fn interrupting_a_recording_leaves_a_complete_file() {
         let (scalars, _, energy_rows) = recorded_numbers(&out);
         assert!(energy_rows > 10, "SIG{signal}: {energy_rows} frames");
         assert!(scalars.iter().all(|x| x.is_finite()));
+    }
+}
+
+/// Issue 48's line 10³⁰ N stiff, which ran for ever at 4·10⁹ sub-steps a step and ignored
+/// SIGTERM: `tether record` now stops at its second step, exit code 1, naming the coupling, the
+/// sub-steps it would need and the bound (a hang would fail at the deadline).
+#[test]
+fn a_line_too_stiff_to_step_is_refused_as_it_runs() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(common::repo("scenes/chain_forced_surge.ron")).unwrap();
+    assert_eq!(text.matches("stiffness: 442714.0").count(), 1);
+    let scene = dir.path().join("stiff.ron");
+    std::fs::write(&scene, text.replace("stiffness: 442714.0", "stiffness: 1e30")).unwrap();
+    let out = dir.path().join("stiff.rrd");
+    let mut child = tether()
+        .args(["record", scene.to_str().unwrap(), "-o", out.to_str().unwrap(), "--duration", "0.5"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        assert!(start.elapsed() < Duration::from_secs(60), "still running after 60 s");
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    let output = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("coupling \"chain\" at t = 0.01 s: the dynamic line needs "), "{stderr}");
+    assert!(
+        stderr.contains("more than 100000: its stiffness, length or segments make it too stiff to step"),
+        "{stderr}"
+    );
+    verify(&out);
+}
+
+/// SIGTERM to each long stage of the headless commands, sent once it runs: the process is gone
+/// within a second with exit code 130 and says it was interrupted. The recording's step loop
+/// and the fit's iterations stop at the flag (cooperatively); the RAO runs and the study's runs
+/// do not look at it, and the watchdog ends them 0.5 s after it (src/interrupt.rs), as it would
+/// any other stage.
+#[test]
+fn sigterm_stops_every_long_stage_within_a_second() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = |p: &str| common::repo(p).to_str().unwrap().to_string();
+    let out = |name: &str| dir.path().join(name).to_str().unwrap().to_string();
+    let stages: [(&str, Vec<String>); 4] = [
+        (
+            "the recording's steps",
+            vec![
+                "record".into(),
+                path("scenes/chain_forced_surge.ron"),
+                "-o".into(),
+                out("a.rrd"),
+                "--duration".into(),
+                "100000".into(),
+            ],
+        ),
+        (
+            "the RAO runs",
+            [
+                "rao",
+                &path("validation/potential-flow/cylinder.ron"),
+                "--body",
+                "cylinder",
+                "--periods",
+                "6,8,10,12",
+                "--time-domain",
+                "--duration",
+                "100000",
+            ]
+            .map(String::from)
+            .to_vec(),
+        ),
+        (
+            "the study's runs",
+            ["study", &path("scenes/chain_forced_surge.ron"), "--duration", "100000", "-o", &out("study")]
+                .map(String::from)
+                .to_vec(),
+        ),
+        (
+            "the fit's iterations",
+            [
+                "fit",
+                &path("validation/calibration/chain_cdn.ron"),
+                "-o",
+                &out("fit"),
+                "--scene-out",
+                &out("fitted.ron"),
+                "--jobs",
+                "1",
+            ]
+            .map(String::from)
+            .to_vec(),
+        ),
+    ];
+    for (stage, args) in stages {
+        let mut child = tether().args(&args).stderr(Stdio::piped()).stdout(Stdio::piped()).spawn().unwrap();
+        // Into the stage: the fit once its first iteration is reported (it converges in
+        // seconds), the others after 3 s (each would run for hours).
+        let (ready, lines) = std::sync::mpsc::channel();
+        let stderr = BufReader::new(child.stderr.take().unwrap());
+        let reader = std::thread::spawn(move || {
+            let mut text = String::new();
+            for line in stderr.lines().map_while(Result::ok) {
+                if line.starts_with("iteration 1:") {
+                    let _ = ready.send(());
+                }
+                text += &line;
+                text.push('\n');
+            }
+            text
+        });
+        if stage.contains("fit") {
+            lines.recv_timeout(Duration::from_secs(60)).expect("the fit's first iteration");
+        } else {
+            std::thread::sleep(Duration::from_secs(3));
+        }
+        let sent = Instant::now();
+        // SAFETY: kill with a valid pid and signal has no memory effects.
+        unsafe { libc::kill(child.id() as i32, libc::SIGTERM) };
+        let status = child.wait().unwrap();
+        let took = sent.elapsed();
+        let stderr = reader.join().unwrap();
+        let mut stdout = String::new();
+        std::io::Read::read_to_string(&mut child.stdout.take().unwrap(), &mut stdout).unwrap();
+        assert_eq!(status.code(), Some(130), "{stage} ({status}): {stderr}");
+        // The fit's report (on stdout) says so; the others say so on stderr.
+        assert!(stderr.contains("interrupted") || stdout.contains("PARTIAL (stopped by Ctrl-C)"), "{stage}: {stderr}");
+        assert!(took < Duration::from_secs(1), "{stage}: {took:?} after SIGTERM");
+        eprintln!("{stage}: stopped {:.0} ms after SIGTERM", took.as_secs_f64() * 1e3);
     }
 }
 

@@ -66,6 +66,10 @@ pub fn run(args: &FitArgs) -> anyhow::Result<Outcome> {
             eprintln!("{}", progress_line(p));
         }
     })?;
+    if outcome.ending == tether::fit::solver::Ending::Cancelled {
+        // The best point's report, charts and scene are written below (no further run).
+        tether::interrupt::finishing();
+    }
     let dir = args.output.clone().unwrap_or_else(|| {
         let stem = args.spec.file_stem().map_or_else(|| "fit".into(), |s| s.to_string_lossy().into_owned());
         args.spec.with_file_name(format!("{stem}-fit"))

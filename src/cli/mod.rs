@@ -19,7 +19,7 @@ use anyhow::Context as _;
 use clap::{Parser, Subcommand};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::AtomicBool;
 use tether_scene::{self as scene, Scene};
 
 /// Coupled rigid bodies — springs, catenaries, contact — simulated, tuned live and recorded for
@@ -87,12 +87,17 @@ enum Command {
     Export(export::ExportArgs),
 }
 
-/// Exit code of a run stopped by Ctrl-C or SIGTERM (128 + SIGINT, the shell's convention).
-pub const INTERRUPTED: u8 = 130;
+/// Exit code of a run stopped by Ctrl-C or SIGTERM.
+pub const INTERRUPTED: u8 = tether::interrupt::EXIT_CODE;
 
 /// Runs one subcommand; returns the process exit code.
 pub fn run(cli: Cli) -> anyhow::Result<u8> {
     let command = cli.command.unwrap_or(Command::Gui(gui::GuiArgs::default()));
+    if !matches!(command, Command::Gui(_) | Command::View { .. }) {
+        // Every headless stage stops within a second of Ctrl-C or SIGTERM (the window closes
+        // by its own handler).
+        tether::interrupt::install().context("installing the Ctrl-C / SIGTERM handler")?;
+    }
     match command {
         Command::Gui(args) => gui::run(args).map(|()| 0),
         Command::View { recording } => gui::view(recording).map(|()| 0),
@@ -120,14 +125,10 @@ pub fn run(cli: Cli) -> anyhow::Result<u8> {
     }
 }
 
-/// A flag set by Ctrl-C or SIGTERM (the handler installed now, once per process): the long
-/// commands (record, sweep, fit) stop at it and keep what they finished.
+/// The flag Ctrl-C or SIGTERM sets ([`tether::interrupt`]): the long commands (record, sweep,
+/// fit) stop at it and keep what they finished.
 fn cancel_on_ctrl_c() -> anyhow::Result<Arc<AtomicBool>> {
-    let cancel = Arc::new(AtomicBool::new(false));
-    let flag = Arc::clone(&cancel);
-    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
-        .context("installing the Ctrl-C / SIGTERM handler")?;
-    Ok(cancel)
+    tether::interrupt::install().context("installing the Ctrl-C / SIGTERM handler")
 }
 
 /// Loads a scene and prints its warnings to stderr.

@@ -168,6 +168,8 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     let mut failure: Option<StepError> = None;
     for step in 1..=total_steps {
         if interrupted.load(Ordering::SeqCst) {
+            // The frames so far and the file's footer are written below: not cut by the watchdog.
+            tether::interrupt::finishing();
             break;
         }
         if let Err(error) = world.step() {

@@ -1,12 +1,13 @@
 //! The files of a fit: `report.md` and `report.json`, a chart per signal (`plots/<column>.png`),
 //! the recording of the fitted run with each measured series beside the model's
-//! (`fitted.rrd`), and the scene written again with the fitted values in place.
+//! (`fitted.rrd`, not for an interrupted fit), and the scene written again with the fitted values in place.
 
 use super::chart;
 use super::parameter::Target;
 use super::report;
 use super::run::Outcome;
 use super::setup::Setup;
+use super::solver::Ending;
 use super::write_back::{self, Edit, HEADER_MARK};
 use std::path::{Path, PathBuf};
 use tether_record::{FaceArrows, FrameSchedule, Recorder, comparison, layout, paths};
@@ -14,8 +15,8 @@ use tether_record::{FaceArrows, FrameSchedule, Recorder, comparison, layout, pat
 /// Frames per simulated second of the fitted run's recording.
 pub const LOG_HZ: f64 = 60.0;
 
-/// Writes the report, the charts and the recording into `dir` (made if absent); returns what it
-/// wrote, labelled.
+/// Writes the report, the charts and (but for an interrupted fit) the recording into `dir` (made
+/// if absent); returns what it wrote, labelled.
 ///
 /// # Errors
 /// A file that cannot be written, with its path.
@@ -30,9 +31,13 @@ pub fn write_results(setup: &Setup, outcome: &Outcome, dir: &Path) -> Result<Vec
         chart::write(signal, fit, &scene, &path)?;
         written.push((format!("chart of {}", signal.column), path));
     }
-    let recording = dir.join("fitted.rrd");
-    write_recording(setup, outcome, &recording)?;
-    written.push(("recording of the fitted run".into(), recording));
+    // An interrupted fit stops within a second (crate::interrupt): its best point's recording
+    // would be one more run, so it is left out and the report says the fit is partial.
+    if outcome.ending != Ending::Cancelled {
+        let recording = dir.join("fitted.rrd");
+        write_recording(setup, outcome, &recording)?;
+        written.push(("recording of the fitted run".into(), recording));
+    }
     let markdown = dir.join("report.md");
     std::fs::write(&markdown, report::text(&setup.model, outcome)).map_err(|e| io(&markdown, &e))?;
     written.push(("report".into(), markdown));

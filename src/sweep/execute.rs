@@ -160,6 +160,10 @@ pub fn run(
         },
     )?;
     let stopped_running = options.runner.cancelled();
+    if stopped_running {
+        // Every finished row is in the run file; what follows only reports it.
+        crate::interrupt::finishing();
+    }
     let running = start.elapsed() - checking;
     let process_cpu_seconds = process_cpu_seconds() - cpu_start;
     let (written, stopped_writing) = if options.shard.is_none() && !stopped_running {

@@ -84,6 +84,20 @@ fn each_bad_dynamic_value_is_refused_at_its_place() {
     assert!(error.ends_with("segments must be at most 10000, got 20000"), "{error}");
 }
 
+/// One of issue 48's lines that ran for ever (and ignored SIGTERM): `chain_forced_surge`'s
+/// chain 10⁻¹² m long is refused as the scene loads, in one line at the coupling, naming the
+/// strain that makes it no line (the other, 10³⁰ N stiff, is refused as it runs:
+/// tests/reliability.rs).
+#[test]
+fn a_line_whose_ends_start_far_beyond_its_length_is_refused_as_the_scene_loads() {
+    let good = std::fs::read_to_string(common::repo("scenes/chain_forced_surge.ron")).unwrap();
+    common::scene(&good);
+    let error = common::error_of(&in_couplings(&good, "length: 250.0", "length: 1e-12"));
+    assert!(error.starts_with("bad.ron:") && error.contains("coupling \"chain\""), "{error}");
+    assert!(error.contains("a strain of 2.420e14 of its length 1.000000e-12 m (more than 1)"), "{error}");
+    assert_eq!(error.lines().count(), 1, "{error}");
+}
+
 /// A 100 kg ball swinging on a 10 m dynamic rope (λ0 = 2 kg/m, EA = 2 MN) from a world
 /// point, dry, no damping, no seabed: a conservative system.
 fn pendulum(dt: f64) -> String {

@@ -28,6 +28,11 @@ use health::Health;
 /// `substeps: Auto` keeps each integrator step under this fraction of the stable time step.
 const AUTO_SUBSTEP_MARGIN: f64 = 0.9;
 
+/// Most attempts (accepted or rejected) the adaptive scheme makes over one integrator step:
+/// past them the scene is refused as too stiff for it (a million attempts take about a second
+/// on the shipped scenes; a scene that needs them wants a fixed step at its stable limit).
+pub const MAX_ADAPTIVE_ATTEMPTS: u32 = 1_000_000;
+
 /// Simulated time and what has been done to reach it.
 #[derive(Debug, Clone, Copy, Default)]
 struct Clock {
@@ -145,8 +150,9 @@ impl World {
         let end = self.clock.time + h;
         // Ends: a rejected attempt makes the next one shorter by the scheme's safety factor at
         // least, until `Dopri45::step` refuses one below round-off of the time (`Stalled`); an
-        // accepted one moves the clock toward `end`, which the last one meets exactly.
-        loop {
+        // accepted one moves the clock toward `end`, which the last one meets exactly — within
+        // MAX_ADAPTIVE_ATTEMPTS, past which the scene is too stiff to be stepped so.
+        for _ in 0..MAX_ADAPTIVE_ATTEMPTS {
             let report = self
                 .scheme
                 .step(&self.system, &mut self.states, &mut self.evaluation, self.clock.time, end - self.clock.time)
@@ -162,6 +168,8 @@ impl World {
                 return Ok(());
             }
         }
+        let mean = (end - self.clock.time).min(h) / f64::from(MAX_ADAPTIVE_ATTEMPTS);
+        Err(self.health.stalled(&self.system, &self.synchronized_states(), mean, self.clock.time, self.step_size()))
     }
 
     /// Stage *ledger*: an accepted integrator step's work and energies.

@@ -44,13 +44,36 @@ use crate::surroundings::Surroundings;
 use crate::water::Water;
 use crate::water::waves::FlowInstant;
 
-/// A dynamic line whose nodes stopped being finite.
+/// Most sub-steps a dynamic line takes over one evaluation's interval: a line whose stable
+/// sub-step is shorter than `1/MAX_SUBSTEPS` of the world's step is refused rather than stepped
+/// (a stiffness of 10³⁰ N, or a length of 10⁻¹² m, asks for billions of sub-steps per step, a run
+/// that never ends). A real mooring line sub-steps tens to a few thousand times per step (MoorDyn's
+/// chains at 0.2 ms under a 50 ms step: 250).
+pub const MAX_SUBSTEPS: u32 = 100_000;
+
+/// Largest strain `|p₂ − p₁|/L − 1` of the chord at a dynamic line's start: ends more than twice
+/// the line's unstretched length `L` apart are not a line that a scene means (steel strains by
+/// about 1 %, nylon by at most about 40 % at break), but a length or an end mistyped.
+pub const MAX_START_STRAIN: f64 = 1.0;
+
+/// Why a dynamic line cannot be stepped.
 #[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
-#[error("the dynamic line diverged at t = {time} s (node {node} not finite; its sub-step was {substep} s)")]
-pub struct LineError {
-    pub time: f64,
-    pub node: usize,
-    pub substep: f64,
+pub enum LineError {
+    /// Its nodes stopped being finite.
+    #[error("the dynamic line diverged at t = {time} s (node {node} not finite; its sub-step was {substep} s)")]
+    Diverged { time: f64, node: usize, substep: f64 },
+    /// Its stable sub-step `substep` \[s] divides the interval `interval` \[s] into more than
+    /// [`MAX_SUBSTEPS`] sub-steps (at the largest segment tension `tension` \[N]).
+    #[error(
+        "the dynamic line needs {needed:.3e} sub-steps of {substep:.3e} s over a step of {interval:.3e} s (its largest segment tension {tension:.3e} N), more than {MAX_SUBSTEPS}: its stiffness, length or segments make it too stiff to step"
+    )]
+    TooStiff { needed: f64, substep: f64, interval: f64, tension: f64 },
+    /// Its ends start `chord` \[m] apart, more than [`MAX_START_STRAIN`] beyond its length `length`
+    /// \[m].
+    #[error(
+        "the dynamic line's ends are {chord:.6e} m apart, a strain of {strain:.3e} of its length {length:.6e} m (more than {MAX_START_STRAIN}): not a line; check its length and ends"
+    )]
+    Overstretched { chord: f64, length: f64, strain: f64 },
 }
 
 /// What a run of one dynamic line remembers.
@@ -106,6 +129,16 @@ pub enum Start {
 /// difference: the ends move by `v δ`, millimetres at the speeds of moored bodies, far above
 /// the static solve's precision).
 const UNDER_WAY_DT: f64 = 1e-3;
+
+/// Refuses a line whose ends start more than [`MAX_START_STRAIN`] beyond its length apart.
+fn check_start_strain(line: &Catenary, ends: &[EndMotion; 2]) -> Result<(), LineError> {
+    let chord = (ends[1].position - ends[0].position).norm();
+    let strain = chord / line.length - 1.0;
+    if strain > MAX_START_STRAIN {
+        return Err(LineError::Overstretched { chord, length: line.length, strain });
+    }
+    Ok(())
+}
 
 /// The line's static shape between its ends where they are (PHYSICS.md §8 "Initial state"),
 /// each node moving as that shape moves while the ends go on at their velocities: `v_i =
@@ -228,6 +261,7 @@ impl LineRun {
             _ => {
                 self.committed_power = 0.0;
                 self.flow_time = None;
+                check_start_strain(line, ends)?;
                 match self.start {
                     Start::AtRest => {
                         let (p1, p2) = (ends[0].position, ends[1].position);
@@ -244,9 +278,15 @@ impl LineRun {
         let interval = time - start;
         let n = discrete.segments;
         if interval > 0.0 {
-            let substep = discrete.substep(nodes.largest_elastic_tension(discrete)) / self.refinement;
-            // At least one sub-step; the count is finite for a finite interval and a positive step.
-            let count = (interval / substep).ceil().clamp(1.0, f64::from(u32::MAX)) as u32;
+            let tension = nodes.largest_elastic_tension(discrete);
+            let substep = discrete.substep(tension) / self.refinement;
+            let needed = (interval / substep).ceil();
+            // NaN (a non-finite tension) is refused too: the nodes' check would not see it.
+            if !(needed <= f64::from(MAX_SUBSTEPS)) {
+                return Err(LineError::TooStiff { needed, substep, interval, tension });
+            }
+            // At least one sub-step, at most MAX_SUBSTEPS (checked above).
+            let count = needed.max(1.0) as u32;
             let h = interval / f64::from(count);
             self.fill_flow(water, &nodes, start + 0.5 * interval);
             let work = self.step_nodes(discrete, &mut nodes, ends, count, h)?;
@@ -338,7 +378,7 @@ impl LineRun {
             if let Some(i) =
                 (1..n).find(|&i| !nodes.positions[i].iter().chain(&nodes.velocities[i]).all(|c| c.is_finite()))
             {
-                return Err(LineError { time: nodes.time + elapsed, node: i, substep: h });
+                return Err(LineError::Diverged { time: nodes.time + elapsed, node: i, substep: h });
             }
         }
         Ok(work)
@@ -498,6 +538,51 @@ mod tests {
         );
         assert!(largest < 1.5e-2, "{largest:.2e}");
         assert!(peak_error.abs() < 5e-3 && mean_error.abs() < 5e-3, "{peak_error:.2e} {mean_error:.2e}");
+    }
+
+    /// [`chain_in_a_jonswap_sea`]'s chain with another length or stiffness, its ends held, over
+    /// ten evaluations 50 ms apart: the first error, if any.
+    fn ten_steps_of(length: f64, stiffness: f64) -> Result<(), LineError> {
+        let (line, _, surroundings, water) = chain_in_a_jonswap_sea();
+        let LineModel::Dynamic(chain) = line.model else { unreachable!("the chain is dynamic") };
+        let (anchor, fairlead) = (Vec3::new(-237.0, 0.0, -50.0), Vec3::new(0.0, 0.0, -1.0));
+        let line = Catenary::new(Endpoint::World(anchor), Endpoint::World(fairlead), 25.79, length, stiffness)
+            .expect("finite positive values")
+            .with_model(line.model);
+        let discrete = Discrete::new(&line, &chain, &surroundings, Some(0.0));
+        let at = |position| EndMotion { position, velocity: Vec3::zeros(), attachment: Attachment::World };
+        let mut run = LineRun::new(0);
+        let ends = [at(anchor), at(fairlead)];
+        for step in 0..=10 {
+            run.advance(&line, &discrete, &surroundings, Some(&water), &ends, 0.05 * f64::from(step))?;
+            run.commit();
+        }
+        Ok(())
+    }
+
+    /// The two lines of issue 48 that ran for ever: a chain 10⁻¹² m long between ends 237 m
+    /// apart (a strain of 2.4·10¹⁴) is refused at its start, naming the strain; one 10³⁰ N
+    /// stiff (whose round-off strain of 10⁻¹⁶ is a tension of 10¹⁴ N that grows with each
+    /// interval) is refused within ten, naming the sub-steps it would need. The chain itself
+    /// steps in 3 sub-steps of 16.7 ms, far inside the bound.
+    #[test]
+    fn a_line_that_cannot_be_stepped_is_refused_not_stepped_for_ever() {
+        match ten_steps_of(1e-12, 442714.0) {
+            Err(LineError::Overstretched { strain, .. }) => assert!((strain / 2.41e14 - 1.0).abs() < 1e-2, "{strain}"),
+            other => panic!("{other:?}"),
+        }
+        let refused = ten_steps_of(250.0, 1e30).unwrap_err();
+        let LineError::TooStiff { needed, .. } = refused else { panic!("{refused:?}") };
+        assert!(needed > f64::from(MAX_SUBSTEPS), "{needed}");
+        assert!(refused.to_string().contains("more than 100000"), "{refused}");
+        let (line, discrete, surroundings, water) = chain_in_a_jonswap_sea();
+        let at = |position| EndMotion { position, velocity: Vec3::zeros(), attachment: Attachment::World };
+        let ends = [at(Vec3::new(-237.0, 0.0, -50.0)), at(Vec3::new(0.0, 0.0, -1.0))];
+        let mut run = LineRun::new(0);
+        run.advance(&line, &discrete, &surroundings, Some(&water), &ends, 0.0).expect("the chain starts");
+        run.commit();
+        run.advance(&line, &discrete, &surroundings, Some(&water), &ends, 0.05).expect("the chain steps");
+        assert!(run.substeps().0 <= 3, "{:?}", run.substeps());
     }
 
     /// A Runge–Kutta step's evaluations of [`chain_in_a_jonswap_sea`] 12 s in (its middle twice

@@ -376,6 +376,29 @@ fn a_bad_moordyn_file_exits_1_with_one_line_and_writes_nothing() {
     assert!(!scene.exists());
 }
 
+/// Issue 48: a MoorDyn file with its line type's EA set to 10³⁰⁸ — finite, so accepted by its
+/// column, but making the line's BA infinite — was checked "ok" with `BA = inf N·s` and an axial
+/// step of 0 s; `check` refuses it in one line at the line's row, exit 1, naming BA and the value
+/// that made it.
+#[test]
+fn check_refuses_a_moordyn_file_whose_derived_values_overflow() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(common::repo("validation/moordyn/inputs/lines.txt")).unwrap();
+    let bad = dir.path().join("bad.txt");
+    std::fs::write(&bad, text.replacen("384.243E6", "1e308", 1)).unwrap();
+    let out = tether(&["check", bad.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(out.stdout.is_empty(), "{}", String::from_utf8_lossy(&out.stdout));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(
+        stderr.trim(),
+        format!(
+            "error: {}:19:1: as imported: coupling \"line1\": BA = ζ l √(EA λ0) must be finite, got inf (from stiffness = 1.1084016847705608e305)",
+            bad.display()
+        )
+    );
+}
+
 /// Runs `tether rao` on the cylinder fixture at the periods `2π/ω` of `omegas` and returns its
 /// CSV rows (period, ω, then amplitude and phase per dof).
 fn cylinder_rao(omegas: &[f64]) -> Vec<Vec<f64>> {

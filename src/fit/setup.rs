@@ -137,7 +137,9 @@ impl Setup {
                 );
                 return Err(spec.error_at(&def.column, "signals", message).into());
             }
-            let weight = weight(def.weight, &measured)
+            let spread = spread(&def.column, &times, &measured)
+                .map_err(|m| SetupError::File(format!("{}: {m}", record_path.display())))?;
+            let weight = weight(def.weight, spread)
                 .map_err(|m| spec.error_after(&def.column, "weight", format!("signal \"{}\": {m}", def.column)))?;
             signals.push(Signal {
                 column: def.column.clone(),
@@ -224,20 +226,86 @@ fn window(given: Option<Window>, columns: &[&Series], duration: f64, shift_from:
     Ok(window)
 }
 
-/// A signal's weight: `given` (finite, > 0), or 1 / the standard deviation of `measured`.
-fn weight(given: Option<f64>, measured: &[f64]) -> Result<f64, String> {
+/// The mean and the standard deviation `σ = √(Σ (y − ȳ)²/n)` of the samples `measured` of
+/// column `column` (at `times` \[s]), the weight's scale (docs/calibration.md, "The spec"), with
+/// σ finite: a sample far enough from the others (10³⁰⁸ among tensions of 10⁵ N) overflows σ² and
+/// would weigh the column by 0 and make its residuals infinite.
+///
+/// # Errors
+/// A σ that is not finite, naming the column and the row (its time) of the sample farthest from
+/// the mean (from 0 when the mean overflows too).
+fn spread(column: &str, times: &[f64], measured: &[f64]) -> Result<(f64, f64), String> {
+    let n = measured.len() as f64;
+    let mean = measured.iter().sum::<f64>() / n;
+    let deviation = (measured.iter().map(|y| (y - mean).powi(2)).sum::<f64>() / n).sqrt();
+    if deviation.is_finite() {
+        return Ok((mean, deviation));
+    }
+    let centre = if mean.is_finite() { mean } else { 0.0 };
+    let distance = |y: f64| (y - centre).abs();
+    let farthest = times.iter().zip(measured).max_by(|a, b| distance(*a.1).total_cmp(&distance(*b.1)));
+    let (time, value) = farthest.map_or((f64::NAN, f64::NAN), |(t, y)| (*t, *y));
+    Err(format!(
+        "column \"{column}\", row at t = {time} s: the value {value:e} makes the column's standard deviation {deviation} (a weight of 1/σ = 0 and residuals that overflow): is its exponent mistyped?"
+    ))
+}
+
+/// A signal's weight: `given` (finite, > 0), or 1 / the standard deviation of its samples, whose
+/// `(mean, σ)` is `spread` ([`spread`]).
+fn weight(given: Option<f64>, spread: (f64, f64)) -> Result<f64, String> {
+    let (mean, deviation) = spread;
     match given {
         Some(w) if w.is_finite() && w > 0.0 => Ok(w),
         Some(w) => Err(format!("weight must be a finite number > 0, got {w}")),
-        None => {
-            let n = measured.len() as f64;
-            let mean = measured.iter().sum::<f64>() / n;
-            let deviation = (measured.iter().map(|y| (y - mean).powi(2)).sum::<f64>() / n).sqrt();
-            if deviation > 0.0 {
-                Ok(1.0 / deviation)
-            } else {
-                Err(format!("the column is constant ({mean}) in the window: give it a `weight`"))
-            }
-        }
+        None if deviation > 0.0 => Ok(1.0 / deviation),
+        None => Err(format!("the column is constant ({mean}) in the window: give it a `weight`")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Issue 48: a record with one sample of 10³⁰⁸ was fitted with weight 0 and an RMS of inf; it
+    /// is refused, naming the column and the row; the same column without it keeps its σ.
+    #[test]
+    fn a_sample_that_overflows_the_standard_deviation_is_refused_by_column_and_row() {
+        let times = [0.0, 0.05, 0.1, 0.15];
+        let (mean, deviation) = spread("F", &times, &[41166.0, 95606.0, 91057.0, 80384.0]).unwrap();
+        assert!((mean - 77053.25).abs() < 1e-9 && (deviation / 21443.52 - 1.0).abs() < 1e-6, "{mean} {deviation}");
+        assert_eq!(weight(None, (mean, deviation)), Ok(1.0 / deviation));
+        let refused = spread("fairlead_tension_N", &times, &[41166.0, 1e308, 91057.0, 80384.0]).unwrap_err();
+        assert_eq!(
+            refused,
+            "column \"fairlead_tension_N\", row at t = 0.05 s: the value 1e308 makes the column's standard deviation inf (a weight of 1/σ = 0 and residuals that overflow): is its exponent mistyped?"
+        );
+        // Two such samples overflow the mean as well: the largest is named.
+        let refused = spread("F", &times, &[1e308, 1.7e308, 91057.0, 80384.0]).unwrap_err();
+        assert!(refused.contains("row at t = 0.05 s: the value 1.7e308"), "{refused}");
+        assert!(weight(None, (5.0, 0.0)).unwrap_err().contains("constant (5)"));
+    }
+
+    /// The same through the fit's setup: one line, the record's path, the column and the row.
+    #[test]
+    fn a_record_with_a_sample_of_1e308_is_refused_in_one_line() {
+        let dir = tempfile::tempdir().unwrap();
+        let record = dir.path().join("x.csv");
+        std::fs::write(&record, "t,x\n0.0,0.01\n0.5,1e308\n1.0,-0.005\n1.5,0.003\n").unwrap();
+        // Not `env!`: a cached build may have been compiled in a checkout since moved.
+        let root = std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR when it runs a test");
+        let scene = PathBuf::from(root).join("scenes/spring_mass.ron");
+        let spec = format!(
+            r#"Fit(scene: "{}", record: "x.csv", signals: [Signal(column: "x", of: Position("mass", X))],
+                parameters: [Parameter(path: "couplings.spring.law.stiffness", from: 50.0, to: 200.0)])"#,
+            scene.display()
+        );
+        let error = Setup::from_text(&dir.path().join("fit.ron"), &spec).map(drop).unwrap_err().to_string();
+        assert_eq!(
+            error,
+            format!(
+                "{}: column \"x\", row at t = 0.5 s: the value 1e308 makes the column's standard deviation inf (a weight of 1/σ = 0 and residuals that overflow): is its exponent mistyped?",
+                record.display()
+            )
+        );
     }
 }

@@ -25,6 +25,7 @@ use crate::coupling::{Coupling, CouplingError, CouplingForces, CouplingKind, End
 use crate::energy::Powers;
 use crate::evaluation::Evaluation;
 use crate::math::Vec3;
+use crate::parameter::ParameterError;
 use crate::potential::{
     HydrostaticsModel, LinearHydrostatics, PotentialBody, PotentialError, PotentialSpec, WaveExcitation,
 };
@@ -72,6 +73,10 @@ pub enum SystemError {
     Switch { body: String, source: SwitchError },
     #[error("coupling \"{coupling}\": {source}")]
     BelowSeabed { coupling: String, source: BelowSeabed },
+    /// A line whose weight or dynamic constants, derived in its surroundings, are out of range
+    /// ([`crate::coupling::Catenary::check_weight`], [`Discrete::check`]).
+    #[error("coupling \"{coupling}\": {source}")]
+    Line { coupling: String, source: ParameterError },
 }
 
 /// A catenary end fixed in the world below the seabed.
@@ -111,9 +116,11 @@ impl System {
         for coupling in &couplings {
             check_bodies(coupling, bodies.len())?;
         }
+        let surroundings = Surroundings::dry(gravity);
+        check_lines(&couplings, &surroundings, None)?;
         let kinematic_bodies = (0..bodies.len()).filter(|&i| bodies[i].is_kinematic()).collect();
         Ok(Self {
-            surroundings: Surroundings::dry(gravity),
+            surroundings,
             bodies,
             couplings,
             initial_states,
@@ -126,10 +133,13 @@ impl System {
     /// The system with its lines lying on `seabed` where they reach it (PHYSICS.md §7).
     ///
     /// # Errors
-    /// A catenary with an end fixed in the world below the seabed, named with the depth.
+    /// A catenary with an end fixed in the world below the seabed, named with the depth; a
+    /// dynamic line whose constants on the seabed are out of range.
     pub fn with_seabed(mut self, seabed: Seabed) -> Result<Self, SystemError> {
         check_anchors(&self.couplings, &seabed, &self.surroundings.gravity)?;
-        self.surroundings.seabed = Some(seabed);
+        let surroundings = Surroundings { seabed: Some(seabed), ..self.surroundings };
+        check_lines(&self.couplings, &surroundings, self.water_level())?;
+        self.surroundings = surroundings;
         Ok(self)
     }
 
@@ -139,7 +149,7 @@ impl System {
     /// # Errors
     /// Water that cannot be (bad values, a breaking wave, gravity not along −z), an unknown or
     /// repeated body, a body whose shape is not a closed outward hull or whose coefficients are
-    /// bad.
+    /// bad, a line whose weight or constants in the water are out of range.
     pub fn with_water(mut self, water: WaterSpec, floating: Vec<(usize, HydroSpec)>) -> Result<Self, SystemError> {
         let water = crate::water::Water::new(water, &self.surroundings.gravity)?;
         let count = self.bodies.len();
@@ -154,7 +164,9 @@ impl System {
             );
         }
         // The lines weigh in the same water: `(λ0 − ρ A_d) g` (PHYSICS.md §7).
-        self.surroundings.fluid_density = water.density();
+        let surroundings = Surroundings { fluid_density: water.density(), ..self.surroundings };
+        check_lines(&self.couplings, &surroundings, Some(water.level()))?;
+        self.surroundings = surroundings;
         self.water = Some(WaterStage { water, floating: bodies });
         Ok(self)
     }
@@ -273,8 +285,9 @@ impl System {
         if let Some(seabed) = &seabed {
             check_anchors(&self.couplings, seabed, &self.surroundings.gravity)?;
         }
-        self.surroundings.seabed = seabed;
-        self.surroundings.fluid_density = stage.water.density();
+        let surroundings = Surroundings { seabed, fluid_density: stage.water.density(), ..self.surroundings };
+        check_lines(&self.couplings, &surroundings, Some(stage.water.level()))?;
+        self.surroundings = surroundings;
         self.water = Some(stage);
         Ok(())
     }
@@ -321,8 +334,15 @@ impl System {
     /// Replaces the seabed (a live edit: the world restarts its integrator after it).
     pub(crate) fn replace_seabed(&mut self, seabed: Seabed) -> Result<(), SystemError> {
         check_anchors(&self.couplings, &seabed, &self.surroundings.gravity)?;
-        self.surroundings.seabed = Some(seabed);
+        let surroundings = Surroundings { seabed: Some(seabed), ..self.surroundings };
+        check_lines(&self.couplings, &surroundings, self.water_level())?;
+        self.surroundings = surroundings;
         Ok(())
+    }
+
+    /// The still water surface's height \[m], if the system has water.
+    fn water_level(&self) -> Option<f64> {
+        self.water.as_ref().map(|stage| stage.water.level())
     }
 
     pub fn bodies(&self) -> &[RigidBody] {
@@ -344,6 +364,7 @@ impl System {
         if let Some(seabed) = &self.surroundings.seabed {
             check_anchors(std::slice::from_ref(&coupling), seabed, &self.surroundings.gravity)?;
         }
+        check_lines(std::slice::from_ref(&coupling), &self.surroundings, self.water_level())?;
         Ok(std::mem::replace(&mut self.couplings[index], coupling))
     }
 
@@ -547,6 +568,32 @@ fn check_anchors(couplings: &[Coupling], seabed: &Seabed, gravity: &Vec3) -> Res
                 let source = BelowSeabed { end, depth: -height, elevation: seabed.elevation };
                 return Err(SystemError::BelowSeabed { coupling: coupling.name.clone(), source });
             }
+        }
+    }
+    Ok(())
+}
+
+/// Every line's weight in `surroundings` ([`crate::coupling::Catenary::check_weight`]) and, for a dynamic one,
+/// its constants there with the still water surface at `water_level` ([`Discrete::check`]): what
+/// is derived from values each checked alone, checked where the line meets its surroundings.
+fn check_lines(
+    couplings: &[Coupling],
+    surroundings: &Surroundings,
+    water_level: Option<f64>,
+) -> Result<(), SystemError> {
+    for coupling in couplings {
+        let line = match &coupling.kind {
+            CouplingKind::Catenary(line) => line,
+            // A spring's and a contact's values are checked whole by their constructors.
+            CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => continue,
+        };
+        let refused = |source| SystemError::Line { coupling: coupling.name.clone(), source };
+        line.check_weight(surroundings).map_err(refused)?;
+        match &line.model {
+            LineModel::Dynamic(parameters) => {
+                Discrete::new(line, parameters, surroundings, water_level).check(line).map_err(refused)?;
+            }
+            LineModel::QuasiStatic => {}
         }
     }
     Ok(())

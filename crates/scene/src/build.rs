@@ -119,7 +119,7 @@ pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
     };
     warn_about_lines(file, &mut warnings);
     let system = System::new(vec3(file.gravity), bodies.bodies.clone(), couplings, states)
-        .map_err(|e| Problem { place: Place::Top("couplings"), message: e.to_string() })?;
+        .map_err(|e| system_problem(file, e))?;
     let mut system = water::add_water(system, file, &bodies.bodies, directory, &mut warnings)?;
     if let Some(seabed) = seabed {
         system = system.with_seabed(seabed).map_err(|e| system_problem(file, e))?;
@@ -250,8 +250,15 @@ fn system_problem(file: &SceneFile, error: SystemError) -> Problem {
                 None => Problem { place: Place::Top("seabed"), message: error.to_string() },
             }
         }
+        SystemError::Line { coupling, source } => line_problem(coupling, source),
         _ => Problem { place: Place::Top("couplings"), message: error.to_string() },
     }
+}
+
+/// A line refused in its surroundings, placed at its field that made the value refused.
+fn line_problem(coupling: &str, source: &ParameterError) -> Problem {
+    // Names are unique by now: the coupling at fault is the first of its name.
+    ItemAt::new(ItemKind::Coupling, coupling, 0).refused(source)
 }
 
 /// Warnings about lines: a displaced volume where there is no water to displace; a line that

@@ -462,3 +462,70 @@ fn an_imported_file_survives_export_and_import() {
         }
     }
 }
+
+/// Issue 48: a number of a MoorDyn file set to 10³⁰⁸ (or 10⁻³⁰⁸, or 0) that its column's own
+/// check accepts but that makes a derived value infinite or zero is refused in one line at its
+/// row, naming what overflows and the column (the importer's own values: MoorDyn's names) or
+/// the scene's field (the physics' values, as imported).
+#[test]
+fn a_value_that_overflows_once_derived_is_refused_at_its_row() {
+    let lines = std::fs::read_to_string(input("lines.txt")).unwrap();
+    let main = "main       0.09    77.7066    384.243E6  -0.8        0          1.6    1.0    0.1     0.0";
+    let with_main = |row: &str| lines.replacen(main, row, 1);
+    let cases = [
+        (
+            with_main("main 0.09 77.7066 1e308 -0.8 0 1.6 1.0 0.1 0.0"),
+            "bad.txt:19:1: as imported: coupling \"line1\": BA = ζ l √(EA λ0) must be finite, got inf (from stiffness = 1.1084016847705608e305)",
+        ),
+        (
+            with_main("main 0.09 1e308 384.243E6 -0.8 0 1.6 1.0 0.1 0.0"),
+            "bad.txt:19:1: line 1: an end node's mass Mass/m UnstrLen/(2 NumSegs) must be finite, got inf (from Mass/m = 1e308)",
+        ),
+        (
+            with_main("main 0.09 1e-308 384.243E6 -0.8 0 1.6 1.0 0.1 0.0"),
+            "bad.txt:19:1: as imported: coupling \"line1\": the axial stable step must be > 0 s, got 0 (from mass_per_length = 1e-308)",
+        ),
+        (
+            with_main("main 1e308 77.7066 384.243E6 -0.8 0 1.6 1.0 0.1 0.0"),
+            "bad.txt:6:1: line type \"main\": the displaced area π Diam²/4 must be finite, got inf (from Diam = 1e308)",
+        ),
+        (
+            with_main("main 0.09 77.7066 384.243E6 1e308 0 1.6 1.0 0.1 0.0"),
+            "bad.txt:19:1: as imported: coupling \"line1\": the axial stable step must be > 0 s, got 0 (from damping = 1e308)",
+        ),
+        (
+            with_main("main 0.09 77.7066 384.243E6 -0.8 0 1e308 1.0 0.1 0.0"),
+            "bad.txt:19:1: as imported: coupling \"line1\": a node's drag ½ ρ C_dn d l must be finite, got inf (from drag_normal = 1e308)",
+        ),
+        (
+            lines.replacen("902.2     20", "1e308     20", 1),
+            "bad.txt:19:1: line 1: an end node's mass Mass/m UnstrLen/(2 NumSegs) must be finite, got inf (from UnstrLen = 1e308)",
+        ),
+        (
+            lines.replacen("902.2     20", "1e-308     20", 1),
+            "bad.txt:19:1: line 1: the stiffness D = EA/UnstrLen must be finite, got inf (from UnstrLen = 1e-308)",
+        ),
+    ];
+    for (text, expected) in &cases {
+        assert_eq!(&refusal(text, "bad.txt"), expected);
+    }
+    // A free point: its weight, drag and added mass, at its row.
+    let point = std::fs::read_to_string(here!("fixtures/moordyn/free_point.dat")).unwrap();
+    let free = "2 Free 0 0 -60 2000 0.5 0.8 1.0";
+    for (row, expected) in [
+        (
+            "2 Free 0 0 -60 1e308 0.5 0.8 1.0",
+            "bad.dat:11:1: point 2: its weight m g must be finite, got inf (from Mass = 1e308)",
+        ),
+        (
+            "2 Free 0 0 -60 2000 0.5 1e308 1.0",
+            "bad.dat:11:1: point 2: its drag ½ ρ CdA must be finite, got inf (from CdA = 1e308)",
+        ),
+        (
+            "2 Free 0 0 -60 2000 0.5 0.8 1e308",
+            "bad.dat:11:1: point 2: its added mass Ca ρ V must be finite, got inf (from Ca = 1e308)",
+        ),
+    ] {
+        assert_eq!(refusal(&point.replacen(free, row, 1), "bad.dat"), expected);
+    }
+}

@@ -124,3 +124,30 @@ fn every_coupling_constructor_names_the_field_it_refuses() {
     let table = ElasticLaw::force_curve(vec![(1.0, 0.0)]).unwrap_err();
     assert_eq!((table.field(), refused(table)), ("points", "points: a table needs at least 2 points, got 1".into()));
 }
+
+/// Issue 48: a value each check lets through but whose derived quantity overflows — the
+/// chain's λ0 of 10³⁰⁸ kg/m, whose submerged weight per length is infinite — is refused in one
+/// line at its field, from the file and from a knob (the edited coupling reaching the world);
+/// the shipped scene's own values load.
+#[test]
+fn a_weight_that_overflows_reads_the_same_from_the_file_and_a_knob() {
+    let good = std::fs::read_to_string(common::repo("scenes/chain_forced_surge.ron")).unwrap();
+    let message = "coupling \"chain\": the submerged weight per length (λ0 − ρ A_d) g must be finite, got inf (from mass_per_length = 1e308)";
+    let from_file = common::error_of(&good.replace("mass_per_length: 25.79", "mass_per_length: 1e308"));
+    assert_eq!(from_file, format!("bad.ron:31:13: {message}"));
+    let mut loaded = common::scene(&good);
+    let mut tuned = loaded.file.clone();
+    let CouplingDef::Catenary { mass_per_length, .. } = &mut tuned.couplings[0] else {
+        panic!("the chain is a catenary")
+    };
+    *mass_per_length = 1e308;
+    let coupling = build::coupling(&tuned, 0, &mut loaded.bodies).expect("its values each in range");
+    let from_knob = loaded.world.replace_coupling(0, coupling).unwrap_err();
+    assert_eq!(from_knob.to_string(), message);
+    // A dynamic constant: a node's drag with C_dn of 10³⁰⁸.
+    let error = common::error_of(&good.replace("drag_normal: 2.4", "drag_normal: 1e308"));
+    assert_eq!(
+        error,
+        "bad.ron:40:17: coupling \"chain\": a node's drag ½ ρ C_dn d l must be finite, got inf (from drag_normal = 1e308)"
+    );
+}

@@ -128,6 +128,7 @@ fn placed(error: SystemError) -> Problem {
             };
             at.at_field(field, source.to_string())
         }
+        SystemError::Line { coupling, source } => super::line_problem(&coupling, &source),
         other => Problem { place: Place::Top("water"), message: other.to_string() },
     }
 }

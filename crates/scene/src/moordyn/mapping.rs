@@ -13,7 +13,7 @@
 //! | FricDamp CV | each line's `friction_speed` `v_s = w l / CV` (`friction_speed` below); no friction when CV = 0 |
 
 use super::Located;
-use super::input::{Attachment, Body, BodyKind, Input, Line, LineType, Point};
+use super::input::{Attachment, Body, BodyKind, Input, Line, LineType, Options, Point};
 use crate::file::{
     BodyDef, CouplingDef, EndDef, InertiaDef, NodeDef, SceneFile, SeabedDef, ShapeDef, SupportDef, VelocityDef,
 };
@@ -22,6 +22,7 @@ use std::collections::BTreeMap;
 use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass};
 use tether_physics::integrator::{Integrator, Substeps};
 use tether_physics::math::{Rotation, Vec3};
+use tether_physics::parameter::{Bound, ParameterError, require_derived};
 
 /// The scene's step \[s]: what a recording logs; `substeps: Auto` takes the lines' and the
 /// point masses' stable steps under it (MoorDyn's `dtM` is its own integrator's step).
@@ -61,6 +62,7 @@ pub fn map(input: &Input) -> Result<Mapped, Located> {
         ramp: None,
     });
     for line in &input.lines {
+        check_derived(line, &input.line_types[line.line_type])?;
         check_bending(line, &input.line_types[line.line_type], &input.options, &mut warnings)?;
     }
     let mut bodies = Vec::new();
@@ -128,13 +130,54 @@ fn body_name(id: usize) -> String {
     format!("body{id}")
 }
 
+/// What the scene takes from a line and its type, derived here, checked finite (and `D` > 0)
+/// before it is written: a value the file's own checks let through (`EA` of 10³⁰⁸ N over a
+/// metre, a `Diam` of 10³⁰⁸ m) is refused at the row it comes from, naming it. The stiffness
+/// `D = EA/UnstrLen` [N/m] and half a segment's mass `Mass/m UnstrLen/(2 NumSegs)` \[kg] (what
+/// a free point takes from each line ending on it, [`end_node_mass`]) at the line's row; the
+/// displaced area `π Diam²/4` \[m²] at its type's.
+fn check_derived(line: &Line, line_type: &LineType) -> Result<(), Located> {
+    let at_line = |e: ParameterError| Located { line: line.line, col: 1, message: format!("line {}: {e}", line.id) };
+    let inputs = [("EA", line_type.axial_stiffness), ("UnstrLen", line.length)];
+    require_derived("the stiffness D = EA/UnstrLen", stiffness(line, line_type), Bound::Positive, "N/m", &inputs)
+        .map_err(at_line)?;
+    let half = line_type.mass_per_length * line.length / (2.0 * f64::from(line.segments));
+    let inputs =
+        [("Mass/m", line_type.mass_per_length), ("UnstrLen", line.length), ("NumSegs", f64::from(line.segments))];
+    require_derived("an end node's mass Mass/m UnstrLen/(2 NumSegs)", half, Bound::Finite, "kg", &inputs)
+        .map_err(at_line)?;
+    require_derived(
+        "the displaced area π Diam²/4",
+        area(line_type),
+        Bound::Finite,
+        "m²",
+        &[("Diam", line_type.diameter)],
+    )
+    .map_err(|e| Located {
+        line: line_type.line,
+        col: 1,
+        message: format!("line type \"{}\": {e}", line_type.name),
+    })?;
+    Ok(())
+}
+
+/// A line's stiffness `D = EA/L` [N/m] (PHYSICS.md §3: `EA = D L_eq`).
+fn stiffness(line: &Line, line_type: &LineType) -> f64 {
+    line_type.axial_stiffness / line.length
+}
+
+/// A line type's displaced area `A_d = π d²/4` \[m²] (PHYSICS.md §8 "Discretisation").
+fn area(line_type: &LineType) -> f64 {
+    std::f64::consts::PI * line_type.diameter * line_type.diameter / 4.0
+}
+
 /// Bending stiffness, which Tether's lines do not have, is left out with a warning when it
 /// acts over less than a segment — its length scale `(EI/|w|)^(1/3)` \[m] (w the line's wet
 /// weight per length [N/m]) is shorter than the segment `L/N` — and refused otherwise.
 fn check_bending(
     line: &Line,
     line_type: &LineType,
-    options: &super::input::Options,
+    options: &Options,
     warnings: &mut Vec<Located>,
 ) -> Result<(), Located> {
     if line_type.bending_stiffness == 0.0 {
@@ -167,8 +210,8 @@ fn line_def(input: &Input, line: &Line, line_type: &LineType) -> CouplingDef {
         end2: end_def(input, line.end_b),
         mass_per_length: line_type.mass_per_length,
         length: line.length,
-        stiffness: line_type.axial_stiffness / line.length,
-        displaced_area: std::f64::consts::PI * line_type.diameter * line_type.diameter / 4.0,
+        stiffness: stiffness(line, line_type),
+        displaced_area: area(line_type),
         model: LineModel::Dynamic(LumpedMass {
             segments: line.segments,
             damping: if line_type.damping < 0.0 {
@@ -199,8 +242,7 @@ fn line_def(input: &Input, line: &Line, line_type: &LineType) -> CouplingDef {
 /// its value does not matter).
 fn friction_speed(input: &Input, line: &Line, line_type: &LineType) -> f64 {
     let options = &input.options;
-    let area = std::f64::consts::PI * line_type.diameter * line_type.diameter / 4.0;
-    let wet = (line_type.mass_per_length - options.density * area) * options.gravity;
+    let wet = (line_type.mass_per_length - options.density * area(line_type)) * options.gravity;
     let speed = wet * line.length / f64::from(line.segments) / options.friction_damping;
     if options.friction > 0.0 && speed.is_finite() && speed > 0.0 { speed } else { LumpedMass::FRICTION_SPEED }
 }
@@ -376,6 +418,8 @@ fn point_mass(input: &Input, index: usize) -> Result<BodyDef, Located> {
     let volume = point.volume + ends / density.max(f64::MIN_POSITIVE);
     let side = volume.cbrt();
     let moment = mass * side * side / 6.0;
+    check_point(point, mass, volume, moment, &input.options)
+        .map_err(|e| located(format!("point {}: {e}", point.id)))?;
     let hydro = (density > 0.0 && volume > 0.0).then(|| HydroDef {
         drag: if point.drag_area > 0.0 { [1.0; 3] } else { [0.0; 3] },
         drag_areas: (point.drag_area > 0.0).then_some([point.drag_area; 3]),
@@ -401,6 +445,34 @@ fn point_mass(input: &Input, index: usize) -> Result<BodyDef, Located> {
         },
         hydro,
     })
+}
+
+/// What a free point's body takes from it, derived in [`point_mass`], checked finite: its mass
+/// `m + Σ λ0 L/(2N)` \[kg], weight `m g` \[N], hull volume `V_hull` \[m³] and buoyancy `ρ g
+/// V_hull` \[N], moment of inertia `m s²/6` [kg·m²] (`s` the hull's side), drag `½ ρ CdA` [kg/m]
+/// and added mass `Ca ρ V` \[kg], each named with the column (or option) that made it.
+fn check_point(point: &Point, mass: f64, volume: f64, moment: f64, options: &Options) -> Result<(), ParameterError> {
+    let (g, density) = (options.gravity, options.density);
+    let inputs = [
+        ("Mass", point.mass),
+        ("Volume", point.volume),
+        ("g", g),
+        ("WtrDnsty", density),
+        ("CdA", point.drag_area),
+        ("Ca", point.added_mass),
+    ];
+    require_derived("its mass with its lines' end nodes", mass, Bound::Finite, "kg", &inputs[..1])?;
+    require_derived("its weight m g", mass * g, Bound::Finite, "N", &inputs[..3])?;
+    require_derived("its moment of inertia m s²/6", moment, Bound::Finite, "kg·m²", &inputs[..2])?;
+    if density > 0.0 {
+        require_derived("its hull's volume", volume, Bound::Finite, "m³", &inputs[..4])?;
+        require_derived("its buoyancy ρ g V", density * g * volume, Bound::Finite, "N", &inputs[..4])?;
+        let drag = 0.5 * density * point.drag_area;
+        require_derived("its drag ½ ρ CdA", drag, Bound::Finite, "kg/m", &[inputs[3], inputs[4]])?;
+        let added = point.added_mass * density * point.volume;
+        require_derived("its added mass Ca ρ V", added, Bound::Finite, "kg", &[inputs[1], inputs[3], inputs[5]])?;
+    }
+    Ok(())
 }
 
 fn point_comment(point: &Point) -> String {

@@ -33,7 +33,7 @@ use super::forces::CouplingForces;
 use super::lumped_line::parameters::LineModel;
 use crate::body::{BodyFrame, Load};
 use crate::math::Vec3;
-use crate::parameter::{Bound, ParameterError, require};
+use crate::parameter::{Bound, ParameterError, require, require_derived};
 use crate::seabed::Seabed;
 use crate::surroundings::Surroundings;
 use equations::Closure;
@@ -77,10 +77,12 @@ pub struct CatenaryError {
 
 impl Catenary {
     /// A line of `mass_per_length` λ0 [kg/m] ≥ 0, unstretched `length` \[m] > 0 and `stiffness`
-    /// D [N/m] > 0 that displaces no fluid.
+    /// D [N/m] > 0 that displaces no fluid, its axial stiffness `EA = D L_eq` \[N] (PHYSICS.md §3)
+    /// finite and > 0.
     ///
     /// # Errors
-    /// A value out of its range, named by its field.
+    /// A value out of its range, named by its field; an `EA` that overflows or underflows, named
+    /// with the value that made it.
     pub fn new(
         end1: Endpoint,
         end2: Endpoint,
@@ -88,15 +90,12 @@ impl Catenary {
         length: f64,
         stiffness: f64,
     ) -> Result<Self, ParameterError> {
-        Ok(Self {
-            end1,
-            end2,
-            mass_per_length: require("mass_per_length", mass_per_length, Bound::NonNegative, "kg/m")?,
-            length: require("length", length, Bound::Positive, "m")?,
-            stiffness: require("stiffness", stiffness, Bound::Positive, "N/m")?,
-            displaced_area: 0.0,
-            model: LineModel::QuasiStatic,
-        })
+        let mass_per_length = require("mass_per_length", mass_per_length, Bound::NonNegative, "kg/m")?;
+        let length = require("length", length, Bound::Positive, "m")?;
+        let stiffness = require("stiffness", stiffness, Bound::Positive, "N/m")?;
+        let inputs = [("stiffness", stiffness), ("length", length)];
+        require_derived("EA = stiffness × length", stiffness * length, Bound::Positive, "N", &inputs)?;
+        Ok(Self { end1, end2, mass_per_length, length, stiffness, displaced_area: 0.0, model: LineModel::QuasiStatic })
     }
 
     /// The line modelled by `model` (its parameters already checked by their constructor).
@@ -115,6 +114,39 @@ impl Catenary {
     /// `λ0 − ρ A_d` [kg/m] in a fluid of density `fluid_density` ρ [kg/m³]: what weighs.
     pub fn submerged_mass_per_length(&self, fluid_density: f64) -> f64 {
         self.mass_per_length - fluid_density * self.displaced_area
+    }
+
+    /// The line's weight in `surroundings` (PHYSICS.md §3, §7), checked finite where it is
+    /// made from the line's values, gravity and the fluid's density: per length `w = (λ0 − ρ
+    /// A_d) g` [N/m], the whole line's `W = w L_eq` \[N] and its compliance `W/EA` [–], which the
+    /// solve divides by. Its scene, loaded or edited, is refused rather than run with an infinite
+    /// weight.
+    ///
+    /// # Errors
+    /// [`ParameterError::Derived`], named with the value that made it.
+    pub fn check_weight(&self, surroundings: &Surroundings) -> Result<(), ParameterError> {
+        let (g, density) = (surroundings.gravity.norm(), surroundings.fluid_density);
+        // Each quantity's inputs are the first 4, 5 and 6 of these.
+        let inputs = [
+            ("mass_per_length", self.mass_per_length),
+            ("displaced_area", self.displaced_area),
+            ("gravity", g),
+            ("density", density),
+            ("length", self.length),
+            ("stiffness", self.stiffness),
+        ];
+        let per_length = require_derived(
+            "the submerged weight per length (λ0 − ρ A_d) g",
+            self.submerged_mass_per_length(density) * g,
+            Bound::Finite,
+            "N/m",
+            &inputs[..4],
+        )?;
+        let weight = per_length.abs() * self.length;
+        require_derived("the submerged weight |w| L_eq", weight, Bound::Finite, "N", &inputs[..5])?;
+        let compliance = weight / (self.stiffness * self.length);
+        require_derived("the compliance W/EA", compliance, Bound::Finite, "", &inputs)?;
+        Ok(())
     }
 
     /// Solves the line for end positions `p1`, `p2` \[m] in `surroundings`, warm-started from
@@ -360,4 +392,52 @@ enum Warm<'a> {
 fn any_perpendicular(axis: &Vec3) -> Vec3 {
     let helper = if axis.x.abs() < 0.9 { Vec3::x() } else { Vec3::y() };
     (helper - axis * axis.dot(&helper)).normalize()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn line(mass_per_length: f64, length: f64, stiffness: f64) -> Result<Catenary, ParameterError> {
+        Catenary::new(
+            Endpoint::World(Vec3::zeros()),
+            Endpoint::World(Vec3::x() * 100.0),
+            mass_per_length,
+            length,
+            stiffness,
+        )
+    }
+
+    /// Issue 48: `EA = D L_eq` that overflows (or underflows to 0) from values each in range is
+    /// refused by the constructor, naming the one that made it.
+    #[test]
+    fn an_axial_stiffness_that_overflows_is_refused() {
+        assert_eq!(line(25.79, 250.0, 442714.0).map(|l| l.stiffness * l.length), Ok(110_678_500.0));
+        assert_eq!(
+            line(25.79, 1000.0, 1e306).unwrap_err().to_string(),
+            "EA = stiffness × length must be finite, got inf (from stiffness = 1e306)"
+        );
+        let refused = line(25.79, 1e-200, 1e-200).unwrap_err();
+        assert_eq!(refused.to_string(), "EA = stiffness × length must be > 0 N, got 0 (from length = 1e-200)");
+    }
+
+    /// The line's weight in its surroundings: finite per length, whole, and over `EA`.
+    #[test]
+    fn a_weight_that_overflows_is_refused_naming_its_field() {
+        let water = Surroundings { fluid_density: 1025.0, ..Surroundings::dry(Vec3::new(0.0, 0.0, -9.81)) };
+        let chain = line(25.79, 250.0, 442714.0).and_then(|l| l.with_displaced_area(0.003298)).expect("valid");
+        assert_eq!(chain.check_weight(&water), Ok(()));
+        let heavy = Catenary { mass_per_length: 1e308, ..chain.clone() };
+        assert_eq!(
+            heavy.check_weight(&water).unwrap_err().to_string(),
+            "the submerged weight per length (λ0 − ρ A_d) g must be finite, got inf (from mass_per_length = 1e308)"
+        );
+        let long = Catenary { mass_per_length: 1e300, length: 1e10, stiffness: 1e-300, ..chain.clone() };
+        assert_eq!(long.check_weight(&water).unwrap_err().field(), "mass_per_length");
+        let soft = Catenary { stiffness: 1e-310, ..chain };
+        assert_eq!(
+            soft.check_weight(&water).unwrap_err().to_string(),
+            "the compliance W/EA must be finite, got inf (from stiffness = 1e-310)"
+        );
+    }
 }

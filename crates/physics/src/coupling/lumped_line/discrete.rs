@@ -1,9 +1,10 @@
 //! One dynamic line in its surroundings: the constants its nodes and segments share, and how
 //! short its own time step must be (PHYSICS.md §8 "Discretisation", "Stable time step").
 
-use super::parameters::LumpedMass;
+use super::parameters::{InternalDamping, LumpedMass};
 use crate::coupling::catenary::Catenary;
 use crate::math::Vec3;
+use crate::parameter::{Bound, ParameterError, require_derived};
 use crate::seabed::Seabed;
 use crate::surroundings::Surroundings;
 
@@ -82,6 +83,71 @@ impl Discrete {
         }
     }
 
+    /// The constants derived here from `line` (the line they were made from), checked: the
+    /// segment `l = L/N` \[m] and a node's mass `λ0 l` \[kg] finite and positive; `BA` \[N·s]
+    /// finite (from a ratio, `ζ l √(EA λ0)`, PHYSICS.md §8 "Discretisation"); the axial stable
+    /// step and, on a seabed, the seabed's spring's (§8 "Stable time step", [`Discrete::limits`])
+    /// finite and positive; a node's seabed stiffness `k_b d l` [N/m], damping `c_b d l` [N·s/m]
+    /// and friction damper at rest `C_B |w| l/v_s` [N·s/m] (§7, `w` the wet weight per length),
+    /// and in water its drag `½ ρ C_dn d l`, `½ ρ C_dt π d l` [kg/m] and added mass `ρ A_d l
+    /// max(C_an, C_at)` \[kg] (§8 "Node i"), finite. A value the line's own checks let through
+    /// can overflow here (`λ0` of 10³⁰⁸ kg/m, a node of 10³⁰⁶ kg) or underflow (`λ0` of 10⁻³⁰⁸:
+    /// an axial step of 0 s); the line is then refused, not run.
+    ///
+    /// # Errors
+    /// [`ParameterError::Derived`], named with the value of `line` or its model that made it.
+    pub fn check(&self, line: &Catenary) -> Result<(), ParameterError> {
+        let p = &self.parameters;
+        let (ba_quantity, ba) = match p.damping {
+            InternalDamping::Coefficient(ba) => ("BA", ba),
+            InternalDamping::Ratio(zeta) => ("BA = ζ l √(EA λ0)", zeta),
+        };
+        let line_inputs = [
+            ("length", line.length),
+            ("segments", self.segments as f64),
+            ("mass_per_length", line.mass_per_length),
+            ("stiffness", line.stiffness),
+            ("displaced_area", line.displaced_area),
+            ("damping", ba),
+        ];
+        let with = |more: &[(&'static str, f64)]| [&line_inputs[..], more].concat();
+        require_derived("the segment length l = L/N", self.segment, Bound::Positive, "m", &line_inputs[..2])?;
+        let mass = self.mass_per_length * self.segment;
+        require_derived("a node's mass λ0 l", mass, Bound::Positive, "kg", &line_inputs[..3])?;
+        require_derived(ba_quantity, self.ba, Bound::NonNegative, "N·s", &line_inputs)?;
+        let limits = self.limits();
+        require_derived("the axial stable step", limits.axial, Bound::Positive, "s", &line_inputs)?;
+        if let Some(seabed) = &self.seabed {
+            let inputs = with(&[("seabed_stiffness", p.seabed_stiffness), ("seabed_damping", p.seabed_damping)]);
+            require_derived("the seabed's stable step", limits.seabed, Bound::Positive, "s", &inputs)?;
+            let stiffness = p.seabed_stiffness * self.bearing * self.segment;
+            require_derived("a node's seabed stiffness k_b d l", stiffness, Bound::Finite, "N/m", &inputs)?;
+            let damping = p.seabed_damping * self.bearing * self.segment;
+            require_derived("a node's seabed damping c_b d l", damping, Bound::Finite, "N·s/m", &inputs)?;
+            let weight = (self.mass_per_length - self.density * self.displaced_area) * self.gravity.norm();
+            let friction = seabed.line_friction * weight.abs() * self.segment / p.friction_speed;
+            let inputs = with(&[("line_friction", seabed.line_friction), ("friction_speed", p.friction_speed)]);
+            require_derived("a node's friction damper C_B |w| l/v_s", friction, Bound::Finite, "N·s/m", &inputs)?;
+        }
+        if self.density > 0.0 {
+            let drag = |c: f64| 0.5 * self.density * c * self.diameter * self.segment;
+            let inputs = with(&[("drag_normal", p.drag_normal), ("density", self.density)]);
+            require_derived("a node's drag ½ ρ C_dn d l", drag(p.drag_normal), Bound::Finite, "kg/m", &inputs)?;
+            let inputs = with(&[("drag_tangential", p.drag_tangential), ("density", self.density)]);
+            let tangential = drag(p.drag_tangential) * std::f64::consts::PI;
+            require_derived("a node's drag ½ ρ C_dt π d l", tangential, Bound::Finite, "kg/m", &inputs)?;
+            let coefficient = p.added_mass_normal.max(p.added_mass_tangential);
+            let added = self.density * self.displaced_area * self.segment * coefficient;
+            let inputs = with(&[
+                ("added_mass_normal", p.added_mass_normal),
+                ("added_mass_tangential", p.added_mass_tangential),
+                ("density", self.density),
+            ]);
+            require_derived("a node's added mass ρ A_d l C_a", added, Bound::Finite, "kg", &inputs)?;
+        }
+        Ok(())
+    }
+
     /// `l_i` \[m]: the length of line node `i` carries (`l/2` at an end).
     #[inline(always)]
     pub fn share(&self, node: usize) -> f64 {
@@ -149,4 +215,87 @@ fn diameter(area: f64) -> f64 {
 /// `2/(√(ω² + β²) + β)` \[s] for angular frequency `omega` [rad/s] and damping rate `rate` [1/s].
 fn oscillator(omega: f64, rate: f64) -> f64 {
     2.0 / ((omega * omega + rate * rate).sqrt() + rate)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::coupling::ends::Endpoint;
+    use crate::coupling::lumped_line::LineModel;
+
+    /// `lines.txt`'s OC3 line (λ0 = 77.7066 kg/m, d = 0.09 m, EA = 384.243 MN over 902.2 m, N =
+    /// 20, ζ = 0.8, C_dn 1.6, C_dt 0.1, C_an 1) with `edit` made to it and to its model, on a
+    /// seabed in water of 1025 kg/m³: its constants' check.
+    fn check(edit: impl Fn(&mut Catenary, &mut LumpedMass)) -> Result<(), ParameterError> {
+        let mut model = LumpedMass {
+            drag_normal: 1.6,
+            drag_tangential: 0.1,
+            added_mass_normal: 1.0,
+            ..LumpedMass::plain(20, InternalDamping::Ratio(0.8)).expect("valid")
+        };
+        let ends = (Endpoint::World(Vec3::new(853.87, 0.0, -320.0)), Endpoint::World(Vec3::new(5.2, 0.0, -70.0)));
+        let mut line = Catenary::new(ends.0, ends.1, 77.7066, 902.2, 384.243e6 / 902.2)
+            .and_then(|line| line.with_displaced_area(std::f64::consts::PI * 0.09 * 0.09 / 4.0))
+            .expect("valid");
+        edit(&mut line, &mut model);
+        let line = line.with_model(LineModel::Dynamic(model));
+        let seabed = Seabed::new(-320.0, 0.5).expect("valid");
+        let surroundings = Surroundings { seabed: Some(seabed), ..Surroundings::dry(Vec3::new(0.0, 0.0, -9.80665)) };
+        let surroundings = Surroundings { fluid_density: 1025.0, ..surroundings };
+        Discrete::new(&line, &model, &surroundings, Some(0.0)).check(&line)
+    }
+
+    /// Issue 48: each value that its own check lets through but that makes a derived constant
+    /// overflow or vanish is refused, naming the constant and the field at fault.
+    #[test]
+    fn each_overflowing_or_vanishing_constant_is_refused_naming_its_field() {
+        assert_eq!(check(|_, _| {}), Ok(()));
+        let refused = |edit: &dyn Fn(&mut Catenary, &mut LumpedMass)| check(edit).unwrap_err().to_string();
+        assert_eq!(
+            refused(&|line, _| line.stiffness = 1e305),
+            "BA = ζ l √(EA λ0) must be finite, got inf (from stiffness = 1e305)"
+        );
+        assert_eq!(
+            refused(&|line, _| line.mass_per_length = 1e-308),
+            "the axial stable step must be > 0 s, got 0 (from mass_per_length = 1e-308)"
+        );
+        assert_eq!(
+            refused(&|line, _| line.mass_per_length = 0.0),
+            "a node's mass λ0 l must be > 0 kg, got 0 (from mass_per_length = 0)"
+        );
+        assert_eq!(
+            refused(&|line, _| line.length = 1e308),
+            "a node's mass λ0 l must be finite, got inf (from length = 1e308)"
+        );
+        assert_eq!(
+            refused(&|_, model| model.damping = InternalDamping::Coefficient(1e308)),
+            "the axial stable step must be > 0 s, got 0 (from damping = 1e308)"
+        );
+        assert_eq!(
+            refused(&|_, model| model.drag_normal = 1e308),
+            "a node's drag ½ ρ C_dn d l must be finite, got inf (from drag_normal = 1e308)"
+        );
+        assert_eq!(
+            refused(&|_, model| model.drag_tangential = 1e308),
+            "a node's drag ½ ρ C_dt π d l must be finite, got inf (from drag_tangential = 1e308)"
+        );
+        assert_eq!(
+            refused(&|_, model| model.added_mass_tangential = 1e308),
+            "a node's added mass ρ A_d l C_a must be finite, got inf (from added_mass_tangential = 1e308)"
+        );
+        assert_eq!(
+            refused(&|_, model| model.seabed_stiffness = 1e308),
+            "a node's seabed stiffness k_b d l must be finite, got inf (from seabed_stiffness = 1e308)"
+        );
+        assert_eq!(
+            refused(&|_, model| model.seabed_damping = 1e308),
+            "a node's seabed damping c_b d l must be finite, got inf (from seabed_damping = 1e308)"
+        );
+        assert_eq!(
+            refused(&|_, model| model.friction_speed = 1e-308),
+            "a node's friction damper C_B |w| l/v_s must be finite, got inf (from friction_speed = 1e-308)"
+        );
+        let error = check(|line, _| line.mass_per_length = 1e308).unwrap_err();
+        assert_eq!(error.field(), "mass_per_length", "{error}");
+    }
 }

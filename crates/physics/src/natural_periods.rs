@@ -6,8 +6,11 @@
 //!   [`crate::statics::Equilibrium::body_stiffness`]) \[N/m, N/rad, N·m/m, N·m/rad];
 //! - `A = Tᵀ A_P T` the panel code's added mass moved from the reference point P to G
 //!   ([`PotentialBody::added_mass_at_center`]), either
-//!   - [`AddedMassAt::Infinite`]: `A∞`, what a time-domain model's mass matrix holds without its
-//!     radiation memory (the linearisation behind published eigenanalyses such as OC3-Hywind's),
+//!   - [`AddedMassAt::Infinite`]: `A∞` as Tether's time-domain mass holds it, without its
+//!     radiation memory (the linearisation behind published eigenanalyses such as OC3-Hywind's):
+//!     `A∞_eff`, the file's `A∞` made consistent with its `A(ω)` and the kernel
+//!     ([`PotentialBody::infinite_added_mass`]; PHYSICS.md §9, "A∞ consistent with the band"),
+//!     which moves OC3-Hywind's periods by 0.1 % or less from the file's `A∞`,
 //!   - [`AddedMassAt::Resonance`]: `A(ω_n)` at each mode's own frequency, by fixed-point
 //!     iteration (`ω ← ω_n(A(ω))`), what a free decay with the memory shows.
 //!
@@ -43,7 +46,7 @@ pub fn at_equilibrium(
 /// Which added mass the eigenproblem uses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum AddedMassAt {
-    /// `A∞`.
+    /// `A∞` as the time domain's mass holds it: `A∞_eff` ([`PotentialBody::infinite_added_mass`]).
     Infinite,
     /// `A(ω_n)`, iterated to each mode's frequency.
     Resonance,
@@ -63,6 +66,12 @@ pub struct NaturalMode {
 
 /// Eigenvalues this far below the largest, relative, count as zero (no stiffness).
 const ZERO_EIGENVALUE: f64 = 1e-9;
+/// An eigenvalue whose imaginary part is below this fraction of its real part is real: a
+/// repeated eigenvalue splits into such a pair under round-off and the panel code's asymmetry
+/// of `A` (the cylinder's roll and pitch: 5.7e-6, `A15` and `A51` 0.8 % apart).
+const NEAR_REAL: f64 = 1e-4;
+/// Real eigenvalues this close, relative, are one repeated eigenvalue.
+const REPEATED: f64 = 1e-4;
 /// The fixed-point iteration stops when `ω` moves by less than this, relative.
 const CONVERGED: f64 = 1e-10;
 /// And gives up after this many rounds (`A(ω)` varies slowly near a resonance: a few suffice).
@@ -112,26 +121,72 @@ fn overlap(a: &Vector6, b: &Vector6, inertia: &Matrix6) -> f64 {
 }
 
 /// The modes of `inertia` and `stiffness` with a positive stiffness, longest period first.
+/// Eigenvalues within [`REPEATED`] of each other are one repeated eigenvalue (roll and pitch of
+/// an axisymmetric body), whose shapes span a null space of that dimension: they are taken there
+/// one dof at a time ([`repeated_shapes`]), so that each is one mode, not a mixture.
 fn modes(inertia: &Matrix6, stiffness: &Matrix6) -> Vec<NaturalMode> {
     let Some(inverse) = inertia.try_inverse() else { return Vec::new() };
     let eigenvalues = (inverse * stiffness).complex_eigenvalues();
     let largest = eigenvalues.iter().map(|l| l.norm()).fold(0.0, f64::max);
-    let mut found: Vec<NaturalMode> = eigenvalues
+    let mut real: Vec<f64> = eigenvalues
         .iter()
-        .filter(|l| l.re > ZERO_EIGENVALUE * largest && l.im.abs() <= ZERO_EIGENVALUE * largest.max(l.re))
-        .map(|l| mode(l.re, inertia, stiffness))
+        .filter(|l| l.re > ZERO_EIGENVALUE * largest && l.im.abs() <= NEAR_REAL * l.re)
+        .map(|l| l.re)
         .collect();
+    real.sort_by(f64::total_cmp);
+    let mut found = Vec::new();
+    let mut first = 0;
+    while first < real.len() {
+        let count = real[first..].iter().take_while(|&&l| l - real[first] <= REPEATED * real[first]).count();
+        let group = &real[first..first + count];
+        let shapes = repeated_shapes(group[0], count, inertia, stiffness);
+        found.extend(group.iter().zip(shapes).map(|(&lambda, shape)| mode(lambda, shape, inertia)));
+        first += count;
+    }
     found.sort_by(|a, b| b.period.total_cmp(&a.period));
     found
 }
 
-/// The mode of eigenvalue `lambda` = `ω²` \[1/s²].
-fn mode(lambda: f64, inertia: &Matrix6, stiffness: &Matrix6) -> NaturalMode {
+/// `count` shapes of the (near) null space of `K − λ (M + A)`, `λ` = `ω²` \[1/s²]: its right
+/// singular vectors of the `count` smallest singular values span it; the shapes are then, in
+/// turn, the projection (in the kinetic inner product `xᵀ M y`, M symmetrised) of the unit dof
+/// that lies most in what is left of the space, and that shape taken out of it.
+fn repeated_shapes(lambda: f64, count: usize, inertia: &Matrix6, stiffness: &Matrix6) -> Vec<Vector6> {
     let svd = (stiffness - inertia * lambda).svd(false, true);
-    // SVD with `compute_v` always returns `v_t`; its row of the smallest singular value.
+    // SVD with `compute_v` always returns `v_t`; its rows of the smallest singular values.
     let v_t = svd.v_t.expect("v_t was asked for");
-    let smallest = svd.singular_values.imin();
-    let mut shape: Vector6 = v_t.row(smallest).transpose();
+    let mut order: Vec<usize> = (0..6).collect();
+    order.sort_by(|&a, &b| svd.singular_values[a].total_cmp(&svd.singular_values[b]));
+    let mut space: Vec<Vector6> = order.iter().take(count).map(|&k| v_t.row(k).transpose()).collect();
+    if count == 1 {
+        return space;
+    }
+    let kinetic = (inertia + inertia.transpose()) * 0.5;
+    let product = |x: &Vector6, y: &Vector6| x.dot(&(kinetic * y));
+    let mut shapes = Vec::with_capacity(count);
+    for _ in 0..count {
+        // An orthonormal basis of what is left (Gram–Schmidt).
+        let basis = space.iter().fold(Vec::<Vector6>::new(), |mut basis, v| {
+            let rest = basis.iter().fold(*v, |r, b| r - b * product(b, &r));
+            basis.push(rest / product(&rest, &rest).sqrt());
+            basis
+        });
+        // The share of unit dof d in the space, `Σ_b (bᵀ M e_d)² / M_dd`, and its projection there.
+        let share = |d: usize| basis.iter().map(|b| (kinetic * b)[d].powi(2)).sum::<f64>() / kinetic[(d, d)];
+        let best = (0..6).max_by(|&a, &b| share(a).total_cmp(&share(b))).unwrap_or(0);
+        let shape = basis.iter().fold(Vector6::zeros(), |sum, b| sum + b * (kinetic * b)[best]);
+        shapes.push(shape);
+        // The space less the shape: one of its vectors falls to nothing, the smallest dropped.
+        let unit = shape / product(&shape, &shape).sqrt();
+        space = basis.iter().map(|b| b - unit * product(&unit, b)).collect();
+        space.sort_by(|a, b| product(b, b).total_cmp(&product(a, a)));
+        space.truncate(count - shapes.len());
+    }
+    shapes
+}
+
+/// The mode of eigenvalue `lambda` = `ω²` \[1/s²] and shape `shape`.
+fn mode(lambda: f64, mut shape: Vector6, inertia: &Matrix6) -> NaturalMode {
     let kinetic = shape.component_mul(&(inertia * shape));
     let dominant = kinetic.iamax();
     shape /= shape[dominant];
@@ -158,6 +213,33 @@ mod tests {
             }
             assert!((mode.period - period).abs() < 1e-12 * period, "{mode:?} against {period}");
         }
+    }
+
+    /// An axisymmetric free body (the cylinder's case): roll and pitch share one eigenvalue, which
+    /// round-off and an added mass asymmetric by 0.4 % (`M15` against `M51`, a panel code's noise)
+    /// split into a complex pair. Both modes are found, at `ω² = k m/(m I − M15 M51)`, each its
+    /// own: pitch with surge `−M15/m` of it and no roll or sway, roll the mirror image.
+    #[test]
+    fn a_repeated_eigenvalue_gives_one_mode_per_dof() {
+        let (m, inertia, c, k) = (1.7e5, 9.0e5, 7.6e4, 2.3e6);
+        let mut mass = Matrix6::from_diagonal(&Vector6::new(m, m, m, inertia, inertia, 7.8e5));
+        (mass[(0, 4)], mass[(4, 0)], mass[(1, 3)], mass[(3, 1)]) = (c * 1.004, c, -c * 1.004, -c);
+        let stiffness = Matrix6::from_diagonal(&Vector6::new(0.0, 0.0, 2.8e5, k, k, 0.0));
+        let found = modes(&mass, &stiffness);
+        assert_eq!(found.len(), 3, "{found:?}");
+        let lambda = k * m / (m * inertia - c * c * 1.004);
+        let (mut roll, mut pitch) = (None, None);
+        for mode in found.iter().filter(|mode| mode.dominant != 2) {
+            assert!((mode.period - TAU / lambda.sqrt()).abs() < 1e-9 * mode.period, "{mode:?}");
+            match mode.dominant {
+                3 => roll = Some(mode.shape),
+                4 => pitch = Some(mode.shape),
+                _ => panic!("{mode:?}"),
+            }
+        }
+        let (roll, pitch) = (roll.expect("a roll mode"), pitch.expect("a pitch mode"));
+        assert!((pitch[0] + c * 1.004 / m).abs() < 1e-9 && pitch[1].abs() < 1e-9 && pitch[3].abs() < 1e-9, "{pitch}");
+        assert!((roll[1] - c * 1.004 / m).abs() < 1e-9 && roll[0].abs() < 1e-9 && roll[4].abs() < 1e-9, "{roll}");
     }
 
     /// Two masses `m` joined to the ground and to each other by springs `k` along x and y: the

@@ -306,7 +306,7 @@ fn moored_buoy() {
     checks.close("energy balance, C_B = 0 [mJ]", balance_drift(&s) * 1e3, 8.7, 0.05);
     // The scene's comment: the same buoy under potential flow from its Capytaine files.
     let s = run(&mut world("moored_buoy", &[(POTENTIAL_OFF, POTENTIAL_ON)]), 60.0);
-    checks.close("potential flow: swings back to x [m]", min_of(&s, p(0)), -2.53, 0.005);
+    checks.close("potential flow: swings back to x [m]", min_of(&s, p(0)), -2.54, 0.005);
     checks.close(
         "potential flow: heave below its rest [m]",
         min_of(between(&s, 20.0, 60.0), p(2)) - rest_z,
@@ -320,7 +320,7 @@ fn moored_buoy() {
         0.005,
     );
     checks.close("potential flow: sway [m]", max_of(&s, |s| s.states[0].position.y.abs()), 0.0, 0.001);
-    checks.close("potential flow: energy balance [mJ]", balance_drift(&s) * 1e3, 24.0, 1.0);
+    checks.close("potential flow: energy balance [mJ]", balance_drift(&s) * 1e3, 15.0, 1.0);
     checks.done();
 }
 

@@ -14,10 +14,20 @@
 //! added mass (`crate::water::added_mass`), every integrator solves it unchanged: the water
 //! stage adds the *reaction* `(m a_G − F, I α + ω × Iω − M)` to the body's load, so the rigid-body
 //! equations give `y`. Its power is `−d/dt(½ q̇ᵀ A∞ q̇)`, booked with the water's.
+//!
+//! **Which `A∞`.** Not the file's ω = ∞ block as it stands but `A∞_eff`, consistent with the
+//! file's `A(ω)` and the kernel the radiation memory uses (PHYSICS.md §9, "A∞ consistent with the
+//! band"; [`super::kernel::consistent_with_band`]): the kernel has no damping beyond the file's
+//! last frequency, so with the file's `A∞` the time domain's added mass falls short of the file's
+//! over the whole band and its lightly damped resonances sit too high. Everything the time
+//! domain's mass sees takes `A∞_eff`: the reaction, the stable time step's effective mass and
+//! the natural periods "with A∞". When `M + A∞_eff` about G is not positive definite (a file
+//! whose shift would make the mass indefinite) the file's `A∞` is kept instead, and
+//! [`PotentialBody::infinite_is_the_files`] says so, for the adapters to warn.
 
 use super::coefficients::{Coefficients, Matrix6, Vector6};
 use super::hydrostatics::HydrostaticsModel;
-use super::kernel::SampledKernel;
+use super::kernel::{BandConsistency, SampledKernel, consistent_with_band};
 use super::radiation::{Radiation, RadiationMethod};
 use super::state_space::{FitError, FitSettings, RadiationStateSpace};
 use crate::body::{BodyFrame, Load, RigidBody, Support};
@@ -87,10 +97,16 @@ pub struct PotentialBody {
     /// P in the principal frame \[m].
     reference: Vec3,
     radiation: Radiation,
+    /// `A∞_eff` and Ogilvie's check before and after the shift (module docs).
+    consistency: BandConsistency,
+    /// The `A∞` the time domain's mass holds \[kg, kg·m, kg·m²] about P: `A∞_eff`, or the file's
+    /// when `M + A∞_eff` is not positive definite.
+    infinite: Matrix6,
 }
 
 impl PotentialBody {
-    /// The model of `spec` for `body`: the kernel sampled and, for the state space, fitted.
+    /// The model of `spec` for `body`: the kernel sampled and, for the state space, fitted;
+    /// `A∞_eff` from the kernel and the file's `A(ω)` (module docs).
     ///
     /// # Errors
     /// A kernel step or duration out of range, or a kernel no order up to the limit fits.
@@ -101,6 +117,7 @@ impl PotentialBody {
             return Err(PotentialError::KernelSamples { step, duration });
         }
         let kernel = SampledKernel::from_damping(&spec.coefficients, step, duration);
+        let consistency = consistent_with_band(&spec.coefficients, &kernel);
         let radiation = match spec.method {
             RadiationMethod::StateSpace => Radiation::StateSpace(RadiationStateSpace::fit(
                 &kernel,
@@ -110,7 +127,30 @@ impl PotentialBody {
             RadiationMethod::Convolution => Radiation::Convolution(kernel),
         };
         let reference = body.reference_in_principal.transform_point(&spec.reference.into()).coords;
-        Ok(Self { coefficients: spec.coefficients, reference, radiation })
+        let infinite = if positive_definite_with(body, &reference, &consistency.infinite) {
+            consistency.infinite
+        } else {
+            *spec.coefficients.added_mass_infinite()
+        };
+        Ok(Self { coefficients: spec.coefficients, reference, radiation, consistency, infinite })
+    }
+
+    /// The `A∞` the time domain's mass holds, about P \[kg, kg·m, kg·m²]: `A∞_eff` (module docs),
+    /// or the file's when [`Self::infinite_is_the_files`].
+    pub fn infinite_added_mass(&self) -> &Matrix6 {
+        &self.infinite
+    }
+
+    /// `A∞_eff` and Ogilvie's check of the kernel's added mass with the file's `A∞` and with it
+    /// (what `tether check` reports, with [`BandConsistency::relative_shift`]).
+    pub fn band_consistency(&self) -> &BandConsistency {
+        &self.consistency
+    }
+
+    /// Whether the mass holds the file's `A∞` because `M + A∞_eff` about G is not positive
+    /// definite (a warning for the adapters to give; never for a panel code's consistent data).
+    pub fn infinite_is_the_files(&self) -> bool {
+        self.infinite != self.consistency.infinite
     }
 
     /// The panel code's data.
@@ -155,7 +195,7 @@ impl PotentialBody {
         let inertia = frame.rotation * Mat3::from_diagonal(&body.principal_moments()) * frame.rotation.transpose();
         let gyroscopic = omega.cross(&(inertia * omega));
         let transfer = transfer(&r);
-        let infinite = self.coefficients.added_mass_infinite();
+        let infinite = &self.infinite;
         let mut matrix = transfer.transpose() * infinite * transfer;
         let mut block = matrix.fixed_view_mut::<3, 3>(0, 0);
         block += Mat3::identity() * body.mass();
@@ -187,10 +227,11 @@ impl PotentialBody {
         Load { force, moment }
     }
 
-    /// `Tᵀ A∞ T` \[kg, kg·m, kg·m²]: `A∞` about G, world axes, at `frame` (the stable time step's
-    /// effective mass).
+    /// `Tᵀ A∞ T` \[kg, kg·m, kg·m²]: the `A∞` the time domain's mass holds
+    /// ([`Self::infinite_added_mass`]) about G, world axes, at `frame` (the stable time step's
+    /// effective mass, the natural periods with `A∞`).
     pub fn infinite_added_mass_at_center(&self, frame: &BodyFrame) -> Matrix6 {
-        self.added_mass_at_center(frame, self.coefficients.added_mass_infinite())
+        self.added_mass_at_center(frame, &self.infinite)
     }
 
     /// `Tᵀ A T`: an added mass `A` about P moved to G, world axes, at `frame`
@@ -199,6 +240,16 @@ impl PotentialBody {
         let transfer = transfer(&self.arm(frame));
         transfer.transpose() * added_mass * transfer
     }
+}
+
+/// Whether `M_G + Tᵀ A T` (symmetrised) is positive definite for `body` at the start, its
+/// reference frame on the world's axes (as [`check_start_axes`] has it within 5°), `reference`
+/// P in the principal frame \[m], `A` the added mass about P.
+fn positive_definite_with(body: &RigidBody, reference: &Vec3, added_mass: &Matrix6) -> bool {
+    let rotation = body.reference_in_principal.rotation.inverse().to_rotation_matrix().into_inner();
+    let at_center = transfer(&(rotation * reference));
+    let total = mass_at_center(body, &rotation) + at_center.transpose() * added_mass * at_center;
+    ((total + total.transpose()) * 0.5).cholesky().is_some()
 }
 
 /// `diag(m E, I_G)` \[kg, kg·m²]: `body`'s own mass about G, world axes, for the principal frame
@@ -242,6 +293,60 @@ mod tests {
             hydrostatic_stiffness: None,
         })
         .expect("valid data")
+    }
+
+    /// `A∞_eff` is what the mass holds, unless it would make `M + A∞` indefinite: a heave
+    /// added mass of −1e6 kg over the band (no panel code's) shifts `A33∞` to about that, against
+    /// the body's 500 kg, and the file's `A∞` is kept, said so; with +1e3 kg the shift is used.
+    #[test]
+    fn the_band_consistent_infinite_added_mass_is_held_unless_the_mass_would_be_indefinite() {
+        let body = RigidBody::new(
+            "b".into(),
+            MassProperties::from_nodes(
+                &Node { position: Vec3::zeros(), mass: 5.0e2, inertia: Mat3::identity() * 1.0e2 },
+                &[],
+            )
+            .expect("a valid body"),
+            Vec3::zeros(),
+            &[],
+            Support::Free,
+            Shape::Sphere { radius: 1.0, center: Vec3::zeros(), subdivisions: 1 },
+        );
+        let heave = |v: f64| Matrix6::from_diagonal(&Vector6::new(0.0, 0.0, v, 0.0, 0.0, 0.0));
+        let model = |added: f64| {
+            let coefficients = Coefficients::new(CoefficientsData {
+                frequencies: vec![1.0, 2.0],
+                added_mass: vec![heave(added); 2],
+                damping: vec![heave(1.0e2); 2],
+                added_mass_infinite: heave(0.0),
+                added_mass_zero: heave(-added),
+                excitation: Excitation {
+                    frequencies: vec![1.0],
+                    headings: vec![0.0],
+                    values: vec![ComplexVector6::zeros()],
+                },
+                hydrostatic_stiffness: None,
+            })
+            .expect("valid data");
+            let spec = PotentialSpec {
+                coefficients,
+                reference: Vec3::zeros(),
+                method: RadiationMethod::Convolution,
+                fit: FitSettings::new(1e-3, 10).expect("valid"),
+                kernel_duration: 20.0,
+                kernel_step: 0.05,
+                hydrostatics: HydrostaticsModel::Mesh,
+            };
+            PotentialBody::new(spec, &body).expect("valid")
+        };
+        let indefinite = model(-1.0e6);
+        assert!(indefinite.band_consistency().infinite[(2, 2)] < -9.0e5, "{}", indefinite.band_consistency().infinite);
+        assert!(indefinite.infinite_is_the_files());
+        assert_eq!(indefinite.infinite_added_mass(), indefinite.coefficients().added_mass_infinite());
+        let definite = model(1.0e3);
+        assert!(!definite.infinite_is_the_files());
+        assert_eq!(definite.infinite_added_mass(), &definite.band_consistency().infinite);
+        assert!(definite.infinite_added_mass()[(2, 2)] > 9.0e2, "{}", definite.infinite_added_mass());
     }
 
     /// The rigid-body equations with the reaction solve `(M + A∞) q̈ = Q` at P: P's accelerations

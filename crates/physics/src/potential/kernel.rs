@@ -83,6 +83,99 @@ pub fn added_mass_from_kernel(kernel: &SampledKernel, infinite: &Matrix6, omega:
     })
 }
 
+/// The band over which `A∞` is made consistent with the kernel: the file's frequencies
+/// `0 < ω_k ≤ 0.8 ω_max` (PHYSICS.md §9, "A∞ consistent with the band"). Near `ω_max` the
+/// kernel's added mass bends away from the file's, `B` being cut to nothing there (the Hilbert
+/// transform of a step), which no constant corrects.
+pub const CONSISTENT_BAND: f64 = 0.8;
+
+/// `A∞` made consistent with the file's `A(ω)` and the kernel the time domain uses (PHYSICS.md
+/// §9, "A∞ consistent with the band"), and Ogilvie's check before and after.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BandConsistency {
+    /// `A∞_eff` [kg, kg·m, kg·m²] about the reference point.
+    pub infinite: Matrix6,
+    /// `max_{ω_k ≤ 0.8 ω_max} |A_K(ω_k) − A(ω_k)| / max_k |A(ω_k) − A∞|` per pair with the file's
+    /// `A∞` in `A_K` (the time domain's added mass before the shift); 0 for a pair the kernel has
+    /// not ([`SampledKernel::significant_pairs`]) or whose `A` does not vary.
+    pub misfit_file: Matrix6,
+    /// The same with `A∞_eff` in `A_K`.
+    pub misfit_consistent: Matrix6,
+}
+
+impl BandConsistency {
+    /// `max_j |A∞_eff,ij − A∞_ij| / √|A∞_ii A∞_jj|` per degree of freedom, against the file's `A∞`
+    /// `file`: the largest relative change, couplings included (0 where the file's diagonal is 0).
+    pub fn relative_shift(&self, file: &Matrix6) -> [f64; 6] {
+        std::array::from_fn(|i| {
+            (0..6)
+                .map(|j| {
+                    let scale = (file[(i, i)] * file[(j, j)]).abs().sqrt();
+                    let change = (self.infinite[(i, j)] - file[(i, j)]).abs();
+                    if scale > 0.0 { change / scale } else { 0.0 }
+                })
+                .fold(0.0, f64::max)
+        })
+    }
+}
+
+/// `A∞_eff` (Ogilvie 1964, Kramers–Kronig): the kernel the time domain uses has `B` from the file
+/// up to `ω_max` and nothing beyond, so its added mass `A_K(ω) = A∞ − (1/ω) ∫₀^{t_K} K(t) sin(ωt) dt`
+/// falls short of the file's `A(ω)` by the omitted tail `(2/π) ∫_{ω_max}^∞ B(ω′)/(ω′² − ω²) dω′`,
+/// nearly constant well below `ω_max`. The infinite-frequency added mass that makes the kernel
+/// give the file's `A(ω)` over the band is
+/// `A∞_eff,ij = mean_{0 < ω_k ≤ 0.8 ω_max} [A_ij(ω_k) + (1/ω_k) ∫₀^{t_K} K_ij(t) sin(ω_k t) dt]`,
+/// symmetrised (`½ (Δ + Δᵀ)` of the shift `Δ = A∞_eff − A∞`). Pairs the kernel has not (no
+/// damping in the band, or the panel code's noise: [`SampledKernel::significant_pairs`]) keep
+/// the file's `A∞`, as they do when no frequency lies in the band.
+pub fn consistent_with_band(coefficients: &Coefficients, kernel: &SampledKernel) -> BandConsistency {
+    let file = *coefficients.added_mass_infinite();
+    let top = CONSISTENT_BAND * coefficients.highest_frequency();
+    // `A(ω_k)` and `(1/ω_k) ∫ K sin(ω_k t) dt` at each frequency of the band.
+    let band: Vec<(Matrix6, Matrix6)> = coefficients
+        .frequencies()
+        .iter()
+        .zip(coefficients.added_mass())
+        .filter(|(w, _)| **w > 0.0 && **w <= top)
+        .map(|(&w, a)| (*a, -added_mass_from_kernel(kernel, &Matrix6::zeros(), w)))
+        .collect();
+    let significant = kernel.significant_pairs();
+    let mut shift = Matrix6::zeros();
+    if !band.is_empty() {
+        let mean = band.iter().fold(Matrix6::zeros(), |sum, (a, s)| sum + a + s) / band.len() as f64;
+        shift = Matrix6::from_fn(|i, j| if significant[i][j] { mean[(i, j)] - file[(i, j)] } else { 0.0 });
+        shift = (shift + shift.transpose()) * 0.5;
+    }
+    let infinite = file + shift;
+    // The spread of `A − A∞` over all the file's frequencies, per pair: the misfit's scale.
+    let span = coefficients
+        .added_mass()
+        .iter()
+        .fold(Matrix6::zeros(), |span, a| span.zip_map(&(a - file), |m, d| m.max(d.abs())));
+    let misfit = |infinite: &Matrix6| {
+        let worst = band
+            .iter()
+            .fold(Matrix6::zeros(), |worst, (a, s)| worst.zip_map(&(infinite - s - a), |m, d| m.max(d.abs())));
+        let relative = |i: usize, j: usize| {
+            if significant[i][j] && span[(i, j)] > 0.0 { worst[(i, j)] / span[(i, j)] } else { 0.0 }
+        };
+        Matrix6::from_fn(relative)
+    };
+    BandConsistency { misfit_file: misfit(&file), misfit_consistent: misfit(&infinite), infinite }
+}
+
+/// A diagonal term of the kernel peaking below this fraction of the largest of its kind
+/// (translations, rotations) is the panel code's numerical noise rather than a kernel: an
+/// axisymmetric body's yaw.
+pub const NEGLIGIBLE_DIAGONAL: f64 = 1e-3;
+
+/// A pair peaking below this fraction of `√(peak_ii peak_jj)` of its kept diagonal terms is
+/// noise too: the cylinder's surge–sway pair (2e-5 of its diagonal's), the moored buoy's
+/// heave–roll pair (4e-3: its mesh's small asymmetry in the panel code's solve), which no
+/// order fits, being no sum of modes. A real coupling this weak moves the response by less
+/// than it.
+pub const NEGLIGIBLE_PAIR: f64 = 1e-2;
+
 /// A body's kernel matrices `K(t_n)` at `t_n = n Δt`, `n = 0 … ⌊t_K/Δt⌋`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SampledKernel {
@@ -189,6 +282,25 @@ impl SampledKernel {
             .collect()
     }
 
+    /// The pairs that are kernels rather than the panel code's noise: a diagonal term peaking
+    /// above [`NEGLIGIBLE_DIAGONAL`] of the largest of its kind, a pair above [`NEGLIGIBLE_PAIR`]
+    /// of `√(peak_ii peak_jj)` of two such terms. What the state space fits and `A∞_eff` shifts.
+    pub fn significant_pairs(&self) -> [[bool; 6]; 6] {
+        let peaks = self.peaks();
+        let largest = |dof: usize| {
+            let kind = if dof < 3 { 0..3 } else { 3..6 };
+            kind.map(|k| peaks[(k, k)]).fold(0.0, f64::max)
+        };
+        let diagonal: [f64; 6] =
+            std::array::from_fn(|i| if peaks[(i, i)] > NEGLIGIBLE_DIAGONAL * largest(i) { peaks[(i, i)] } else { 0.0 });
+        std::array::from_fn(|i| {
+            std::array::from_fn(|j| {
+                let scale = (diagonal[i] * diagonal[j]).sqrt();
+                scale > 0.0 && peaks[(i, j)] > NEGLIGIBLE_PAIR * scale
+            })
+        })
+    }
+
     /// The largest `|K_ij(t)|` over the samples, per pair.
     pub fn peaks(&self) -> Matrix6 {
         self.values.iter().fold(Matrix6::zeros(), |peak, k| peak.zip_map(k, |p, v| p.max(v.abs())))
@@ -209,6 +321,70 @@ mod tests {
         assert!((kernel.disagreement(&other, 1.0)[0] - 0.05).abs() < 1e-15);
         let nothing = SampledKernel::sample(1.0, 4.0, |_| Matrix6::zeros());
         assert_eq!((nothing.truncation()[5], nothing.disagreement(&kernel, 0.0)[5]), (0.0, 0.0));
+    }
+
+    /// A file whose `A(ω)` is exactly what the kernel of its `B` implies for an `A∞` (Ogilvie's
+    /// relation), but whose own ω = ∞ block is off by `δ` in surge, pitch and their coupling, as a
+    /// tail of `B` beyond the last frequency makes it: `A∞_eff` is that `A∞` again to round-off,
+    /// symmetric, the misfit with it nothing and with the file's `δ / max|A − A∞|`; yaw, with added
+    /// mass but no damping, keeps the file's `A∞`; and the relative shift is `δ` over the diagonal.
+    #[test]
+    fn the_band_consistent_infinite_added_mass_is_the_one_the_kernel_implies() {
+        use crate::potential::coefficients::{CoefficientsData, ComplexVector6, Excitation, Vector6};
+        let frequencies: Vec<f64> = (1..=30).map(|k| 0.1 * f64::from(k)).collect();
+        let scale = Vector6::new(3.0e4, 3.0e4, 2.0e4, 8.0e4, 8.0e4, 0.0);
+        let damping_at = |w: f64| {
+            let shape = w * w * (-w * w).exp();
+            let mut b = Matrix6::from_diagonal(&(scale * shape));
+            (b[(0, 4)], b[(4, 0)]) = (2.0e4 * shape, 2.0e4 * shape);
+            b
+        };
+        let truth = Matrix6::from_diagonal(&Vector6::new(5.0e3, 5.0e3, 9.0e3, 2.0e4, 2.0e4, 50.0));
+        let damping: Vec<Matrix6> = frequencies.iter().map(|&w| damping_at(w)).collect();
+        let with = |added_mass: Vec<Matrix6>, infinite: Matrix6| {
+            Coefficients::new(CoefficientsData {
+                frequencies: frequencies.clone(),
+                added_mass,
+                damping: damping.clone(),
+                added_mass_infinite: infinite,
+                // A(0) − A∞ = (2/π) ∫ B/ω² dω = b/√π for this B; yaw's A(0) apart from its A∞.
+                added_mass_zero: truth
+                    + Matrix6::from_diagonal(&(scale / PI.sqrt() + Vector6::new(0.0, 0.0, 0.0, 0.0, 0.0, 100.0))),
+                excitation: Excitation {
+                    frequencies: vec![1.0],
+                    headings: vec![0.0],
+                    values: vec![ComplexVector6::zeros()],
+                },
+                hydrostatic_stiffness: None,
+            })
+            .expect("valid data")
+        };
+        let kernel = SampledKernel::from_damping(&with(vec![truth; 30], truth), 0.05, 40.0);
+        let added_mass: Vec<Matrix6> =
+            frequencies.iter().map(|&w| added_mass_from_kernel(&kernel, &truth, w)).collect();
+        let mut offset = Matrix6::zeros();
+        (offset[(0, 0)], offset[(4, 4)], offset[(0, 4)], offset[(4, 0)], offset[(5, 5)]) =
+            (80.0, 300.0, 120.0, 120.0, 5.0);
+        let file = with(added_mass.clone(), truth - offset);
+        let consistency = consistent_with_band(&file, &kernel);
+        let mut expected = truth;
+        expected[(5, 5)] -= offset[(5, 5)];
+        println!("A∞_eff − A∞ (true): {:.3e}", (consistency.infinite - expected).abs().max());
+        assert!((consistency.infinite - expected).abs().max() < 1e-9 * truth.abs().max(), "{}", consistency.infinite);
+        assert_eq!(consistency.infinite, consistency.infinite.transpose());
+        let span = |i: usize, j: usize| {
+            added_mass.iter().map(|a| (a[(i, j)] - file.added_mass_infinite()[(i, j)]).abs()).fold(0.0, f64::max)
+        };
+        for (i, j) in [(0, 0), (4, 4), (0, 4), (2, 2)] {
+            assert!(consistency.misfit_consistent[(i, j)] < 1e-9, "({i}, {j}): {}", consistency.misfit_consistent);
+            let before = offset[(i, j)] / span(i, j);
+            assert!((consistency.misfit_file[(i, j)] - before).abs() < 1e-9, "({i}, {j}): {}", consistency.misfit_file);
+        }
+        assert_eq!((consistency.misfit_file[(5, 5)], consistency.misfit_file[(1, 2)]), (0.0, 0.0));
+        let shift = consistency.relative_shift(file.added_mass_infinite());
+        let diagonal = |i: usize| file.added_mass_infinite()[(i, i)];
+        assert!((shift[0] - 80.0 / diagonal(0)).abs() < 1e-12, "{shift:?}");
+        assert!((shift[4] - 300.0 / diagonal(4)).abs() < 1e-12 && shift[5] == 0.0 && shift[2] < 1e-12, "{shift:?}");
     }
 
     /// A linear piece against its transform by a fine midpoint rule.

@@ -155,18 +155,6 @@ pub struct RadiationStateSpace {
     kernel_step: f64,
 }
 
-/// A diagonal term peaking below this fraction of the largest of its kind (translations,
-/// rotations) is the panel code's numerical noise rather than a kernel: an axisymmetric body's
-/// yaw.
-const NEGLIGIBLE_DIAGONAL: f64 = 1e-3;
-
-/// A pair peaking below this fraction of `√(peak_ii peak_jj)` of its kept diagonal terms is
-/// noise too: the cylinder's surge–sway pair (2e-5 of its diagonal's), the moored buoy's
-/// heave–roll pair (4e-3: its mesh's small asymmetry in the panel code's solve), which no
-/// order fits, being no sum of modes. A real coupling this weak moves the response by less
-/// than it.
-const NEGLIGIBLE_PAIR: f64 = 1e-2;
-
 /// `0, Δω, 2Δω, …` up to `band` \[rad/s], `Δω ≤ π/(2 t_K)`: half the spacing that resolves the
 /// spectrum of a kernel `t_K` long; two frequencies at least.
 fn frequency_grid(duration: f64, band: f64) -> Vec<f64> {
@@ -176,34 +164,21 @@ fn frequency_grid(duration: f64, band: f64) -> Vec<f64> {
     (0..=count).map(|k| band * k as f64 / count as f64).collect()
 }
 
-/// The diagonal peaks that are kernels, the others 0 ([`NEGLIGIBLE_DIAGONAL`]).
-fn kept_diagonal(peaks: &Matrix6) -> [f64; 6] {
-    let largest = |dof: usize| {
-        let kind = if dof < 3 { 0..3 } else { 3..6 };
-        kind.map(|k| peaks[(k, k)]).fold(0.0, f64::max)
-    };
-    std::array::from_fn(|i| if peaks[(i, i)] > NEGLIGIBLE_DIAGONAL * largest(i) { peaks[(i, i)] } else { 0.0 })
-}
-
 impl RadiationStateSpace {
     /// Fits every pair of `kernel` that is not numerical noise (a diagonal term below 1e-3 of the
-    /// largest of its kind, a pair below 1e-2 of `√(K_ii K_jj)`), its spectrum from 0 to `band`
+    /// largest of its kind, a pair below 1e-2 of `√(K_ii K_jj)`:
+    /// [`SampledKernel::significant_pairs`]), its spectrum from 0 to `band`
     /// \[rad/s], the panel code's highest frequency (beyond it the kernel's `B` is nothing).
     ///
     /// # Errors
     /// [`FitError::NotReached`] for the first pair no order up to the limit fits.
     pub fn fit(kernel: &SampledKernel, band: f64, settings: FitSettings) -> Result<Self, FitError> {
         let omegas = frequency_grid(kernel.duration(), band);
-        let peaks = kernel.peaks();
-        let diagonal = kept_diagonal(&peaks);
+        let significant = kernel.significant_pairs();
         let mut pairs = Vec::new();
         let mut states = 0;
-        for i in 0..6 {
-            for j in 0..6 {
-                let scale = (diagonal[i] * diagonal[j]).sqrt();
-                if scale == 0.0 || peaks[(i, j)] <= NEGLIGIBLE_PAIR * scale {
-                    continue;
-                }
+        for (i, row) in significant.iter().enumerate() {
+            for (j, _) in row.iter().enumerate().filter(|(_, kept)| **kept) {
                 let spectrum = DVector::from_vec(kernel.spectrum(i, j, &omegas));
                 let pair = fit_pair(&omegas, &spectrum, settings).map_err(|(best, order)| FitError::NotReached {
                     i: i + 1,

@@ -52,6 +52,9 @@ def test_spring_mass_parameters_recovered(repo, cli, tmp_path):
         lo, hi = result.intervals[name]
         assert lo < truth < hi, f"{name}: {truth} outside {lo} … {hi}"
         assert result.standard_errors[name] == pytest.approx((hi - lo) / 2 / result.json["t_quantile_975"])
+        # White noise: the interval for a correlated residual is about the textbook one.
+        c_lo, c_hi = result.correlated_intervals[name]
+        assert c_hi - c_lo == pytest.approx(hi - lo, rel=0.2), f"{name}: {c_lo} … {c_hi} against {lo} … {hi}"
     assert result.correlation.shape == (2, 2) and result.undetermined == []
     x = result.signal("x")
     assert x.samples == 501 and x.times.shape == x.measured.shape == x.start.shape == x.fitted.shape == (501,)

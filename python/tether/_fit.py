@@ -47,6 +47,9 @@ class FitResult:
       a fitted time shift is ``time_shift``);
     - ``intervals``: name -> its 95 % confidence interval ``(lo, hi)``, or None when the data do
       not determine it; ``standard_errors``: name -> standard error or None;
+    - ``correlated_intervals``: name -> its 95 % interval if the residual is correlated model
+      error rather than white noise (another code's run, a real test: docs/calibration.md), or
+      None;
     - ``correlation``: (n, n) numpy array in the parameters' order, NaN where undetermined;
     - ``undetermined``: the combinations the data cannot fix, each a dict with ``reads`` (as
       people read it: ``+0.71 δk1/k1 −0.71 δk2/k2``) and ``direction`` (numpy unit vector over
@@ -68,6 +71,7 @@ class FitResult:
     values: Dict[str, float]
     intervals: Dict[str, Optional[Tuple[float, float]]]
     standard_errors: Dict[str, Optional[float]]
+    correlated_intervals: Dict[str, Optional[Tuple[float, float]]]
     correlation: np.ndarray = field(repr=False)
     undetermined: List[Dict[str, Any]] = field(repr=False)
     iterations: List[Dict[str, Any]] = field(repr=False)
@@ -250,6 +254,10 @@ def _result(raw: Dict[str, Any]) -> FitResult:
         values={p["name"]: p["value"] for p in report["parameters"]},
         intervals={p["name"]: None if p["interval_95"] is None else tuple(p["interval_95"]) for p in report["parameters"]},
         standard_errors={p["name"]: p["standard_error"] for p in report["parameters"]},
+        correlated_intervals={
+            p["name"]: None if p["interval_95_correlated"] is None else tuple(p["interval_95_correlated"])
+            for p in report["parameters"]
+        },
         correlation=np.array([float_array(row) for row in report["correlation"]], dtype=np.float64).reshape(
             len(names), len(names)
         ),

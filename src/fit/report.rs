@@ -39,20 +39,25 @@ pub fn text(model: &Model, outcome: &Outcome) -> String {
     let first = outcome.iterations.first().map_or(f64::NAN, |i| i.cost);
     let last = outcome.iterations.last().map_or(f64::NAN, |i| i.cost);
     let _ = writeln!(out, "cost ½‖r‖²: {first:.6e} → {last:.6e}");
-    let _ = writeln!(out, "\n| parameter | start | fitted | 95 % interval | ± |");
-    let _ = writeln!(out, "|---|---|---|---|---|");
+    let _ = writeln!(out, "\n| parameter | start | fitted | 95 % interval | ± | 95 % if correlated | ± |");
+    let _ = writeln!(out, "|---|---|---|---|---|---|---|");
+    let cells = |interval: Option<(f64, f64)>, value: f64| match interval {
+        Some((lo, hi)) => (
+            format!("{} … {}", number(lo), number(hi)),
+            if value != 0.0 { format!("{:.3} %", 100.0 * (hi - value) / value.abs()) } else { "–".into() },
+        ),
+        None => ("not determined by the data".into(), "–".into()),
+    };
     for p in &outcome.parameters {
-        let (interval, relative) = match (p.interval, p.standard_error) {
-            (Some((lo, hi)), Some(_)) => (
-                format!("{} … {}", number(lo), number(hi)),
-                if p.value != 0.0 { format!("{:.3} %", 100.0 * (hi - p.value) / p.value.abs()) } else { "–".into() },
-            ),
-            _ => ("not determined by the data".into(), "–".into()),
+        let (interval, relative) = cells(p.interval, p.value);
+        let (correlated, correlated_relative) = match p.interval {
+            Some(_) => cells(p.correlated_interval, p.value),
+            None => ("–".into(), "–".into()),
         };
         let bound = if p.at_bound { " (at its bound)" } else { "" };
         let _ = writeln!(
             out,
-            "| {} | {} | {}{bound} | {interval} | {relative} |",
+            "| {} | {} | {}{bound} | {interval} | {relative} | {correlated} | {correlated_relative} |",
             p.name,
             number(p.start),
             number(p.value)
@@ -92,6 +97,23 @@ pub fn text(model: &Model, outcome: &Outcome) -> String {
         } else {
             String::new()
         }
+    );
+    let windows: Vec<String> = u
+        .correlated
+        .bandwidths
+        .iter()
+        .zip(&outcome.signals)
+        .map(|(l, s)| format!("{} of {} samples", number(l.round()), s.samples))
+        .collect();
+    let mut freedom: Vec<String> =
+        u.correlated.degrees_of_freedom.iter().filter(|nu| nu.is_finite()).map(|nu| format!("{nu:.0}")).collect();
+    freedom.dedup();
+    let _ = writeln!(
+        out,
+        "\"if correlated\": the interval if the residual is model error, correlated as its own autocorrelation says (a sandwich covariance over a Bartlett lag window of {}; t at {} degrees of freedom); the first takes the residual as white noise{}",
+        windows.join(", "),
+        if freedom.is_empty() { "–".into() } else { freedom.join(", ") },
+        if u.inflation > 1.05 { ", widened for its lag-1 autocorrelation" } else { "" }
     );
     let _ = writeln!(out, "\n| signal | samples | weight | RMS at start | RMS fitted |");
     let _ = writeln!(out, "|---|---|---|---|---|");
@@ -153,6 +175,8 @@ pub fn json(model: &Model, outcome: &Outcome, files: &[(String, String)]) -> Val
             "value": p.value,
             "standard_error": p.standard_error,
             "interval_95": p.interval.map(|(lo, hi)| [lo, hi]),
+            "standard_error_correlated": p.correlated_standard_error,
+            "interval_95_correlated": p.correlated_interval.map(|(lo, hi)| [lo, hi]),
             "determined": p.standard_error.is_some(),
             "at_bound": p.at_bound,
         })).collect::<Vec<_>>(),
@@ -166,6 +190,11 @@ pub fn json(model: &Model, outcome: &Outcome, files: &[(String, String)]) -> Val
         "t_quantile_975": outcome.uncertainty.t_quantile,
         "residual_lag1_autocorrelation": outcome.uncertainty.autocorrelation,
         "interval_widening": outcome.uncertainty.inflation,
+        "correlated": json!({
+            "bandwidth_samples": outcome.uncertainty.correlated.bandwidths,
+            "degrees_of_freedom": outcome.uncertainty.correlated.degrees_of_freedom.iter().map(|nu| finite(*nu)).collect::<Vec<_>>(),
+            "t_quantile_975": outcome.uncertainty.correlated.t_quantiles.iter().map(|t| finite(*t)).collect::<Vec<_>>(),
+        }),
         "iterations": outcome.iterations.iter().map(|i| json!({
             "iteration": i.iteration,
             "cost": i.cost,

@@ -31,9 +31,15 @@ pub struct Fitted {
     pub name: String,
     pub start: f64,
     pub value: f64,
-    /// Its standard error and 95 % interval, `None` when the data cannot determine it.
+    /// Its standard error and 95 % interval, `None` when the data cannot determine it: the
+    /// textbook ones for white residuals, widened for their lag-1 autocorrelation
+    /// ([`Uncertainty::inflation`]).
     pub standard_error: Option<f64>,
     pub interval: Option<(f64, f64)>,
+    /// The same if the residual is correlated model error (the sandwich covariance over the
+    /// residual's autocorrelation, [`super::uncertainty::Correlated`]): `θ̂ ± t₀.₉₇₅,ν √C_c,jj`.
+    pub correlated_standard_error: Option<f64>,
+    pub correlated_interval: Option<(f64, f64)>,
     /// On one of its bounds at the optimum (the interval then says what the data allow, not
     /// where the minimum is).
     pub at_bound: bool,
@@ -182,13 +188,20 @@ fn fitted(parameters: &[Parameter], point: &[f64], values: &[f64], uncertainty: 
         .zip(point)
         .zip(values)
         .zip(&uncertainty.standard_errors)
-        .map(|(((p, z), value), error)| Fitted {
-            name: p.name.clone(),
-            start: p.start,
-            value: *value,
-            standard_error: *error,
-            interval: error.map(|e| (value - uncertainty.t_quantile * e, value + uncertainty.t_quantile * e)),
-            at_bound: *z <= 0.0 || *z >= 1.0,
+        .enumerate()
+        .map(|(j, (((p, z), value), error))| {
+            let correlated = uncertainty.correlated.standard_errors[j];
+            let t = uncertainty.correlated.t_quantiles[j];
+            Fitted {
+                name: p.name.clone(),
+                start: p.start,
+                value: *value,
+                standard_error: *error,
+                interval: error.map(|e| (value - uncertainty.t_quantile * e, value + uncertainty.t_quantile * e)),
+                correlated_standard_error: correlated,
+                correlated_interval: correlated.map(|e| (value - t * e, value + t * e)),
+                at_bound: *z <= 0.0 || *z >= 1.0,
+            }
         })
         .collect()
 }

@@ -673,6 +673,19 @@ fn interval_text(fitted: &Fitted) -> String {
     format!("{} ({interval}{bound})", number(fitted.value))
 }
 
+/// The knob's other interval, for a residual that is correlated model error (another code's
+/// run, a real test; docs/calibration.md, "What the intervals mean"), as the knob's tooltip.
+fn correlated_text(fitted: &Fitted, unit: &str) -> String {
+    match fitted.correlated_interval {
+        Some((lo, hi)) => format!(
+            "95 % {} … {} {unit} if the residual is correlated model error rather than white noise",
+            number(lo),
+            number(hi)
+        ),
+        None => "not determined by the data".into(),
+    }
+}
+
 /// Draws the fit panel for a scene whose fittable values are `fittables` and whose signals are
 /// `signals`; returns what it asks for.
 pub fn ui(ui: &mut egui::Ui, draft: &mut FitDraft, fittables: &[Fittable], signals: &[Quantity]) -> Vec<FitAction> {
@@ -815,7 +828,9 @@ fn session_ui(ui: &mut egui::Ui, session: &Session, actions: &mut Vec<FitAction>
         for (index, target) in session.targets.iter().enumerate() {
             ui.label(&target.label);
             match fitted.and_then(|parameters| parameters.get(index)) {
-                Some(parameter) => ui.label(format!("{} {}", interval_text(parameter), target.unit)),
+                Some(parameter) => ui
+                    .label(format!("{} {}", interval_text(parameter), target.unit))
+                    .on_hover_text(correlated_text(parameter, target.unit)),
                 None => {
                     let now = session.applied.get(index).copied().unwrap_or(target.value);
                     ui.label(format!("{} {} (from {})", number(now), target.unit, number(target.value)))

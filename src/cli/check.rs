@@ -284,6 +284,34 @@ fn water_report(out: &mut String, world: &World) {
     }
 }
 
+/// The `A∞` the time domain's mass holds (PHYSICS.md §9 "A∞ consistent with the band"): the
+/// largest relative change from the file's per dof, and the largest misfit of the time domain's
+/// added mass to the file's `A(ω)` before and after; or that the file's `A∞` is kept.
+fn infinite_added_mass_report(out: &mut String, model: &PotentialBody) {
+    let consistency = model.band_consistency();
+    if model.infinite_is_the_files() {
+        let _ = writeln!(
+            out,
+            "  A∞: the file's (M + A∞ made consistent with the band is not positive definite: the time domain's added mass keeps the band's misfit, up to {:.2} %)",
+            100.0 * consistency.misfit_file.max()
+        );
+        return;
+    }
+    let shifts = consistency.relative_shift(model.coefficients().added_mass_infinite());
+    let per_dof: Vec<String> = tether::rao_chart::DOFS
+        .iter()
+        .zip(shifts)
+        .map(|((name, _), shift)| format!("{name} {:.2} %", 100.0 * shift))
+        .collect();
+    let _ = writeln!(
+        out,
+        "  A∞: made consistent with the band (the largest change from the file's per dof: {}); the time domain's added mass within {:.2} % of the file's A(ω) (was {:.2} %)",
+        per_dof.join(", "),
+        100.0 * consistency.misfit_consistent.max(),
+        100.0 * consistency.misfit_file.max()
+    );
+}
+
 /// Pairs of the radiation fit printed on one line.
 const PAIRS_PER_LINE: usize = 4;
 
@@ -305,6 +333,7 @@ fn potential_report(out: &mut String, world: &World, index: usize, model: &Poten
         headings.join(", "),
         v(&(frame.position + model.arm(&frame)))
     );
+    infinite_added_mass_report(out, model);
     match model.radiation() {
         Radiation::StateSpace(fit) => state_space_report(out, fit),
         Radiation::Convolution(kernel) => {

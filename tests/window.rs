@@ -50,9 +50,19 @@ struct Receiver {
 impl Receiver {
     fn start(save: &Path) -> Self {
         let port = std::net::TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port();
-        let process = Command::new("rerun")
-            .args(["--serve-grpc", "--port", &port.to_string(), "--save", save.to_str().unwrap()])
-            .process_group(0)
+        let mut command = Command::new("rerun");
+        command.args(["--serve-grpc", "--port", &port.to_string(), "--save", save.to_str().unwrap()]).process_group(0);
+        // Ctrl-C reaches it as in a terminal's foreground: a test run started in the background
+        // (`cmd &`, nohup) passes SIGINT on ignored, and Python's wrapper then ignores it too.
+        // SAFETY: signal(2) is async-signal-safe, as pre_exec requires; it touches no memory of
+        // the parent.
+        unsafe {
+            command.pre_exec(|| {
+                libc::signal(libc::SIGINT, libc::SIG_DFL);
+                Ok(())
+            });
+        }
+        let process = command
             .stdout(Stdio::null())
             .stderr(Stdio::null())
             .spawn()

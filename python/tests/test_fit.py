@@ -153,8 +153,11 @@ def test_bad_input_raises_the_clis_message(repo, cli, tmp_path):
         tether.fit(spec, jobs=0)
 
 
+# The child takes Ctrl-C as in a terminal's foreground even when the tests run as a background
+# job, which passes SIGINT on ignored (Python then installs no KeyboardInterrupt handler).
 CTRL_C = """
-import sys, tether
+import signal, sys, tether
+signal.signal(signal.SIGINT, signal.default_int_handler)
 print("fitting", flush=True)
 result = tether.fit(sys.argv[1], jobs=1)
 print(result.status, result.ending, result.interrupted, len(result.iterations), flush=True)

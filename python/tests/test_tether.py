@@ -255,8 +255,11 @@ def test_a_run_in_a_thread_lets_another_thread_progress(repo):
     assert len(ticks) >= 20, f"{len(ticks)} ticks in {elapsed:.3f} s"
 
 
+# The child takes Ctrl-C as in a terminal's foreground even when the tests run as a background
+# job, which passes SIGINT on ignored (Python then installs no KeyboardInterrupt handler).
 CTRL_C = """
-import sys, tether
+import signal, sys, tether
+signal.signal(signal.SIGINT, signal.default_int_handler)
 sim = tether.load(sys.argv[1])
 print("running", flush=True)
 sim.run(1e6, rate=0.01)

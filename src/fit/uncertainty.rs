@@ -125,14 +125,11 @@ pub struct Scaling {
 /// Lag-1 autocorrelation of `residuals`, pairs taken within each of the consecutive series of
 /// `lengths` (one series when empty).
 pub fn lag1(residuals: &[f64], lengths: &[usize]) -> f64 {
-    let whole = [residuals.len()];
-    let lengths = if lengths.is_empty() { &whole[..] } else { lengths };
-    let (mut product, mut square, mut offset) = (0.0, 0.0, 0);
-    for &length in lengths {
-        let r = &residuals[offset..(offset + length).min(residuals.len())];
-        product += r.windows(2).map(|w| w[0] * w[1]).sum::<f64>();
-        square += r.iter().map(|x| x * x).sum::<f64>();
-        offset += length;
+    let (mut product, mut square) = (0.0, 0.0);
+    for range in series(residuals.len(), lengths) {
+        let r = &residuals[range];
+        product += lagged(r, r, 1);
+        square += lagged(r, r, 0);
     }
     if square > 0.0 { product / square } else { 0.0 }
 }

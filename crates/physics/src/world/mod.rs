@@ -147,7 +147,7 @@ impl World {
     /// The adaptive scheme's attempts over one integrator step `h` [s], each accepted one
     /// checked; the clock ends exactly at the span's end.
     fn adaptive_span(&mut self, h: f64) -> Result<(), StepError> {
-        let end = self.clock.time + h;
+        let (start, end) = (self.clock.time, self.clock.time + h);
         // Ends: a rejected attempt makes the next one shorter by the scheme's safety factor at
         // least, until `Dopri45::step` refuses one below round-off of the time (`Stalled`); an
         // accepted one moves the clock toward `end`, which the last one meets exactly — within
@@ -168,7 +168,8 @@ impl World {
                 return Ok(());
             }
         }
-        let mean = (end - self.clock.time).min(h) / f64::from(MAX_ADAPTIVE_ATTEMPTS);
+        // The mean step the attempts took: what the adaptive step shrank to.
+        let mean = (self.clock.time - start) / f64::from(MAX_ADAPTIVE_ATTEMPTS);
         Err(self.health.stalled(&self.system, &self.synchronized_states(), mean, self.clock.time, self.step_size()))
     }
 

@@ -124,7 +124,7 @@ impl Discrete {
             require_derived("a node's seabed stiffness k_b d l", stiffness, Bound::Finite, "N/m", &inputs)?;
             let damping = p.seabed_damping * self.bearing * self.segment;
             require_derived("a node's seabed damping c_b d l", damping, Bound::Finite, "N·s/m", &inputs)?;
-            let weight = (self.mass_per_length - self.density * self.displaced_area) * self.gravity.norm();
+            let weight = line.submerged_mass_per_length(self.density) * self.gravity.norm();
             let friction = seabed.line_friction * weight.abs() * self.segment / p.friction_speed;
             let inputs = with(&[("line_friction", seabed.line_friction), ("friction_speed", p.friction_speed)]);
             require_derived("a node's friction damper C_B |w| l/v_s", friction, Bound::Finite, "N·s/m", &inputs)?;

@@ -7,6 +7,12 @@
 //! constant for the exact motion; a numerical run keeps it to the integrator's order. Each
 //! integrator integrates the powers by its own rule ([`crate::integrator::StepReport::work`]);
 //! the world adds up the work in its [`EnergyLedger`].
+//!
+//! A quasi-static grounded line's seabed friction (PHYSICS.md §7) is not a dissipation: its law
+//! gives the end forces from the ends' positions alone, with the friction always toward the
+//! anchor, so what it takes as a fairlead moves out it gives back as the fairlead comes in (no
+//! hysteresis). Its work `held = ∫ P_h dt` is booked with the couplings' stored energy:
+//! `elastic = Σ U_c + held`, and `dissipated` counts only what dissipates.
 
 use crate::body::{BodyState, RigidBody};
 use crate::math::Vec3;
@@ -18,9 +24,10 @@ pub struct EnergyReport {
     pub kinetic: f64,
     /// `Σ −m g·x_G` of the bodies that respond to forces.
     pub gravity: f64,
-    /// Potential stored in the couplings.
+    /// Energy stored in the couplings: their potentials and the work the quasi-static lines'
+    /// seabed friction holds.
     pub elastic: f64,
-    /// Work dissipated by dampers since t = 0.
+    /// Work dissipated since t = 0 (dampers, contact, friction against slip): never decreases.
     pub dissipated: f64,
     /// Work done by prescribed motions and by the water on the system since t = 0.
     pub external_work: f64,
@@ -38,29 +45,60 @@ impl EnergyReport {
     }
 }
 
-/// Power \[W] at one force evaluation: dissipated by dampers (≥ 0), put in by prescribed
-/// motions, and put in by the water (kept apart: the staggered schemes integrate it with their
-/// half-step velocities, see [`crate::integrator::leapfrog`]).
+/// Power \[W] of the couplings at one force evaluation: dissipated (≥ 0), and held by the
+/// quasi-static lines' seabed friction (either sign, see the module's notes).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct CouplingPower {
+    pub dissipated: f64,
+    pub held: f64,
+}
+
+/// Power \[W] at one force evaluation: the couplings', put in by prescribed motions, and put in
+/// by the water (kept apart: the staggered schemes integrate it with their half-step velocities,
+/// see [`crate::integrator::leapfrog`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Powers {
-    pub dissipated: f64,
+    pub couplings: CouplingPower,
     pub external: f64,
     pub water: f64,
 }
 
-/// Work \[J] over a span of time: dissipated by dampers, and put in by prescribed motions and the
-/// water.
+/// Work \[J] over a span of time: dissipated, held by the quasi-static lines' seabed friction,
+/// and put in by prescribed motions and the water.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Work {
     pub dissipated: f64,
+    pub held: f64,
     pub external: f64,
 }
 
 impl Work {
+    /// Work `external` \[J] put in, nothing dissipated or held.
+    pub fn external(external: f64) -> Self {
+        Self { external, ..Self::default() }
+    }
+
+    /// `h Σ b_j P_j`: the quadrature of weights `weights` over a step `h` \[s] of the couplings'
+    /// and the external powers at the evaluations `powers` (the water's included: the schemes
+    /// that take it apart add theirs).
+    pub fn quadrature<'a>(h: f64, weights: &[f64], powers: impl IntoIterator<Item = &'a Powers>) -> Self {
+        let sum = weights.iter().zip(powers).fold(Self::default(), |sum, (b, p)| Self {
+            dissipated: sum.dissipated + b * p.couplings.dissipated,
+            held: sum.held + b * p.couplings.held,
+            external: sum.external + b * (p.external + p.water),
+        });
+        Self { dissipated: h * sum.dissipated, held: h * sum.held, external: h * sum.external }
+    }
+
     /// `½ h (P_a + P_b)`: the trapezoid rule over a step `h` \[s] between two evaluations, of the
-    /// dissipated and the external power (the water's is the caller's).
+    /// couplings' and the external power (the water's is the caller's).
     pub fn trapezoid(h: f64, a: &Powers, b: &Powers) -> Self {
-        Self { dissipated: 0.5 * h * (a.dissipated + b.dissipated), external: 0.5 * h * (a.external + b.external) }
+        let half = 0.5 * h;
+        Self {
+            dissipated: half * (a.couplings.dissipated + b.couplings.dissipated),
+            held: half * (a.couplings.held + b.couplings.held),
+            external: half * (a.external + b.external),
+        }
     }
 }
 
@@ -101,10 +139,11 @@ impl std::ops::Add for BodyEnergy {
     }
 }
 
-/// Running totals of the work dissipated and put in since t = 0 \[J].
+/// Running totals of the work dissipated, held and put in since t = 0 \[J].
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct EnergyLedger {
     pub dissipated: f64,
+    pub held: f64,
     pub external_work: f64,
 }
 
@@ -112,6 +151,7 @@ impl EnergyLedger {
     /// Adds the work of a span of time.
     pub fn add(&mut self, work: &Work) {
         self.dissipated += work.dissipated;
+        self.held += work.held;
         self.external_work += work.external;
     }
 }

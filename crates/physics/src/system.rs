@@ -22,7 +22,7 @@ use crate::body::{BodyState, Load, RigidBody, Support};
 use crate::coupling::catenary::ON_SEABED;
 use crate::coupling::lumped_line::Discrete;
 use crate::coupling::{Coupling, CouplingError, CouplingForces, CouplingKind, Endpoint, LineModel};
-use crate::energy::Powers;
+use crate::energy::{CouplingPower, Powers};
 use crate::evaluation::Evaluation;
 use crate::math::Vec3;
 use crate::parameter::ParameterError;
@@ -413,9 +413,9 @@ impl System {
             *load = self.gravity_load(body);
         }
         self.apply_lines(evaluation, time)?;
-        let dissipated = self.apply_couplings(evaluation)?;
+        let couplings = self.apply_couplings(evaluation)?;
         let water = self.apply_water(evaluation, time);
-        Ok(Powers { dissipated, external: self.external_power(evaluation), water })
+        Ok(Powers { couplings, external: self.external_power(evaluation), water })
     }
 
     /// Stages *clear* and *gravity* for one body: `F = m g`, `M = 0` (nothing for a kinematic
@@ -466,6 +466,7 @@ impl System {
                 f2: outcome.f2,
                 tension: outcome.f1.norm().max(outcome.f2.norm()),
                 dissipated_power: outcome.dissipated_power,
+                held_power: 0.0,
                 potential: outcome.energy,
             };
         }
@@ -473,11 +474,11 @@ impl System {
     }
 
     /// Stage *couplings* at the kinematics `evaluation.frames`: each coupling's forces, kept per
-    /// coupling and added to the loads; returns the power dissipated \[W].
+    /// coupling and added to the loads; returns the power they dissipate and hold \[W].
     ///
     /// # Errors
     /// The first coupling that cannot give its forces.
-    pub fn apply_couplings(&self, evaluation: &mut Evaluation) -> Result<f64, EvaluationError> {
+    pub fn apply_couplings(&self, evaluation: &mut Evaluation) -> Result<CouplingPower, EvaluationError> {
         let Evaluation { frames, loads, forces, caches, elastic, .. } = evaluation;
         let stage = CouplingsStage {
             couplings: &self.couplings,
@@ -487,7 +488,7 @@ impl System {
             forces,
             loads,
         };
-        let (dissipated, potential) = self
+        let (power, potential) = self
             .level
             .run(
                 #[inline(always)]
@@ -495,7 +496,7 @@ impl System {
             )
             .map_err(|(coupling, source)| EvaluationError { coupling, source })?;
         *elastic = potential;
-        Ok(dissipated)
+        Ok(power)
     }
 
     /// Stage *water* at time `time` \[s] (after the couplings: the added mass reacts to every
@@ -610,9 +611,9 @@ struct CouplingsStage<'a> {
 }
 
 impl CouplingsStage<'_> {
-    /// Each coupling in turn; returns the power the couplings dissipate [W] and their elastic
-    /// energy [J] (the sums of their records' `dissipated_power` and `potential`), or the index of
-    /// the one that failed.
+    /// Each coupling in turn; returns the power the couplings dissipate and hold [W] and their
+    /// elastic energy [J] (the sums of their records' `dissipated_power`, `held_power` and
+    /// `potential`), or the index of the one that failed.
     ///
     /// Built for AVX-512 and AVX2 as well as the portable build ([`SupportedLevel::run`]): the
     /// couplings' forces are inlined here, so the contact faces run four to a vector instruction
@@ -621,14 +622,15 @@ impl CouplingsStage<'_> {
     /// constants and sums that AVX2's 16 cannot (about 160 instructions per batch instead of
     /// about 190, by the disassembly of the bench binary).
     #[inline(always)]
-    fn run(self) -> Result<(f64, f64), (usize, CouplingError)> {
-        let (mut dissipated, mut potential) = (0.0, 0.0);
+    fn run(self) -> Result<(CouplingPower, f64), (usize, CouplingError)> {
+        let (mut power, mut potential) = (CouplingPower::default(), 0.0);
         let each = self.couplings.iter().zip(self.caches.iter_mut()).zip(self.forces.iter_mut());
         for (index, ((coupling, cache), out)) in each.enumerate() {
             coupling.apply(cache, self.frames, self.surroundings, self.loads, out).map_err(|source| (index, source))?;
-            dissipated += out.dissipated_power;
+            power.dissipated += out.dissipated_power;
+            power.held += out.held_power;
             potential += out.potential;
         }
-        Ok((dissipated, potential))
+        Ok((power, potential))
     }
 }

@@ -207,8 +207,9 @@ fn edited_water_moves_the_seabed_and_reweighs_the_lines() {
 }
 
 /// `moored_buoy` (C_B = 1 on its three grounded chains, waves, current, a 5 m push) run for
-/// 10 s by `integrator` at `dt`: the size of the balance's drift \[J].
-fn moored_buoy_drift(integrator: &str, dt: f64) -> f64 {
+/// 10 s by `integrator` at `dt`: the size of the balance's drift \[J], and the work booked as
+/// dissipated at the end \[J].
+fn moored_buoy_drift(integrator: &str, dt: f64) -> (f64, f64) {
     let text = std::fs::read_to_string(common::repo("scenes/moored_buoy.ron")).unwrap();
     let text = text
         .replace("dt: 0.05,", &format!("dt: {dt},"))
@@ -218,22 +219,29 @@ fn moored_buoy_drift(integrator: &str, dt: f64) -> f64 {
     for _ in 0..(10.0 / dt).round() as usize {
         world.step().unwrap();
     }
-    (world.energy().balance() - start).abs()
+    ((world.energy().balance() - start).abs(), world.energy().dissipated)
 }
 
-/// The seabed friction's work on quasi-static grounded lines is booked (PHYSICS.md §7), so
+/// The seabed friction's work on quasi-static grounded lines is booked, held with the lines'
+/// energy (PHYSICS.md §7), so
 /// `moored_buoy`'s balance falls as the step halves, at each integrator's order, instead of
 /// stalling at the friction's unbooked work: 331.2 J over these 10 s at every step before
 /// (0.41 kJ over 60 s). RK4 at 0.2, 0.1, 0.05 s: 0.36 J, 0.035 J, 4e-5 J (at least 2³ per
 /// halving; 4e-5 J is 6e-10 of the 63 kJ the push stored); the leapfrog at 10, 5, 2.5 ms:
-/// 2.31, 1.17, 0.59 J, first order — the order at which it books every dissipative power, at
-/// `v(t − ½dt)` (§5; the same scene without friction drifts 0.067, 0.017, 0.0042 J).
+/// 2.31, 1.17, 0.59 J, first order — the order at which it books every velocity-dependent
+/// power, at `v(t − ½dt)` (§5; the same scene without friction drifts 0.067, 0.017, 0.0042 J).
+/// Nothing of it is dissipated: `dissipated` stays 0 in every run.
 #[test]
 fn the_seabed_friction_on_grounded_lines_is_booked() {
-    let rk4: Vec<f64> = [0.2, 0.1, 0.05].iter().map(|&dt| moored_buoy_drift("rk4", dt)).collect();
+    let runs = |integrator: &str, steps: [f64; 3]| -> Vec<f64> {
+        let runs = steps.map(|dt| moored_buoy_drift(integrator, dt));
+        assert!(runs.iter().all(|&(_, dissipated)| dissipated == 0.0), "{integrator} dissipated: {runs:?}");
+        runs.iter().map(|&(drift, _)| drift).collect()
+    };
+    let rk4 = runs("rk4", [0.2, 0.1, 0.05]);
     assert!(rk4[1] < rk4[0] / 8.0 && rk4[2] < rk4[1] / 8.0, "RK4: {rk4:?}");
     assert!(rk4[2] < 1e-3, "RK4 at 50 ms: {rk4:?}");
-    let leapfrog: Vec<f64> = [0.01, 0.005, 0.0025].iter().map(|&dt| moored_buoy_drift("leapfrog", dt)).collect();
+    let leapfrog = runs("leapfrog", [0.01, 0.005, 0.0025]);
     for pair in leapfrog.windows(2) {
         let order = (pair[0] / pair[1]).log2();
         assert!((0.9..1.1).contains(&order), "leapfrog: {leapfrog:?}");

@@ -1,6 +1,7 @@
 //! Every shipped scene runs its whole `duration` within the physical bounds declared for it
 //! below: no body's centre of mass leaves its box, the energy balance (PHYSICS.md §5) drifts by
-//! no more than its budget, and the run never diverges (every step healthy, every state finite).
+//! no more than its budget, the dissipated work never decreases (a dissipation is never
+//! negative), and the run never diverges (every step healthy, every state finite).
 //!
 //! The boxes are the extents each scene's comment states, with a margin of a few millimetres to
 //! centimetres (about 1 % of the motion): they fail when a scene or the physics changes what the
@@ -220,11 +221,20 @@ fn every_shipped_scene_declares_its_bounds() {
     }
 }
 
-/// What a run reached: each body's G extents and the largest energy balance drift.
+/// What a run reached: each body's G extents, the largest energy balance drift, and the largest
+/// fall of the dissipated work over a step.
 struct Reached {
     low: Vec<Vector3<f64>>,
     high: Vec<Vector3<f64>>,
     drift: f64,
+    dissipated_fall: f64,
+}
+
+/// The largest fall of the dissipated work over a step [J] allowed: its round-off, 10⁻¹² of
+/// what it holds (Dormand–Prince's fifth weight is negative, so a step's quadrature of powers
+/// each ≥ 0 is ≥ 0 only to its own order; no shipped scene runs it).
+fn dissipated_round_off(dissipated: f64) -> f64 {
+    1e-12 * dissipated.abs().max(1.0)
 }
 
 /// Runs `world` for `duration` [s], checking every step.
@@ -235,10 +245,16 @@ fn run(world: &mut World, duration: f64) -> Result<Reached, String> {
         low: vec![Vector3::repeat(f64::INFINITY); bodies],
         high: vec![Vector3::repeat(f64::NEG_INFINITY); bodies],
         drift: 0.0,
+        dissipated_fall: 0.0,
     };
     let steps = (duration / world.dt()).round() as u64;
     for _ in 0..steps {
+        let dissipated = world.energy().dissipated;
         world.step().map_err(|e| e.to_string())?;
+        let fall = dissipated - world.energy().dissipated;
+        if fall > dissipated_round_off(dissipated) {
+            reached.dissipated_fall = reached.dissipated_fall.max(fall);
+        }
         for i in 0..bodies {
             let state = world.state(i);
             if !state.is_finite() {
@@ -274,6 +290,9 @@ fn breaches(bounds: &Bounds, world: &World, reached: &Reached) -> Vec<String> {
                 region.high
             ));
         }
+    }
+    if reached.dissipated_fall > 0.0 {
+        out.push(format!("the dissipated work fell by {:.4e} J over a step", reached.dissipated_fall));
     }
     if reached.drift > bounds.balance_budget {
         out.push(format!(

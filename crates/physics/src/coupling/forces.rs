@@ -15,8 +15,11 @@ pub struct CouplingForces {
     pub f2: Vec3,
     /// Scalar force of the coupling \[N] (a spring's `f1 = f_e + k_d ẋ`, positive in tension).
     pub tension: f64,
-    /// Power dissipated by damping \[W] ≥ 0.
+    /// Power dissipated by damping and by friction against slip \[W] ≥ 0.
     pub dissipated_power: f64,
+    /// Power into the energy a quasi-static grounded line's seabed friction holds \[W] (either
+    /// sign: it gives back what it took, PHYSICS.md §7; booked with the stored energy).
+    pub held_power: f64,
     /// Potential energy stored in the coupling \[J].
     pub potential: f64,
 }

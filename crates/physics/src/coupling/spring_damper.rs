@@ -77,6 +77,7 @@ impl SpringDamper {
             f2: -f1,
             tension,
             dissipated_power: damping_force * rate,
+            held_power: 0.0,
             potential,
         };
     }

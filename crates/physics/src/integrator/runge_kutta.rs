@@ -142,18 +142,10 @@ impl Stages {
     /// Accepts the attempted step of `h` \[s] whose new rates are in slot `last`: the new rates
     /// become slot 0. Returns the work over the step, `h Σ b_j P_j`, and the bodies' energies.
     pub fn accept(&mut self, system: &System, states: &[BodyState], h: f64, last: usize) -> (Work, BodyEnergy) {
-        let (dissipated, external) = self
-            .tableau
-            .b
-            .iter()
-            .zip(&self.powers)
-            .fold((0.0, 0.0), |(d, e), (b, p)| (d + b * p.dissipated, e + b * (p.external + p.water)));
+        let work = Work::quadrature(h, self.tableau.b, &self.powers);
         self.rates.swap(0, last);
         self.powers.swap(0, last);
-        (
-            Work { dissipated: h * dissipated, external: h * external },
-            BodyEnergy::sum(system.bodies(), states.iter(), system.gravity()),
-        )
+        (work, BodyEnergy::sum(system.bodies(), states.iter(), system.gravity()))
     }
 
     /// Puts `states` back at the start of the rejected attempt (slot 0 still holds its rates).

@@ -95,14 +95,14 @@ impl Splitting {
             *load = system.gravity_load(body);
         }
         system.apply_lines(evaluation, time)?;
-        let dissipated = system.apply_couplings(evaluation)?;
+        let couplings = system.apply_couplings(evaluation)?;
         // The water's work: the trapezoid of the forces at both ends against the half-step
         // velocities they straddle (second order; against each end's own lagged velocity it
         // would drift at first order, ½h ∫ F·a dt).
         let water_before = system.water_power(evaluation);
         let water = system.apply_water(evaluation, time);
         let energy = self.kick_and_energies(system, states, evaluation, 0.5 * h);
-        let powers = Powers { dissipated, external: system.external_power(evaluation), water };
+        let powers = Powers { couplings, external: system.external_power(evaluation), water };
         let mut work = Work::trapezoid(h, &self.powers, &powers);
         work.external += 0.5 * h * (water_before + water);
         self.powers = powers;

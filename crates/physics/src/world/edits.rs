@@ -210,7 +210,7 @@ impl World {
             return Err(error);
         }
         let jump = self.energy().total() - before.energy().total();
-        self.ledger.add(&Work { dissipated: 0.0, external: jump });
+        self.ledger.add(&Work::external(jump));
         self.health.limit = stability::binding(&self.limits());
         Ok(())
     }

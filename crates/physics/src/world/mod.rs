@@ -343,7 +343,7 @@ impl World {
         EnergyReport {
             kinetic: self.body_energy.kinetic,
             gravity: self.body_energy.gravity,
-            elastic: self.evaluation.elastic_energy(),
+            elastic: self.evaluation.elastic_energy() + self.ledger.held,
             dissipated: self.ledger.dissipated,
             external_work: self.ledger.external_work,
         }

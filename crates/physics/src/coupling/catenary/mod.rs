@@ -328,7 +328,8 @@ impl Catenary {
             f1,
             f2,
             tension: t1.max(t2),
-            dissipated_power: self.seabed_friction_power(&state, [&end1, &end2], [&f1, &f2], surroundings),
+            dissipated_power: 0.0,
+            held_power: self.seabed_friction_power(&state, [&end1, &end2], [&f1, &f2], surroundings),
             potential,
         };
         cache.last = Some(state);
@@ -337,11 +338,13 @@ impl Catenary {
 }
 
 impl Catenary {
-    /// The power \[W] of the seabed's friction on a grounded line (PHYSICS.md §7), booked as
-    /// dissipated: the quasi-static friction law makes the end forces `f_i` differ from minus the
-    /// gradient of the line's energy `U` (of `state`), so the line's forces alone do
-    /// not close the balance; the friction's power is what they leave out,
-    /// `P_d = −(f1·v1 + f2·v2 + dU/dt)`. `dU/dt` along the ends' velocities is a central
+    /// The power \[W] of the seabed's friction on a grounded line (PHYSICS.md §7), which the
+    /// line's energy `U` (of `state`) leaves out: the quasi-static friction law makes the end
+    /// forces `f_i` differ from minus the gradient of `U`, by
+    /// `P_h = −(f1·v1 + f2·v2 + dU/dt)`. The law gives the forces from the ends' positions alone
+    /// (the friction always toward the anchor, no slip history), so `P_h` takes the sign of the
+    /// ends' motion and what it takes out it gives back in: it is held, not dissipated
+    /// ([`crate::energy`]). `dU/dt` along the ends' velocities is a central
     /// difference of the line solved with its ends moved by `±v δ`, `δ |v| = 10⁻⁶ L_eq`
     /// (the solves converge to 10⁻¹² in `ln H`, so the difference is exact to about 10⁻⁶ W per
     /// MJ of `U`). Zero without friction, off the bottom, at rest, or where a moved end leaves
@@ -419,6 +422,56 @@ mod tests {
         );
         let refused = line(25.79, 1e-200, 1e-200).unwrap_err();
         assert_eq!(refused.to_string(), "EA = stiffness × length must be > 0 N, got 0 (from length = 1e-200)");
+    }
+
+    /// Issue 47: a grounded chain's seabed friction (C_B = 1) pulled out and let back in, the
+    /// fairlead's span 230 ± 5 m over one 20 s cycle: what the friction takes going out
+    /// (`P_h ≥ 0`) it gives back coming in (`P_h ≤ 0`): 97.5 J out from the middle, 110.6 J
+    /// back in to the near end, 13.05 J out to the middle again, the cycle's net 2.2·10⁻⁷ J
+    /// (the trapezoid's error over 4000 steps). The law holds energy; nothing of it is booked
+    /// as dissipated.
+    #[test]
+    fn a_grounded_lines_friction_gives_back_what_it_takes() {
+        let water = Surroundings {
+            fluid_density: 1025.0,
+            seabed: Some(Seabed { elevation: -50.0, line_friction: 1.0 }),
+            ..Surroundings::dry(Vec3::new(0.0, 0.0, -9.81))
+        };
+        let chain = Catenary::new(
+            Endpoint::World(Vec3::new(0.0, 0.0, -50.0)),
+            Endpoint::Center { body: 0 },
+            25.79,
+            250.0,
+            442714.0,
+        )
+        .and_then(|l| l.with_displaced_area(0.003298))
+        .expect("valid");
+        let (steps, period, amplitude) = (4000, 20.0, 5.0);
+        let omega = std::f64::consts::TAU / period;
+        let dt = period / steps as f64;
+        let (mut cache, mut out) = (CatenaryCache::default(), CouplingForces::default());
+        let mut power_at = |t: f64| {
+            let frame = BodyFrame {
+                position: Vec3::new(230.0 + amplitude * (omega * t).sin(), 0.0, -1.0),
+                velocity: Vec3::new(amplitude * omega * (omega * t).cos(), 0.0, 0.0),
+                ..BodyFrame::default()
+            };
+            let mut loads = [Load::default()];
+            chain.apply(&mut cache, &[frame], &water, &mut loads, &mut out).expect("solves");
+            assert_eq!(out.dissipated_power, 0.0, "nothing dissipates");
+            out.held_power
+        };
+        let powers: Vec<f64> = (0..=steps).map(|i| power_at(i as f64 * dt)).collect();
+        let leg =
+            |range: std::ops::Range<usize>| -> f64 { range.map(|i| 0.5 * dt * (powers[i] + powers[i + 1])).sum() };
+        // Out from the middle to the far end, in to the near end, out to the middle again.
+        let (quarter, three_quarters) = (steps / 4, 3 * steps / 4);
+        let (out_first, inward, out_last) = (leg(0..quarter), leg(quarter..three_quarters), leg(three_quarters..steps));
+        assert!(powers[..quarter].iter().all(|&p| p >= 0.0), "takes while pulled out");
+        assert!(powers[quarter + 1..three_quarters].iter().all(|&p| p <= 0.0), "gives back while let in");
+        assert!(out_first > 1.0, "the friction works: {out_first} J");
+        let net = out_first + inward + out_last;
+        assert!(net.abs() < 1e-7 * inward.abs(), "the cycle's net {net} J of {inward} J in");
     }
 
     /// The line's weight in its surroundings: finite per length, whole, and over `EA`.

@@ -325,6 +325,7 @@ impl Contact {
             f2: -force,
             tension: sums.normal,
             dissipated_power: sums.dissipated_power,
+            held_power: 0.0,
             potential: sums.potential,
         };
         (force, moment)

@@ -142,8 +142,9 @@ def fit(
     The GIL is released while the fit runs. Ctrl-C stops it at the best point so far, which is
     returned as the result with ``status == "partial"`` and ``interrupted`` True (its files
     written, as the command line does); a loop of fits that should stop on Ctrl-C checks
-    ``result.interrupted``. Only a Ctrl-C before the start point was evaluated raises
-    ``KeyboardInterrupt``.
+    ``result.interrupted``. One that comes after the fit converged (while its intervals are
+    computed) lets it finish: its own status, ``interrupted`` True. Only a Ctrl-C before the
+    start point was evaluated raises ``KeyboardInterrupt``.
 
     Errors are one line: ``ValueError`` with the command line's message for a spec, scene or
     record it refuses (a missing file, an unknown column or path, inverted bounds, …; a spec

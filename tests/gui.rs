@@ -13,7 +13,7 @@ use rerun::external::egui::{self, accesskit};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, LazyLock};
 use std::time::{Duration, Instant};
-use tether::fit::report::number;
+use tether::figures::quantity;
 use tether::gui::panel::ControlPanel;
 use tether::gui::stream::{Sinks, ViewerBacklog};
 use tether_physics::coupling::{CouplingKind, ElasticLaw, LineModel};
@@ -666,7 +666,7 @@ fn a_fit_moves_the_running_stiffness_to_the_record_and_revert_puts_the_file_back
     harness.run_steps(2);
     let (lo, hi) = fitted.interval.expect("the data determine k");
     assert!(lo < fitted.value && fitted.value < hi);
-    let interval = format!("(95 % {} … {}) N/m", number(lo), number(hi));
+    let interval = format!("(95 % {} … {})", quantity(lo, "N/m", 6), quantity(hi, "N/m", 6));
     assert!(harness.query_all_by_label_contains(&interval).count() == 1, "the interval beside the knob: {interval}");
     assert!(harness.query_by_label_contains("spring •").is_some(), "the fitted coupling is marked as tuned");
 
@@ -749,6 +749,89 @@ fn a_fit_with_bad_choices_is_refused_with_one_line() {
     harness.get_by_label(&refusal);
     assert!(harness.state().fit().session.is_none(), "nothing ran");
     assert_eq!(spring_stiffness(&world(&harness)), 100.0);
+}
+
+/// Issue 47: each scene keeps its own fit state. The spring's record mapped to body "m" and its
+/// stiffness ticked; another scene (body "n", its spring named "other") opens with an empty fit
+/// panel, not the spring's mapping to a body it lacks; back on the spring, its record, column
+/// and tick are there again. A scene reloaded without the body a column was mapped to says it
+/// unmapped the column.
+#[test]
+fn each_scene_keeps_its_own_fit_and_a_missing_signal_is_unmapped_and_said() {
+    let other = common::spring_scene_text("n").replace("name: \"spring\"", "name: \"other\"");
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str()), ("other.ron", &other)]);
+    let record = spring_record(dir.path(), 130.0);
+    let mut harness = tall_harness(panel(dir.path()));
+    open_from_list(&mut harness, "spring.ron");
+    fit_panel_with_record(&mut harness, &record);
+    harness.get_by_label("spring: stiffness k").click();
+    harness.run_steps(2);
+    let mapped = |harness: &Harness<'_, ControlPanel>| -> Vec<String> {
+        harness.state().fit().mapping.iter().flatten().map(tether::gui::fit::signal_label).collect()
+    };
+    assert_eq!(mapped(&harness), ["m: position x [m]"]);
+
+    open_from_list(&mut harness, "other.ron");
+    harness.run_steps(2);
+    assert!(harness.state().fit().record.is_none(), "the other scene's fit starts empty");
+    assert!(harness.state().fit().ticked.is_empty());
+    assert!(harness.query_by_label("x_measured").is_none(), "no column of the spring's record shows");
+
+    open_from_list(&mut harness, "spring.ron");
+    harness.run_steps(2);
+    assert_eq!(mapped(&harness), ["m: position x [m]"], "the spring's mapping is back");
+    assert_eq!(harness.state().fit().ticked.keys().collect::<Vec<_>>(), ["couplings.spring.law.stiffness"]);
+
+    // The spring's file now names its body "n": the column's signal is gone, and said.
+    std::fs::write(dir.path().join("spring.ron"), &other).unwrap();
+    until(&mut harness, "the reload", |p| p.scene().is_some_and(|s| s.tuned.bodies[0].name == "n"));
+    assert!(mapped(&harness).is_empty(), "unmapped: {:?}", mapped(&harness));
+    assert!(harness.state().fit().ticked.is_empty(), "the spring's coupling is gone: unticked");
+    let said = |text: &str| harness.state().log().any(|l| l.text.contains(text));
+    assert!(said("fit: column \"x_measured\" unmapped (m: position x [m] is not in this scene)"));
+    assert!(said("fit: couplings.spring.law.stiffness unticked (not in this scene)"));
+}
+
+/// The unstretched length of catenary coupling `index` in `world` [m].
+fn line_length(world: &World, index: usize) -> f64 {
+    match &world.couplings()[index].kind {
+        CouplingKind::Catenary(line) => line.length,
+        kind => panic!("not a line: {kind:?}"),
+    }
+}
+
+/// Issue 47: a value being typed into a knob of the shipped moored buoy while it runs applies
+/// nothing, and logs nothing, until Enter: two seconds of the run with "260" typed into the
+/// second chain's length leave the log without an "applied" line and the chain at its 250 m;
+/// Enter applies 260 m and says so once.
+#[test]
+fn a_value_being_typed_applies_nothing_until_enter() {
+    let text = std::fs::read_to_string(repo("scenes/moored_buoy.ron")).unwrap();
+    let dir = scenes_folder(&[("moored_buoy.ron", &text)]);
+    let mut harness = tall_harness(panel(dir.path()));
+    open_from_list(&mut harness, "moored_buoy.ron");
+    harness.key_press(egui::Key::Space);
+    until(&mut harness, "the run", |p| p.status().is_some_and(|s| s.running && s.time > 0.5));
+    let applied =
+        |harness: &Harness<'_, ControlPanel>| harness.state().log().filter(|l| l.text.contains("applied")).count();
+    let before = applied(&harness);
+    let length = line_length(&world(&harness), 1);
+    harness.get_all_by_label("length L_eq").nth(1).expect("a second chain").click();
+    harness.run_steps(2);
+    harness.get_all_by_label("length L_eq").nth(1).expect("a second chain").type_text("260");
+    let typing = Instant::now();
+    while typing.elapsed() < Duration::from_secs(2) {
+        harness.step();
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let log: Vec<String> = harness.state().log().map(|l| l.text.clone()).collect();
+    assert_eq!(applied(&harness), before, "nothing applied while typing: {log:?}");
+    assert!(harness.state().status().is_some_and(|s| s.time > 1.0), "the run went on");
+    assert_eq!(line_length(&world(&harness), 1), length, "the run keeps its length while it is typed");
+    harness.key_press(egui::Key::Enter);
+    until(&mut harness, "the applied edit", |p| p.log().filter(|l| l.text.contains("applied")).count() > before);
+    assert_eq!(applied(&harness), before + 1, "applied once");
+    assert_eq!(line_length(&world(&harness), 1), 260.0);
 }
 
 /// Play refuses a scene whose duration at its time step is past the run limit (the run-length

@@ -25,6 +25,8 @@ pub struct TetherApp {
     frame_cap: Option<super::renderer::FrameCap>,
     /// What the embedded viewer left in its channel after the last frame.
     backlog: ViewerBacklog,
+    /// Shown above the viewer: the renderer's driver leaks while it plays, and its fix.
+    driver_banner: Option<String>,
 }
 
 impl TetherApp {
@@ -71,7 +73,8 @@ impl TetherApp {
             panel.note_error(note);
         }
         let frame_cap = super::renderer::FrameCap::for_adapter(options.max_fps, adapter.as_ref());
-        let mut app = Self { panel, viewer, selection, connect: options.connect, frame_cap, backlog };
+        let driver_banner = adapter.as_ref().and_then(super::renderer::leak_banner);
+        let mut app = Self { panel, viewer, selection, connect: options.connect, frame_cap, backlog, driver_banner };
         if let Some(recording) = &options.recording {
             app.open_recording(recording);
         }
@@ -226,6 +229,12 @@ impl eframe::App for TetherApp {
         if self.panel.sweep().is_some() {
             egui::Panel::bottom("tether_sweep").resizable(true).default_size(300.0).show(ui, |ui| {
                 self.panel.sweep_ui(ui);
+            });
+        }
+        if let Some(banner) = &self.driver_banner {
+            egui::Panel::top("tether_driver_banner").show(ui, |ui| {
+                let text = egui::RichText::new(banner).color(ui.visuals().warn_fg_color).strong();
+                ui.add(egui::Label::new(text).wrap().selectable(true));
             });
         }
         match (&mut self.viewer, &self.connect) {

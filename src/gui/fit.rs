@@ -6,6 +6,9 @@
 //! viewer; at the end each fitted knob shows its value and 95 % interval. "Apply" keeps the
 //! values, "Revert" puts the file's back.
 //!
+//! Each scene opened in the window keeps its own fit state ([`SceneFits`]): a record mapped to
+//! one scene's couplings never reaches another's.
+//!
 //! The state ([`FitDraft`]) and what is fittable ([`fittables`], [`signals`]) have no egui in
 //! them; [`ui`] draws them and returns [`FitAction`]s, which the panel carries out, and the panel
 //! takes the fit's news as [`FitUpdate`]s ([`FitDraft::poll`]).
@@ -17,8 +20,8 @@ use super::line_plot::{self, Framed};
 use super::number_field::number_field;
 use super::open_scene::{KnobId, OpenScene};
 use super::simulation::{Curve, Wake};
+use crate::figures;
 use crate::fit::measured::Record;
-use crate::fit::report::number;
 use crate::fit::run::{self, Fitted, Outcome, Progress};
 use crate::fit::setup::{Setup, SetupError};
 use crate::fit::solver::Ending;
@@ -27,7 +30,7 @@ use crate::quantity::{Axis, End, EnergyPart, Quantity, Turn};
 use crate::runner::{Runner, all_cores};
 use crate::sweep::spec::PathsDef;
 use rerun::external::egui;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -332,6 +335,38 @@ pub enum FitUpdate {
     Ended { text: String, error: bool },
 }
 
+/// The fit state of each scene opened in the window but the open one, by its file, and which
+/// scene the panel's [`FitDraft`] belongs to: each scene's record, columns and ticks are its own.
+#[derive(Default)]
+pub struct SceneFits {
+    owner: Option<PathBuf>,
+    others: HashMap<PathBuf, FitDraft>,
+}
+
+impl SceneFits {
+    /// The panel's `draft` becomes scene `to`'s (of `fittables` and `signals`): a fit running
+    /// stops; the draft of the scene it belonged to is kept, and `to`'s own taken back (empty
+    /// for a scene not opened before; the same draft for the same file, loaded again). Returns
+    /// what of it the scene no longer takes ([`FitDraft::keep_to`]).
+    pub fn switch(
+        &mut self,
+        draft: &mut FitDraft,
+        to: &Path,
+        fittables: &[Fittable],
+        signals: &[Quantity],
+    ) -> Vec<String> {
+        draft.scene_changed();
+        if self.owner.as_deref() != Some(to) {
+            let own = self.others.remove(to).unwrap_or_default();
+            let previous = std::mem::replace(draft, own);
+            if let Some(owner) = self.owner.replace(to.to_path_buf()) {
+                self.others.insert(owner, previous);
+            }
+        }
+        draft.keep_to(fittables, signals)
+    }
+}
+
 /// What became of a fit's values.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Decision {
@@ -396,6 +431,8 @@ pub struct FitDraft {
     pub window: (f64, f64),
     /// Why the last choices could not be fitted, or the record read.
     pub refusal: Option<String>,
+    /// A refusal not yet scrolled into view.
+    reveal: bool,
     pub session: Option<Session>,
 }
 
@@ -428,6 +465,12 @@ impl FitDraft {
         }
     }
 
+    /// Says why the choices cannot be fitted (or the record read), in view at the next frame.
+    pub fn refuse(&mut self, why: String) {
+        self.refusal = Some(why);
+        self.reveal = true;
+    }
+
     /// Whether a fit is running.
     pub fn running(&self) -> bool {
         self.session.as_ref().is_some_and(|s| s.worker.is_some())
@@ -436,6 +479,30 @@ impl FitDraft {
     /// A new scene: a fit running stops; the record, the columns' signals and the ticks stay.
     pub fn scene_changed(&mut self) {
         self.session = None;
+    }
+
+    /// The choices the scene of `fittables` and `signals` cannot take dropped: a column mapped
+    /// to a signal it lacks goes back to unused, a knob it lacks is unticked. Returns each, said
+    /// as the log says it.
+    pub fn keep_to(&mut self, fittables: &[Fittable], signals: &[Quantity]) -> Vec<String> {
+        let mut dropped = Vec::new();
+        let columns = self.record.as_ref().map_or(&[][..], |record| record.columns.as_slice());
+        for (column, of) in columns.iter().zip(&mut self.mapping) {
+            if let Some(signal) = of.take_if(|signal| !signals.contains(signal)) {
+                dropped.push(format!(
+                    "fit: column \"{column}\" unmapped ({} is not in this scene)",
+                    signal_label(&signal)
+                ));
+            }
+        }
+        self.ticked.retain(|path, _| {
+            let kept = fittables.iter().any(|f| &f.path == path);
+            if !kept {
+                dropped.push(format!("fit: {path} unticked (not in this scene)"));
+            }
+            kept
+        });
+        dropped
     }
 
     /// The fit of `open` (the scene as it runs) with the choices made, checked by the fit's
@@ -657,20 +724,35 @@ fn status(summary: &Summary) -> String {
     )
 }
 
+/// A fitted or fitting value as the panel writes numbers: six significant digits
+/// ([`figures::number`]).
+fn number(x: f64) -> String {
+    figures::number(x, 6)
+}
+
+/// `x` in `unit` as the panel writes quantities (`130.002 N/m`, `66.2 kN`), and a pure number
+/// bare (`1.60604`, not `1.60604 –`).
+fn amount(x: f64, unit: &str) -> String {
+    if unit == "–" || unit.is_empty() { number(x) } else { figures::quantity(x, unit, 6) }
+}
+
 /// `spring: stiffness k = 130.002 (95 % 129.9 … 130.1)` for each parameter.
 fn values_line(summary: &Summary) -> String {
-    let each: Vec<String> = summary.parameters.iter().map(|p| format!("{} = {}", p.name, interval_text(p))).collect();
+    let each: Vec<String> =
+        summary.parameters.iter().map(|p| format!("{} = {}", p.name, interval_text(p, ""))).collect();
     each.join(", ")
 }
 
-/// `130.002 (95 % 129.9 … 130.1)`, or `… (not determined by the data)`.
-fn interval_text(fitted: &Fitted) -> String {
+/// `130.002 (95 % 129.9 … 130.1)`, or `… (not determined by the data)`; with `unit` after the
+/// value and each end of the interval when it is given (`130.002 N/m (95 % 129.9 N/m … 130.1
+/// N/m)`).
+fn interval_text(fitted: &Fitted, unit: &str) -> String {
     let interval = match fitted.interval {
-        Some((lo, hi)) => format!("95 % {} … {}", number(lo), number(hi)),
+        Some((lo, hi)) => format!("95 % {} … {}", amount(lo, unit), amount(hi, unit)),
         None => "not determined by the data".into(),
     };
     let bound = if fitted.at_bound { ", at a bound" } else { "" };
-    format!("{} ({interval}{bound})", number(fitted.value))
+    format!("{} ({interval}{bound})", amount(fitted.value, unit))
 }
 
 /// The knob's other interval, for a residual that is correlated model error (another code's
@@ -678,9 +760,9 @@ fn interval_text(fitted: &Fitted) -> String {
 fn correlated_text(fitted: &Fitted, unit: &str) -> String {
     match fitted.correlated_interval {
         Some((lo, hi)) => format!(
-            "95 % {} … {} {unit} if the residual is correlated model error rather than white noise",
-            number(lo),
-            number(hi)
+            "95 % {} … {} if the residual is correlated model error rather than white noise",
+            amount(lo, unit),
+            amount(hi, unit)
         ),
         None => "not determined by the data".into(),
     }
@@ -693,10 +775,13 @@ pub fn ui(ui: &mut egui::Ui, draft: &mut FitDraft, fittables: &[Fittable], signa
     egui::CollapsingHeader::new("Fit to a record").id_salt("fit").default_open(false).show(ui, |ui| {
         let running = draft.running();
         ui.add_enabled_ui(!running, |ui| choices_ui(ui, draft, fittables, signals, &mut actions));
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
+            let why_not =
+                if running { "a fit is running" } else { "open a record first: the fit compares the run with it" };
             if ui
                 .add_enabled(!running && draft.record.is_some(), egui::Button::new("Fit"))
                 .on_hover_text("Fit the ticked knobs to the record (tether fit), from their values now")
+                .on_disabled_hover_text(why_not)
                 .clicked()
             {
                 actions.push(FitAction::Start);
@@ -708,9 +793,17 @@ pub fn ui(ui: &mut egui::Ui, draft: &mut FitDraft, fittables: &[Fittable], signa
             {
                 actions.push(FitAction::Stop);
             }
+            if draft.record.is_none() {
+                ui.weak("open a record (above) to fit");
+            }
         });
         if let Some(refusal) = &draft.refusal {
-            ui.colored_label(ui.visuals().error_fg_color, refusal);
+            let text = egui::RichText::new(refusal).color(ui.visuals().error_fg_color);
+            let shown = ui.add(egui::Label::new(text).wrap());
+            // Where the eye is: the Fit button may sit at the panel's bottom edge.
+            if std::mem::take(&mut draft.reveal) {
+                shown.scroll_to_me(None);
+            }
         }
         if let Some(session) = &draft.session {
             session_ui(ui, session, &mut actions);
@@ -735,13 +828,15 @@ fn choices_ui(
         match &draft.record {
             Some(record) => {
                 let name = record.path.file_name().map_or_else(String::new, |n| n.to_string_lossy().into_owned());
-                ui.label(format!(
-                    "{name}: {} column(s), {} to {} s",
+                let summary = format!(
+                    "{name}: {} column{}, {} to {}",
                     record.columns.len(),
-                    record.span.0,
-                    record.span.1
-                ))
-                .on_hover_text(record.path.display().to_string());
+                    if record.columns.len() == 1 { "" } else { "s" },
+                    number(record.span.0),
+                    figures::quantity(record.span.1, "s", 6)
+                );
+                // Wrapped: a long file name must not widen the panel and push the viewer.
+                ui.add(egui::Label::new(summary).wrap()).on_hover_text(record.path.display().to_string());
             }
             None => {
                 ui.weak("no record");
@@ -772,7 +867,7 @@ fn choices_ui(
             if ui.checkbox(&mut on, &fittable.label).changed() {
                 draft.tick(fittable, on);
             }
-            ui.weak(format!("{} {}", number(fittable.value), fittable.unit));
+            ui.weak(amount(fittable.value, fittable.unit));
         });
         if let Some(bounds) = draft.ticked.get_mut(&fittable.path) {
             ui.horizontal(|ui| {
@@ -809,8 +904,10 @@ fn session_ui(ui: &mut egui::Ui, session: &Session, actions: &mut Vec<FitAction>
         }
         (None, Some(latest)) => {
             ui.label(format!(
-                "fitting: iteration {}, cost {:.4e}, {} runs",
-                latest.iteration, latest.cost, latest.runs
+                "fitting: iteration {}, cost {}, {} runs",
+                latest.iteration,
+                figures::number(latest.cost, 4),
+                latest.runs
             ));
         }
         (Some(Ok(summary)), _) => {
@@ -829,11 +926,11 @@ fn session_ui(ui: &mut egui::Ui, session: &Session, actions: &mut Vec<FitAction>
             ui.label(&target.label);
             match fitted.and_then(|parameters| parameters.get(index)) {
                 Some(parameter) => ui
-                    .label(format!("{} {}", interval_text(parameter), target.unit))
+                    .label(interval_text(parameter, target.unit))
                     .on_hover_text(correlated_text(parameter, target.unit)),
                 None => {
                     let now = session.applied.get(index).copied().unwrap_or(target.value);
-                    ui.label(format!("{} {} (from {})", number(now), target.unit, number(target.value)))
+                    ui.label(format!("{} (from {})", amount(now, target.unit), amount(target.value, target.unit)))
                 }
             };
             ui.end_row();
@@ -868,7 +965,7 @@ fn session_ui(ui: &mut egui::Ui, session: &Session, actions: &mut Vec<FitAction>
 fn cost_plot(ui: &mut egui::Ui, costs: &[(u32, f64)]) {
     let first = costs.first().map_or(0.0, |c| c.1);
     let last = costs.last().map_or(0.0, |c| c.1);
-    ui.label(format!("cost per iteration: {first:.3e} → {last:.3e} (log scale)"));
+    ui.label(format!("cost per iteration: {} → {} (log scale)", figures::number(first, 4), figures::number(last, 4)));
     let points: Vec<(f64, f64)> =
         costs.iter().filter(|c| c.1 > 0.0).map(|&(i, cost)| (f64::from(i), cost.log10())).collect();
     let Some(Framed { painter, line, .. }) = line_plot::frame(ui, &points, 80.0) else {

@@ -88,8 +88,23 @@ pub fn ui(ui: &mut egui::Ui, status: Option<&Status>, history: &EnergyHistory, s
     }
 }
 
+/// The ledger's resolution \[J] for the energies `e` after `exchanged` \[J] moved: 10⁻¹² of its
+/// largest entry (each entry is a sum of terms that size, so it is known to about 10⁻¹⁵ of it;
+/// a margin of a thousand for the sums of a long run).
+fn resolution(e: &EnergyReport, exchanged: f64) -> f64 {
+    let entries = [e.kinetic, e.gravity, e.elastic, e.dissipated, e.external_work, exchanged];
+    1e-12 * entries.iter().fold(0.0_f64, |largest, x| largest.max(x.abs()))
+}
+
+/// `value` \[J] as the panel shows it: 0 below the ledger's `resolution` (an elastic energy of
+/// 1.8×10⁻²⁸ J at rest beside 32 kJ of gravity is round-off, not a figure).
+fn resolved(value: f64, resolution: f64) -> f64 {
+    if value.abs() < resolution { 0.0 } else { value }
+}
+
 fn energy_ui(ui: &mut egui::Ui, status: &Status, history: &EnergyHistory) {
     let e = &status.energy;
+    let resolution = resolution(e, history.largest_exchange());
     ui.strong("Energy balance");
     egui::Grid::new("energy").num_columns(2).show(ui, |ui| {
         for (name, value) in [
@@ -100,7 +115,7 @@ fn energy_ui(ui: &mut egui::Ui, status: &Status, history: &EnergyHistory) {
             ("external work", e.external_work),
         ] {
             ui.label(name);
-            ui.label(figures::quantity(value, "J", 4));
+            ui.label(figures::quantity(resolved(value, resolution), "J", 4));
             ui.end_row();
         }
     });
@@ -146,20 +161,26 @@ fn stability_ui(ui: &mut egui::Ui, status: &Status) {
         if status.substeps == 1 { "" } else { "s" }
     ));
     egui::Grid::new("stability").num_columns(2).show(ui, |ui| {
-        let rotation = status.rotation_limit.iter().map(|(body, dt)| (format!("rotation of {body}"), Some(*dt)));
-        let water = status.water_limits.iter().map(|(body, dt)| (format!("water on {body}"), Some(*dt)));
-        for (name, limit) in status.coupling_limits.iter().cloned().chain(rotation).chain(water) {
+        let substeps = status.line_substeps.iter().copied().chain(std::iter::repeat(None));
+        let couplings = status.coupling_limits.iter().cloned().zip(substeps);
+        let rotation =
+            status.rotation_limit.iter().map(|(body, dt)| ((format!("rotation of {body}"), Some(*dt)), None));
+        let water = status.water_limits.iter().map(|(body, dt)| ((format!("water on {body}"), Some(*dt)), None));
+        for ((name, limit), substeps) in couplings.chain(rotation).chain(water) {
             ui.label(name);
-            match limit {
+            let (color, text) = match limit {
                 Some(dt) => {
                     let (color, verdict) =
                         if status.step_size <= dt { (GREEN, "ok") } else { (RED, "too large: will diverge") };
-                    ui.colored_label(color, format!("{} {verdict}", figures::quantity(dt, "s", 4)));
+                    (color, format!("{} {verdict}", figures::quantity(dt, "s", 4)))
                 }
-                None => {
-                    ui.colored_label(GREEN, "no limit");
-                }
-            }
+                None => (GREEN, "no limit".to_string()),
+            };
+            let text = match substeps {
+                Some(substeps) => format!("{text}; {}", substeps_text(substeps)),
+                None => text,
+            };
+            ui.add(egui::Label::new(egui::RichText::new(text).color(color)).wrap());
             ui.end_row();
         }
         for (name, dt) in &status.impact_limits {
@@ -170,6 +191,19 @@ fn stability_ui(ui: &mut egui::Ui, status: &Status) {
             ui.end_row();
         }
     });
+}
+
+/// What a dynamic line's own nodes step by within each integrator step (PHYSICS.md §8): its
+/// count of sub-steps and their length, `its nodes: 26 sub-steps of 1.923 ms`. The limit beside
+/// it is the bodies' step's (the line's first segments on its end bodies): a line between two
+/// ends that forces do not move sets none, and its nodes still step at their own.
+fn substeps_text((count, length): (u32, f64)) -> String {
+    format!(
+        "its nodes: {} sub-step{} of {}",
+        figures::count(count),
+        if count == 1 { "" } else { "s" },
+        figures::quantity(length, "s", 4)
+    )
 }
 
 /// The body a selected entity path (`world/bodies/<name>` or below) belongs to.
@@ -217,5 +251,28 @@ mod tests {
         assert_eq!(drift_text(1.678e-15, 0.5), "+1.68×10⁻¹⁵ J (+3.36×10⁻¹⁵ of the 500 mJ exchanged)");
         assert_eq!(drift_text(0.0, 0.0), "0 J (no energy exchanged yet)");
         assert_eq!(drift_text(-2.0e-3, 6.9e6), "-2 mJ (-2.9×10⁻¹⁰ of the 6.9 MJ exchanged)");
+    }
+
+    /// Issue 47: `chain_forced_surge`'s dynamic chain read "no limit" (its ends do not respond to
+    /// forces) while its nodes step at their own step: the row says both.
+    #[test]
+    fn a_dynamic_line_says_what_its_nodes_step_by() {
+        assert_eq!(substeps_text((26, 1.923e-3)), "its nodes: 26 sub-steps of 1.923 ms");
+        assert_eq!(substeps_text((1, 0.05)), "its nodes: 1 sub-step of 50 ms");
+    }
+
+    /// Issue 47: moored_buoy at rest showed `elastic 1.756×10⁻²⁸ J` beside 32 kJ of gravity;
+    /// below 10⁻¹² of the ledger's largest entry a figure is round-off and reads 0, above it the
+    /// figure stands (a spring-mass's 0.5 J, a lone 1.8×10⁻²⁸ J with nothing larger beside it).
+    #[test]
+    fn round_off_reads_zero() {
+        let at_rest = EnergyReport { gravity: -3.2e4, elastic: 1.756e-28, ..EnergyReport::default() };
+        let fine = resolution(&at_rest, 0.0);
+        assert!((fine - 3.2e-8).abs() < 1e-22, "{fine}");
+        assert_eq!(resolved(at_rest.elastic, fine), 0.0);
+        assert_eq!(resolved(at_rest.gravity, fine), -3.2e4);
+        assert_eq!(resolved(0.5, resolution(&energy(0.0, 0.5, 0.0), 0.5)), 0.5);
+        let alone = energy(0.0, 1.756e-28, 0.0);
+        assert_eq!(resolved(alone.elastic, resolution(&alone, 0.0)), 1.756e-28);
     }
 }

@@ -144,7 +144,8 @@ impl<D: Clone + PartialEq + Serialize + DeserializeOwned + 'static, R: 'static> 
     /// The draft's edits (its fields that differ from what runs) are tried together, and if
     /// the builder refuses them, one by one: each accepted field goes into `tuned` (a fixed
     /// field applies though another is refused), each refused one stays in the draft with the
-    /// builder's reason. Returns the command that applies what was accepted, if anything was.
+    /// builder's reason. Returns the command that applies what was accepted, if anything was (nothing
+    /// when the draft is what runs).
     pub fn tune(&mut self, index: usize, tuned: &mut SceneFile, bodies: &mut Bodies) -> Option<Command> {
         let group = self.group;
         let knob = self.knobs.get_mut(index)?;
@@ -156,6 +157,11 @@ impl<D: Clone + PartialEq + Serialize + DeserializeOwned + 'static, R: 'static> 
         let mut changed = Vec::new();
         edits(&draft_tree, &running_tree, "", &mut changed);
         knob.refusals.clear();
+        // A field that reports a change without one (a click into a number field) applies, and
+        // logs, nothing: what is logged as applied is what changed.
+        if changed.is_empty() {
+            return None;
+        }
         let build = |tree: &Value, tuned: &SceneFile, bodies: &mut Bodies| {
             let value: D = serde_json::from_value(tree.clone()).ok()?;
             let mut candidate = tuned.clone();

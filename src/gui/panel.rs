@@ -7,7 +7,7 @@
 
 use super::contact_estimator::{self, ImpactDraft, UseEstimate};
 use super::dialogs::{Dialogs, Purpose};
-use super::fit::{self, Decision, FitAction, FitDraft, FitUpdate};
+use super::fit::{self, Decision, FitAction, FitDraft, FitUpdate, SceneFits};
 use super::follow;
 use super::indicators::{self, EnergyHistory};
 use super::knobs::Knob;
@@ -80,8 +80,9 @@ pub struct ControlPanel {
     sweep: Option<SweepTable>,
     /// The statics panel's knobs and last offset curve.
     statics: StaticsDraft,
-    /// The fit panel's record, choices and fit.
+    /// The fit panel's record, choices and fit, of the open scene; the other scenes' in `fits`.
     fit: FitDraft,
+    fits: SceneFits,
     /// The recording played back in the viewer since the scene was closed for it, and the scene
     /// that was closed (to go back to).
     playback: Option<Playback>,
@@ -112,6 +113,7 @@ impl ControlPanel {
             sweep: None,
             statics: StaticsDraft::new(None),
             fit: FitDraft::default(),
+            fits: SceneFits::default(),
             playback: None,
             follow: None,
         })
@@ -216,7 +218,7 @@ impl ControlPanel {
                 let text = format!("opened record {} ({} columns)", path.display(), record.columns.len());
                 self.note(text);
             }
-            Err(error) => self.fit.refusal = Some(error),
+            Err(error) => self.fit.refuse(error),
         }
     }
 
@@ -278,7 +280,10 @@ impl ControlPanel {
         self.impact = ImpactDraft::default();
         self.history = EnergyHistory::default();
         self.statics = StaticsDraft::new(loaded.scene.tuned.seabed.as_ref().map(|s| s.line_friction));
-        self.fit.scene_changed();
+        let (fittables, signals) = (fit::fittables(&loaded.scene.tuned), fit::signals(&loaded.scene.tuned));
+        for dropped in self.fits.switch(&mut self.fit, &loaded.scene.path, &fittables, &signals) {
+            self.note(dropped);
+        }
         self.scene = Some(loaded.scene);
         self.follow = None;
         self.simulation.send(Command::Follow(None));
@@ -602,7 +607,7 @@ impl ControlPanel {
             .and_then(|(setup, targets)| self.fit.launch(setup, targets, self.wake.clone()));
         match launched {
             Ok(measured) => self.simulation.send(Command::ShowFit(measured)),
-            Err(refusal) => self.fit.refusal = Some(refusal),
+            Err(refusal) => self.fit.refuse(refusal),
         }
     }
 

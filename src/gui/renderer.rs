@@ -1,8 +1,9 @@
 //! What the window renders with, and what the viewer may keep (docs/window.md, "Memory").
 //!
 //! - On a software rasterizer (Mesa's lavapipe on a machine without a GPU: a VM, a remote
-//!   desktop, Xvfb) the panel's log says so once, and, below [`FIXED_MESA`], that the driver
-//!   leaks while the viewer plays and how to get the newer one.
+//!   desktop, Xvfb) the panel's log says so once, and, below [`FIXED_MESA`], a banner above the
+//!   viewer says that the driver leaks while the viewer plays and the command that installs the
+//!   newer one ([`leak_banner`]).
 //! - The embedded viewer keeps at most [`LIVE_DATA_BUDGET`] of heap above what the program held
 //!   when it started (counted by Rerun's accounting allocator, `main.rs`): past it, Rerun's viewer
 //!   drops the oldest data of the live run (the `--save` file keeps everything), so a long
@@ -91,6 +92,28 @@ fn note_for(device_type: wgpu::DeviceType, name: &str, driver_info: &str) -> Opt
     }
 }
 
+/// The command that installs the lavapipe that does not leak on Debian 12, from the repository's
+/// folder (what `scripts/run` does before it opens the window).
+pub const FIX_COMMAND: &str = "bash -c 'source scripts/setup.sh && ensure_cpu_vulkan_driver'";
+
+/// The banner the window shows above the viewer for the adapter `info` when its driver leaks
+/// while the viewer plays (Mesa's lavapipe before [`FIXED_MESA`]), in full, with the command
+/// that fixes it; `None` for any other adapter.
+pub fn leak_banner(info: &wgpu::AdapterInfo) -> Option<String> {
+    banner_for(info.device_type, &info.driver_info)
+}
+
+/// [`leak_banner`] for an adapter of type `device_type` whose driver is `driver_info`.
+fn banner_for(device_type: wgpu::DeviceType, driver_info: &str) -> Option<String> {
+    let major = mesa_major(driver_info).filter(|&major| device_type == wgpu::DeviceType::Cpu && major < FIXED_MESA)?;
+    Some(format!(
+        "This window renders on the CPU with Mesa {major}'s lavapipe ({driver_info}), which leaks about 14 MB a \
+         second while the viewer plays (9.5 GB after 9 minutes; docs/window.md, \"Memory\"). Mesa {FIXED_MESA} \
+         does not: close the window, run  {FIX_COMMAND}  in Tether's folder (scripts/run does it for you), and \
+         open it again."
+    ))
+}
+
 /// The major version in a driver description such as `Mesa 22.3.6 (LLVM 15.0.6)`.
 fn mesa_major(driver_info: &str) -> Option<u32> {
     let after = driver_info.split("Mesa ").nth(1)?;
@@ -132,5 +155,17 @@ mod tests {
         assert_eq!(note_for(wgpu::DeviceType::DiscreteGpu, "AMD Radeon", "Mesa 22.3.6"), None);
         assert_eq!(mesa_major("Mesa 22.3.6 (LLVM 15.0.6)"), Some(22));
         assert_eq!(mesa_major("NVIDIA 550.54"), None);
+    }
+
+    /// Issue 47: the leak was said only in a log line cut off mid-sentence; on the leaking
+    /// lavapipe the window has a banner with the command that fixes it, on any other adapter none.
+    #[test]
+    fn the_leaking_lavapipe_gets_a_banner_with_its_fix() {
+        let banner = banner_for(wgpu::DeviceType::Cpu, "Mesa 22.3.6 (LLVM 15.0.6)").unwrap();
+        assert!(banner.contains("Mesa 22's lavapipe (Mesa 22.3.6 (LLVM 15.0.6)), which leaks"), "{banner}");
+        assert!(banner.contains(FIX_COMMAND), "{banner}");
+        assert_eq!(banner_for(wgpu::DeviceType::Cpu, "Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)"), None);
+        assert_eq!(banner_for(wgpu::DeviceType::DiscreteGpu, "Mesa 22.3.6"), None);
+        assert_eq!(banner_for(wgpu::DeviceType::Cpu, "SwiftShader driver"), None);
     }
 }

@@ -32,6 +32,10 @@ pub struct Status {
     pub substeps: u32,
     /// Stable time step of every coupling [s] (`None`: nothing limits it), in scene order.
     pub coupling_limits: Vec<(String, Option<f64>)>,
+    /// Per coupling, in scene order: a dynamic line's own sub-steps, their count in the last
+    /// evaluation's interval and their length [s] (its nodes step by them; PHYSICS.md §8),
+    /// `None` otherwise.
+    pub line_substeps: Vec<Option<(u32, f64)>>,
     /// Per coupling, in scene order: a driven quasi-static line's measures against its
     /// fairlead (`crate::line_hint`: likely wrong quasi-static, or holds), `None` otherwise.
     pub line_hints: Vec<Option<Measures>>,
@@ -131,6 +135,9 @@ pub fn status(world: &World, run: &RunState) -> Status {
             .iter()
             .enumerate()
             .map(|(i, c)| (c.name.clone(), coupling_limit(i)))
+            .collect(),
+        line_substeps: (0..world.couplings().len())
+            .map(|i| world.evaluation().line_run(i).map(|run| run.substeps()))
             .collect(),
         line_hints: (0..world.couplings().len()).map(|i| line_hint::measures(world, i)).collect(),
         rotation_limit,

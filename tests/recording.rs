@@ -50,7 +50,14 @@ fn record_writes_every_entity_once_per_frame() {
     // dt = 0.5 ms, 50 Hz → a frame every 40 steps, 2000 steps: frames at steps 0, 40, …, 2000.
     let frames = 51;
     // Both spring-dampers (tyre, suspension) are strips of the one `world/springs` entity.
-    for entity in ["/world/bodies/car", "/world/bodies/wheel", "/world/springs", "/plots/tension", "/plots/energy"] {
+    for entity in [
+        "/world/bodies/car",
+        "/world/bodies/wheel",
+        "/world/springs",
+        "/plots/tension",
+        "/plots/energy/stored",
+        "/plots/energy/moving",
+    ] {
         assert_eq!(rows.get(entity), Some(&frames), "{entity}: {rows:?}");
     }
     for entity in ["/world", "/world/bodies/car/shape", "/world/bodies/wheel/shape"] {
@@ -537,4 +544,36 @@ fn the_framing_holds_a_free_fall_over_its_first_seconds_and_the_anchors_near_it(
     let (low, high) =
         tether_record::framing::swept_box(&tether_test_support::scene(&text("(3000.0, 0.0, 10.0)")).world);
     assert!((high.x - 0.1).abs() < 1e-9 && (low.x + 0.1).abs() < 1e-9, "{low} {high}: the far anchor is not");
+}
+
+/// The viewer's plots for `scene`: each tab's name and its plots' titles.
+fn tabs_of(scene: &str, columns: &[&str]) -> Vec<(String, Vec<String>)> {
+    let scene = tether_scene::load(&common::repo(scene)).expect("a shipped scene loads");
+    tether_record::layout::plot_tabs(&scene.world, columns)
+        .into_iter()
+        .map(|tab| (tab.name, tab.plots.into_iter().map(|plot| plot.title).collect()))
+        .collect()
+}
+
+#[test]
+fn the_first_plots_are_what_the_scene_is_about_and_every_tab_holds_few() {
+    let moored = tabs_of("scenes/moored_buoy.ron", &[]);
+    let names: Vec<&str> = moored.iter().map(|(name, _)| name.as_str()).collect();
+    assert_eq!(names, ["mooring", "lines", "buoy", "energy"]);
+    assert_eq!(moored[0].1, ["tension [N]", "buoy: elevation, heave [m]", "buoy: roll, pitch [deg]"]);
+    assert_eq!(moored[1].1, ["tension [N]", "catenary end tensions [N]", "grounded length L_B [m]"]);
+    let fender = tabs_of("scenes/fender.ron", &[]);
+    assert_eq!(fender[0].0, "contacts", "{fender:?}");
+    let fit = tabs_of("scenes/spring_mass.ron", &["x"]);
+    assert_eq!(fit[0], ("fit".to_string(), vec!["fit: x".to_string()]));
+    // Every shipped scene: at most four plots a tab, and the energy in its two plots, each
+    // listing only its own series (two entities).
+    for path in tether_test_support::scene_files() {
+        let scene = tether_scene::load(&path).expect("a shipped scene loads");
+        let tabs = tether_record::layout::plot_tabs(&scene.world, &[]);
+        assert!(tabs.iter().all(|tab| (1..=4).contains(&tab.plots.len())), "{}: {tabs:?}", path.display());
+        let energy = tabs.last().expect("the energy tab");
+        let origins: Vec<&str> = energy.plots.iter().map(|plot| plot.origin.as_str()).collect();
+        assert_eq!(origins, [tether_record::paths::ENERGY_STORED, tether_record::paths::ENERGY_MOVING]);
+    }
 }

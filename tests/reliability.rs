@@ -24,7 +24,7 @@ fn recorded_numbers(path: &Path) -> (Vec<f64>, Vec<f32>, usize) {
             for row in chunk.iter_slices::<[f32; 3]>(rerun::Transform3D::descriptor_translation().component) {
                 translations.extend(row.iter().flatten());
             }
-            if chunk.entity_path().to_string() == "/plots/energy" {
+            if chunk.entity_path().to_string() == "/plots/energy/stored" {
                 energy_rows += chunk.num_rows();
             }
         }

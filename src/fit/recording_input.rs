@@ -5,7 +5,7 @@
 //! `sim_time` timeline (seconds; rows without it, and static rows, carry no sample):
 //! - every `Scalars` plot: series `<entity path>/<series name>`, the names being the entity's
 //!   `SeriesLines` names (logged statically by the recorder), e.g. `plots/tension/mooring1`,
-//!   `plots/catenary/chain end2`, `plots/energy/kinetic`, `plots/water/buoy/motion/heave`; a
+//!   `plots/catenary/chain end2`, `plots/energy/moving/kinetic`, `plots/water/buoy/motion/heave`; a
 //!   series without a name is `<entity path>/<index>` (0, 1, … in the row);
 //! - every body's position, the translation of the `Transform3D` of `world/bodies/<name>` (the
 //!   body's G): series `world/bodies/<name>/x`, `…/y`, `…/z`.
@@ -277,7 +277,7 @@ mod tests {
         assert_matches(find(&all, &format!("world/bodies/{BODY}/z")), &kept.times, &kept.z);
         assert_matches(find(&all, &format!("world/bodies/{BODY}/x")), &kept.times, &kept.x);
         assert_matches(find(&all, &format!("plots/tension/{COUPLING}")), &kept.times, &kept.tensions);
-        assert!(names.contains(&"plots/energy/kinetic"), "{names:?}");
+        assert!(names.contains(&"plots/energy/moving/kinetic"), "{names:?}");
         for series in &all {
             assert_eq!(series.times.len(), kept.times.len(), "{}", series.name);
             assert!(series.times.windows(2).all(|w| w[0] < w[1]), "{}: times increase", series.name);

@@ -216,7 +216,7 @@ pub fn last_sim_time(path: &Path) -> f64 {
 pub fn sim_time_in(stores: &BTreeMap<rerun::StoreId, rerun::ChunkStore>) -> f64 {
     let mut last = 0.0_f64;
     for store in stores.values() {
-        for chunk in store.iter_physical_chunks().filter(|c| c.entity_path().to_string() == "/plots/energy") {
+        for chunk in store.iter_physical_chunks().filter(|c| c.entity_path().to_string() == "/plots/energy/stored") {
             if let Some(column) = chunk.timelines().get(&"sim_time".into()) {
                 last = last.max(column.times_raw().iter().copied().max().unwrap_or(0) as f64 * 1e-9);
             }

@@ -1,10 +1,8 @@
-//! How the viewer lays out a run: the 3D scene large on the left, the plots stacked on the
-//! right (a fit's plots first, twice as tall as the others; the energy in two plots, stored and
-//! moving; the couplings' tensions — a contact's normal force named as such; the catenaries' end tensions, their
-//! grounded lengths on a seabed, and the contacts' forces when there are any; each floating
-//! body's motion in the water, and a potential-flow body's radiation force and excitation); the
-//! `sim_time` timeline; the viewer's own side panels folded, room being short beside the control
-//! panel. The 3D view's eye frames what moves
+//! How the viewer lays out a run: the 3D scene large on the left; on the right the plots in
+//! tabs of a few each, tall enough to read, the tab shown first being what the scene is about (a
+//! fit's plots; a mooring's tensions and motions; a fender's contact forces: [`plot_tabs`]), the
+//! rest a click away; the `sim_time` timeline folded to its controls and the viewer's own side
+//! panels folded, room being short beside the control panel. The 3D view's eye frames what moves
 //! ([`crate::framing`]), or follows a body the user chose.
 //!
 //! Rerun's Rust SDK 0.36 builds a 3D view without its eye (its Python SDK has `eye_controls`; the
@@ -18,7 +16,7 @@ use crate::rerun;
 use re_sdk_types::blueprint::archetypes::EyeControls3D;
 use rerun::blueprint::components::{Eye3DKind, PanelState};
 use rerun::blueprint::{
-    Blueprint, BlueprintActivation, BlueprintPanel, ContainerLike, Horizontal, SelectionPanel, Spatial3DView,
+    Blueprint, BlueprintActivation, BlueprintPanel, ContainerLike, Horizontal, SelectionPanel, Spatial3DView, Tabs,
     TimePanel, TimeSeriesView, Vertical,
 };
 use rerun::log::LogMsg;
@@ -58,18 +56,44 @@ impl Camera {
     }
 }
 
-/// The layout of a run of `world` with a fit's plot for each measured column of `columns`
-/// (record and model, [`crate::comparison`]) at the top of the plots, and the blueprint path of
-/// its 3D view (where its eye goes: [`send_layout_with_fits`]).
-pub fn layout_with_fits(world: &World, columns: &[&str]) -> (Blueprint, EntityPath) {
-    let couplings = world.couplings();
-    let mut plots: Vec<ContainerLike> = columns
-        .iter()
-        .map(|column| TimeSeriesView::new(format!("fit: {column}")).with_origin(paths::fit_plot(column)).into())
-        .collect();
-    plots.extend(energy_views());
+/// A plot of the layout: its title (what it shows, with its unit) and the entity whose series
+/// it shows.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plot {
+    pub title: String,
+    pub origin: String,
+}
+
+impl Plot {
+    fn new(title: impl Into<String>, origin: impl Into<String>) -> Self {
+        Self { title: title.into(), origin: origin.into() }
+    }
+}
+
+/// A tab of plots, named for what they are about.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tab {
+    pub name: String,
+    pub plots: Vec<Plot>,
+}
+
+impl Tab {
+    fn new(name: impl Into<String>, plots: Vec<Plot>) -> Self {
+        Self { name: name.into(), plots }
+    }
+}
+
+/// The plots of a run of `world`, in tabs of at most four, the first being the one shown: what
+/// the scene is about. In order, those a scene has: `fit` (a plot per measured column of
+/// `columns`, record and model, [`crate::comparison`]); `mooring` for lines holding floating
+/// bodies (the tensions and each body's heave, and its roll and pitch when it is the only one);
+/// `contacts` (their forces, and the normal forces with any tensions); `lines` (the tensions,
+/// the catenaries' end tensions and grounded lengths; `tensions` for springs alone); a tab per
+/// floating body (elevation and heave, roll and pitch, a potential-flow body's radiation force
+/// and excitation); `energy` (stored; moving). A plot may be in two tabs.
+pub fn plot_tabs(world: &World, columns: &[&str]) -> Vec<Tab> {
     let (mut pulls, mut lines, mut contacts) = (false, false, false);
-    for coupling in couplings {
+    for coupling in world.couplings() {
         match coupling.kind {
             // A spring's tension is in the tension plot.
             CouplingKind::SpringDamper(_) => pulls = true,
@@ -84,45 +108,88 @@ pub fn layout_with_fits(world: &World, columns: &[&str]) -> (Blueprint, EntityPa
         (true, true) => Some("tension, contact normal force [N]"),
         (false, true) => Some("contact normal force [N]"),
         (false, false) => None,
-    };
-    if let Some(name) = forces {
-        plots.push(TimeSeriesView::new(name).with_origin(paths::TENSION).into());
     }
-    if lines {
-        plots.push(TimeSeriesView::new("catenary end tensions [N]").with_origin(paths::CATENARY_PLOT).into());
+    .map(|title| Plot::new(title, paths::TENSION));
+    let floating = floating_bodies(world);
+    let mut tabs = Vec::new();
+    if !columns.is_empty() {
+        let fits = columns.iter().map(|column| Plot::new(format!("fit: {column}"), paths::fit_plot(column))).collect();
+        tabs.push(Tab::new("fit", fits));
     }
-    if lines && world.system().seabed().is_some() {
-        plots.push(TimeSeriesView::new("grounded length L_B [m]").with_origin(paths::SEABED_PLOT).into());
+    if let (true, Some(tension)) = (lines && !floating.is_empty(), &forces) {
+        let mut plots = vec![tension.clone()];
+        plots.extend(floating.iter().map(|body| body.plots[0].clone()));
+        if let [only] = floating.as_slice() {
+            plots.push(only.plots[1].clone());
+        }
+        plots.truncate(4);
+        tabs.push(Tab::new("mooring", plots));
     }
     if contacts {
-        plots.push(TimeSeriesView::new("contact forces [N]").with_origin(paths::CONTACT_PLOT).into());
+        let mut plots = vec![Plot::new("contact forces [N]", paths::CONTACT_PLOT)];
+        plots.extend(forces.clone());
+        tabs.push(Tab::new("contacts", plots));
     }
-    if let Some(stage) = world.system().water() {
-        for floating in &stage.floating {
-            let name = &world.bodies()[floating.body].name;
-            plots.push(
-                TimeSeriesView::new(format!("{name}: elevation, heave [m]"))
-                    .with_origin(paths::water_plot(name, "motion"))
-                    .into(),
-            );
-            plots.push(
-                TimeSeriesView::new(format!("{name}: roll, pitch [deg]"))
-                    .with_origin(paths::water_plot(name, "angles"))
-                    .into(),
-            );
-            if floating.has_potential_data() {
-                for (plot, what) in
-                    [(paths::RADIATION_PLOT, "radiation force"), (paths::EXCITATION_PLOT, "wave excitation")]
-                {
-                    plots.push(
-                        TimeSeriesView::new(format!("{name}: {what} at G [N, N·m]"))
-                            .with_origin(paths::water_plot(name, plot))
-                            .into(),
-                    );
-                }
+    if pulls {
+        let mut plots: Vec<Plot> = forces.into_iter().collect();
+        if lines {
+            plots.push(Plot::new("catenary end tensions [N]", paths::CATENARY_PLOT));
+        }
+        if lines && world.system().seabed().is_some() {
+            plots.push(Plot::new("grounded length L_B [m]", paths::SEABED_PLOT));
+        }
+        tabs.push(Tab::new(if lines { "lines" } else { "tensions" }, plots));
+    }
+    tabs.extend(floating.into_iter().map(|body| Tab::new(body.name, body.plots)));
+    tabs.push(Tab::new("energy", energy_plots()));
+    tabs
+}
+
+/// A floating body's name and plots: elevation and heave, roll and pitch, and a potential-flow
+/// body's radiation force and wave excitation.
+struct FloatingPlots {
+    name: String,
+    plots: Vec<Plot>,
+}
+
+fn floating_bodies(world: &World) -> Vec<FloatingPlots> {
+    let Some(stage) = world.system().water() else { return Vec::new() };
+    let plots = |floating: &tether_physics::water::FloatingBody| {
+        let name = world.bodies()[floating.body].name.clone();
+        let mut plots = vec![
+            Plot::new(format!("{name}: elevation, heave [m]"), paths::water_plot(&name, "motion")),
+            Plot::new(format!("{name}: roll, pitch [deg]"), paths::water_plot(&name, "angles")),
+        ];
+        if floating.has_potential_data() {
+            for (plot, what) in
+                [(paths::RADIATION_PLOT, "radiation force"), (paths::EXCITATION_PLOT, "wave excitation")]
+            {
+                plots.push(Plot::new(format!("{name}: {what} at G [N, N·m]"), paths::water_plot(&name, plot)));
             }
         }
-    }
+        FloatingPlots { name, plots }
+    };
+    stage.floating.iter().map(plots).collect()
+}
+
+/// The energy account (PHYSICS.md §5) in two plots: the stored energies with their total and
+/// the balance, and what moves — kinetic, dissipated, external work. Apart, the kinetic energy
+/// of a moored buoy (kJ) is not a flat line beside a mooring's elastic energy (−6.9 MJ).
+fn energy_plots() -> Vec<Plot> {
+    vec![
+        Plot::new("energy: gravity, elastic, total, balance [J]", paths::ENERGY_STORED),
+        Plot::new("energy: kinetic, dissipated, external work [J]", paths::ENERGY_MOVING),
+    ]
+}
+
+/// The layout of a run of `world` with a fit's plot for each of `columns`: the 3D scene beside
+/// [`plot_tabs`], and the blueprint path of its 3D view (where its eye goes:
+/// [`send_layout_with_fits`]).
+pub fn layout_with_fits(world: &World, columns: &[&str]) -> (Blueprint, EntityPath) {
+    let tabs = plot_tabs(world, columns).into_iter().map(|tab| {
+        let plots = tab.plots.into_iter().map(|plot| TimeSeriesView::new(plot.title).with_origin(plot.origin).into());
+        ContainerLike::from(Vertical::new(plots).with_name(tab.name))
+    });
     let scene: ContainerLike = Spatial3DView::new("scene").with_origin(paths::WORLD).into();
     let scene_path = match &scene {
         ContainerLike::View(view) => view.blueprint_path(),
@@ -131,35 +198,12 @@ pub fn layout_with_fits(world: &World, columns: &[&str]) -> (Blueprint, EntityPa
             unreachable!("a Spatial3DView is a view")
         }
     };
-    // A fit's plots are what a fit is watched by: twice the height of the others.
-    let shares: Vec<f32> = (0..plots.len()).map(|i| if i < columns.len() { 2.0 } else { 1.0 }).collect();
-    let plots = if columns.is_empty() { Vertical::new(plots) } else { Vertical::new(plots).with_row_shares(shares) };
-    let blueprint = Blueprint::new(Horizontal::new([scene, plots.into()]).with_column_shares([3.0, 2.0]))
+    // The first tab is the one shown (egui_tiles opens a tab container on its first child).
+    let blueprint = Blueprint::new(Horizontal::new([scene, Tabs::new(tabs).into()]).with_column_shares([3.0, 2.0]))
         .with_blueprint_panel(BlueprintPanel::from_state(PanelState::Collapsed))
         .with_selection_panel(SelectionPanel::from_state(PanelState::Collapsed))
-        .with_time_panel(TimePanel::new().with_timeline("sim_time"));
+        .with_time_panel(TimePanel::new().with_timeline("sim_time").with_state(PanelState::Collapsed));
     (blueprint, scene_path)
-}
-
-/// The energy account (PHYSICS.md §5) in two plots of `plots/energy`'s series: the stored
-/// energies with their total and the balance, and what moves — kinetic, dissipated, external
-/// work. Apart, the kinetic energy of a moored buoy (kJ) is not a flat line beside a mooring's
-/// elastic energy (−6.9 MJ). Each plot hides the other's series (in the order the energy
-/// track logs them).
-fn energy_views() -> [ContainerLike; 2] {
-    // kinetic, gravity, elastic, dissipated, external_work, total, balance
-    let stored = [false, true, true, false, false, true, true];
-    let moving = stored.map(|shown| !shown);
-    let view = |name: &str, shown: [bool; 7]| -> ContainerLike {
-        TimeSeriesView::new(name)
-            .with_origin(paths::ENERGY)
-            .with_override(paths::ENERGY, &rerun::SeriesLines::new().with_visible_series(shown))
-            .into()
-    };
-    [
-        view("energy: gravity, elastic, total, balance [J]", stored),
-        view("energy: kinetic, dissipated, external work [J]", moving),
-    ]
 }
 
 /// Sends `world`'s [`layout_with_fits`] with its eye at `camera` to the viewer behind `stream`

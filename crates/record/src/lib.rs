@@ -11,8 +11,8 @@
 //!   tension along the line, red: the highest);
 //! - `world/boundaries/<contact>`: static, a contact's planes as patches; `world/anchors`:
 //!   static, every coupling end fixed in the world, as points;
-//! - `plots/energy`: one series each for kinetic, gravity, elastic, dissipated, external_work,
-//!   total and balance \[J], in one plot;
+//! - `plots/energy/stored`: series gravity, elastic, total and balance \[J];
+//!   `plots/energy/moving`: kinetic, dissipated and external_work \[J];
 //! - `plots/tension`: one series per coupling, named after it \[N], in one plot (a catenary's
 //!   series is its larger end tension, a contact's its normal force);
 //! - `plots/catenary`: every catenary's end tensions, series `<name> end1` and `<name> end2` \[N];

@@ -11,7 +11,7 @@
 //! | `world/contacts/<name>` | a contact's face forces |
 //! | `world/boundaries/<name>` | a contact's planes (a ground, a quay wall), each under the first contact against it |
 //! | `world/anchors` | every coupling end fixed in the world |
-//! | `plots/energy` | the energy balance |
+//! | `plots/energy/stored`, `…/moving` | the energy balance: what is stored (gravity, elastic, their total, the balance), what moves (kinetic, dissipated, external work) |
 //! | `plots/tension` | every coupling's tension |
 //! | `plots/catenary` | every catenary's end tensions |
 //! | `plots/catenary/quasi-static/<line>` | a dynamic line's quasi-static end tensions |
@@ -35,8 +35,11 @@ pub const BODIES: &str = "world/bodies";
 pub const SPRINGS: &str = "world/springs";
 /// Every coupling end fixed in the world, as points.
 pub const ANCHORS: &str = "world/anchors";
-/// The energy plot.
-pub const ENERGY: &str = "plots/energy";
+/// The energy balance's stored energies: gravity, elastic, their total with the kinetic, and the
+/// balance.
+pub const ENERGY_STORED: &str = "plots/energy/stored";
+/// The energy balance's moving terms: kinetic, dissipated, external work.
+pub const ENERGY_MOVING: &str = "plots/energy/moving";
 /// Every coupling's tension, one series each.
 pub const TENSION: &str = "plots/tension";
 /// Every catenary's end tensions, two series each.

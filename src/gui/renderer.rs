@@ -83,12 +83,12 @@ fn note_for(device_type: wgpu::DeviceType, name: &str, driver_info: &str) -> Opt
         return None;
     }
     let rendering = format!("the viewer renders on the CPU ({name}, {driver_info}): expect a slow view");
-    match mesa_major(driver_info) {
-        Some(major) if major < FIXED_MESA => Some(format!(
+    match leaking_mesa(device_type, driver_info) {
+        Some(_) => Some(format!(
             "{rendering}; this Mesa's lavapipe leaks memory while playing (docs/window.md, \"Memory\"): \
              scripts/setup.sh installs Mesa {FIXED_MESA} from bookworm-backports (ensure_cpu_vulkan_driver)"
         )),
-        Some(_) | None => Some(rendering),
+        None => Some(rendering),
     }
 }
 
@@ -105,13 +105,19 @@ pub fn leak_banner(info: &wgpu::AdapterInfo) -> Option<String> {
 
 /// [`leak_banner`] for an adapter of type `device_type` whose driver is `driver_info`.
 fn banner_for(device_type: wgpu::DeviceType, driver_info: &str) -> Option<String> {
-    let major = mesa_major(driver_info).filter(|&major| device_type == wgpu::DeviceType::Cpu && major < FIXED_MESA)?;
+    let major = leaking_mesa(device_type, driver_info)?;
     Some(format!(
         "This window renders on the CPU with Mesa {major}'s lavapipe ({driver_info}), which leaks about 14 MB a \
          second while the viewer plays (9.5 GB after 9 minutes; docs/window.md, \"Memory\"). Mesa {FIXED_MESA} \
          does not: close the window, run  {FIX_COMMAND}  in Tether's folder (scripts/run does it for you), and \
          open it again."
     ))
+}
+
+/// The Mesa major version of a CPU adapter's lavapipe that leaks while the viewer plays (below
+/// [`FIXED_MESA`]); `None` for any other adapter or driver.
+fn leaking_mesa(device_type: wgpu::DeviceType, driver_info: &str) -> Option<u32> {
+    mesa_major(driver_info).filter(|&major| device_type == wgpu::DeviceType::Cpu && major < FIXED_MESA)
 }
 
 /// The major version in a driver description such as `Mesa 22.3.6 (LLVM 15.0.6)`.

@@ -493,6 +493,36 @@ fn a_recording_opens_with_its_eye_framing_the_run() {
     }
 }
 
+/// The 3D view's line grid and background in the blueprint of an `.rrd` file: the grid shown
+/// or not, and the background's colour if one is set.
+fn grid_and_sky_in_file(path: &std::path::Path) -> (bool, Option<u32>) {
+    use rerun::external::re_sdk_types::blueprint::archetypes::{Background, LineGrid3D};
+    let mut file = std::fs::File::open(path).unwrap();
+    let stores = rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file).unwrap();
+    let blueprint = stores.values().find(|store| !store.id().is_recording()).expect("a blueprint in the file");
+    let chunk_of = |property: &str| {
+        blueprint.iter_physical_chunks().find(|chunk| chunk.entity_path().to_string().ends_with(property)).cloned()
+    };
+    let grid = chunk_of("/LineGrid3D").expect("the 3D view's grid in the blueprint");
+    let visible = grid.iter_slices::<bool>(LineGrid3D::descriptor_visible().component).next().expect("a value").value(0);
+    let sky = chunk_of("/Background")
+        .map(|chunk| chunk.iter_slices::<u32>(Background::descriptor_color().component).next().expect("a colour")[0]);
+    (visible, sky)
+}
+
+/// Issue 47: a scene at sea hides the viewer's grid (it cut through the sea surface) and draws a
+/// sky to the sea's horizon; a dry scene keeps the grid and the viewer's own background.
+#[test]
+fn a_scene_at_sea_has_a_sky_and_no_grid_through_its_surface() {
+    let (_dir, out) = record("scenes/box_drop.ron", &["--duration", "0.1"]);
+    assert_eq!(grid_and_sky_in_file(&out), (true, None), "box_drop: the grid, the viewer's background");
+    let (_dir, out) = record("scenes/moored_buoy.ron", &["--duration", "0.1"]);
+    let (grid, sky) = grid_and_sky_in_file(&out);
+    assert!(!grid, "moored_buoy: no grid at the water line");
+    // Rerun's colour is 0xRRGGBBAA.
+    assert_eq!(sky, Some(0x60_78_96_ff), "moored_buoy: the sky [96, 120, 150]");
+}
+
 /// `tether record` frames with its own run's steps (`framing::Sweep`) rather than a copy's run:
 /// the same box whether the run outlasts the sweep (6 s of box_drop's crate, which falls and
 /// hops, against a sweep of 5 s), stops inside it (0.3 s, finished on a copy) or has not

@@ -8,13 +8,15 @@
 //! Rerun's Rust SDK 0.36 builds a 3D view without its eye (its Python SDK has `eye_controls`; the
 //! Rust `Spatial3DView` keeps its properties private): the blueprint is built by the SDK as
 //! usual, captured in memory, and sent with the eye's blueprint row added under the view's own
-//! path (`view/<id>/EyeControls3D`, as the SDK writes a property), before the activation.
+//! path (`view/<id>/EyeControls3D`, as the SDK writes a property), before the activation; the
+//! line grid's row beside it (`view/<id>/LineGrid3D`: hidden in a scene with water or a seabed,
+//! whose planes are the references), and for a scene at sea a sky (`view/<id>/Background`).
 
 use crate::framing::Framing;
 use crate::paths;
 use crate::rerun;
-use re_sdk_types::blueprint::archetypes::EyeControls3D;
-use rerun::blueprint::components::{Eye3DKind, PanelState};
+use re_sdk_types::blueprint::archetypes::{Background, EyeControls3D, LineGrid3D};
+use rerun::blueprint::components::{BackgroundKind, Eye3DKind, PanelState};
 use rerun::blueprint::{
     Blueprint, BlueprintActivation, BlueprintPanel, ContainerLike, Horizontal, SelectionPanel, Spatial3DView, Tabs,
     TimePanel, TimeSeriesView, Vertical,
@@ -217,17 +219,34 @@ pub fn send_layout_with_fits(
     if !stream.is_enabled() {
         return Ok(());
     }
-    send(stream, layout_with_fits(world, columns), camera)
+    // The sea surface and the seabed are the scene's own planes: the viewer's grid at z = 0
+    // would cut through the water's surface (and hide in it) and float over the bottom.
+    let grid = world.system().water().is_none() && world.system().seabed().is_none();
+    send(stream, layout_with_fits(world, columns), camera, View { grid, sky: world.system().water().is_some() })
 }
 
-/// Sends `blueprint` to `stream` with `camera`'s eye in its 3D view at `scene_path`, active and
-/// the default: the SDK's own messages (captured from a memory stream of the same application),
-/// the eye's row in the same blueprint store, then the activation (a memory sink's `take`
-/// flushes its stream first).
+/// How the 3D view is drawn beside its eye.
+#[derive(Debug, Clone, Copy)]
+struct View {
+    /// The viewer's line grid at z = 0 shown.
+    grid: bool,
+    /// A sky behind the scene ([`SKY_RGB`]; a scene at sea, whose horizon the sea reaches), or
+    /// the viewer's dark gradient.
+    sky: bool,
+}
+
+/// The sky's colour behind a scene at sea: red, green, blue.
+const SKY_RGB: [u8; 3] = [96, 120, 150];
+
+/// Sends `blueprint` to `stream` with `camera`'s eye in its 3D view at `scene_path`, its line
+/// grid and background as `view` says, active and the default: the SDK's own messages (captured from a
+/// memory stream of the same application), the view's property rows in the same blueprint store,
+/// then the activation (a memory sink's `take` flushes its stream first).
 fn send(
     stream: &RecordingStream,
     (blueprint, scene_path): (Blueprint, EntityPath),
     camera: &Camera,
+    view: View,
 ) -> rerun::RecordingStreamResult<()> {
     let application =
         stream.store_info().map_or_else(|| crate::APPLICATION_ID.into(), |info| info.application_id().clone());
@@ -240,6 +259,12 @@ fn send(
         RecordingStreamBuilder::new(application).recording_id(store.recording_id().clone()).blueprint().memory()?;
     eye.set_time_sequence("blueprint", 0);
     eye.log(format!("{scene_path}/EyeControls3D"), &camera.eye_controls())?;
+    eye.log(format!("{scene_path}/LineGrid3D"), &LineGrid3D::new().with_visible(view.grid))?;
+    if view.sky {
+        let [r, g, b] = SKY_RGB;
+        let sky = Background::new(BackgroundKind::SolidColor).with_color(rerun::Color::from_rgb(r, g, b));
+        eye.log(format!("{scene_path}/Background"), &sky)?;
+    }
     let rows = eye_rows.take().into_iter().filter(|message| matches!(message, LogMsg::ArrowMsg(..)));
     let activation = messages.iter().position(|message| matches!(message, LogMsg::BlueprintActivationCommand(_)));
     let at = activation.unwrap_or(messages.len());

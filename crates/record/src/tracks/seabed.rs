@@ -1,6 +1,7 @@
 //! The seabed and what lies on it (PHYSICS.md §7), for a scene with a seabed:
 //!
-//! - `world/seabed/plane`: the bottom, static, under the bodies and the coupling ends, when the
+//! - `world/seabed/plane`: the bottom, static, under the bodies and the coupling ends and out to
+//!   the horizon, when the
 //!   scene declares a seabed without water (the [`super::water`] track draws it at the water's
 //!   depth);
 //! - `world/seabed/grounded/<line>`: the part of each catenary lying on the bottom, every frame,
@@ -21,10 +22,10 @@ use tether_physics::coupling::{Catenary, CouplingKind, LineModel};
 use tether_physics::math::Vec3;
 use tether_physics::world::World;
 
-/// Sand, for what lies on the bottom; red for the touchdowns; the plane's brown (the water's).
+/// Sand, for what lies on the bottom; red for the touchdowns (the plane is the water's seabed
+/// brown, [`super::water::SEABED_RGB`]).
 const SAND_RGB: [u8; 3] = [214, 170, 80];
 const TOUCHDOWN_RGB: [u8; 3] = [230, 60, 40];
-const PLANE_RGB: [u8; 3] = [150, 130, 100];
 
 /// One line's buffered frames.
 struct Line {
@@ -161,7 +162,8 @@ fn grounded_part(state: &LineState, touchdowns: &[Vec3]) -> Option<[Vec3; 2]> {
     })
 }
 
-/// A square of the bottom under every coupling end and body, 20 % wider (at least 20 m).
+/// A square of the bottom under every coupling end and body, 20 % wider (at least 20 m), and
+/// [`super::water::FAR`] times that: a floor to the horizon.
 fn log_plane(stream: &RecordingStream, world: &World, elevation: f64) -> Result<(), RecordError> {
     let points = world
         .coupling_forces()
@@ -174,9 +176,10 @@ fn log_plane(stream: &RecordingStream, world: &World, elevation: f64) -> Result<
     } else {
         ([0.0, 0.0], 10.0)
     };
+    let far = super::water::FAR * half;
     let corners = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]]
-        .map(|[a, b]| [(center[0] + a * half) as f32, (center[1] + b * half) as f32, elevation as f32]);
-    let [r, g, b] = PLANE_RGB;
+        .map(|[a, b]| [(center[0] + a * far) as f32, (center[1] + b * far) as f32, elevation as f32]);
+    let [r, g, b] = super::water::SEABED_RGB;
     stream.log_static(
         paths::SEABED_PLANE,
         &rerun::Mesh3D::new(corners)

@@ -1,7 +1,9 @@
 //! The water of a run (PHYSICS.md §6):
 //!
 //! - `world/water/surface`: the sea surface, a square grid of [`GRID`]² vertices at the
-//!   elevation the waves give there, around the floating bodies; its triangles and colour are
+//!   elevation the waves give there, around the floating bodies, and past the grid a flat skirt
+//!   at the still-water level out to [`FAR`] times the grid's half side, so the sea reaches the
+//!   view's horizon rather than ending as a square over the seabed; its triangles and colour are
 //!   static, its vertices a row at most every [`SURFACE_PERIOD`] of simulated time while there
 //!   are waves (a calm sea: a row only when its level changes, the first frame included). The
 //!   surface is the costliest entity of a water scene — 12 bytes and one wave evaluation per
@@ -9,10 +11,11 @@
 //!   the physics' cost on the shipped scenes
 //!   (`tether record --timing`) while a wave of the shortest period shipped (8 s) is still drawn
 //!   with a dozen vertices per length and over 150 rows per period;
-//! - `world/water/seabed`: the seabed plane at `z_w − h` under the same square, static, when the
-//!   water has a depth;
+//! - `world/water/seabed`: the seabed plane at `z_w − h` under the whole surface, skirt
+//!   included (a floor to the horizon), static, when the water has a depth;
 //! - `world/water/forces/<body>`: the water's force on each floating body as an arrow from G,
-//!   one body radius long when it equals the body's weight (`m·max(|g|, 1 m/s²)`);
+//!   one body radius long when it equals the body's weight (`m·max(|g|, 1 m/s²)`), labelled
+//!   "water force on <body>";
 //! - `plots/water/<body>/motion`: the wave elevation at the body and its heave (the height of G
 //!   above its start) [m];
 //! - `plots/water/<body>/angles`: its roll and pitch (the turn since t = 0 about the world x and
@@ -39,13 +42,20 @@ use tether_physics::world::World;
 /// Vertices along each side of the surface grid.
 pub const GRID: usize = 24;
 
+/// How far the surface's flat skirt and the seabed reach, in half sides of the grid: far enough
+/// that from any eye the framing chooses their edge lies near the horizon.
+pub const FAR: f64 = 25.0;
+
+/// Vertices of the surface: the grid's, then the skirt's four outer corners.
+const VERTICES: usize = GRID * GRID + 4;
+
 /// Simulated time between two rows of a moving surface [s], at least: at most 40 per second
 /// (at the default 60 frames per second, every other frame).
 pub const SURFACE_PERIOD: f64 = 1.0 / 40.0;
 
 /// Colour of the surface (red, green, blue, alpha), the seabed, the force arrows.
-const SURFACE_RGBA: [u8; 4] = [40, 110, 190, 150];
-const SEABED_RGB: [u8; 3] = [150, 130, 100];
+const SURFACE_RGBA: [u8; 4] = [30, 100, 160, 150];
+pub(super) const SEABED_RGB: [u8; 3] = [105, 92, 70];
 const ARROW_RGB: [u8; 3] = [40, 160, 230];
 
 /// The series of a potential-flow force plot: force and moment about G, world axes.
@@ -55,6 +65,8 @@ pub const FORCE_SERIES: [&str; 6] = ["Fx [N]", "Fy [N]", "Fz [N]", "Mx [N·m]", 
 struct Floating {
     body: usize,
     force_path: String,
+    /// The arrow's label in the 3D view ("water force on buoy").
+    force_label: String,
     motion_path: String,
     angles_path: String,
     /// Its radiation and excitation plots, if it has potential-flow data.
@@ -100,6 +112,7 @@ impl WaterTrack {
                 Floating {
                     body: f.body,
                     force_path: paths::water_force(name),
+                    force_label: format!("water force on {name}"),
                     motion_path: paths::water_plot(name, "motion"),
                     angles_path: paths::water_plot(name, "angles"),
                     potential_paths: f.has_potential_data().then(|| {
@@ -176,8 +189,17 @@ impl WaterTrack {
             };
             self.surface.extend([x as f32, y as f32, height]);
         }
+        for [x, y] in self.far_corners() {
+            self.surface.extend([x as f32, y as f32, level as f32]);
+        }
         self.surface_frames.push(frame);
-        GRID * GRID * 3 * 4
+        VERTICES * 3 * 4
+    }
+
+    /// `(x, y)` [m] of the skirt's outer corners, counter-clockwise from `(−, −)`.
+    fn far_corners(&self) -> [[f64; 2]; 4] {
+        let far = FAR * self.half;
+        [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]].map(|[a, b]| [self.center[0] + a * far, self.center[1] + b * far])
     }
 }
 
@@ -187,14 +209,14 @@ impl Track for WaterTrack {
         stream.log_static(
             paths::WATER_SURFACE,
             &rerun::Mesh3D::update_fields()
-                .with_triangle_indices(grid_triangles().map(|[a, b, c]| rerun::datatypes::UVec3D::new(a, b, c)))
+                .with_triangle_indices(
+                    grid_triangles().chain(skirt_triangles()).map(|[a, b, c]| rerun::datatypes::UVec3D::new(a, b, c)),
+                )
                 .with_albedo_factor(rerun::datatypes::Rgba32::from_unmultiplied_rgba(r, g, b, a)),
         )?;
         if let Some(seabed) = world.system().water().and_then(|stage| stage.water.seabed()) {
             let [r, g, b] = SEABED_RGB;
-            let corners = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]].map(|[a, b]| {
-                [(self.center[0] + a * self.half) as f32, (self.center[1] + b * self.half) as f32, seabed as f32]
-            });
+            let corners = self.far_corners().map(|[x, y]| [x as f32, y as f32, seabed as f32]);
             stream.log_static(
                 paths::SEABED,
                 &rerun::Mesh3D::new(corners)
@@ -209,7 +231,10 @@ impl Track for WaterTrack {
         for floating in &self.floating {
             stream.log_static(
                 floating.force_path.as_str(),
-                &rerun::Arrows3D::update_fields().with_colors([rerun::Color::from_rgb(r, g, b)]),
+                &rerun::Arrows3D::update_fields()
+                    .with_colors([rerun::Color::from_rgb(r, g, b)])
+                    .with_labels([floating.force_label.as_str()])
+                    .with_show_labels(true),
             )?;
             stream.log_static(
                 floating.motion_path.as_str(),
@@ -267,7 +292,7 @@ impl Track for WaterTrack {
             let surface = column(
                 rerun::Mesh3D::descriptor_vertex_positions(),
                 flat_floats::<3>(std::mem::take(&mut self.surface)),
-                std::iter::repeat_n(GRID * GRID, self.surface_frames.len()),
+                std::iter::repeat_n(VERTICES, self.surface_frames.len()),
             );
             let times = frames.columns_of(self.surface_frames.iter().copied());
             send_chunk(stream, paths::WATER_SURFACE, times, vec![surface], sent)?;
@@ -345,4 +370,53 @@ fn grid_triangles() -> impl Iterator<Item = [u32; 3]> {
             [[index(i, j), index(i + 1, j), index(i + 1, j + 1)], [index(i, j), index(i + 1, j + 1), index(i, j + 1)]]
         })
     })
+}
+
+/// The skirt from the grid's edge to its four outer corners (vertices `GRID²` to `GRID² + 3`,
+/// counter-clockwise from `(−, −)`), counter-clockwise seen from above: per side, a fan from
+/// the outer corner at its start over the side's grid vertices, closed by the triangle of that
+/// corner, the next, and the side's last grid vertex.
+fn skirt_triangles() -> impl Iterator<Item = [u32; 3]> {
+    let last = GRID - 1;
+    let index = |(i, j): (usize, usize)| (j * GRID + i) as u32;
+    let corner = |k: usize| (GRID * GRID + k % 4) as u32;
+    // Grid vertex k of each side, walking counter-clockwise seen from above: y = min, x = max,
+    // y = max, x = min.
+    let side = move |s: usize, k: usize| match s {
+        0 => (k, 0),
+        1 => (last, k),
+        2 => (last - k, last),
+        _ => (0, last - k),
+    };
+    (0..4).flat_map(move |s| {
+        (0..last)
+            .map(move |k| [corner(s), index(side(s, k + 1)), index(side(s, k))])
+            .chain(std::iter::once([corner(s), corner(s + 1), index(side(s, last))]))
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The grid's and the skirt's triangles tile the far square once: every one counter-clockwise
+    /// seen from above, their areas summing to the square's (a gap or an overlap would not).
+    #[test]
+    fn the_surface_and_its_skirt_tile_the_far_square() {
+        let half = 10.0;
+        let step = 2.0 * half / (GRID - 1) as f64;
+        let far = FAR * half;
+        let mut vertices: Vec<[f64; 2]> =
+            (0..GRID * GRID).map(|n| [-half + (n % GRID) as f64 * step, -half + (n / GRID) as f64 * step]).collect();
+        vertices.extend([[-far, -far], [far, -far], [far, far], [-far, far]]);
+        let mut total = 0.0;
+        for [a, b, c] in grid_triangles().chain(skirt_triangles()) {
+            let [a, b, c] = [a, b, c].map(|i| vertices[i as usize]);
+            let area = 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]));
+            assert!(area > 0.0, "triangle {a:?} {b:?} {c:?} is counter-clockwise seen from above: {area}");
+            total += area;
+        }
+        let square = (2.0 * far) * (2.0 * far);
+        assert!((total - square).abs() <= 1e-9 * square, "{total} m² against the square's {square} m²");
+    }
 }

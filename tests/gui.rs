@@ -1036,6 +1036,37 @@ fn long_lines_wrap_the_log_is_newest_first_and_rows_stay_put() {
     assert_eq!(speed_row(&harness), paused, "the rows below the pace stay where they were");
 }
 
+/// Issue 47: a record with a long file name and a long column name opened in the fit panel
+/// wraps its summary and its mapping row inside the side panel instead of widening it (it
+/// widened by about 20 points and pushed the viewer).
+#[test]
+fn a_long_record_name_and_column_wrap_in_the_fit_panel() {
+    let dir = scenes_folder(&[("spring.ron", SPRING.as_str())]);
+    let column = "x_measured_by_the_laser_displacement_sensor_mounted_on_the_carriage_in_metres";
+    let csv = std::fs::read_to_string(spring_record(dir.path(), 130.0)).unwrap().replacen("x_measured", column, 1);
+    let record = dir.path().join(format!("{}.csv", "tank_test_2026_decay_run_with_a_long_name_".repeat(3)));
+    std::fs::write(&record, csv).unwrap();
+    let mut harness = Harness::builder().with_size([1200.0, 1400.0]).build_ui_state(
+        |ui, panel: &mut ControlPanel| {
+            let width = panel.side_panel(ui, None);
+            ui.data_mut(|d| d.insert_temp(egui::Id::new("side width"), width));
+        },
+        panel(dir.path()),
+    );
+    let width = |harness: &Harness<'_, ControlPanel>| {
+        harness.ctx.data(|d| d.get_temp::<f32>(egui::Id::new("side width"))).expect("the panel's width")
+    };
+    open_from_list(&mut harness, "spring.ron");
+    harness.get_by_label("Fit to a record").click();
+    harness.run_steps(2);
+    let before = width(&harness);
+    harness.state_mut().open_record(&record);
+    harness.run_steps(3);
+    harness.get_by_label_contains("_long_name_.csv: 1 column");
+    harness.get_by_label(column);
+    assert_eq!(width(&harness), before, "the panel keeps its width ({before})");
+}
+
 /// The tracking entity of the 3D view's eye in each blueprint of the recording `path` (`None`
 /// for an eye that frames the run).
 fn eye_tracking_in(path: &Path) -> Vec<Option<String>> {

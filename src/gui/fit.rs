@@ -847,8 +847,9 @@ fn choices_ui(
         ui.label("Each column is the model signal:");
         for (index, (column, of)) in record.columns.iter().zip(&mut draft.mapping).enumerate() {
             let shown = of.as_ref().map_or_else(|| "not used".to_string(), signal_label);
-            ui.horizontal(|ui| {
-                let name = ui.label(column);
+            // Wrapped: a long column name breaks over lines, its choice goes to the next one.
+            ui.horizontal_wrapped(|ui| {
+                let name = ui.add(egui::Label::new(column).wrap());
                 let choice =
                     egui::ComboBox::from_id_salt(("fit column", index)).selected_text(shown).show_ui(ui, |ui| {
                         ui.selectable_value(&mut *of, None, "not used");

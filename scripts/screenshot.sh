@@ -5,7 +5,8 @@
 #   scripts/screenshot.sh SCENE OUT.png [SECONDS] [WIDTHxHEIGHT]
 #   scripts/screenshot.sh scenes/moored_buoy.ron screenshots/gui_moored_buoy.png 20 1600x1000
 # KEYS="..." (xdotool key names) are pressed after play starts; MOUSE="X Y" puts the pointer
-# there before the capture (a hover's tooltip); BINARY picks another build.
+# there before the capture (a hover's tooltip; default the top left corner, where it shows
+# none); BINARY picks another build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ $# -ge 2 ] || { sed -n 2,7p "$0" >&2; exit 2; }
@@ -35,10 +36,8 @@ sleep 5
 xdotool windowfocus --sync "$window" key space
 for key in ${KEYS:-}; do xdotool key "$key"; sleep 0.5; done
 sleep "$seconds"
-if [ -n "${MOUSE:-}" ]; then
-    # shellcheck disable=SC2086 # two coordinates
-    xdotool mousemove $MOUSE
-    sleep 1
-fi
+# shellcheck disable=SC2086 # two coordinates
+xdotool mousemove ${MOUSE:-0 0}
+sleep 1
 import -window root "$out"
 echo "$out: $scene after $seconds s of play at $size"

@@ -775,3 +775,21 @@ fn rao_prints_the_natural_periods_at_the_equilibrium() {
     assert!((with_infinite - library).abs() <= 5e-4, "{with_infinite} against {library}");
     assert!((with_infinite / 29.155 - 1.0).abs() < 0.015, "{with_infinite}");
 }
+
+/// Issue 47: the scene the window opens by default is right by its own hint — no line of it is
+/// a quasi-static one the hint says is likely wrong (its chains are dynamic) — while the same
+/// buoy on catenaries, `moored_buoy`, is flagged on every chain (T₁ ≈ 9.4 s against the wave's
+/// 8 s), which is why the default is the dynamic one.
+#[test]
+fn the_default_scene_is_right_by_its_own_line_hint() {
+    let flagged = |scene: &str| {
+        let world = tether_scene::load(&common::repo(scene)).unwrap().world;
+        (0..world.couplings().len())
+            .filter(|&index| tether::line_hint::measures(&world, index).is_some_and(|m| m.suggests_dynamic()))
+            .count()
+    };
+    let help = String::from_utf8_lossy(&tether(&["gui", "--help"]).stdout).into_owned();
+    assert!(help.contains("default: scenes/buoy_on_dynamic_chains.ron"), "{help}");
+    assert_eq!(flagged("scenes/buoy_on_dynamic_chains.ron"), 0, "the default scene flags nothing");
+    assert_eq!(flagged("scenes/moored_buoy.ron"), 3, "the quasi-static buoy flags its three chains");
+}

@@ -504,7 +504,8 @@ fn grid_and_sky_in_file(path: &std::path::Path) -> (bool, Option<u32>) {
         blueprint.iter_physical_chunks().find(|chunk| chunk.entity_path().to_string().ends_with(property)).cloned()
     };
     let grid = chunk_of("/LineGrid3D").expect("the 3D view's grid in the blueprint");
-    let visible = grid.iter_slices::<bool>(LineGrid3D::descriptor_visible().component).next().expect("a value").value(0);
+    let visible =
+        grid.iter_slices::<bool>(LineGrid3D::descriptor_visible().component).next().expect("a value").value(0);
     let sky = chunk_of("/Background")
         .map(|chunk| chunk.iter_slices::<u32>(Background::descriptor_color().component).next().expect("a colour")[0]);
     (visible, sky)

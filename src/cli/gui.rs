@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use {anyhow::Context as _, tether::gui::GuiOptions};
 
 /// Opened when `tether` runs with no scene, if it exists (relative to the working folder).
-const DEFAULT_SCENE: &str = "scenes/moored_buoy.ron";
+const DEFAULT_SCENE: &str = "scenes/buoy_on_dynamic_chains.ron";
 
 /// Listed in the window's scene list.
 #[cfg(feature = "gui")]
@@ -17,7 +17,7 @@ const SCENES_DIR: &str = "scenes";
 
 #[derive(Debug, Default, Args)]
 pub struct GuiArgs {
-    /// Scene file (.ron) or MoorDyn input file to open (default: scenes/moored_buoy.ron when there is one).
+    /// Scene file (.ron) or MoorDyn input file to open (default: scenes/buoy_on_dynamic_chains.ron when there is one).
     scene: Option<PathBuf>,
     /// Stream to the external Rerun viewer at this URL instead of the embedded one
     /// (e.g. rerun+http://127.0.0.1:9876/proxy).

@@ -137,6 +137,14 @@ const BOUNDS: &[Bounds] = &[
         regions: &[region("buoy", [-3.60, -0.01, -1.15], [5.097 + 1e-6, 0.01, 0.82])],
         balance_budget: 620.0,
     },
+    // moored_buoy on dynamic chains: their drag damps the swing back to x = −0.83 m; heaves 0.93 m
+    // below and 1.01 m above its rest (z = −0.203 m). Measured drift 698 J, 0.10 % of the energy
+    // the run moves (the stated_numbers test holds the fraction).
+    Bounds {
+        scene: "buoy_on_dynamic_chains.ron",
+        regions: &[region("buoy", [-0.84, -0.01, -1.20], [5.097 + 1e-6, 0.01, 0.85])],
+        balance_budget: 850.0,
+    },
     // b swings between x = 18.6 and 22.9 m on the chain and its rope, a moves 0.25 m; z held.
     // Conservative: measured drift 1.9 mJ of the 2.6 kJ of motion.
     Bounds {

@@ -324,6 +324,32 @@ fn moored_buoy() {
     checks.done();
 }
 
+/// buoy_on_dynamic_chains (the window's default scene): moored_buoy on 20-segment dynamic
+/// chains; the fairlead tensions over 30–60 s, the swing and heave, the balance.
+#[test]
+fn buoy_on_dynamic_chains() {
+    let mut checks = Checks::default();
+    let s = run(&mut world("buoy_on_dynamic_chains", &[]), 60.0);
+    let late = between(&s, 30.0, 60.0);
+    // The fairlead is each chain's end 2, on the buoy.
+    let fairlead = |line: usize| move |s: &Sample| s.forces[line].1.norm() / 1e3;
+    checks.close("mooring1 peak [kN]", max_of(late, fairlead(0)), 39.5, 0.05);
+    checks.close("mooring2 peak [kN]", max_of(late, fairlead(1)), 47.9, 0.05);
+    checks.close("mooring3 peak [kN]", max_of(late, fairlead(2)), 47.9, 0.05);
+    checks.close("mooring2 minimum [kN]", min_of(late, fairlead(1)), 21.9, 0.05);
+    let p = |i: usize| move |s: &Sample| s.states[0].position[i];
+    let rest_z = -0.2034;
+    checks.close("swings back to x [m]", min_of(&s, p(0)), -0.83, 0.005);
+    checks.close("heave below its rest [m]", min_of(between(&s, 20.0, 60.0), p(2)) - rest_z, -0.93, 0.005);
+    checks.close("heave above its rest [m]", max_of(between(&s, 20.0, 60.0), p(2)) - rest_z, 1.01, 0.005);
+    let exchanged = max_of(&s, |x| (x.energy.external_work - s[0].energy.external_work).abs())
+        .max(max_of(&s, |x| x.energy.dissipated));
+    checks.close("balance drift over the energy moved [%]", 100.0 * balance_drift(&s) / exchanged, 0.10, 0.005);
+    let dissipated: Vec<f64> = s.iter().map(|x| x.energy.dissipated).collect();
+    assert!(dissipated.windows(2).all(|w| w[1] >= w[0]), "dissipated never falls");
+    checks.done();
+}
+
 /// crane: the static rope, the swing after the trolley stops, the peak tension and its ringing.
 #[test]
 fn crane() {

@@ -199,7 +199,8 @@ impl WaterTrack {
     /// `(x, y)` [m] of the skirt's outer corners, counter-clockwise from `(−, −)`.
     fn far_corners(&self) -> [[f64; 2]; 4] {
         let far = FAR * self.half;
-        [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]].map(|[a, b]| [self.center[0] + a * far, self.center[1] + b * far])
+        [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]]
+            .map(|[a, b]| [self.center[0] + a * far, self.center[1] + b * far])
     }
 }
 
@@ -389,9 +390,11 @@ fn skirt_triangles() -> impl Iterator<Item = [u32; 3]> {
         _ => (0, last - k),
     };
     (0..4).flat_map(move |s| {
-        (0..last)
-            .map(move |k| [corner(s), index(side(s, k + 1)), index(side(s, k))])
-            .chain(std::iter::once([corner(s), corner(s + 1), index(side(s, last))]))
+        (0..last).map(move |k| [corner(s), index(side(s, k + 1)), index(side(s, k))]).chain(std::iter::once([
+            corner(s),
+            corner(s + 1),
+            index(side(s, last)),
+        ]))
     })
 }
 

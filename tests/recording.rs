@@ -577,6 +577,22 @@ fn the_framing_holds_a_free_fall_over_its_first_seconds_and_the_anchors_near_it(
     assert!((high.x - 0.1).abs() < 1e-9 && (low.x + 0.1).abs() < 1e-9, "{low} {high}: the far anchor is not");
 }
 
+/// Issue 47: a line a prescribed motion drives is what its scene is about: `chain_forced_surge`
+/// frames its whole chain, from the anchor at x = −237 m, z = −50 m (the seabed) to the surged
+/// fairlead (x up to 2.5 m: the sphere of 0.5 m surged 2 m), where the sphere alone
+/// (about 5 m across) was framed before; a moored buoy's free chains still are not.
+#[test]
+fn a_driven_line_is_framed_whole() {
+    let world = tether_scene::load(&common::repo("scenes/chain_forced_surge.ron")).unwrap().world;
+    let (low, high) = tether_record::framing::swept_box(&world);
+    // The nodes on the seabed press into it by millimetres (its penalty, PHYSICS.md §8).
+    assert!((low.x + 237.0).abs() < 1e-6 && (low.z + 50.0).abs() < 0.05, "the anchor framed: {low}");
+    assert!(high.x > 2.0 && high.x < 2.6, "the fairlead's surge framed: {high}");
+    let buoy = tether_scene::load(&common::repo("scenes/buoy_on_dynamic_chains.ron")).unwrap().world;
+    let (low, high) = tether_record::framing::swept_box(&buoy);
+    assert!((high - low).norm() < 30.0, "the buoy framed, its chains leave the frame: {low} {high}");
+}
+
 /// The viewer's plots for `scene`: each tab's name and its plots' titles.
 fn tabs_of(scene: &str, columns: &[&str]) -> Vec<(String, Vec<String>)> {
     let scene = tether_scene::load(&common::repo(scene)).expect("a shipped scene loads");

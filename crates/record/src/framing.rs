@@ -7,7 +7,10 @@
 //! world anchor near that box (within [`ANCHOR_REACH`] times its half-diagonal, plus a metre) is
 //! framed with it (a short line's tie point: the chain's ends, the fender's ropes); a far one is
 //! not, nor is a mooring line's anchor (hundreds of metres away, it would shrink the floater to
-//! a few pixels: the line is drawn leaving the frame towards it). The eye looks at the
+//! a few pixels: the line is drawn leaving the frame towards it) — unless a prescribed motion
+//! drives the line (a catenary with an end on a kinematic body, `chain_forced_surge`): the line
+//! is then what the scene is about, and its ends and a dynamic line's nodes are swept with the
+//! bodies (the driver alone framed a big sphere over the seabed). The eye looks at the
 //! centre of that box from [`VIEW_DIRECTION`], far enough for the box's bounding sphere to fit a
 //! view narrower than it is tall; where a contact presses a body against a wall (a plane whose
 //! normal is closer to horizontal than to vertical: a quay), from behind the wall instead, the
@@ -108,6 +111,8 @@ pub fn swept_box(world: &World) -> (Vec3, Vec3) {
 pub struct Sweep {
     /// The bodies framed: those that move, or all when none does.
     framed: Vec<usize>,
+    /// The couplings framed whole: the lines a prescribed motion drives ([`driven_lines`]).
+    lines: Vec<usize>,
     /// Each body's box corners (and slave nodes) in its principal frame \[m].
     corners: Vec<Vec<Vec3>>,
     /// The corners sampled so far, in the world \[m].
@@ -130,6 +135,7 @@ impl Sweep {
         let dt = world.dt();
         let mut sweep = Self {
             framed,
+            lines: driven_lines(world),
             corners: bodies.iter().map(corners_in_principal).collect(),
             points: Vec::new(),
             steps: ((FRAMED_SECONDS / dt).ceil() as u64).min(MAX_FRAMING_STEPS),
@@ -185,11 +191,18 @@ impl Sweep {
         bounding_box(spring_anchors(world).filter(near).chain([low, high]))
     }
 
-    /// Adds the framed bodies' corners at `world`'s poses.
+    /// Adds the framed bodies' corners at `world`'s poses, and the driven lines' ends and nodes.
     fn sample(&mut self, world: &World) {
         for &index in &self.framed {
             let state = world.state(index);
             self.points.extend(self.corners[index].iter().map(|corner| state.point(corner)));
+        }
+        for &index in &self.lines {
+            let ends = &world.coupling_forces()[index];
+            self.points.extend([ends.point1, ends.point2]);
+            if let Some(nodes) = world.evaluation().line_run(index).and_then(|run| run.nodes()) {
+                self.points.extend(nodes.positions.iter().copied());
+            }
         }
     }
 }
@@ -200,6 +213,17 @@ fn held_fixed(support: &Support) -> bool {
         Support::Fixed { translation, rotation } => translation.iter().all(|&fixed| fixed) && *rotation,
         Support::Free | Support::Kinematic(_) => false,
     }
+}
+
+/// The catenaries (quasi-static or dynamic) with an end on a kinematic body, by coupling index.
+fn driven_lines(world: &World) -> Vec<usize> {
+    let kinematic = |end: &Endpoint| end.body().is_some_and(|body| world.bodies()[body].is_kinematic());
+    (0..world.couplings().len())
+        .filter(|&index| match &world.couplings()[index].kind {
+            CouplingKind::Catenary(line) => kinematic(&line.end1) || kinematic(&line.end2),
+            CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => false,
+        })
+        .collect()
 }
 
 /// The world ends of the spring-dampers \[m].

@@ -15,7 +15,7 @@
 //!   included (a floor to the horizon), static, when the water has a depth;
 //! - `world/water/forces/<body>`: the water's force on each floating body as an arrow from G,
 //!   one body radius long when it equals the body's weight (`m·max(|g|, 1 m/s²)`), labelled
-//!   "water force on <body>";
+//!   `"water force on <body>"`;
 //! - `plots/water/<body>/motion`: the wave elevation at the body and its heave (the height of G
 //!   above its start) [m];
 //! - `plots/water/<body>/angles`: its roll and pitch (the turn since t = 0 about the world x and

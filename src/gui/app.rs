@@ -69,11 +69,14 @@ impl TetherApp {
             panel.note_error(format!("Ctrl-C will not close the window cleanly: {error}"));
         }
         let adapter = cc.wgpu_render_state.as_ref().map(|state| state.adapter.get_info());
-        if let Some(note) = adapter.as_ref().and_then(super::renderer::software_note) {
-            panel.note_error(note);
+        let driver_banner = adapter.as_ref().and_then(super::renderer::leak_banner);
+        // Rendering on the CPU is said; in red only with a driver that leaks (its banner too).
+        match (adapter.as_ref().and_then(super::renderer::software_note), &driver_banner) {
+            (Some(note), Some(_)) => panel.note_error(note),
+            (Some(note), None) => panel.note(note),
+            (None, _) => {}
         }
         let frame_cap = super::renderer::FrameCap::for_adapter(options.max_fps, adapter.as_ref());
-        let driver_banner = adapter.as_ref().and_then(super::renderer::leak_banner);
         let mut app = Self { panel, viewer, selection, connect: options.connect, frame_cap, backlog, driver_banner };
         if let Some(recording) = &options.recording {
             app.open_recording(recording);

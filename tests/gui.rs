@@ -53,6 +53,23 @@ fn tall_harness(panel: ControlPanel) -> Harness<'static, ControlPanel> {
         .build_ui_state(|ui, panel: &mut ControlPanel| panel.ui(ui, None), panel)
 }
 
+/// A window 1200 points wide and `height` tall holding the panel as its side panel, the panel's
+/// width kept for [`side_width`] each frame.
+fn side_panel_harness(panel: ControlPanel, height: f32) -> Harness<'static, ControlPanel> {
+    Harness::builder().with_size([1200.0, height]).build_ui_state(
+        |ui, panel: &mut ControlPanel| {
+            let width = panel.side_panel(ui, None);
+            ui.data_mut(|d| d.insert_temp(egui::Id::new("side width"), width));
+        },
+        panel,
+    )
+}
+
+/// The side panel's width at the last frame of a [`side_panel_harness`] [points].
+fn side_width(harness: &Harness<'_, ControlPanel>) -> f32 {
+    harness.ctx.data(|d| d.get_temp::<f32>(egui::Id::new("side width"))).expect("the panel's width")
+}
+
 /// Runs frames until `done` holds for the panel, or fails after [`PATIENCE`].
 fn until(harness: &mut Harness<'_, ControlPanel>, what: &str, done: impl Fn(&ControlPanel) -> bool) {
     let start = Instant::now();
@@ -1000,19 +1017,10 @@ fn long_lines_wrap_the_log_is_newest_first_and_rows_stay_put() {
     let long_name = "a_body_named_at_such_length_that_its_name_cannot_fit_in_any_panel_".repeat(3);
     let bad = common::spring_scene_text(&long_name).replace("mass: 1.0,", "mass: -1.0,");
     let dir = scenes_folder(&[("spring.ron", SPRING.as_str()), ("bad.ron", &bad)]);
-    let mut harness = Harness::builder().with_size([1200.0, 1100.0]).build_ui_state(
-        |ui, panel: &mut ControlPanel| {
-            let width = panel.side_panel(ui, None);
-            ui.data_mut(|d| d.insert_temp(egui::Id::new("side width"), width));
-        },
-        panel(dir.path()),
-    );
-    let width = |harness: &Harness<'_, ControlPanel>| {
-        harness.ctx.data(|d| d.get_temp::<f32>(egui::Id::new("side width"))).expect("the panel's width")
-    };
+    let mut harness = side_panel_harness(panel(dir.path()), 1100.0);
     open_from_list(&mut harness, "spring.ron");
     harness.run_steps(2);
-    let before = width(&harness);
+    let before = side_width(&harness);
     let long = format!("{} end", "a_very_long_path_segment/".repeat(20));
     harness.state_mut().note_error(long.clone());
     harness.state_mut().note("the newest line".into());
@@ -1021,7 +1029,7 @@ fn long_lines_wrap_the_log_is_newest_first_and_rows_stay_put() {
     let error = harness.state().load_error().expect("the bad scene is refused").to_string();
     assert!(error.contains(&long_name), "{error}");
     harness.get_by_label(&error);
-    assert_eq!(width(&harness), before, "the panel keeps its width ({before})");
+    assert_eq!(side_width(&harness), before, "the panel keeps its width ({before})");
     let top = |harness: &Harness<'_, ControlPanel>, label: &str| {
         harness.get_by_label_contains(label).accesskit_node().bounding_box().expect("laid out").y0
     };
@@ -1046,25 +1054,16 @@ fn a_long_record_name_and_column_wrap_in_the_fit_panel() {
     let csv = std::fs::read_to_string(spring_record(dir.path(), 130.0)).unwrap().replacen("x_measured", column, 1);
     let record = dir.path().join(format!("{}.csv", "tank_test_2026_decay_run_with_a_long_name_".repeat(3)));
     std::fs::write(&record, csv).unwrap();
-    let mut harness = Harness::builder().with_size([1200.0, 1400.0]).build_ui_state(
-        |ui, panel: &mut ControlPanel| {
-            let width = panel.side_panel(ui, None);
-            ui.data_mut(|d| d.insert_temp(egui::Id::new("side width"), width));
-        },
-        panel(dir.path()),
-    );
-    let width = |harness: &Harness<'_, ControlPanel>| {
-        harness.ctx.data(|d| d.get_temp::<f32>(egui::Id::new("side width"))).expect("the panel's width")
-    };
+    let mut harness = side_panel_harness(panel(dir.path()), 1400.0);
     open_from_list(&mut harness, "spring.ron");
     harness.get_by_label("Fit to a record").click();
     harness.run_steps(2);
-    let before = width(&harness);
+    let before = side_width(&harness);
     harness.state_mut().open_record(&record);
     harness.run_steps(3);
     harness.get_by_label_contains("_long_name_.csv: 1 column");
     harness.get_by_label(column);
-    assert_eq!(width(&harness), before, "the panel keeps its width ({before})");
+    assert_eq!(side_width(&harness), before, "the panel keeps its width ({before})");
 }
 
 /// The tracking entity of the 3D view's eye in each blueprint of the recording `path` (`None`

@@ -458,12 +458,17 @@ fn a_dynamic_line_s_grounded_length_is_read_from_its_nodes() {
     }
 }
 
+/// The blueprint store of an `.rrd` file.
+fn blueprint_in_file(path: &std::path::Path) -> rerun::ChunkStore {
+    let mut file = std::fs::File::open(path).unwrap();
+    let stores = rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file).unwrap();
+    stores.into_values().find(|store| !store.id().is_recording()).expect("a blueprint in the file")
+}
+
 /// The position and look target of the eye in the blueprint of an `.rrd` file, and the entity
 /// path they are under.
 fn eye_in_file(path: &std::path::Path) -> (String, [f32; 3], [f32; 3]) {
-    let mut file = std::fs::File::open(path).unwrap();
-    let stores = rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file).unwrap();
-    let blueprint = stores.values().find(|store| !store.id().is_recording()).expect("a blueprint in the file");
+    let blueprint = blueprint_in_file(path);
     let eye = rerun::external::re_sdk_types::blueprint::archetypes::EyeControls3D::descriptor_position().component;
     let target =
         rerun::external::re_sdk_types::blueprint::archetypes::EyeControls3D::descriptor_look_target().component;
@@ -497,9 +502,7 @@ fn a_recording_opens_with_its_eye_framing_the_run() {
 /// or not, and the background's colour if one is set.
 fn grid_and_sky_in_file(path: &std::path::Path) -> (bool, Option<u32>) {
     use rerun::external::re_sdk_types::blueprint::archetypes::{Background, LineGrid3D};
-    let mut file = std::fs::File::open(path).unwrap();
-    let stores = rerun::ChunkStore::from_rrd_reader(&rerun::ChunkStoreConfig::COMPACTION_DISABLED, &mut file).unwrap();
-    let blueprint = stores.values().find(|store| !store.id().is_recording()).expect("a blueprint in the file");
+    let blueprint = blueprint_in_file(path);
     let chunk_of = |property: &str| {
         blueprint.iter_physical_chunks().find(|chunk| chunk.entity_path().to_string().ends_with(property)).cloned()
     };

@@ -239,9 +239,9 @@ struct View {
 const SKY_RGB: [u8; 3] = [96, 120, 150];
 
 /// Sends `blueprint` to `stream` with `camera`'s eye in its 3D view at `scene_path`, its line
-/// grid and background as `view` says, active and the default: the SDK's own messages (captured from a
-/// memory stream of the same application), the view's property rows in the same blueprint store,
-/// then the activation (a memory sink's `take` flushes its stream first).
+/// grid and background as `view` says, active and the default: the SDK's own messages (captured
+/// from a memory stream of the same application), the view's property rows in the same
+/// blueprint store, then the activation (a memory sink's `take` flushes its stream first).
 fn send(
     stream: &RecordingStream,
     (blueprint, scene_path): (Blueprint, EntityPath),

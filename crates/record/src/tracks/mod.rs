@@ -122,6 +122,39 @@ pub(crate) fn send_chunk(
     crate::columns::send(stream, path, times, columns)
 }
 
+/// How far the sea surface's flat skirt and the seabed reach, in half sides of what they are
+/// drawn around (the surface's wave grid; the bodies and coupling ends): far enough that from
+/// any eye the framing chooses their edge lies near the horizon.
+pub const FAR: f64 = 25.0;
+
+/// Brown, for the bottom.
+const FLOOR_RGB: [u8; 3] = [105, 92, 70];
+
+/// The bottom at `elevation` [m] as a static brown square at entity `path`, centred on `(x, y)`
+/// with half side `half` [m] (`(center, half)`): two triangles.
+pub(crate) fn log_floor(
+    stream: &RecordingStream,
+    path: &str,
+    (center, half): ([f64; 2], f64),
+    elevation: f64,
+) -> Result<(), RecordError> {
+    let corners = square_corners(center, half).map(|[x, y]| [x as f32, y as f32, elevation as f32]);
+    let [r, g, b] = FLOOR_RGB;
+    stream.log_static(
+        path,
+        &rerun::Mesh3D::new(corners)
+            .with_triangle_indices([rerun::datatypes::UVec3D::new(0, 1, 2), rerun::datatypes::UVec3D::new(0, 2, 3)])
+            .with_albedo_factor(rerun::datatypes::Rgba32::from_rgb(r, g, b)),
+    )?;
+    Ok(())
+}
+
+/// The corners `(x, y)` [m] of the square centred on `center` with half side `half`,
+/// counter-clockwise seen from above from `(−, −)`.
+pub(crate) fn square_corners(center: [f64; 2], half: f64) -> [[f64; 2]; 4] {
+    [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]].map(|[a, b]| [center[0] + a * half, center[1] + b * half])
+}
+
 /// A point or vector in single precision, as Rerun draws them.
 pub(crate) fn f32x3(v: &Vec3) -> [f32; 3] {
     [v.x as f32, v.y as f32, v.z as f32]

@@ -1,9 +1,8 @@
 //! The seabed and what lies on it (PHYSICS.md §7), for a scene with a seabed:
 //!
 //! - `world/seabed/plane`: the bottom, static, under the bodies and the coupling ends and out to
-//!   the horizon, when the
-//!   scene declares a seabed without water (the [`super::water`] track draws it at the water's
-//!   depth);
+//!   the horizon, when the scene declares a seabed without water (the [`super::water`] track
+//!   draws it at the water's depth, [`super::log_floor`] both);
 //! - `world/seabed/grounded/<line>`: the part of each catenary lying on the bottom, every frame,
 //!   a thick sand-coloured strip over the line's own drawing (none while the line hangs free);
 //! - `world/seabed/touchdowns/<line>`: where its suspended parts meet the bottom, as points;
@@ -22,8 +21,8 @@ use tether_physics::coupling::{Catenary, CouplingKind, LineModel};
 use tether_physics::math::Vec3;
 use tether_physics::world::World;
 
-/// Sand, for what lies on the bottom; red for the touchdowns (the plane is the water's seabed
-/// brown, [`super::water::SEABED_RGB`]).
+/// Sand, for what lies on the bottom; red for the touchdowns (the bottom itself:
+/// [`super::log_floor`]).
 const SAND_RGB: [u8; 3] = [214, 170, 80];
 const TOUCHDOWN_RGB: [u8; 3] = [230, 60, 40];
 
@@ -163,7 +162,7 @@ fn grounded_part(state: &LineState, touchdowns: &[Vec3]) -> Option<[Vec3; 2]> {
 }
 
 /// A square of the bottom under every coupling end and body, 20 % wider (at least 20 m), and
-/// [`super::water::FAR`] times that: a floor to the horizon.
+/// [`super::FAR`] times that: a floor to the horizon.
 fn log_plane(stream: &RecordingStream, world: &World, elevation: f64) -> Result<(), RecordError> {
     let points = world
         .coupling_forces()
@@ -176,17 +175,7 @@ fn log_plane(stream: &RecordingStream, world: &World, elevation: f64) -> Result<
     } else {
         ([0.0, 0.0], 10.0)
     };
-    let far = super::water::FAR * half;
-    let corners = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]]
-        .map(|[a, b]| [(center[0] + a * far) as f32, (center[1] + b * far) as f32, elevation as f32]);
-    let [r, g, b] = super::water::SEABED_RGB;
-    stream.log_static(
-        paths::SEABED_PLANE,
-        &rerun::Mesh3D::new(corners)
-            .with_triangle_indices([rerun::datatypes::UVec3D::new(0, 1, 2), rerun::datatypes::UVec3D::new(0, 2, 3)])
-            .with_albedo_factor(rerun::datatypes::Rgba32::from_rgb(r, g, b)),
-    )?;
-    Ok(())
+    super::log_floor(stream, paths::SEABED_PLANE, (center, super::FAR * half), elevation)
 }
 
 /// Line `index`'s grounded length `L_B` \[m]: a dynamic line's from its nodes (the segments on

@@ -26,7 +26,7 @@
 //!   `Fz` [N], `Mx`, `My`, `Mz` [N·m] — zero while its potential flow is switched off. A body
 //!   without potential data has neither: a scene without any records what it recorded before.
 
-use super::{Settings, Track, f32x3, of_entity, send_chunk};
+use super::{FAR, Settings, Track, f32x3, of_entity, send_chunk};
 use crate::columns::{column, flat_floats, floats, plot};
 use crate::frames::Frames;
 use crate::rerun;
@@ -42,10 +42,6 @@ use tether_physics::world::World;
 /// Vertices along each side of the surface grid.
 pub const GRID: usize = 24;
 
-/// How far the surface's flat skirt and the seabed reach, in half sides of the grid: far enough
-/// that from any eye the framing chooses their edge lies near the horizon.
-pub const FAR: f64 = 25.0;
-
 /// Vertices of the surface: the grid's, then the skirt's four outer corners.
 const VERTICES: usize = GRID * GRID + 4;
 
@@ -53,9 +49,9 @@ const VERTICES: usize = GRID * GRID + 4;
 /// (at the default 60 frames per second, every other frame).
 pub const SURFACE_PERIOD: f64 = 1.0 / 40.0;
 
-/// Colour of the surface (red, green, blue, alpha), the seabed, the force arrows.
+/// Colour of the surface (red, green, blue, alpha), the force arrows (the seabed's:
+/// [`super::log_floor`]).
 const SURFACE_RGBA: [u8; 4] = [30, 100, 160, 150];
-pub(super) const SEABED_RGB: [u8; 3] = [105, 92, 70];
 const ARROW_RGB: [u8; 3] = [40, 160, 230];
 
 /// The series of a potential-flow force plot: force and moment about G, world axes.
@@ -189,18 +185,11 @@ impl WaterTrack {
             };
             self.surface.extend([x as f32, y as f32, height]);
         }
-        for [x, y] in self.far_corners() {
+        for [x, y] in super::square_corners(self.center, FAR * self.half) {
             self.surface.extend([x as f32, y as f32, level as f32]);
         }
         self.surface_frames.push(frame);
         VERTICES * 3 * 4
-    }
-
-    /// `(x, y)` [m] of the skirt's outer corners, counter-clockwise from `(−, −)`.
-    fn far_corners(&self) -> [[f64; 2]; 4] {
-        let far = FAR * self.half;
-        [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]]
-            .map(|[a, b]| [self.center[0] + a * far, self.center[1] + b * far])
     }
 }
 
@@ -216,17 +205,7 @@ impl Track for WaterTrack {
                 .with_albedo_factor(rerun::datatypes::Rgba32::from_unmultiplied_rgba(r, g, b, a)),
         )?;
         if let Some(seabed) = world.system().water().and_then(|stage| stage.water.seabed()) {
-            let [r, g, b] = SEABED_RGB;
-            let corners = self.far_corners().map(|[x, y]| [x as f32, y as f32, seabed as f32]);
-            stream.log_static(
-                paths::SEABED,
-                &rerun::Mesh3D::new(corners)
-                    .with_triangle_indices([
-                        rerun::datatypes::UVec3D::new(0, 1, 2),
-                        rerun::datatypes::UVec3D::new(0, 2, 3),
-                    ])
-                    .with_albedo_factor(rerun::datatypes::Rgba32::from_rgb(r, g, b)),
-            )?;
+            super::log_floor(stream, paths::SEABED, (self.center, FAR * self.half), seabed)?;
         }
         let [r, g, b] = ARROW_RGB;
         for floating in &self.floating {

@@ -232,11 +232,6 @@ impl ControlPanel {
         self.sweep.as_ref()
     }
 
-    /// The open sweep, to sort it (tests).
-    pub fn sweep_mut(&mut self) -> Option<&mut SweepTable> {
-        self.sweep.as_mut()
-    }
-
     /// Draws the sweep table, if a sweep is open, and loads the case it asks for.
     pub fn sweep_ui(&mut self, ui: &mut egui::Ui) {
         let Some(table) = &mut self.sweep else { return };

@@ -49,14 +49,6 @@ impl Integrator {
             Self::Leapfrog | Self::Leapfrog2 | Self::Splitting | Self::Rk4 => false,
         }
     }
-
-    /// Whether the scheme's stored velocities are at `t − ½dt` (the leapfrogs) rather than at `t`.
-    pub fn is_staggered(self) -> bool {
-        match self {
-            Self::Leapfrog | Self::Leapfrog2 => true,
-            Self::Splitting | Self::Rk4 | Self::Dopri45 => false,
-        }
-    }
 }
 
 /// How many integrator steps one world step takes: the world advances by `dt`, its integrator

@@ -30,10 +30,6 @@ impl Direction {
         self as usize
     }
 
-    pub fn from_index(index: usize) -> Option<Self> {
-        Self::ALL.get(index).copied()
-    }
-
     /// `x`, `y`, `z`, `roll`, `pitch`, `yaw`.
     pub fn name(self) -> &'static str {
         match self {

@@ -192,8 +192,9 @@ def test_ctrl_c_returns_the_best_point_so_far(repo):
             if status == "partial":
                 assert (ending, interrupted) == ("cancelled", "True") and 1 <= int(iterations) < 10
                 return
-            # Ctrl-C came while the converged fit computed its intervals: it finishes, and says so.
-            assert (status, interrupted) == ("converged", "True"), stdout
+            # Ctrl-C came while the converged fit computed its intervals (it finishes, and says it
+            # was interrupted), or after the fit had ended (a fast machine): too late either way.
+            assert status == "converged" and interrupted in ("True", "False"), stdout
             too_late = delay
         delay = 2 * delay if too_late is None else (too_early + too_late) / 2
     pytest.fail(f"no Ctrl-C stopped the fit between its start point and its end (last tried {delay:.2f} s in)")

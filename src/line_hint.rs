@@ -93,16 +93,16 @@ impl std::fmt::Display for Measures {
 /// fairlead and its static state; `None` otherwise.
 pub fn measures(world: &World, index: usize) -> Option<Measures> {
     let CouplingKind::Catenary(line) = &world.couplings()[index].kind else { return None };
-    if line.model != LineModel::QuasiStatic {
+    if line.model() != LineModel::QuasiStatic {
         return None;
     }
-    let driving = [line.end1, line.end2].iter().find_map(|end| driving(world, end))?;
+    let driving = [line.end1(), line.end2()].iter().find_map(|end| driving(world, end))?;
     let state = world.line_state(index)?;
     let (t1, t2) = state.end_tensions();
     let fluid = world.system().surroundings().fluid_density;
     let in_water = world.system().water().is_some();
-    let mass = line.mass_per_length + if in_water { fluid * line.displaced_area } else { 0.0 };
-    let suspended = line.length - state.grounded_length();
+    let mass = line.mass_per_length() + if in_water { fluid * line.displaced_area() } else { 0.0 };
+    let suspended = line.length() - state.grounded_length();
     let wave_speed = (0.5 * (t1 + t2) / mass).sqrt();
     let transverse_period = 2.0 * suspended / wave_speed;
     if !transverse_period.is_finite() || transverse_period <= 0.0 {
@@ -115,7 +115,7 @@ pub fn measures(world: &World, index: usize) -> Option<Measures> {
 /// `½ ρ C_dn d v² / ((λ0 − ρ A_d) g)`; `None` for a line without displaced area or that floats.
 fn drag_ratio(line: &Catenary, fluid: f64, gravity: f64, speed: f64) -> Option<f64> {
     let wet_weight = line.submerged_mass_per_length(fluid) * gravity;
-    let diameter = (4.0 * line.displaced_area / PI).sqrt();
+    let diameter = (4.0 * line.displaced_area() / PI).sqrt();
     (wet_weight > 0.0 && diameter > 0.0)
         .then(|| 0.5 * fluid * CHAIN_DRAG_NORMAL * diameter * speed * speed / wet_weight)
 }

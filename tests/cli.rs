@@ -79,7 +79,7 @@ fn record_refuses_bad_flags_and_unwritable_paths_before_running() {
     let scene = scene.to_str().unwrap();
     let out = tether(&["record", scene, "-o", "/tmp/x.rrd", "--duration=-1"]);
     assert_eq!(out.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("--duration must be a positive number of seconds, got -1"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--duration must be > 0 s, got -1"));
     let out = tether(&["record", scene, "-o", "/tmp/x.rrd", "--log-hz", "0"]);
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--log-hz must be a positive"));
@@ -440,8 +440,8 @@ fn rao_prints_the_frequency_domain_solve() {
         9.1290755523e5,
         7.8249219019e5,
     ));
-    let xi =
-        tether_physics::potential::response::response(model.coefficients(), &mass, &model.stiffness, omega, 0).unwrap();
+    let xi = tether_physics::potential::response::response(model.coefficients(), &mass, &model.stiffness(), omega, 0)
+        .unwrap();
     println!("heave {} ∠{}° (CLI), {} ∠{}° (response)", row[6], row[7], xi[2].norm(), xi[2].arg().to_degrees());
     assert_relative_eq!(row[6], xi[2].norm(), max_relative = 1e-9);
     assert!((row[7] - xi[2].arg().to_degrees()).abs() < 1e-7);
@@ -605,7 +605,7 @@ fn rao_time_domain_refuses_bad_settings_and_names_a_diverging_period() {
         ),
         (scene, &["--time-domain", "--amplitude", "0"], "--time-domain: amplitude must be > 0 m, got 0"),
         (scene, &["--ramp", "10"], "--ramp sets the regular-wave runs: it needs --time-domain"),
-        (scene, &["--time-domain", "--periods", "8,0"], "--periods must be positive numbers of seconds, got 0"),
+        (scene, &["--time-domain", "--periods", "8,0"], "--periods must be > 0 s, got 0"),
         (stiff, &["--time-domain", "--periods", "8"], "the run at T = 8.000 s: the simulation diverged at t = "),
     ] {
         let out = tether(&[&["rao", scene, "--body", "cylinder"][..], flags].concat());
@@ -631,7 +631,7 @@ fn check_prints_the_radiation_fit_of_each_potential_flow_body() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     let loaded = tether_scene::load(std::path::Path::new(scene)).unwrap();
     let stage = loaded.world.system().water().unwrap();
-    let model = &stage.floating[0].potential.as_ref().unwrap().model;
+    let model = &stage.floating[0].potential().as_ref().unwrap().model;
     let tether_physics::potential::Radiation::StateSpace(fit) = model.radiation() else { panic!("the default method") };
     // The A∞ the time domain's mass holds (PHYSICS.md §9): the cylinder's pitch and surge shifted
     // by the band's damping tail, its heave not.
@@ -704,7 +704,7 @@ fn check_prints_the_radiation_fit_of_each_potential_flow_body() {
     let out = tether(&["check", linear.to_str().unwrap()]);
     let stdout = String::from_utf8_lossy(&out.stdout);
     let c = *tether_scene::load(&linear).unwrap().world.system().water().unwrap().floating[0]
-        .potential
+        .potential()
         .as_ref()
         .unwrap()
         .model

@@ -94,16 +94,16 @@ fn world(harness: &Harness<'_, ControlPanel>) -> World {
 
 fn spring_damping(world: &World) -> f64 {
     match &world.couplings()[0].kind {
-        CouplingKind::SpringDamper(spring) => spring.damping,
+        CouplingKind::SpringDamper(spring) => spring.damping(),
         kind => panic!("not a spring: {kind:?}"),
     }
 }
 
 fn spring_stiffness(world: &World) -> f64 {
     match &world.couplings()[0].kind {
-        CouplingKind::SpringDamper(spring) => match spring.law {
-            ElasticLaw::Linear { stiffness, .. } => stiffness,
-            ref law => panic!("not linear: {law:?}"),
+        CouplingKind::SpringDamper(spring) => match spring.law() {
+            ElasticLaw::Linear { stiffness, .. } => *stiffness,
+            law => panic!("not linear: {law:?}"),
         },
         kind => panic!("not a spring: {kind:?}"),
     }
@@ -245,7 +245,7 @@ fn the_tuned_scene_is_saved_as_ron_that_loads_back() {
     harness.state_mut().save_as(&saved);
     let loaded = tether_scene::load(&saved).unwrap();
     assert_eq!(Some(&loaded.file), harness.state().scene().map(|s| &s.tuned));
-    assert!(matches!(&loaded.world.couplings()[0].kind, CouplingKind::SpringDamper(s) if s.damping == 0.75));
+    assert!(matches!(&loaded.world.couplings()[0].kind, CouplingKind::SpringDamper(s) if s.damping() == 0.75));
 }
 
 /// The open file is watched. An editor's save (a new file renamed over the old one) with another
@@ -333,7 +333,7 @@ fn contact_knobs_and_the_estimator_tune_the_running_contact() {
     set_knob(&mut harness, "stiffness k1", 2.5e8);
     until(&mut harness, "the applied message", |p| p.log().any(|l| l.text.contains("applied")));
     let contact_stiffness = |world: &World| match &world.couplings()[0].kind {
-        CouplingKind::Contact(contact) => contact.law.stiffness,
+        CouplingKind::Contact(contact) => contact.law().stiffness(),
         kind => panic!("not a contact: {kind:?}"),
     };
     assert_eq!(contact_stiffness(&world(&harness)), 2.5e8);
@@ -370,7 +370,7 @@ fn water_knobs_tune_the_running_water_and_bad_values_are_refused() {
         tether_physics::water::WaveSpec::Regular { height, .. } => height,
         other => panic!("{other:?}"),
     };
-    let drag_z = |world: &World| world.system().water().expect("water").floating[0].hydro.spec.drag.z;
+    let drag_z = |world: &World| world.system().water().expect("water").floating[0].hydro().spec().drag.z;
 
     set_knob(&mut harness, "wave height H", 1.5);
     until(&mut harness, "the water applied", |p| p.log().any(|l| l.text.starts_with("the water applied")));
@@ -422,7 +422,7 @@ fn the_potential_flow_switch_reaches_the_running_world_and_shows_what_runs() {
     let sinks = Sinks::new(vec![Sinks::file(&shown).unwrap()]);
     let mut harness = harness(ControlPanel::new(sinks, Arc::new(|| {}), dir.path().to_path_buf()).unwrap());
     open_from_list(&mut harness, "cylinder.ron");
-    let running = |world: &World| world.system().water().expect("water").floating[0].potential.is_some();
+    let running = |world: &World| world.system().water().expect("water").floating[0].potential().is_some();
     let shows = |on: bool| move |p: &ControlPanel| p.status().is_some_and(|s| s.potential_flow == [(0, on)]);
     until(&mut harness, "the status", shows(true));
     harness.run_steps(2);
@@ -504,7 +504,7 @@ fn the_potential_flow_switch_says_when_it_brings_linear_hydrostatics() {
     assert!(ticked(&harness, label));
     let linear = |world: &World| {
         world.system().water().expect("water").floating[0]
-            .potential
+            .potential()
             .as_ref()
             .is_some_and(|p| p.linear_hydrostatics.is_some())
     };
@@ -514,7 +514,7 @@ fn the_potential_flow_switch_says_when_it_brings_linear_hydrostatics() {
     harness.run_steps(2);
     assert!(!ticked(&harness, label));
     let off = world(&harness);
-    assert!(off.system().water().expect("water").floating[0].potential.is_none());
+    assert!(off.system().water().expect("water").floating[0].potential().is_none());
 }
 
 /// The statics panel on a buoy moored by three lines lying on a seabed: the seabed's C_B and a
@@ -529,7 +529,7 @@ fn statics_panel_tunes_the_seabed_jumps_to_equilibrium_and_draws_the_offset_curv
         .with_size([440.0, 2600.0])
         .build_ui_state(|ui, panel: &mut ControlPanel| panel.ui(ui, None), panel(dir.path()));
     open_from_list(&mut harness, "moored.ron");
-    let friction = |world: &World| world.system().seabed().expect("a seabed").line_friction;
+    let friction = |world: &World| world.system().seabed().expect("a seabed").line_friction();
 
     set_knob(&mut harness, "seabed line friction C_B", 0.9);
     until(&mut harness, "C_B applied", |p| {
@@ -545,7 +545,7 @@ fn statics_panel_tunes_the_seabed_jumps_to_equilibrium_and_draws_the_offset_curv
     set_value(&mut harness, knob, 0.004);
     until(&mut harness, "A_d applied", |p| p.log().any(|l| l.text.starts_with("coupling \"m1\" applied")));
     match &world(&harness).couplings()[0].kind {
-        CouplingKind::Catenary(line) => assert_eq!(line.displaced_area, 0.004),
+        CouplingKind::Catenary(line) => assert_eq!(line.displaced_area(), 0.004),
         kind => panic!("not a catenary: {kind:?}"),
     }
 
@@ -573,7 +573,7 @@ const ROPE: &str = r#"Scene(dt: 1e-3, bodies: [Body(name: "ball",
 
 fn line_model(world: &World) -> LineModel {
     match &world.couplings()[0].kind {
-        CouplingKind::Catenary(line) => line.model,
+        CouplingKind::Catenary(line) => line.model(),
         kind => panic!("not a line: {kind:?}"),
     }
 }
@@ -593,7 +593,7 @@ fn a_line_switches_to_dynamic_live_and_a_bad_segment_count_is_refused() {
     harness.get_by_label("dynamic (lumped mass)").click();
     until(&mut harness, "the switch", |p| p.log().any(|l| l.text.starts_with("coupling \"rope\" applied")));
     let LineModel::Dynamic(model) = line_model(&world(&harness)) else { panic!("still quasi-static") };
-    assert_eq!(model.segments, 20, "a switched line takes 20 segments");
+    assert_eq!(model.segments(), 20, "a switched line takes 20 segments");
 
     set_knob(&mut harness, "segments N", 0.0);
     harness.get_by_label_contains("Refused: model.segments = 0 not applied (the run keeps 20): coupling \"rope\": segments must be at least 1, got 0");
@@ -601,7 +601,7 @@ fn a_line_switches_to_dynamic_live_and_a_bad_segment_count_is_refused() {
     until(&mut harness, "8 segments", |p| {
         p.simulation()
             .snapshot(PATIENCE)
-            .is_some_and(|w| matches!(line_model(&w), LineModel::Dynamic(m) if m.segments == 8))
+            .is_some_and(|w| matches!(line_model(&w), LineModel::Dynamic(m) if m.segments() == 8))
     });
     let world = world(&harness);
     let nodes = world.evaluation().line_run(0).and_then(|run| run.nodes()).expect("the line has nodes");
@@ -812,7 +812,7 @@ fn each_scene_keeps_its_own_fit_and_a_missing_signal_is_unmapped_and_said() {
 /// The unstretched length of catenary coupling `index` in `world` [m].
 fn line_length(world: &World, index: usize) -> f64 {
     match &world.couplings()[index].kind {
-        CouplingKind::Catenary(line) => line.length,
+        CouplingKind::Catenary(line) => line.length(),
         kind => panic!("not a line: {kind:?}"),
     }
 }

@@ -527,7 +527,7 @@ fn a_scene_at_sea_has_a_sky_and_no_grid_through_its_surface() {
     assert_eq!(sky, Some(0x60_78_96_ff), "moored_buoy: the sky [96, 120, 150]");
 }
 
-/// `tether record` frames with its own run's steps (`framing::Sweep`) rather than a copy's run:
+/// `tether record` frames with its own run's steps (`framing::MotionSweep`) rather than a copy's run:
 /// the same box whether the run outlasts the sweep (6 s of box_drop's crate, which falls and
 /// hops, against a sweep of 5 s), stops inside it (0.3 s, finished on a copy) or has not
 /// stepped at all.
@@ -541,7 +541,7 @@ fn a_sweep_fed_by_the_run_frames_as_a_copy_of_it_does() {
     assert!(low.z < 0.1 && (high.x - low.x).max(high.y - low.y) > 2.5, "{expected:?}");
     for seconds in [0.0, 0.3, 6.0] {
         let mut run = world.clone();
-        let mut sweep = tether_record::framing::Sweep::start(&run);
+        let mut sweep = tether_record::framing::MotionSweep::start(&run);
         for _ in 0..(seconds / run.dt()).round() as usize {
             run.step().unwrap();
             sweep.after_step(&run);

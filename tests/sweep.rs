@@ -703,7 +703,7 @@ fn factor_paths_reach_every_part_of_a_scene() {
     let file = plan.scene_file(&plan.values(0)).unwrap();
     assert_eq!(file.adaptive.map(|a| a.rtol), Some(1e-8));
     assert_eq!(file.adaptive.map(|a| a.atol), Some(1e-9), "the rest of the section from its defaults");
-    assert_eq!(plan.scene(&plan.values(1)).unwrap().world.tolerances().rtol, 1e-4);
+    assert_eq!(plan.scene(&plan.values(1)).unwrap().world.tolerances().rtol(), 1e-4);
 }
 
 /// The specs shipped in `examples/sweeps/` load and check against their scenes.

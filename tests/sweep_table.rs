@@ -91,9 +91,9 @@ fn the_table_sorts_puts_failures_first_and_loads_a_case() {
     assert_eq!(world.dt(), 0.5);
     match &world.couplings()[0].kind {
         CouplingKind::SpringDamper(spring) => assert!(
-            matches!(spring.law, ElasticLaw::Linear { stiffness, .. } if stiffness == 400.0),
+            matches!(spring.law(), ElasticLaw::Linear { stiffness, .. } if *stiffness == 400.0),
             "{:?}",
-            spring.law
+            spring.law()
         ),
         kind => panic!("{kind:?}"),
     }

@@ -1,10 +1,13 @@
 //! `tether check SCENE`: what the scene is, in numbers.
 
 use std::fmt::Write as _;
-use tether_physics::body::Support;
+use tether_physics::body::{RigidBody, Support};
 use tether_physics::coupling::contact::Opposing;
 use tether_physics::coupling::lumped_line::{Discrete, statics};
-use tether_physics::coupling::{Catenary, Contact, CouplingKind, ElasticLaw, Endpoint, LineModel, LumpedMass};
+use tether_physics::coupling::{
+    Catenary, Contact, Coupling, CouplingForces, CouplingKind, ElasticLaw, Endpoint, LineModel, LumpedMass,
+    SpringDamper,
+};
 use tether_physics::math::{Mat3, Vec3};
 use tether_physics::potential::{LinearHydrostatics, PotentialBody, Radiation, RadiationStateSpace};
 use tether_physics::stability;
@@ -20,6 +23,21 @@ pub fn run(scene: &Scene) -> anyhow::Result<()> {
 
 fn report(world: &World, label: &str) -> String {
     let mut out = String::new();
+    header_report(&mut out, world, label);
+    for body in world.bodies() {
+        body_report(&mut out, body);
+    }
+    water_report(&mut out, world);
+    for (index, (coupling, forces)) in world.couplings().iter().zip(world.coupling_forces()).enumerate() {
+        coupling_report(&mut out, world, index, coupling, forces);
+    }
+    limits_report(&mut out, world);
+    energy_report(&mut out, world);
+    out
+}
+
+/// What the scene is: its size, its time step and integrator, gravity and the seabed.
+fn header_report(out: &mut String, world: &World, label: &str) {
     let _ = writeln!(
         out,
         "{label}: ok — {} bodies, {} couplings, dt = {} s, integrator {}{}, {} substep(s) of {:.6e} s",
@@ -31,92 +49,101 @@ fn report(world: &World, label: &str) -> String {
         world.substeps(),
         world.step_size()
     );
-    let _ = writeln!(out, "gravity {} m/s²", v(world.gravity()));
+    let _ = writeln!(out, "gravity {} m/s²", vector(world.gravity()));
     if let Some(seabed) = world.system().seabed() {
-        let _ = writeln!(out, "seabed at z_b = {} m, line friction C_B = {}", seabed.elevation, seabed.line_friction);
+        let _ =
+            writeln!(out, "seabed at z_b = {} m, line friction C_B = {}", seabed.elevation(), seabed.line_friction());
     }
-    for body in world.bodies() {
-        let p = &body.mass_properties;
-        let _ = writeln!(out, "\nbody \"{}\" ({})", body.name, support(&body.support));
-        let _ = writeln!(out, "  mass               {:.6} kg", p.mass);
-        let _ = writeln!(out, "  centre of mass     {} m", v(&p.center_of_mass));
-        let _ = writeln!(out, "  inertia about G    {} kg·m²", m(&p.inertia_about_g));
-        let _ = writeln!(out, "  principal moments  {} kg·m²", v(&p.principal_moments));
-        let axes = p.principal_axes.to_rotation_matrix().into_inner();
-        for i in 0..3 {
-            let _ = writeln!(out, "  principal axis {}   {}", i + 1, v(&axes.column(i).into_owned()));
-        }
-        if !body.slave_nodes.is_empty() {
-            let _ = writeln!(out, "  slave nodes        {}", body.slave_nodes.len());
+}
+
+/// A body's mass properties in its principal frame, and its slave nodes.
+fn body_report(out: &mut String, body: &RigidBody) {
+    let p = &body.mass_properties;
+    let _ = writeln!(out, "\nbody \"{}\" ({})", body.name, support(&body.support));
+    let _ = writeln!(out, "  mass               {:.6} kg", p.mass);
+    let _ = writeln!(out, "  centre of mass     {} m", vector(&p.center_of_mass));
+    let _ = writeln!(out, "  inertia about G    {} kg·m²", matrix(&p.inertia_about_g));
+    let _ = writeln!(out, "  principal moments  {} kg·m²", vector(&p.principal_moments));
+    let axes = p.principal_axes.to_rotation_matrix().into_inner();
+    for i in 0..3 {
+        let _ = writeln!(out, "  principal axis {}   {}", i + 1, vector(&axes.column(i).into_owned()));
+    }
+    if !body.slave_nodes.is_empty() {
+        let _ = writeln!(out, "  slave nodes        {}", body.slave_nodes.len());
+    }
+}
+
+/// A coupling: its ends and what it is doing at t = 0.
+fn coupling_report(out: &mut String, world: &World, index: usize, coupling: &Coupling, forces: &CouplingForces) {
+    let [end1, end2] = coupling.ends();
+    let _ = writeln!(out, "\ncoupling \"{}\" ({})", coupling.name, coupling.kind_name());
+    let chord = (forces.point2 - forces.point1).norm();
+    let ends = format!("  end 1 {}   end 2 {}", end(world, &end1), end(world, &end2));
+    match &coupling.kind {
+        CouplingKind::SpringDamper(spring) => spring_report(out, &ends, spring, chord, forces),
+        CouplingKind::Catenary(line) => catenary_report(out, world, index, &ends, line, chord),
+        CouplingKind::Contact(contact) => contact_report(out, world, contact),
+    }
+}
+
+/// A spring-damper: its ends, its law, and its length and tension at t = 0.
+fn spring_report(out: &mut String, ends: &str, spring: &SpringDamper, chord: f64, forces: &CouplingForces) {
+    let _ = writeln!(out, "{ends}");
+    let _ = writeln!(out, "  law {}, damping {} N·s/m", law(&spring.law()), spring.damping());
+    let _ = writeln!(out, "  length {chord:.6} m, tension {:.6} N", forces.tension);
+}
+
+/// A line: its ends, its values, its weight in the water, its model, and its solved shape at
+/// t = 0.
+fn catenary_report(out: &mut String, world: &World, index: usize, ends: &str, line: &Catenary, chord: f64) {
+    let _ = writeln!(out, "{ends}");
+    let _ = writeln!(
+        out,
+        "  λ0 = {} kg/m, L_eq = {} m, D = {} N/m (EA = {} N)",
+        line.mass_per_length(),
+        line.length(),
+        line.stiffness(),
+        line.stiffness() * line.length()
+    );
+    let fluid = world.system().surroundings().fluid_density;
+    if line.displaced_area() > 0.0 {
+        let _ = writeln!(
+            out,
+            "  A_d = {} m²: submerged weight {:.6} N/m",
+            line.displaced_area(),
+            line.submerged_mass_per_length(fluid) * world.gravity().norm()
+        );
+    }
+    if let LineModel::Dynamic(parameters) = &line.model() {
+        dynamic_line_report(out, world, index, line, parameters);
+    }
+    if let Some(measures) = tether::line_hint::measures(world, index) {
+        let _ = writeln!(out, "  {}{measures}", if measures.suggests_dynamic() { "hint: " } else { "" });
+    }
+    if let Some(state) = world.line_state(index) {
+        let (t1, t2) = state.end_tensions();
+        let _ = writeln!(
+            out,
+            "  chord {chord:.6} m, H = {:.6} N, V1 = {:.6} N, V2 = {:.6} N, end tensions {t1:.6} / {t2:.6} N ({} Newton iterations)",
+            state.horizontal_tension,
+            state.vertical1,
+            state.vertical2(),
+            state.iterations
+        );
+        if state.ground.is_some() {
+            let touchdowns: Vec<String> = state.touchdowns().iter().map(vector).collect();
+            let _ = writeln!(
+                out,
+                "  on the seabed: L_B = {:.6} m, touchdown {}",
+                state.grounded_length(),
+                if touchdowns.is_empty() { "none".to_string() } else { touchdowns.join(", ") }
+            );
         }
     }
-    water_report(&mut out, world);
-    for (index, (coupling, forces)) in world.couplings().iter().zip(world.coupling_forces()).enumerate() {
-        let [end1, end2] = coupling.ends();
-        let _ = writeln!(out, "\ncoupling \"{}\" ({})", coupling.name, coupling.kind_name());
-        let chord = (forces.point2 - forces.point1).norm();
-        let ends = format!("  end 1 {}   end 2 {}", end(world, &end1), end(world, &end2));
-        match &coupling.kind {
-            CouplingKind::SpringDamper(spring) => {
-                let _ = writeln!(out, "{ends}");
-                let _ = writeln!(out, "  law {}, damping {} N·s/m", law(&spring.law), spring.damping);
-                let _ = writeln!(out, "  length {chord:.6} m, tension {:.6} N", forces.tension);
-            }
-            CouplingKind::Catenary(line) => {
-                let _ = writeln!(out, "{ends}");
-                let _ = writeln!(
-                    out,
-                    "  λ0 = {} kg/m, L_eq = {} m, D = {} N/m (EA = {} N)",
-                    line.mass_per_length,
-                    line.length,
-                    line.stiffness,
-                    line.stiffness * line.length
-                );
-                let fluid = world.system().surroundings().fluid_density;
-                if line.displaced_area > 0.0 {
-                    let _ = writeln!(
-                        out,
-                        "  A_d = {} m²: submerged weight {:.6} N/m",
-                        line.displaced_area,
-                        line.submerged_mass_per_length(fluid) * world.gravity().norm()
-                    );
-                }
-                if let LineModel::Dynamic(parameters) = &line.model {
-                    dynamic_line_report(&mut out, world, index, line, parameters);
-                }
-                if let Some(measures) = tether::line_hint::measures(world, index) {
-                    let _ = writeln!(out, "  {}{measures}", if measures.suggests_dynamic() { "hint: " } else { "" });
-                }
-                if let Some(state) = world.line_state(index) {
-                    let (t1, t2) = state.end_tensions();
-                    let _ = writeln!(
-                        out,
-                        "  chord {chord:.6} m, H = {:.6} N, V1 = {:.6} N, V2 = {:.6} N, end tensions {t1:.6} / {t2:.6} N ({} Newton iterations)",
-                        state.horizontal_tension,
-                        state.vertical1,
-                        state.vertical2(),
-                        state.iterations
-                    );
-                    if state.ground.is_some() {
-                        let touchdowns: Vec<String> = state.touchdowns().iter().map(v).collect();
-                        let _ = writeln!(
-                            out,
-                            "  on the seabed: L_B = {:.6} m, touchdown {}",
-                            state.grounded_length(),
-                            if touchdowns.is_empty() { "none".to_string() } else { touchdowns.join(", ") }
-                        );
-                    }
-                    if line.submerged_mass_per_length(fluid) < 0.0 {
-                        let _ = writeln!(
-                            out,
-                            "  warning: the line is buoyant (ρ A_d > λ0): it arches upward; nothing stops it at the water surface"
-                        );
-                    }
-                }
-            }
-            CouplingKind::Contact(contact) => contact_report(&mut out, world, contact),
-        }
-    }
+}
+
+/// The stable time steps and the contacts' impact resolutions against the integrator step.
+fn limits_report(out: &mut String, world: &World) {
     let limits = world.limits();
     let adaptive = world.integrator().is_adaptive();
     let title = if adaptive {
@@ -167,6 +194,10 @@ fn report(world: &World, label: &str) -> String {
             impact.dt
         );
     }
+}
+
+/// The energies at t = 0 (PHYSICS.md §5).
+fn energy_report(out: &mut String, world: &World) {
     let e = world.energy();
     let _ = writeln!(
         out,
@@ -176,7 +207,6 @@ fn report(world: &World, label: &str) -> String {
         e.elastic + 0.0,
         e.total() + 0.0
     );
-    out
 }
 
 /// The water (PHYSICS.md §6) and each floating body's hydrostatics at its free-floating
@@ -214,11 +244,11 @@ fn water_report(out: &mut String, world: &World) {
         );
     }
     for (floating, record) in stage.floating.iter().zip(world.water_forces()) {
-        let index = floating.body;
+        let index = floating.body();
         let body = &world.bodies()[index];
         let gravity = world.system().gravity_load(body);
         let pull = world.load(index).force.z - gravity.force.z - record.total().force.z;
-        let hull = &floating.hull;
+        let hull = &floating.hull();
         let _ = writeln!(
             out,
             "\nfloating body \"{}\" (hull of {} triangles, {:.6} m³)",
@@ -230,9 +260,9 @@ fn water_report(out: &mut String, world: &World) {
             out,
             "  at t = 0: submerged {:.6} m³, water force {} N",
             record.submerged_volume,
-            v(&record.total().force)
+            vector(&record.total().force)
         );
-        if let Some(potential) = &floating.potential {
+        if let Some(potential) = &floating.potential() {
             potential_report(out, world, index, &potential.model);
             hydrostatics_report(out, potential.linear_hydrostatics.as_ref());
         }
@@ -257,7 +287,7 @@ fn water_report(out: &mut String, world: &World) {
                 );
                 let _ = writeln!(out, "  displaced volume   {:.6} m³", s.displaced_volume);
                 let _ = writeln!(out, "  draft              {:.6} m (G at z = {:.6} m)", s.draft, e.height);
-                let _ = writeln!(out, "  centre of buoyancy {} m", v(&s.center_of_buoyancy));
+                let _ = writeln!(out, "  centre of buoyancy {} m", vector(&s.center_of_buoyancy));
                 let _ = writeln!(
                     out,
                     "  waterplane area    {:.6} m² (centre ({:.6}, {:.6}) m)",
@@ -331,7 +361,7 @@ fn potential_report(out: &mut String, world: &World, index: usize, model: &Poten
         omegas.first().copied().unwrap_or(0.0),
         omegas.last().copied().unwrap_or(0.0),
         headings.join(", "),
-        v(&(frame.position + model.arm(&frame)))
+        vector(&(frame.position + model.arm(&frame)))
     );
     infinite_added_mass_report(out, model);
     match model.radiation() {
@@ -401,20 +431,20 @@ fn adaptive(world: &World) -> String {
         return String::new();
     }
     let t = world.tolerances();
-    let max_step = t.max_step.map_or_else(|| "the integrator step".to_string(), |m| format!("{m} s"));
-    format!(" (rtol {:e}, atol {:e}, max step {max_step})", t.rtol, t.atol)
+    let max_step = t.max_step().map_or_else(|| "the integrator step".to_string(), |m| format!("{m} s"));
+    format!(" (rtol {:e}, atol {:e}, max step {max_step})", t.rtol(), t.atol())
 }
 
 fn contact_report(out: &mut String, world: &World, contact: &Contact) {
-    let body = &world.bodies()[contact.body];
-    let against = match &contact.against {
+    let body = &world.bodies()[contact.body()];
+    let against = match &contact.against() {
         Opposing::Planes(planes) if planes.len() == 1 => {
-            format!("the plane through {} m with normal {}", v(&planes[0].point), v(&planes[0].normal))
+            format!("the plane through {} m with normal {}", vector(&planes[0].point), vector(&planes[0].normal))
         }
         Opposing::Planes(planes) => format!("{} walls of the domain box", planes.len()),
         Opposing::Body { body, .. } => format!("body \"{}\"", world.bodies()[*body].name),
     };
-    let boundary = &contact.boundary;
+    let boundary = &contact.boundary();
     let _ = writeln!(
         out,
         "  faces of body \"{}\" ({} faces, {:.6} m²) against {against}",
@@ -422,14 +452,19 @@ fn contact_report(out: &mut String, world: &World, contact: &Contact) {
         boundary.faces().len(),
         boundary.area()
     );
-    let law = &contact.law;
+    let law = &contact.law();
     let _ = writeln!(
         out,
         "  k1 = {} N/m³, k2 = {} N·s/m³, d0 = {} m, μ = {}, k_t = {} s/m, expected area {:.6e} m²",
-        law.stiffness, law.damping, law.range, law.friction, law.friction_sharpness, contact.expected_area
+        law.stiffness(),
+        law.damping(),
+        law.range(),
+        law.friction(),
+        law.friction_sharpness(),
+        contact.expected_area()
     );
     let mass = |i: usize| if world.bodies()[i].is_kinematic() { 0.0 } else { world.bodies()[i].inverse_mass };
-    let inverse_mass = mass(contact.body) + contact.other_body().map_or(0.0, mass);
+    let inverse_mass = mass(contact.body()) + contact.other_body().map_or(0.0, mass);
     let totals = contact.totals(world.frames());
     let _ = writeln!(
         out,
@@ -443,12 +478,12 @@ fn contact_report(out: &mut String, world: &World, contact: &Contact) {
 }
 
 /// `(x, y, z)` with 6 decimals; `+ 0.0` prints −0 as 0.
-fn v(x: &Vec3) -> String {
+fn vector(x: &Vec3) -> String {
     format!("({:.6}, {:.6}, {:.6})", x.x + 0.0, x.y + 0.0, x.z + 0.0)
 }
 
-fn m(x: &Mat3) -> String {
-    let rows: Vec<String> = (0..3).map(|r| v(&x.row(r).transpose())).collect();
+fn matrix(x: &Mat3) -> String {
+    let rows: Vec<String> = (0..3).map(|r| vector(&x.row(r).transpose())).collect();
     format!("[{}]", rows.join(", "))
 }
 
@@ -465,11 +500,11 @@ fn support(s: &Support) -> String {
 
 fn end(world: &World, e: &Endpoint) -> String {
     match e.body() {
-        None => format!("world {} m", v(&e.point())),
+        None => format!("world {} m", vector(&e.point())),
         Some(body) => {
             let b = &world.bodies()[body];
             let reference = b.reference_in_principal.inverse_transform_point(&e.point().into()).coords;
-            format!("body \"{}\" at {} m", b.name, v(&reference))
+            format!("body \"{}\" at {} m", b.name, vector(&reference))
         }
     }
 }
@@ -508,10 +543,10 @@ fn dynamic_line_report(out: &mut String, world: &World, index: usize, line: &Cat
         discrete.segments,
         discrete.segment,
         discrete.ba,
-        parameters.drag_normal,
-        parameters.drag_tangential,
-        parameters.added_mass_normal,
-        parameters.added_mass_tangential
+        parameters.drag_normal(),
+        parameters.drag_tangential(),
+        parameters.added_mass_normal(),
+        parameters.added_mass_tangential()
     );
     let seabed = if limits.seabed.is_finite() { format!("{:.6e} s", limits.seabed) } else { "none".to_string() };
     let forces = &world.coupling_forces()[index];

@@ -51,9 +51,7 @@ pub fn run(args: &EstimateArgs) -> anyhow::Result<()> {
     let _ = writeln!(out, "stopping time    τ   = {:.6e} s", estimate.stopping_time);
     let _ = writeln!(out, "recommended dt   τ/{STEPS_PER_STOPPING_TIME} = {:.6e} s", estimate.recommended_dt);
     if let Some(dt) = args.dt {
-        if !(dt > 0.0 && dt.is_finite()) {
-            anyhow::bail!("--dt must be a positive number of seconds, got {dt}");
-        }
+        super::flags::positive("--dt", dt, "s")?;
         let substeps = estimator::substeps_for(dt, estimate.recommended_dt);
         let _ = writeln!(
             out,

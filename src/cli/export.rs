@@ -29,7 +29,7 @@ enum Format {
 }
 
 pub fn run(args: &ExportArgs) -> anyhow::Result<()> {
-    anyhow::ensure!(args.segments > 0, "--segments must be ≥ 1");
+    super::flags::at_least_one("--segments", args.segments)?;
     let scene = super::load(&args.scene)?;
     let text = match args.format {
         Format::Moordyn => export(&scene.file, scene.bodies.bodies(), &args.scene.display().to_string(), args.segments),

@@ -5,6 +5,7 @@ mod equilibrium;
 mod estimate_contact;
 mod export;
 mod fit;
+mod flags;
 mod forces;
 mod gui;
 mod import;

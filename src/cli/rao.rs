@@ -99,9 +99,8 @@ pub fn run(args: &RaoArgs) -> anyhow::Result<()> {
     let omegas = match &args.periods {
         Some(periods) => periods
             .iter()
-            .map(|&t| if t.is_finite() && t > 0.0 { Ok(TAU / t) } else { Err(t) })
-            .collect::<Result<Vec<_>, _>>()
-            .map_err(|t| anyhow::anyhow!("--periods must be positive numbers of seconds, got {t}"))?,
+            .map(|&t| super::flags::positive("--periods", t, "s").map(|t| TAU / t))
+            .collect::<anyhow::Result<Vec<_>>>()?,
         None => model.coefficients().frequencies().to_vec(),
     };
     let rows = model.rao(&omegas, index);
@@ -160,7 +159,7 @@ pub fn run(args: &RaoArgs) -> anyhow::Result<()> {
 /// Warns when the body's initial pose leaves more than [`UNBALANCED`] of its weight on it.
 fn warn_if_not_at_rest(system: &tether_physics::system::System, model: &LinearModel, label: &str, name: &str) {
     let weight = system.bodies()[model.body()].mass() * system.gravity().norm();
-    let left = model.unbalanced.force.norm();
+    let left = model.unbalanced().force.norm();
     if left > UNBALANCED * weight {
         eprintln!(
             "warning: {label}: body \"{name}\" is not at rest at t = 0: its weight, the water and the couplings leave {left:.0} N on it ({:.2} % of its weight); the solve linearises about this pose and a time-domain run settles about another (start the scene at rest: tether equilibrium --write)",

@@ -11,6 +11,7 @@
 //! entity, and the contact force plots are always there); `--timing` reports where the time
 //! went and what each kind of entity costs per frame.
 
+use super::flags::positive;
 use anyhow::{Context as _, bail};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressState, ProgressStyle};
@@ -18,7 +19,7 @@ use std::path::PathBuf;
 use std::sync::atomic::Ordering;
 use tether_physics::integrator::Integrator;
 use tether_physics::world::{StepError, World};
-use tether_record::framing::{Framing, Sweep, view_direction};
+use tether_record::framing::{Framing, MotionSweep, view_direction};
 use tether_record::layout::{self, Camera};
 use tether_record::{ArrowedContacts, FaceArrows, FrameSchedule, Recorder};
 
@@ -106,18 +107,10 @@ fn face_arrows(args: &RecordArgs) -> anyhow::Result<FaceArrows> {
     })
 }
 
-fn positive(name: &str, value: f64, unit: &str) -> anyhow::Result<f64> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        bail!("{name} must be a positive number of {unit}, got {value}")
-    }
-}
-
 /// Draws the contacts' planes and sends the window's layout, its eye framing the run (the file
 /// opens in any viewer as in the window), from `sweep` of the run's first seconds (finished on a
 /// copy of `world` when the run was shorter).
-fn frame(recorder: &Recorder, world: &World, sweep: Sweep) -> anyhow::Result<()> {
+fn frame(recorder: &Recorder, world: &World, sweep: MotionSweep) -> anyhow::Result<()> {
     let swept = sweep.finish(world);
     recorder.log_planes(world, &swept)?;
     let camera = Camera { framing: Framing::around(&swept, &view_direction(world)), follow: None };
@@ -126,9 +119,9 @@ fn frame(recorder: &Recorder, world: &World, sweep: Sweep) -> anyhow::Result<()>
 }
 
 pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
-    let log_hz = positive("--log-hz", args.log_hz, "frames per second")?;
+    let log_hz = positive("--log-hz", args.log_hz, "Hz")?;
     if let Some(duration) = args.duration {
-        positive("--duration", duration, "seconds")?;
+        positive("--duration", duration, "s")?;
     }
     let mut scene = super::load(&args.scene)?;
     if args.dt.is_some() || args.integrator.is_some() {
@@ -150,7 +143,7 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     face_arrows.check(world)?;
     // The framing (the eye, the contacts' planes) sweeps what moves over the run's first seconds:
     // this run's own steps, rather than a copy's.
-    let mut sweep = Sweep::start(world);
+    let mut sweep = MotionSweep::start(world);
     let mut recorder = Recorder::to_file_unframed(&args.output, world, &face_arrows)
         .with_context(|| format!("cannot write {}", args.output.display()))?;
     let interrupted = super::cancel_on_ctrl_c()?;

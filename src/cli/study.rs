@@ -2,7 +2,8 @@
 //! runs on every core (the sweep's runner); prints the table and writes `study.csv`, `study.md`
 //! and the chart `study.png`.
 
-use anyhow::{Context as _, bail};
+use super::flags::{at_least_one, positive};
+use anyhow::Context as _;
 use clap::Args;
 use std::num::NonZeroUsize;
 use std::path::PathBuf;
@@ -84,9 +85,8 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<()> {
     let integrators = if args.integrators.is_empty() { Integrator::ALL.to_vec() } else { args.integrators.clone() };
     let dts = if args.dts.is_empty() {
         let largest = args.dt_max.unwrap_or(4.0 * scene.file.dt);
-        if !(largest.is_finite() && largest > 0.0) || args.dt_ladder == 0 {
-            bail!("--dt-max must be a positive number of seconds and --dt-ladder at least 1");
-        }
+        positive("--dt-max", largest, "s")?;
+        at_least_one("--dt-ladder", args.dt_ladder)?;
         (0..args.dt_ladder).map(|k| largest / f64::from(1u32 << k.min(30))).collect()
     } else {
         args.dts.clone()
@@ -97,13 +97,9 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<()> {
         Reference::Adaptive { .. } | Reference::ClosedForm => 0.0,
     });
     let wanted = args.duration.unwrap_or(scene.file.duration);
-    if !(wanted.is_finite() && wanted > 0.0) {
-        bail!("--duration must be a positive number of seconds, got {wanted}");
-    }
+    positive("--duration", wanted, "s")?;
     let base = if largest > 0.0 { largest } else { scene.file.dt };
-    if args.samples == 0 {
-        bail!("--samples must be at least 1");
-    }
+    at_least_one("--samples", args.samples)?;
     let sample_interval = base * (wanted / (f64::from(args.samples) * base)).round().max(1.0);
     let duration = sample_interval * (wanted / sample_interval).round().max(1.0);
     let plan = Plan {
@@ -132,9 +128,7 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<()> {
 /// `tether study SCENE --line-models`: the line-model study, printed and written to `lines.md`.
 fn line_models(args: &StudyArgs, scene: &tether_scene::Scene) -> anyhow::Result<()> {
     let duration = args.duration.unwrap_or(scene.file.duration);
-    if !(duration.is_finite() && duration > 0.0) {
-        bail!("--duration must be a positive number of seconds, got {duration}");
-    }
+    positive("--duration", duration, "s")?;
     let runner = Runner::new(args.jobs.unwrap_or_else(all_cores));
     let result = study::lines::run(&runner, scene, duration, |line| eprintln!("{line}"))?;
     let stem = args.scene.file_stem().map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());

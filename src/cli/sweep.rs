@@ -5,6 +5,7 @@
 //! Ctrl-C or SIGTERM stops any stage — checking the cases, running them, writing the results —
 //! within a case's step or a row, keeping every finished row (exit code 130).
 
+use super::flags::positive;
 use anyhow::bail;
 use clap::{Args, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -90,12 +91,8 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<Outcome> {
         return Ok(Outcome::Finished);
     }
     let (Some(spec), Some(output)) = (&args.spec, &args.output) else { bail!("give a sweep spec and -o DIR") };
-    if !(args.case_timeout.is_finite() && args.case_timeout > 0.0) {
-        bail!("--case-timeout must be a positive number of seconds, got {}", args.case_timeout);
-    }
-    if !(args.log_hz.is_finite() && args.log_hz > 0.0) {
-        bail!("--log-hz must be a positive number of frames per second, got {}", args.log_hz);
-    }
+    positive("--case-timeout", args.case_timeout, "s")?;
+    positive("--log-hz", args.log_hz, "Hz")?;
     let shard = shard::resolve(args.shard, &|name| std::env::var(name).ok()).map_err(anyhow::Error::msg)?;
     let plan = Plan::load(spec, args.max_cases)?;
     let runner = Runner::new(args.jobs.unwrap_or_else(tether::runner::all_cores))

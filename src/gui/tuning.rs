@@ -14,9 +14,9 @@ use crate::line_hint::Measures;
 use rerun::external::egui;
 use rerun::external::egui::emath::Numeric;
 use std::fmt::Display;
-use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass};
 use tether_scene::SceneFile;
 use tether_scene::file::{CouplingDef, LawDef};
+use tether_scene::line_model::{DampingDef, DynamicLineDef, LineModelDef};
 
 /// What the tuning panel asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -121,21 +121,21 @@ fn coupling_knobs(ui: &mut egui::Ui, index: usize, def: &mut CouplingDef) -> boo
 /// segments, internal damping, drag and added mass. Switched to dynamic, a line takes 20
 /// segments, ζ = 0.8 and a wire's coefficients (C_dn 1.2, C_dt 0.008, C_an 1, C_at 0), and
 /// starts from its quasi-static shape where it is.
-fn line_model_knobs(ui: &mut egui::Ui, model: &mut LineModel) -> bool {
+fn line_model_knobs(ui: &mut egui::Ui, model: &mut LineModelDef) -> bool {
     let name = ui.label("line model");
     let mut dynamic = !model.is_quasi_static();
     let switched = ui.checkbox(&mut dynamic, "dynamic (lumped mass)").labelled_by(name.id).changed();
     ui.label("");
     ui.end_row();
     if switched {
-        *model = if dynamic { LineModel::Dynamic(LumpedMass::wire(20)) } else { LineModel::QuasiStatic };
+        *model = if dynamic { LineModelDef::Dynamic(DynamicLineDef::wire(20)) } else { LineModelDef::QuasiStatic };
     }
     let edited = match model {
-        LineModel::QuasiStatic => false,
-        LineModel::Dynamic(line) => {
+        LineModelDef::QuasiStatic => false,
+        LineModelDef::Dynamic(line) => {
             let damping = match &mut line.damping {
-                InternalDamping::Ratio(zeta) => knob(ui, "damping ratio ζ", zeta, "–"),
-                InternalDamping::Coefficient(ba) => knob(ui, "damping BA", ba, "N·s"),
+                DampingDef::Ratio(zeta) => knob(ui, "damping ratio ζ", zeta, "–"),
+                DampingDef::Coefficient(ba) => knob(ui, "damping BA", ba, "N·s"),
             };
             knob(ui, "segments N", &mut line.segments, "–")
                 | damping

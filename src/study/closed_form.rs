@@ -86,19 +86,19 @@ impl Oscillator {
         let CouplingKind::SpringDamper(spring) = &coupling.kind else {
             return Err(format!("coupling \"{}\" is not a spring-damper", coupling.name));
         };
-        let ElasticLaw::Linear { stiffness, rest_length } = spring.law else {
+        let &ElasticLaw::Linear { stiffness, rest_length } = spring.law() else {
             return Err(format!("coupling \"{}\" has no linear law", coupling.name));
         };
         if !(stiffness > 0.0) {
             return Err(format!("coupling \"{}\" has no stiffness", coupling.name));
         }
-        let anchor = match (spring.end1, spring.end2) {
+        let anchor = match (spring.end1(), spring.end2()) {
             (Endpoint::World(anchor), Endpoint::Body { .. } | Endpoint::Center { .. })
             | (Endpoint::Body { .. } | Endpoint::Center { .. }, Endpoint::World(anchor)) => anchor,
             _ => return Err(format!("coupling \"{}\" must join the body to a world point", coupling.name)),
         };
         let initial = system.initial_states()[0];
-        let on_body = match (spring.end1, spring.end2) {
+        let on_body = match (spring.end1(), spring.end2()) {
             (Endpoint::World(_), end) | (end, Endpoint::World(_)) => initial.point(&end.point()),
             _ => unreachable!("one end is the world point found above"),
         };
@@ -107,7 +107,7 @@ impl Oscillator {
             return Err(format!("coupling \"{}\" does not lie along the body's free axis", coupling.name));
         }
         let side = chord[axis].signum();
-        let (mass, damping) = (body.mass(), spring.damping);
+        let (mass, damping) = (body.mass(), spring.damping());
         let gravity = system.gravity()[axis];
         let offset_of_end = on_body[axis] - initial.position[axis];
         let equilibrium = anchor[axis] - offset_of_end + side * rest_length + mass * gravity / stiffness;

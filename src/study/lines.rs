@@ -9,9 +9,9 @@
 //! segment count replaced.
 
 use crate::runner::{Runner, thread_cpu_seconds};
-use tether_physics::coupling::LineModel;
 use tether_physics::world::World;
 use tether_scene::file::CouplingDef;
+use tether_scene::line_model::LineModelDef;
 use tether_scene::{Scene, SceneError};
 
 /// Segment counts of the dynamic runs, and of the reference.
@@ -155,9 +155,9 @@ fn record_extremes(world: &World, lines: &[(usize, String)], extremes: &mut [(f6
 }
 
 /// The model of a line declared `declared`, as `setting` runs it.
-fn modelled(declared: LineModel, setting: LineSetting) -> LineModel {
+fn modelled(declared: LineModelDef, setting: LineSetting) -> LineModelDef {
     match setting {
-        LineSetting::QuasiStatic => LineModel::QuasiStatic,
+        LineSetting::QuasiStatic => LineModelDef::QuasiStatic,
         LineSetting::Dynamic(n) => declared.dynamic_with(n),
     }
 }

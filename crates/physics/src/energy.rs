@@ -18,7 +18,7 @@ use crate::body::{BodyState, RigidBody};
 use crate::math::Vec3;
 
 /// Energies of a world at one instant \[J].
-#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct EnergyReport {
     /// `Σ ½ m |v|² + ½ ωᵀ I ω` of the bodies that respond to forces.
     pub kinetic: f64,

@@ -75,7 +75,7 @@ impl Evaluation {
     pub(crate) fn commit_radiation(&mut self, stage: Option<&WaterStage>) {
         let Some(stage) = stage else { return };
         for (floating, run) in stage.floating.iter().zip(&mut self.radiation) {
-            if let Some(potential) = &floating.potential {
+            if let Some(potential) = &floating.potential() {
                 run.commit(potential.model.radiation());
             }
         }
@@ -149,7 +149,7 @@ impl Evaluation {
 /// Whether `coupling` is a dynamic line.
 fn is_dynamic(coupling: &Coupling) -> bool {
     match &coupling.kind {
-        CouplingKind::Catenary(line) => matches!(line.model, LineModel::Dynamic(_)),
+        CouplingKind::Catenary(line) => matches!(line.model(), LineModel::Dynamic(_)),
         CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => false,
     }
 }

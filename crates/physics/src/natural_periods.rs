@@ -36,15 +36,15 @@ pub fn at_equilibrium(
     index: usize,
     added: AddedMassAt,
 ) -> Option<Vec<NaturalMode>> {
-    let floating = system.water()?.floating.iter().find(|f| f.body == index)?;
-    let model = &floating.potential.as_ref()?.model;
+    let floating = system.water()?.floating.iter().find(|f| f.body() == index)?;
+    let model = &floating.potential()?.model;
     let state = &solved.states[index];
     let mass = mass_at_center(&system.bodies()[index], &state.orientation.to_rotation_matrix().into_inner());
     Some(natural_modes(model, &state.frame(), &mass, &solved.body_stiffness(index), added))
 }
 
 /// Which added mass the eigenproblem uses.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum AddedMassAt {
     /// `A∞` as the time domain's mass holds it: `A∞_eff` ([`PotentialBody::infinite_added_mass`]).
     Infinite,

@@ -53,13 +53,13 @@ pub struct LinearModel {
     index: usize,
     body: Arc<PotentialBody>,
     /// `M_P` (module docs).
-    pub mass: Matrix6,
+    mass: Matrix6,
     /// `C` (module docs).
-    pub stiffness: Matrix6,
+    stiffness: Matrix6,
     /// What is left on the body at its initial pose in still water — weight, mesh pressure,
     /// couplings — about G \[N, N·m]: zero for a body at rest, the pose the solve linearises
     /// about; a time-domain run settles about another pose otherwise.
-    pub unbalanced: Load,
+    unbalanced: Load,
 }
 
 /// One frequency's response: `ξ` per unit wave amplitude (m/m, rad/m; WAMIT's phase).
@@ -72,6 +72,21 @@ pub struct RaoRow {
 }
 
 impl LinearModel {
+    /// `M_P` (module docs).
+    pub fn mass(&self) -> &Matrix6 {
+        &self.mass
+    }
+
+    /// `C` (module docs).
+    pub fn stiffness(&self) -> &Matrix6 {
+        &self.stiffness
+    }
+
+    /// What is left on the body at its initial pose in still water about G \[N, N·m].
+    pub fn unbalanced(&self) -> Load {
+        self.unbalanced
+    }
+
     /// The model of the body named `name` in `system` at its initial pose.
     ///
     /// # Errors
@@ -86,8 +101,8 @@ impl LinearModel {
         let model = stage
             .floating
             .iter()
-            .find(|f| f.body == index)
-            .and_then(|f| f.potential.as_ref())
+            .find(|f| f.body() == index)
+            .and_then(|f| f.potential())
             .ok_or_else(|| RaoError::NoPotential { name: name.to_string() })?
             .model
             .clone();
@@ -176,7 +191,7 @@ fn unbalanced(system: &System, index: usize) -> Result<Load, RaoError> {
 pub fn stiffness_about(system: &System, index: usize, arm: &Vec3) -> Result<Matrix6, RaoError> {
     let still = system.at_rest();
     let start = still.initial_states().to_vec();
-    let Some(record) = still.water().and_then(|stage| stage.floating.iter().position(|f| f.body == index)) else {
+    let Some(record) = still.water().and_then(|stage| stage.floating.iter().position(|f| f.body() == index)) else {
         return Err(RaoError::NoWater);
     };
     let reference = start[index].position + arm;

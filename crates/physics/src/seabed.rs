@@ -12,11 +12,8 @@ use crate::parameter::{Bound, ParameterError, require};
 /// A flat seabed, built by [`Seabed::new`], which checks its values.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Seabed {
-    /// `z_b` \[m]: the height of the bottom along the upward vertical.
-    pub elevation: f64,
-    /// `C_B` [–] ≥ 0: friction of a line lying on the bottom, as a fraction of its submerged
-    /// weight per length (the anchor tension is `H_A = max(H − C_B W L_B, 0)`).
-    pub line_friction: f64,
+    elevation: f64,
+    line_friction: f64,
 }
 
 /// A seabed that cannot be: the parameter at fault.
@@ -34,6 +31,28 @@ impl Seabed {
             elevation: require("elevation", elevation, Bound::Finite, "m").map_err(SeabedError)?,
             line_friction: require("line_friction", line_friction, Bound::NonNegative, "").map_err(SeabedError)?,
         })
+    }
+
+    /// `z_b` \[m]: the height of the bottom along the upward vertical.
+    pub fn elevation(&self) -> f64 {
+        self.elevation
+    }
+
+    /// `C_B` [–] ≥ 0: friction of a line lying on the bottom, as a fraction of its submerged
+    /// weight per length (the anchor tension is `H_A = max(H − C_B W L_B, 0)`).
+    pub fn line_friction(&self) -> f64 {
+        self.line_friction
+    }
+
+    /// The same seabed at `elevation` z_b \[m]: the bottom of a water whose depth its own
+    /// constructor checked finite (PHYSICS.md §7: the seabed stays at the water's depth).
+    pub(crate) fn at_water_bottom(self, elevation: f64) -> Self {
+        Self { elevation, ..self }
+    }
+
+    /// The same seabed without line friction (`C_B = 0`).
+    pub(crate) fn frictionless(self) -> Self {
+        Self { line_friction: 0.0, ..self }
     }
 
     /// Height \[m] of `point` above the bottom, along the unit upward vertical `up`.

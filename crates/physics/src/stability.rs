@@ -157,19 +157,19 @@ pub fn limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
                 let chord = forces.point2 - forces.point1;
                 let length = chord.norm();
                 let Some(d) = chord.try_normalize(0.0) else { continue };
-                oscillator_limit(integrator, spring.law.tangent_stiffness(length), spring.damping, along(&d))
+                oscillator_limit(integrator, spring.law().tangent_stiffness(length), spring.damping(), along(&d))
             }
-            CouplingKind::Catenary(line) if line.model != LineModel::QuasiStatic => {
+            CouplingKind::Catenary(line) if line.model() != LineModel::QuasiStatic => {
                 // An end body is held by its first segment, a spring EA/l with its internal
                 // damper BA/l against the next node (PHYSICS.md §8): the bodies' step must
                 // resolve both (a light body on a stiffly damped chain is held by the damper).
                 let Some(nodes) = evaluation.line_run(index).and_then(|run| run.nodes()) else { continue };
                 let n = nodes.positions.len() - 1;
-                let stiffness = line.stiffness * n as f64;
-                let segment = line.length / n as f64;
-                let damping = match &line.model {
+                let stiffness = line.stiffness() * n as f64;
+                let segment = line.length() / n as f64;
+                let damping = match &line.model() {
                     LineModel::Dynamic(lumped) => {
-                        lumped.damping.coefficient(segment, line.stiffness * line.length, line.mass_per_length)
+                        lumped.damping().coefficient(segment, line.stiffness() * line.length(), line.mass_per_length())
                             / segment
                     }
                     LineModel::QuasiStatic => 0.0,
@@ -204,16 +204,20 @@ pub fn limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
                 oscillator_limit(integrator, eigen.eigenvalues[largest], 0.0, along(&d))
             }
             CouplingKind::Contact(contact) => {
-                let inverse: f64 = [Some(contact.body), contact.other_body()]
+                let inverse: f64 = [Some(contact.body()), contact.other_body()]
                     .into_iter()
                     .flatten()
                     .map(|i| translational_inverse_mass(system, i))
                     .sum();
                 let area = contact.limit_area(frames);
-                let normal =
-                    oscillator_limit(integrator, contact.law.stiffness * area, contact.law.damping * area, inverse);
-                let friction = contact.law.friction
-                    * contact.law.friction_sharpness
+                let normal = oscillator_limit(
+                    integrator,
+                    contact.law().stiffness() * area,
+                    contact.law().damping() * area,
+                    inverse,
+                );
+                let friction = contact.law().friction()
+                    * contact.law().friction_sharpness()
                     * evaluation.contact_forces(index).map_or(0.0, |forces| forces.normal);
                 // Without a normal force friction damps nothing (an infinite limit): the faces
                 // need not be evaluated again.
@@ -254,18 +258,19 @@ fn water_limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
     let rho = water.density();
     let rho_g = water.specific_weight();
     let mut limits = Vec::new();
-    for floating in stage.floating.iter().filter(|f| !system.bodies()[f.body].is_kinematic()) {
-        let (body, state) = (&system.bodies()[floating.body], &states[floating.body]);
+    for floating in stage.floating.iter().filter(|f| !system.bodies()[f.body()].is_kinematic()) {
+        let (body, state) = (&system.bodies()[floating.body()], &states[floating.body()]);
         let frame = state.frame();
-        let hull = &floating.hull;
+        let hull = &floating.hull();
         let statics = Hydrostatics::at(hull, &frame.position, &frame.rotation, water.level());
         let wetted = (statics.displaced_volume / hull.volume()).min(1.0);
         if !(wetted > 0.0) {
             continue;
         }
-        let hydro = &floating.hydro;
-        let speed =
-            water.peak_flow_speed() + frame.velocity.norm() + state.angular_velocity.norm() * hydro.drag_center.norm();
+        let hydro = &floating.hydro();
+        let speed = water.peak_flow_speed()
+            + frame.velocity.norm()
+            + state.angular_velocity.norm() * hydro.drag_center().norm();
         let (drag, turning) = hydro.linearised(&frame, speed, rho, wetted);
         let righting = rho_g
             * statics.displaced_volume
@@ -273,21 +278,21 @@ fn water_limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
         let smallest_moment = body.principal_moments().min();
         let mut dt = f64::INFINITY;
         for j in 0..3 {
-            let axis = frame.rotation * hydro.axes.column(j);
+            let axis = frame.rotation * hydro.axes().column(j);
             let heave = rho_g * statics.waterplane_area * axis.z * axis.z;
-            let mass = match &floating.potential {
+            let mass = match &floating.potential() {
                 // Potential flow: `A∞` about G along the axis (PHYSICS.md §9).
                 Some(potential) => {
                     let infinite = potential.model.infinite_added_mass_at_center(&frame);
                     body.mass() + axis.dot(&(infinite.fixed_view::<3, 3>(0, 0) * axis))
                 }
-                None => body.mass() + wetted * rho * hull.volume() * hydro.spec.added_mass[j],
+                None => body.mass() + wetted * rho * hull.volume() * hydro.spec().added_mass[j],
             };
             dt = dt.min(oscillator_limit(integrator, heave, drag[j], 1.0 / mass));
             dt = dt.min(oscillator_limit(integrator, righting, turning[j], 1.0 / smallest_moment));
         }
         if dt.is_finite() {
-            limits.push(Limit { limiter: Limiter::Water(floating.body), dt });
+            limits.push(Limit { limiter: Limiter::Water(floating.body()), dt });
         }
     }
     limits
@@ -303,7 +308,7 @@ pub fn impact_limits(situation: &Situation) -> Vec<Limit> {
         .enumerate()
         .filter_map(|(index, coupling)| match &coupling.kind {
             CouplingKind::Contact(contact) => {
-                let inverse = inverse_mass(contact.body) + contact.other_body().map_or(0.0, inverse_mass);
+                let inverse = inverse_mass(contact.body()) + contact.other_body().map_or(0.0, inverse_mass);
                 Some(Limit {
                     limiter: Limiter::Impact(index),
                     dt: contact.stopping_time(contact.limit_area(situation.evaluation.frames()), inverse)
@@ -327,10 +332,10 @@ pub fn binding(limits: &[Limit]) -> Option<Limit> {
 /// much as it pushes them.
 fn sliding_inverse_mass(system: &System, frames: &[BodyFrame], contact: &Contact) -> f64 {
     let faces = contact.active_faces(frames);
-    let frame = &frames[contact.body];
+    let frame = &frames[contact.body()];
     let on_body = faces.iter().map(|face| face.centroid);
     let mut sliding_inverse =
-        translational_inverse_mass(system, contact.body) + turning_inverse_mass(system, contact.body, on_body);
+        translational_inverse_mass(system, contact.body()) + turning_inverse_mass(system, contact.body(), on_body);
     if let Some(other) = contact.other_body() {
         let to_other =
             |c: Vec3| frames[other].rotation.tr_mul(&(frame.position + frame.rotation * c - frames[other].position));

@@ -184,7 +184,7 @@ impl System {
         let hydro = |source: FloatingError| SystemError::Hydro { body: name.clone(), source };
         let stage = self.water.as_mut().ok_or(SystemError::NoWater)?;
         let position =
-            stage.floating.iter().position(|f| f.body == body).ok_or(SystemError::FloatingBody { body, count })?;
+            stage.floating.iter().position(|f| f.body() == body).ok_or(SystemError::FloatingBody { body, count })?;
         crate::potential::body::check_start_axes(&self.bodies[body], &self.initial_states[body].orientation)
             .map_err(|e| hydro(e.into()))?;
         let hydrostatics = spec.hydrostatics;
@@ -207,7 +207,8 @@ impl System {
                 Some(LinearHydrostatics::new(stiffness, &frame, &arm, &pressure))
             }
         };
-        stage.floating[position].potential = Some(FloatingPotential {
+        let floating = stage.floating[position].clone();
+        stage.floating[position] = floating.with_potential(FloatingPotential {
             model: std::sync::Arc::new(model),
             mean_position,
             excitation,
@@ -228,7 +229,7 @@ impl System {
     /// Borrowed unchanged without water or dynamic lines.
     pub fn at_rest(&self) -> std::borrow::Cow<'_, System> {
         let dynamic =
-            |c: &Coupling| matches!(&c.kind, CouplingKind::Catenary(line) if line.model != LineModel::QuasiStatic);
+            |c: &Coupling| matches!(&c.kind, CouplingKind::Catenary(line) if line.model() != LineModel::QuasiStatic);
         if self.water.is_none() && !self.couplings.iter().any(dynamic) {
             return std::borrow::Cow::Borrowed(self);
         }
@@ -257,14 +258,14 @@ impl System {
             .floating
             .iter()
             .map(|entry| {
-                let spec = HydroSpec { added_mass: Vec3::zeros(), added_inertia: Vec3::zeros(), ..entry.hydro.spec };
+                let spec =
+                    HydroSpec { added_mass: Vec3::zeros(), added_inertia: Vec3::zeros(), ..*entry.hydro().spec() };
                 // Accepted coefficients with the added mass zeroed stay in range.
-                let hydro = crate::water::Hydro::new(spec, &self.bodies[entry.body], &entry.hull)
+                let hydro = crate::water::Hydro::new(spec, &self.bodies[entry.body()], entry.hull())
                     .expect("accepted coefficients without added mass");
                 // At rest nothing radiates and nothing accelerates: no potential flow, but its
                 // linear hydrostatics, a static restoring, kept.
-                let hydrostatics_at_rest = entry.potential.as_ref().and_then(|p| p.linear_hydrostatics.clone());
-                FloatingBody { hydro, potential: None, switched_off: None, hydrostatics_at_rest, ..entry.clone() }
+                entry.at_rest(hydro)
             })
             .collect();
         WaterStage { water, floating }
@@ -279,7 +280,7 @@ impl System {
         })?;
         // The seabed stays at the water's depth (PHYSICS.md §7).
         let seabed = match (&self.surroundings.seabed, stage.water.seabed()) {
-            (Some(seabed), Some(elevation)) => Some(Seabed { elevation, ..*seabed }),
+            (Some(seabed), Some(elevation)) => Some(seabed.at_water_bottom(elevation)),
             (seabed, _) => *seabed,
         };
         if let Some(seabed) = &seabed {
@@ -297,11 +298,11 @@ impl System {
         let count = self.bodies.len();
         let stage = self.water.as_mut().ok_or(SystemError::NoWater)?;
         let entry =
-            stage.floating.iter_mut().find(|f| f.body == body).ok_or(SystemError::FloatingBody { body, count })?;
-        let hydro = crate::water::Hydro::new(spec, &self.bodies[body], &entry.hull).map_err(|e| {
+            stage.floating.iter_mut().find(|f| f.body() == body).ok_or(SystemError::FloatingBody { body, count })?;
+        let hydro = crate::water::Hydro::new(spec, &self.bodies[body], entry.hull()).map_err(|e| {
             SystemError::Hydro { body: self.bodies[body].name.clone(), source: FloatingError::Hydro(e) }
         })?;
-        entry.hydro = hydro;
+        entry.set_hydro(hydro);
         Ok(())
     }
 
@@ -451,9 +452,9 @@ impl System {
         for run in lines.iter_mut() {
             let index = run.coupling;
             let CouplingKind::Catenary(line) = &self.couplings[index].kind else { continue };
-            let LineModel::Dynamic(parameters) = &line.model else { continue };
+            let LineModel::Dynamic(parameters) = &line.model() else { continue };
             let discrete = Discrete::new(line, parameters, &self.surroundings, water.map(|w| w.level()));
-            let ends = [line.end1.motion(frames), line.end2.motion(frames)];
+            let ends = [line.end1().motion(frames), line.end2().motion(frames)];
             let outcome = run
                 .advance(line, &discrete, &self.surroundings, water, &ends, time)
                 .map_err(|source| EvaluationError { coupling: index, source: CouplingError::Line(source) })?;
@@ -562,11 +563,11 @@ fn check_anchors(couplings: &[Coupling], seabed: &Seabed, gravity: &Vec3) -> Res
             // contact against the seabed is made for it.
             CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => continue,
         };
-        for (end, endpoint) in [(1, &line.end1), (2, &line.end2)] {
+        for (end, endpoint) in [(1, &line.end1()), (2, &line.end2())] {
             let Endpoint::World(point) = endpoint else { continue };
             let height = seabed.height(point, &up);
-            if height < -ON_SEABED * line.length {
-                let source = BelowSeabed { end, depth: -height, elevation: seabed.elevation };
+            if height < -ON_SEABED * line.length() {
+                let source = BelowSeabed { end, depth: -height, elevation: seabed.elevation() };
                 return Err(SystemError::BelowSeabed { coupling: coupling.name.clone(), source });
             }
         }
@@ -590,7 +591,7 @@ fn check_lines(
         };
         let refused = |source| SystemError::Line { coupling: coupling.name.clone(), source };
         line.check_weight(surroundings).map_err(refused)?;
-        match &line.model {
+        match &line.model() {
             LineModel::Dynamic(parameters) => {
                 Discrete::new(line, parameters, surroundings, water_level).check(line).map_err(refused)?;
             }

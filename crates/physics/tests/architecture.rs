@@ -60,6 +60,105 @@ fn the_physics_crate_names_no_gui_viewer_or_file_format() {
         )
         .join("Cargo.toml"),
         &root(),
-        &["rerun", "egui", "eframe", "ron::", "tobj", "stl_io", "tether_scene"],
+        &["rerun", "egui", "eframe", "ron::", "serde", "tobj", "stl_io", "tether_scene"],
     );
+}
+
+/// Nor does any crate it depends on bring a file format in: `cargo tree` of its normal
+/// dependencies names no serde (the scene crate spells the physics' types in files, issue 45).
+#[test]
+fn the_physics_crate_s_normal_dependencies_have_no_serde() {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let out = std::process::Command::new(cargo)
+        .args(["tree", "--offline", "--locked", "-p", "tether-physics", "-e", "normal", "--prefix", "none"])
+        .output()
+        .expect("cargo runs");
+    assert!(out.status.success(), "cargo tree: {}", String::from_utf8_lossy(&out.stderr));
+    let tree = String::from_utf8_lossy(&out.stdout);
+    assert!(tree.lines().any(|line| line.starts_with("nalgebra ")), "the tree is read:\n{tree}");
+    let serde: Vec<&str> = tree.lines().filter(|line| line.starts_with("serde")).collect();
+    assert!(serde.is_empty(), "tether-physics depends on {serde:?}:\n{tree}");
+}
+
+/// A type whose constructor checks its values (`pub fn new(…) -> Result<Self, …>`) has no public
+/// field: a struct literal would skip the check, and the type would hold what it refuses (issue
+/// 45). Read from the sources: every struct of a file with such a `new` in an `impl` of it.
+#[test]
+fn every_type_with_a_checking_constructor_has_no_public_field() {
+    let (mut checked, mut open) = (BTreeSet::new(), Vec::new());
+    for (module, file) in import_graph::modules(&root()) {
+        let text = std::fs::read_to_string(&file).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
+        // The whole file without its comments (`code` stops at the first `#[cfg(test)]`, which
+        // may stand inside an `impl`).
+        let text: String =
+            text.lines().map(|line| line.split("//").next().unwrap_or_default()).collect::<Vec<_>>().join("\n");
+        for name in checking_constructors(&text) {
+            let Some(fields) = block_after(&text, &format!("pub struct {name} {{")) else { continue };
+            let public: Vec<&str> = fields.lines().map(str::trim).filter(|line| line.starts_with("pub ")).collect();
+            if !public.is_empty() {
+                open.push(format!("{module}: {name} {public:?}"));
+            }
+            checked.insert(name);
+        }
+    }
+    assert!(open.is_empty(), "types that check their values in `new` but have public fields:\n{}", open.join("\n"));
+    let known = [
+        "Timing",
+        "Tolerances",
+        "Catenary",
+        "SpringDamper",
+        "ContactLaw",
+        "Seabed",
+        "LumpedMass",
+        "Harmonic",
+        "PotentialBody",
+        "Water",
+    ];
+    for name in known {
+        assert!(checked.contains(name), "{name} is not among the types read: {checked:?}");
+    }
+}
+
+/// The names of the types in `code` whose `impl Name {` block has a `pub fn new(…)` that
+/// returns a `Result<Self, …>`.
+fn checking_constructors(code: &str) -> Vec<String> {
+    let mut names = Vec::new();
+    for (at, _) in code.match_indices("\nimpl ") {
+        let header = &code[at + "\nimpl ".len()..];
+        let Some(open) = header.find('{') else { continue };
+        let name = header[..open].trim();
+        if name.contains(' ') || name.contains('<') {
+            continue; // a trait's impl, or a generic one
+        }
+        let Some(body) = block_after(header, "") else { continue };
+        let checks = body.match_indices("pub fn new(").any(|(start, _)| {
+            let signature = &body[start..body[start..].find('{').map_or(body.len(), |end| start + end)];
+            signature.contains("Result<Self")
+        });
+        if checks {
+            names.push(name.to_string());
+        }
+    }
+    names
+}
+
+/// The text between the braces of the block that starts at the first `{` after `opening` in
+/// `code` (`opening` empty: the first `{`), if there is one.
+fn block_after<'a>(code: &'a str, opening: &str) -> Option<&'a str> {
+    let start = code.find(opening)? + opening.len();
+    let open = if opening.ends_with('{') { start - 1 } else { start + code[start..].find('{')? };
+    let mut depth = 0;
+    for (i, c) in code[open..].char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(&code[open + 1..open + i]);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
 }

@@ -6,7 +6,7 @@
 use nalgebra::{DMatrix, Vector3};
 use tether_physics::coupling::lumped_line::nodes::{self, LineNodes, NodeForces};
 use tether_physics::coupling::lumped_line::{Discrete, LineRun, statics};
-use tether_physics::coupling::{Catenary, EndMotion, Endpoint, InternalDamping, LineModel, LumpedMass};
+use tether_physics::coupling::{Catenary, EndMotion, Endpoint, InternalDamping, LineModel, LumpedMass, LumpedMassSpec};
 use tether_physics::seabed::Seabed;
 use tether_physics::surroundings::Surroundings;
 use tether_physics::water::{CurrentSpec, WaterSpec, WaveSpec};
@@ -59,7 +59,7 @@ fn taut(segments: u32) -> (Catenary, Discrete, LineNodes, f64, f64) {
     let p2 = V::new(length * stretch, 0.0, 0.0);
     let l = line(lambda, length, ea, plain(segments), V::zeros(), p2);
     let surroundings = Surroundings::dry(V::zeros());
-    let LineModel::Dynamic(model) = l.model else { unreachable!("built dynamic") };
+    let LineModel::Dynamic(model) = l.model() else { unreachable!("built dynamic") };
     let discrete = Discrete::new(&l, &model, &surroundings, None);
     let at = statics::solve(&l, &discrete, &surroundings, &V::zeros(), &p2, 0.0).nodes;
     (l, discrete, at, lambda, ea * (stretch - 1.0))
@@ -69,9 +69,9 @@ fn taut(segments: u32) -> (Catenary, Discrete, LineNodes, f64, f64) {
 fn axial_modes_are_the_discrete_closed_form() {
     let n = 20;
     let (l, discrete, at, lambda, _) = taut(n);
-    let segment = l.length / f64::from(n);
+    let segment = l.length() / f64::from(n);
     let omega = frequencies(&discrete, &at, 0, lambda * segment);
-    let ea = l.stiffness * l.length;
+    let ea = l.stiffness() * l.length();
     for mode in [1, 2, n - 1] {
         let expected = 2.0
             * (ea / (lambda * segment * segment)).sqrt()
@@ -86,7 +86,7 @@ fn axial_modes_are_the_discrete_closed_form() {
 fn transverse_modes_are_the_taut_string_s() {
     let n = 20;
     let (l, discrete, at, lambda, tension) = taut(n);
-    let segment = l.length / f64::from(n);
+    let segment = l.length() / f64::from(n);
     let stretched = segment * 1.01;
     let omega = frequencies(&discrete, &at, 1, lambda * segment);
     for mode in [1, 2, n - 1] {
@@ -104,9 +104,9 @@ fn transverse_modes_are_the_taut_string_s() {
 fn an_axial_step_travels_at_the_wave_speed() {
     let n = 200;
     let (l, discrete, _, lambda, _) = taut(n);
-    let ea = l.stiffness * l.length;
+    let ea = l.stiffness() * l.length();
     let surroundings = Surroundings::dry(V::zeros());
-    let p2 = V::new(l.length * 1.01, 0.0, 0.0);
+    let p2 = V::new(l.length() * 1.01, 0.0, 0.0);
     let fixed =
         |p: V| EndMotion { position: p, velocity: V::zeros(), attachment: tether_physics::coupling::Attachment::World };
     let mut run = LineRun::new(0);
@@ -114,7 +114,7 @@ fn an_axial_step_travels_at_the_wave_speed() {
     run.commit();
     // Pulled at a constant 0.1 m/s from t = 0: a step of tension `v √(EA λ0)` travels down
     // the line and doubles where it reflects at the fixed end 1.
-    let (speed, wave_time) = (0.1, l.length / (ea / lambda).sqrt());
+    let (speed, wave_time) = (0.1, l.length() / (ea / lambda).sqrt());
     let step = speed * (ea * lambda).sqrt();
     let dt = wave_time / 2000.0;
     let mut t = 0.0;
@@ -137,7 +137,7 @@ fn an_axial_step_travels_at_the_wave_speed() {
 fn end_force_errors(seabed: Option<Seabed>, p2: V, counts: &[u32]) -> Vec<f64> {
     let (lambda, length, ea) = (25.79, 250.0, 1.1e8);
     let surroundings = Surroundings { seabed, ..Surroundings::dry(V::new(0.0, 0.0, -G)) };
-    let p1 = V::new(0.0, 0.0, seabed.map_or(0.0, |s| s.elevation));
+    let p1 = V::new(0.0, 0.0, seabed.map_or(0.0, |s| s.elevation()));
     let reference = Catenary::new(Endpoint::World(p1), Endpoint::World(p2), lambda, length, ea / length)
         .unwrap()
         .solve(&p1, &p2, &surroundings, None)
@@ -147,7 +147,7 @@ fn end_force_errors(seabed: Option<Seabed>, p2: V, counts: &[u32]) -> Vec<f64> {
         .iter()
         .map(|&n| {
             // A stiff bottom: its own sinking (w/(k_b d)) stays below the discretisation's error.
-            let model = LumpedMass { seabed_stiffness: 3e10, ..plain(n) };
+            let model = LumpedMass::new(LumpedMassSpec { seabed_stiffness: 3e10, ..plain(n).spec() }).expect("valid");
             let l = line(lambda, length, ea, model, p1, p2).with_displaced_area(0.0033).unwrap();
             let discrete = Discrete::new(&l, &model, &surroundings, None);
             let solved = statics::solve(&l, &discrete, &surroundings, &p1, &p2, 0.0);
@@ -210,8 +210,12 @@ fn a_taut_line_in_a_current_bows_as_a_loaded_string() {
     let lambda = rho * area;
     let stretch = 1.002;
     let (p1, p2) = (V::new(0.0, 0.0, -20.0), V::new(length * stretch, 0.0, -20.0));
-    let model =
-        LumpedMass { drag_normal: drag, drag_tangential: 0.0, damping: InternalDamping::Ratio(0.5), ..plain(40) };
+    let spec = LumpedMassSpec {
+        drag_normal: drag,
+        drag_tangential: 0.0,
+        ..LumpedMassSpec::plain(40, InternalDamping::Ratio(0.5))
+    };
+    let model = LumpedMass::new(spec).expect("valid");
     let l = line(lambda, length, ea, model, p1, p2).with_displaced_area(area).unwrap();
     let gravity = V::new(0.0, 0.0, -G);
     let spec = WaterSpec {
@@ -223,7 +227,7 @@ fn a_taut_line_in_a_current_bows_as_a_loaded_string() {
     };
     let water = tether_physics::water::Water::new(spec, &gravity).unwrap();
     let surroundings = Surroundings { fluid_density: rho, ..Surroundings::dry(gravity) };
-    let LineModel::Dynamic(model) = l.model else { unreachable!("built dynamic") };
+    let LineModel::Dynamic(model) = l.model() else { unreachable!("built dynamic") };
     let discrete = Discrete::new(&l, &model, &surroundings, Some(water.level()));
     let fixed =
         |p: V| EndMotion { position: p, velocity: V::zeros(), attachment: tether_physics::coupling::Attachment::World };
@@ -255,7 +259,7 @@ fn a_line_started_under_way_moves_with_its_static_shape() {
     let (p1, p2) = (V::zeros(), V::new(10.0, 0.0, 0.0));
     let l = line(8.0, 12.0, 2.0e7, plain(20), p1, p2);
     let surroundings = Surroundings::dry(V::new(0.0, 0.0, -G));
-    let LineModel::Dynamic(model) = l.model else { unreachable!("built dynamic") };
+    let LineModel::Dynamic(model) = l.model() else { unreachable!("built dynamic") };
     let discrete = Discrete::new(&l, &model, &surroundings, None);
     let velocity = V::new(0.0, 1.0, 0.0);
     let moving = |p: V, t: f64| EndMotion {

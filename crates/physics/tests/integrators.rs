@@ -405,7 +405,7 @@ fn adaptive_settings_are_checked_where_they_are_written() {
     let scene = parse(&format!("Scene(dt: 0.01, integrator: dopri45, adaptive: (rtol: 1e-8, max_step: 1e-3), {body})"))
         .unwrap();
     assert_eq!(
-        (scene.world.tolerances().rtol, scene.world.tolerances().atol, scene.world.tolerances().max_step),
+        (scene.world.tolerances().rtol(), scene.world.tolerances().atol(), scene.world.tolerances().max_step()),
         (1e-8, 1e-9, Some(1e-3))
     );
 }

@@ -127,5 +127,5 @@ fn a_refused_coupling_edit_names_its_cause_and_leaves_the_world_as_it_was() {
     assert_eq!(unknown_body, EditError::System(SystemError::UnknownBody { coupling: "s".into(), body: 3, count: 1 }));
     assert_eq!(unknown_body.to_string(), "coupling \"s\" refers to body 3, but the system has 1 bodies");
     assert_eq!((world.time(), world.state(0).position, world.energy().balance()), (time, position, balance));
-    assert!(matches!(&world.couplings()[0].kind, CouplingKind::SpringDamper(s) if s.law.force(2.0) == 100.0));
+    assert!(matches!(&world.couplings()[0].kind, CouplingKind::SpringDamper(s) if s.law().force(2.0) == 100.0));
 }

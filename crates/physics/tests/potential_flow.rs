@@ -82,7 +82,7 @@ fn the_linear_model_is_the_scenes_mass_and_the_meshs_hydrostatic_stiffness() {
     let m = mass();
     let ixx = m * (3.0 * RADIUS * RADIUS + DRAFT * DRAFT) / 12.0;
     let expected_mass = Matrix6::from_diagonal(&Vector6::new(m, m, m, ixx, ixx, m * RADIUS * RADIUS / 2.0));
-    assert!((model.mass - expected_mass).norm() < 1e-9 * expected_mass.norm(), "{}", model.mass);
+    assert!((model.mass() - expected_mass).norm() < 1e-9 * expected_mass.norm(), "{}", model.mass());
     // The 32-gon's second moment about a diameter: n R⁴ (4 sin α + sin 2α)/48, α = 2π/n.
     let step = 2.0 * PI / SIDES;
     let second_moment = SIDES * RADIUS.powi(4) / 48.0 * (4.0 * step.sin() + (2.0 * step).sin());
@@ -95,11 +95,11 @@ fn the_linear_model_is_the_scenes_mass_and_the_meshs_hydrostatic_stiffness() {
     expected[(4, 4)] = pitch;
     println!(
         "C33 {:.6e} (expected {heave:.6e}), C44 {:.6e}, C55 {:.6e} (expected {pitch:.6e})",
-        model.stiffness[(2, 2)],
-        model.stiffness[(3, 3)],
-        model.stiffness[(4, 4)]
+        model.stiffness()[(2, 2)],
+        model.stiffness()[(3, 3)],
+        model.stiffness()[(4, 4)]
     );
-    assert!((model.stiffness - expected).abs().max() < 1e-6 * pitch, "{}", model.stiffness);
+    assert!((model.stiffness() - expected).abs().max() < 1e-6 * pitch, "{}", model.stiffness());
 }
 
 /// `hydrostatics: Linear` (PHYSICS.md §9 "Linear hydrostatics"): the cylinder's restoring is
@@ -115,12 +115,12 @@ fn linear_hydrostatics_are_the_files_stiffness_about_the_start_pose() {
     let model = LinearModel::new(world.system(), "cylinder").expect("a body with potential data");
     println!(
         "C33 {:.6e} (file {:.6e}), C55 {:.6e} (file {:.6e})",
-        model.stiffness[(2, 2)],
+        model.stiffness()[(2, 2)],
         file[(2, 2)],
-        model.stiffness[(4, 4)],
+        model.stiffness()[(4, 4)],
         file[(4, 4)]
     );
-    assert!((model.stiffness - file).abs().max() < 1e-6 * file.abs().max(), "{}\n{}", model.stiffness, file);
+    assert!((model.stiffness() - file).abs().max() < 1e-6 * file.abs().max(), "{}\n{}", model.stiffness(), file);
 
     let pressure_at = |world: &World, sink: f64, heel: f64| {
         let system = world.system();
@@ -196,7 +196,7 @@ fn linear_hydrostatics_keep_the_energy_balance() {
 fn held_infinite(potential: &str) -> Matrix6 {
     let world = cylinder("", 0.0, potential, 0.01);
     let floating = &world.system().water().expect("water").floating[0];
-    *floating.potential.as_ref().expect("potential flow").model.infinite_added_mass()
+    *floating.potential().as_ref().expect("potential flow").model.infinite_added_mass()
 }
 
 /// Surge \[m], heave \[m] and pitch \[rad] of the body from its start.
@@ -503,7 +503,7 @@ fn potential_flow_switches_off_and_on_as_worlds_built_with_and_without_it() {
     run(&mut kept, 2.0 * period);
     switched.set_potential_flow(0, false).expect("a potential-flow body");
     let floating = &switched.system().water().expect("water").floating[0];
-    assert!(floating.potential.is_none() && floating.has_potential_data());
+    assert!(floating.potential().is_none() && floating.has_potential_data());
     let mut without = fresh(morison, &switched);
     let limit = |world: &World| {
         let water = world.limits().into_iter().find(|l| l.limiter == Limiter::Water(0));
@@ -570,7 +570,7 @@ fn the_cylinders_infinite_added_mass_is_made_consistent_with_its_band() {
     println!("relative shift per dof: {:?}", consistency.relative_shift(file));
 
     let world = cylinder("", 0.0, "", 0.02);
-    let model = &world.system().water().expect("water").floating[0].potential.as_ref().expect("potential").model;
+    let model = &world.system().water().expect("water").floating[0].potential().as_ref().expect("potential").model;
     assert_eq!(model.infinite_added_mass(), &consistency.infinite, "the scene's body holds A∞_eff");
     assert!(!model.infinite_is_the_files());
 
@@ -593,9 +593,9 @@ fn the_cylinders_infinite_added_mass_is_made_consistent_with_its_band() {
     let pitch_frequency = |added: &dyn Fn(f64) -> Matrix6| {
         let mut omega = 1.3;
         for _ in 0..100 {
-            let inertia = linear.mass + added(omega);
+            let inertia = linear.mass() + added(omega);
             let pick = |m: &Matrix6| nalgebra::Matrix2::new(m[(0, 0)], m[(0, 4)], m[(4, 0)], m[(4, 4)]);
-            let lambda = (pick(&inertia).try_inverse().expect("positive") * pick(&linear.stiffness)).eigenvalues();
+            let lambda = (pick(&inertia).try_inverse().expect("positive") * pick(linear.stiffness())).eigenvalues();
             omega = lambda.expect("real").max().sqrt();
         }
         omega
@@ -746,9 +746,9 @@ fn free_spar() -> World {
     };
     let guess = 1.6072e6 / G;
     let first = spar(guess);
-    let unbalanced = LinearModel::new(first.system(), "spar").expect("potential flow").unbalanced;
+    let unbalanced = LinearModel::new(first.system(), "spar").expect("potential flow").unbalanced();
     let world = spar(guess + unbalanced.force.z / G);
-    let left = LinearModel::new(world.system(), "spar").expect("potential flow").unbalanced;
+    let left = LinearModel::new(world.system(), "spar").expect("potential flow").unbalanced();
     println!(
         "ballast {:.1} kg; left unbalanced {:.3e} N, {:.3e} N·m",
         guess + unbalanced.force.z / G,

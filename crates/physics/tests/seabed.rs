@@ -264,7 +264,7 @@ fn forces_are_minus_the_energy_gradient_without_friction() {
         assert!(s.ground.is_some(), "{p1:?} {p2:?}");
         let (f1, f2) = s.end_forces();
         let scale = f1.norm().max(f2.norm());
-        let d = 1e-6 * l.length;
+        let d = 1e-6 * l.length();
         let energy = |a: V, b: V| solve(&l, a, b, &surroundings).potential_energy();
         for axis in 0..3 {
             let e = V::ith(axis, d);
@@ -288,7 +288,7 @@ fn end_stiffness_matches_finite_differences() {
         let surroundings = on_seabed(-80.0, cb);
         let s = solve(&l, p1, p2, &surroundings);
         let blocks = s.end_stiffness();
-        let d = 1e-6 * l.length;
+        let d = 1e-6 * l.length();
         let on_bottom = |p: V| (p.z + 80.0).abs() < 1e-9;
         for (j, p) in [p1, p2].into_iter().enumerate() {
             let mut fd = [Matrix3::zeros(), Matrix3::zeros()];

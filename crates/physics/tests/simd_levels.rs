@@ -166,10 +166,10 @@ fn check_coverage(system: &System, evaluations: &[Evaluation]) {
                 coupling.name
             );
             if coupling.name == "crate_ground" {
-                let frame = &evaluation.frames()[contact.body];
-                let bottom = contact.boundary.faces().iter().filter(|f| (frame.rotation * f.normal).z < -0.99);
+                let frame = &evaluation.frames()[contact.body()];
+                let bottom = contact.boundary().faces().iter().filter(|f| (frame.rotation * f.normal).z < -0.99);
                 let heights: Vec<f64> = bottom.map(|f| frame.position.z + (frame.rotation * f.centroid).z).collect();
-                let in_range = heights.iter().filter(|&&z| z < contact.law.range).count();
+                let in_range = heights.iter().filter(|&&z| z < contact.law().range()).count();
                 assert!(
                     in_range > 0 && in_range < heights.len(),
                     "set {k}: {in_range} of the {} bottom faces in range",

@@ -106,7 +106,7 @@ fn metacentric_height_and_righting_arm_from_the_static_moment() {
     assert!((expected - 0.85831).abs() < 5e-6, "{expected}");
     // The hydrostatics `check` prints agree.
     let statics = Hydrostatics::at(
-        &world.system().water().expect("water").floating[0].hull,
+        world.system().water().expect("water").floating[0].hull(),
         &Vec3::zeros(),
         &world.frames()[0].rotation,
         0.0,
@@ -197,7 +197,7 @@ fn a_damped_sphere_comes_to_rest_at_its_hydrostatic_equilibrium() {
     let floating = &world.system().water().expect("water").floating[0];
     let state = world.state(0);
     let rest = equilibrium_height(
-        &floating.hull,
+        floating.hull(),
         &world.frames()[0].rotation,
         0.0,
         state.position.x,
@@ -224,7 +224,7 @@ fn every_integrator_solves_with_the_added_mass() {
             )
         };
         let probe = scene(&text(1.0)).world;
-        let volume = probe.system().water().expect("water").floating[0].hull.volume();
+        let volume = probe.system().water().expect("water").floating[0].hull().volume();
         let mass = 0.5 * RHO * volume;
         let mut world = scene(&text(mass)).world;
         let expected = (RHO * volume - mass) * G / (mass + 0.5 * RHO * volume);
@@ -255,7 +255,7 @@ fn a_rising_sphere_reaches_its_terminal_speed() {
             a = PI
         )
     };
-    let volume = scene(&text(1.0)).world.system().water().expect("water").floating[0].hull.volume();
+    let volume = scene(&text(1.0)).world.system().water().expect("water").floating[0].hull().volume();
     let mass = 0.5 * RHO * volume;
     let mut world = scene(&text(mass)).world;
     while world.time() < 12.0 {
@@ -281,7 +281,7 @@ fn bodies_out_of_the_water_feel_nothing_and_under_it_their_volume() {
     let water = world.water_forces();
     assert_eq!(water[0].total().force, Vec3::zeros());
     assert_eq!(water[0].submerged_volume, 0.0);
-    let hull = &world.system().water().expect("water").floating[1].hull;
+    let hull = &world.system().water().expect("water").floating[1].hull();
     let volume = hull.volume();
     let buoyancy = RHO * G * volume;
     assert_relative_eq!(water[1].pressure.force, Vec3::new(0.0, 0.0, buoyancy), epsilon = 1e-12 * buoyancy);

@@ -2,7 +2,7 @@
 //!
 //! A copy of the world is run over its first [`FRAMED_SECONDS`] (at most [`MAX_FRAMING_STEPS`]
 //! world steps; up to a divergence, if one comes first) — or the run itself is followed as it
-//! goes ([`Sweep`]: the same poses, no second run) — and every body that is not held fixed is
+//! goes ([`MotionSweep`]: the same poses, no second run) — and every body that is not held fixed is
 //! swept: the corners of its shape's bounding box at each sampled pose. A spring-damper's
 //! world anchor near that box (within [`ANCHOR_REACH`] times its half-diagonal, plus a metre) is
 //! framed with it (a short line's tie point: the chain's ends, the fender's ropes); a far one is
@@ -80,7 +80,7 @@ impl Framing {
 pub fn view_direction(world: &World) -> Vec3 {
     let [side, behind, up] = VIEW_DIRECTION;
     let wall = world.couplings().iter().find_map(|coupling| match &coupling.kind {
-        CouplingKind::Contact(contact) => match &contact.against {
+        CouplingKind::Contact(contact) => match &contact.against() {
             Opposing::Planes(planes) => planes.iter().map(|plane| plane.normal.normalize()).find(|n| n.z.abs() < 0.5),
             Opposing::Body { .. } => None,
         },
@@ -100,7 +100,7 @@ pub fn view_direction(world: &World) -> Vec3 {
 /// `world`, and the spring-dampers' world anchors near it; every body's at its current pose when
 /// none moves.
 pub fn swept_box(world: &World) -> (Vec3, Vec3) {
-    Sweep::start(world).finish(world)
+    MotionSweep::start(world).finish(world)
 }
 
 /// What moves, swept as a run goes: every framed body's corners at its pose now, then 20 times
@@ -108,7 +108,7 @@ pub fn swept_box(world: &World) -> (Vec3, Vec3) {
 /// [`MAX_FRAMING_STEPS`] world steps; up to a failed step, if one comes first). A caller that
 /// steps the world anyway (`tether record`) feeds it its own steps and spares the copy's run,
 /// which is as long as the first half of `chain100`'s bench run; [`swept_box`] runs a copy.
-pub struct Sweep {
+pub struct MotionSweep {
     /// The bodies framed: those that move, or all when none does.
     framed: Vec<usize>,
     /// The couplings framed whole: the lines a prescribed motion drives ([`driven_lines`]).
@@ -126,7 +126,7 @@ pub struct Sweep {
     halted: bool,
 }
 
-impl Sweep {
+impl MotionSweep {
     /// A sweep of a run starting at `world`'s current state, its first sample taken.
     pub fn start(world: &World) -> Self {
         let bodies = world.bodies();
@@ -220,7 +220,7 @@ fn driven_lines(world: &World) -> Vec<usize> {
     let kinematic = |end: &Endpoint| end.body().is_some_and(|body| world.bodies()[body].is_kinematic());
     (0..world.couplings().len())
         .filter(|&index| match &world.couplings()[index].kind {
-            CouplingKind::Catenary(line) => kinematic(&line.end1) || kinematic(&line.end2),
+            CouplingKind::Catenary(line) => kinematic(&line.end1()) || kinematic(&line.end2()),
             CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => false,
         })
         .collect()
@@ -230,7 +230,7 @@ fn driven_lines(world: &World) -> Vec<usize> {
 fn spring_anchors(world: &World) -> impl Iterator<Item = Vec3> + '_ {
     world.couplings().iter().flat_map(|coupling| {
         let ends = match &coupling.kind {
-            CouplingKind::SpringDamper(spring) => vec![spring.end1, spring.end2],
+            CouplingKind::SpringDamper(spring) => vec![spring.end1(), spring.end2()],
             CouplingKind::Catenary(_) | CouplingKind::Contact(_) => Vec::new(),
         };
         ends.into_iter().filter_map(|end| match end {

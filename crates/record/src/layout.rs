@@ -157,7 +157,7 @@ struct FloatingPlots {
 fn floating_bodies(world: &World) -> Vec<FloatingPlots> {
     let Some(stage) = world.system().water() else { return Vec::new() };
     let plots = |floating: &tether_physics::water::FloatingBody| {
-        let name = world.bodies()[floating.body].name.clone();
+        let name = world.bodies()[floating.body()].name.clone();
         let mut plots = vec![
             Plot::new(format!("{name}: elevation, heave [m]"), paths::water_plot(&name, "motion")),
             Plot::new(format!("{name}: roll, pitch [deg]"), paths::water_plot(&name, "angles")),

@@ -110,7 +110,7 @@ impl Recorder {
 
     /// As [`Self::to_file`], but the contacts' planes, whose patches cover what moves over the
     /// run's first seconds, are left for [`Self::log_planes`] to draw once the caller's own run
-    /// has swept that ([`framing::Sweep`]), rather than drawn now from a copy's run.
+    /// has swept that ([`framing::MotionSweep`]), rather than drawn now from a copy's run.
     pub fn to_file_unframed(path: &Path, world: &World, face_arrows: &FaceArrows) -> Result<Self, RecordError> {
         face_arrows.check(world)?;
         let stream = rerun::RecordingStreamBuilder::new(APPLICATION_ID).save(path)?;
@@ -160,7 +160,7 @@ impl Recorder {
     }
 
     /// Logs, statically, the contacts' planes of `world` as patches covering `swept`, the box of
-    /// what moves over the run's first seconds ([`framing::Sweep`]), and sends them now.
+    /// what moves over the run's first seconds ([`framing::MotionSweep`]), and sends them now.
     ///
     /// # Errors
     /// A stream that fails.

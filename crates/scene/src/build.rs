@@ -207,7 +207,7 @@ fn seabed_contacts(
     let law = ContactLaw::new(def.stiffness, def.damping, def.range, def.friction, def.friction_sharpness)
         .map_err(|e| at.refused(&e))?;
     let up = -vec3(file.gravity).try_normalize(0.0).unwrap_or_else(|| -Vec3::z());
-    let plane = Plane { point: up * seabed.elevation, normal: up };
+    let plane = Plane { point: up * seabed.elevation(), normal: up };
     let Bodies { bodies, boundaries } = built;
     let mut couplings = Vec::with_capacity(def.bodies.len());
     for (index, name) in def.bodies.iter().enumerate() {
@@ -251,7 +251,15 @@ fn system_problem(file: &SceneFile, error: SystemError) -> Problem {
             }
         }
         SystemError::Line { coupling, source } => line_problem(coupling, source),
-        _ => Problem { place: Place::Top("couplings"), message: error.to_string() },
+        SystemError::UnknownBody { .. } => Problem { place: Place::Top("couplings"), message: error.to_string() },
+        SystemError::StateCount { .. } => Problem { place: Place::Top("bodies"), message: error.to_string() },
+        // The water's, which neither `System::new` nor `System::with_seabed` (the calls placed
+        // here) makes: `water::add_water` places them.
+        SystemError::FloatingBody { .. }
+        | SystemError::Water(_)
+        | SystemError::Hydro { .. }
+        | SystemError::NoWater
+        | SystemError::Switch { .. } => Problem { place: Place::Top("water"), message: error.to_string() },
     }
 }
 
@@ -504,10 +512,11 @@ fn build_shape(def: &ShapeDef, directory: &Path, at: &ItemAt, warnings: &mut Vec
             let vertices: Vec<Vec3> = vertices.iter().map(|v| v * *scale + vec3(*center)).collect();
             let mesh = OutwardMesh::new(vertices, triangles)
                 .map_err(|e| at.problem(Some("file"), Some(file), format!("mesh file {file:?}: {e}")))?;
-            if let Some(turned_over) = mesh.turned_over {
+            if let Some(turned_over) = mesh.turned_over() {
                 warnings.push(format!("body \"{}\": mesh file {file:?}: {turned_over}", at.name));
             }
-            Shape::Mesh { vertices: mesh.vertices, triangles: mesh.triangles }
+            let (vertices, triangles) = mesh.into_parts();
+            Shape::Mesh { vertices, triangles }
         }
     })
 }
@@ -565,7 +574,7 @@ fn build_coupling(def: &CouplingDef, built: &mut Bodies, at: &ItemAt) -> Result<
         }
         CouplingDef::Catenary { end1, end2, mass_per_length, length, stiffness, displaced_area, model, .. } => {
             let (end1, end2) = build_ends(end1, end2, bodies, at)?;
-            let model = model.checked().map_err(|e| at.refused(&e))?;
+            let model = model.build().map_err(|e| at.refused(&e))?;
             let line = Catenary::new(end1, end2, *mass_per_length, *length, *stiffness)
                 .and_then(|line| line.with_displaced_area(*displaced_area))
                 .map_err(|e| at.refused(&e))?

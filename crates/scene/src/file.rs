@@ -6,9 +6,10 @@
 
 pub use super::finite::Triple;
 use super::finite::{finite, finite_option, finite_pairs, finite_velocity_table, finite3};
+use super::line_model::LineModelDef;
+use super::spelling::{IntegratorForm, SubstepsForm};
 use super::water::{HydroDef, WaterDef};
 use serde::{Deserialize, Serialize};
-use tether_physics::coupling::LineModel;
 use tether_physics::integrator::{Integrator, Substeps};
 
 /// A whole scene.
@@ -25,13 +26,13 @@ pub struct SceneFile {
     #[serde(default = "default_duration", deserialize_with = "finite")]
     pub duration: f64,
     /// `leapfrog` (default), `leapfrog2`, `splitting`, `rk4` or `dopri45`.
-    #[serde(default)]
+    #[serde(default, with = "IntegratorForm")]
     pub integrator: Integrator,
     /// Settings of `dopri45`; defaults when absent.
     #[serde(default)]
     pub adaptive: Option<AdaptiveDef>,
     /// Integrator steps per `dt`: `Fixed(n)` or `Auto` (default `Fixed(1)`).
-    #[serde(default)]
+    #[serde(default, with = "SubstepsForm")]
     pub substeps: Substeps,
     pub bodies: Vec<BodyDef>,
     #[serde(default)]
@@ -97,11 +98,11 @@ pub struct AdaptiveDef {
 }
 
 fn default_rtol() -> f64 {
-    tether_physics::integrator::Tolerances::default().rtol
+    tether_physics::integrator::Tolerances::default().rtol()
 }
 
 fn default_atol() -> f64 {
-    tether_physics::integrator::Tolerances::default().atol
+    tether_physics::integrator::Tolerances::default().atol()
 }
 
 fn default_gravity() -> Triple {
@@ -310,7 +311,7 @@ pub enum CouplingDef {
     /// ≥ 0, unstretched `length` L_eq \[m] > 0, `stiffness` D [N/m] > 0 of the whole line
     /// (EA = D L_eq), `displaced_area` A_d \[m²] ≥ 0, its displaced volume per length: in water
     /// it weighs `(λ0 − ρ A_d) g` per metre (default 0); `model` `QuasiStatic` (default) or
-    /// `Dynamic(…)` (PHYSICS.md §8, [`LineModel`]: the physics' own type).
+    /// `Dynamic(…)` (PHYSICS.md §8, [`LineModelDef`]).
     Catenary {
         name: String,
         end1: EndDef,
@@ -323,8 +324,8 @@ pub enum CouplingDef {
         stiffness: f64,
         #[serde(default, skip_serializing_if = "is_zero", deserialize_with = "finite")]
         displaced_area: f64,
-        #[serde(default, skip_serializing_if = "LineModel::is_quasi_static")]
-        model: LineModel,
+        #[serde(default, skip_serializing_if = "LineModelDef::is_quasi_static")]
+        model: LineModelDef,
     },
     /// Penalty contact with tanh friction (PHYSICS.md §4) between the faces of body `body`'s
     /// shape and `against`. Per unit face area: `stiffness` k1 [N/m³] > 0, `damping` k2

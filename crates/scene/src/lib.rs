@@ -6,10 +6,12 @@
 pub mod build;
 pub mod file;
 mod finite;
+pub mod line_model;
 pub mod mesh_file;
 pub mod moordyn;
 pub mod pose;
 pub mod source;
+pub mod spelling;
 pub mod wamit;
 pub mod water;
 

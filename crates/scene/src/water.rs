@@ -15,11 +15,12 @@
 //! ```
 
 use super::finite::{Triple, finite, finite_option, finite3};
+use super::spelling::{CurrentProfileForm, HydrostaticsModelForm, RadiationMethodForm};
 use serde::{Deserialize, Serialize};
 use tether_physics::math::Vec3;
 use tether_physics::potential::{HydrostaticsModel, RadiationMethod};
 use tether_physics::water::morison::HydroSpec;
-use tether_physics::water::{CurrentProfile, CurrentSpec, WaterError, WaterSpec, WaveSpec};
+use tether_physics::water::{CurrentProfile, CurrentSpec, WaterError, WaterField, WaterSpec, WaveSpec};
 
 /// The scene's water.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -56,7 +57,7 @@ pub struct CurrentDef {
     #[serde(default, deserialize_with = "finite")]
     pub heading_deg: f64,
     /// `Uniform` (default) or `PowerLaw` (1/7 power law to zero at the seabed; needs a depth).
-    #[serde(default)]
+    #[serde(default, with = "CurrentProfileForm")]
     pub profile: CurrentProfile,
 }
 
@@ -167,7 +168,7 @@ pub struct WamitDef {
     pub length: f64,
     #[serde(default, deserialize_with = "finite3")]
     pub reference: Triple,
-    #[serde(default)]
+    #[serde(default, with = "RadiationMethodForm")]
     pub radiation: RadiationMethod,
     #[serde(default = "default_fit_error", deserialize_with = "finite")]
     pub fit_error: f64,
@@ -177,7 +178,7 @@ pub struct WamitDef {
     pub kernel_duration: f64,
     #[serde(default = "default_kernel_step", deserialize_with = "finite")]
     pub kernel_step: f64,
-    #[serde(default)]
+    #[serde(default, with = "HydrostaticsModelForm")]
     pub hydrostatics: HydrostaticsModel,
 }
 
@@ -248,18 +249,19 @@ impl WaterDef {
             WaterError::Breaking { .. } => "waves",
             WaterError::ProfileWithoutDepth => "profile",
             WaterError::Gravity(..) => "water",
-            WaterError::Parameter(error) => match error.field() {
-                "wave height" => "height",
-                "wave period" => "period",
-                "significant wave height" => "hs",
-                "peak period" => "tp",
-                "current speed" => "speed",
-                "ramp" => "ramp",
-                "level" => "level",
-                "density" => "density",
-                "depth" => "depth",
-                "gamma" => "gamma",
-                _ => "waves",
+            WaterError::Parameter { field, .. } => match field {
+                WaterField::WaveHeight => "height",
+                WaterField::WavePeriod => "period",
+                WaterField::SignificantHeight => "hs",
+                WaterField::PeakPeriod => "tp",
+                WaterField::CurrentSpeed => "speed",
+                WaterField::CurrentHeading => "current",
+                WaterField::Ramp => "ramp",
+                WaterField::Level => "level",
+                WaterField::Density => "density",
+                WaterField::Depth => "depth",
+                WaterField::Gamma => "gamma",
+                WaterField::WaveHeading | WaterField::WavePhase => "waves",
             },
         }
     }

@@ -20,7 +20,7 @@ fn with_shape(shape: &str) -> Result<scene::Scene, scene::SceneError> {
 
 fn boundary_area_and_volume(scene: &scene::Scene) -> (f64, f64) {
     let CouplingKind::Contact(contact) = &scene.world.couplings()[0].kind else { panic!("a contact") };
-    (contact.boundary.area(), contact.boundary.volume())
+    (contact.boundary().area(), contact.boundary().volume())
 }
 
 #[test]
@@ -60,7 +60,7 @@ fn an_inward_wound_stl_cube_is_turned_outwards_with_one_warning_for_contact_and_
     assert!(outward.warnings.is_empty(), "{:?}", outward.warnings);
     let draft = 400.0 / 1025.0;
     for loaded in [&in_water, &outward] {
-        let hull = &loaded.world.system().water().expect("water").floating[0].hull;
+        let hull = &loaded.world.system().water().expect("water").floating[0].hull();
         assert_relative_eq!(hull.volume(), 1.0, epsilon = 1e-12);
         let turn = loaded.world.system().initial_states()[0].orientation.to_rotation_matrix().into_inner();
         let height = equilibrium_height(hull, &turn, 0.0, 0.0, 0.0, draft).expect("it floats");
@@ -74,7 +74,7 @@ fn the_shipped_fender_mesh_encloses_a_rounded_cylinder() {
     // 24-sided mesh inscribed in it encloses 2 % less.
     let scene = scene::load(&common::repo("scenes/fender.ron")).unwrap_or_else(|e| panic!("{e}"));
     let CouplingKind::Contact(contact) = &scene.world.couplings()[2].kind else { panic!("the quay contact") };
-    let volume = contact.boundary.volume();
+    let volume = contact.boundary().volume();
     assert!(volume > 0.97 * 1.0723 && volume < 1.0723, "fender volume {volume}");
 }
 

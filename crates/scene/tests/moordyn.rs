@@ -4,9 +4,11 @@
 
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
-use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass};
+use tether_physics::coupling::LumpedMassSpec;
+use tether_physics::coupling::lumped_line::discrete::{STEEL_DENSITY, bearing_diameter};
 use tether_physics::statics::{Settings, equilibrium};
 use tether_scene::file::{CouplingDef, EndDef, SceneFile, SupportDef};
+use tether_scene::line_model::{DampingDef, DynamicLineDef, LineModelDef};
 use tether_scene::moordyn::{self, export};
 use tether_scene::{Scene, SceneError};
 use tether_test_support::{here, repo, scene_files};
@@ -80,7 +82,7 @@ fn moordyns_own_files_import_or_are_refused_in_one_line() {
     }
 }
 
-fn catenary(file: &SceneFile, index: usize) -> (&EndDef, &EndDef, f64, f64, f64, f64, LineModel) {
+fn catenary(file: &SceneFile, index: usize) -> (&EndDef, &EndDef, f64, f64, f64, f64, LineModelDef) {
     match &file.couplings[index] {
         CouplingDef::Catenary { end1, end2, mass_per_length, length, stiffness, displaced_area, model, .. } => {
             (end1, end2, *mass_per_length, *length, *stiffness, *displaced_area, *model)
@@ -102,9 +104,9 @@ fn oc3_lines_become_dynamic_catenaries_with_the_files_values() {
     assert_eq!(area, PI * 0.09 * 0.09 / 4.0);
     assert_eq!(
         model,
-        LineModel::Dynamic(LumpedMass {
+        LineModelDef::Dynamic(DynamicLineDef {
             segments: 20,
-            damping: InternalDamping::Ratio(0.8),
+            damping: DampingDef::Ratio(0.8),
             drag_normal: 1.6,
             drag_tangential: 0.1,
             added_mass_normal: 1.0,
@@ -150,10 +152,10 @@ fn the_iea_15_mw_semis_v1_file_imports_with_its_columns_in_v1_order() {
     assert_eq!(end1, &EndDef::World([-837.6, 0.0, -200.0]));
     assert_eq!(end2, &EndDef::Body { body: "point1".into(), point: [0.0; 3] });
     assert_eq!((lambda, length, stiffness, area), (685.0, 850.0, 3.27e9 / 850.0, PI * 0.333 * 0.333 / 4.0));
-    let LineModel::Dynamic(line) = model else { panic!("{model:?}") };
+    let LineModelDef::Dynamic(line) = model else { panic!("{model:?}") };
     // main 0.333 685.00 3.27E+09 -1 | Can 0.82 Cat 0.27 Cdn 1.11 Cdt 0.20.
     assert_eq!(line.segments, 50);
-    assert_eq!(line.damping, InternalDamping::Ratio(1.0));
+    assert_eq!(line.damping, DampingDef::Ratio(1.0));
     assert_eq!(
         (line.added_mass_normal, line.added_mass_tangential, line.drag_normal, line.drag_tangential),
         (0.82, 0.27, 1.11, 0.20)
@@ -174,7 +176,7 @@ fn the_iea_15_mw_semis_v1_file_imports_with_its_columns_in_v1_order() {
 fn moordyns_friction_damping_sets_each_lines_friction_speed() {
     let scene = load(&input("WD0050_Chain.txt")).unwrap();
     let (.., model) = catenary(&scene.file, 0);
-    let LineModel::Dynamic(line) = model else { panic!("{model:?}") };
+    let LineModelDef::Dynamic(line) = model else { panic!("{model:?}") };
     let wet = (390.0 - 1025.0 * PI * 0.252 * 0.252 / 4.0) * 9.80665;
     let expected = wet * 10.0 / 200.0;
     assert!((line.friction_speed - expected).abs() < 1e-12 * expected, "{} against {expected}", line.friction_speed);
@@ -203,7 +205,7 @@ fn moordyns_friction_damping_sets_each_lines_friction_speed() {
     // A file without friction keeps the default friction speed (it does not matter there).
     let frictionless = load(&input("WD0050_Chain_frictionless.txt")).unwrap();
     let (.., model) = catenary(&frictionless.file, 0);
-    assert_eq!(model, LineModel::Dynamic(LumpedMass { friction_speed: LumpedMass::FRICTION_SPEED, ..line }));
+    assert_eq!(model, LineModelDef::Dynamic(DynamicLineDef { friction_speed: LumpedMassSpec::FRICTION_SPEED, ..line }));
 }
 
 /// The export writes the `FricDamp` that gives its first line its friction speed, `CV = w l /
@@ -221,7 +223,7 @@ fn the_export_writes_the_friction_damping_and_a_step_it_stays_stable_at() {
         let row = text.lines().find(|row| row.split_whitespace().nth(1) == Some(name)).unwrap();
         row.split_whitespace().next().unwrap().parse().unwrap()
     };
-    let area = PI * export::diameter_of(0.014698, 114.94).powi(2) / 4.0;
+    let area = PI * bearing_diameter(0.014698, 114.94).powi(2) / 4.0;
     let wet = (114.94 - 1025.0 * area) * 9.80665;
     let damping = option("FricDamp");
     assert!((damping - wet * 15.0 / 0.01).abs() < 1e-9 * damping, "FricDamp {damping}");
@@ -345,7 +347,7 @@ fn bad_input_is_refused_at_its_line() {
 
 /// The lines of a scene as the comparison sees them: the world positions of their ends at
 /// t = 0 and whether each end is on the world, a kinematic, a free or a point body.
-type LineSummary = (Vec<&'static str>, [f64; 2], [u64; 2], LineModel, Vec<[i64; 3]>);
+type LineSummary = (Vec<&'static str>, [f64; 2], [u64; 2], LineModelDef, Vec<[i64; 3]>);
 
 fn lines_of(scene: &Scene) -> Vec<LineSummary> {
     lines_of_world(&scene.file, &scene.world)
@@ -425,26 +427,26 @@ fn assert_same_lines(before: &[LineSummary], after: &[LineSummary], segments: u3
     for (a, b) in before.iter().zip(after) {
         assert_eq!((&a.0, a.2, &a.4), (&b.0, b.2, &b.4), "{}", path.display());
         // The friction speed crosses the file as FricDamp CV = w l / v_s (a few rounding errors).
-        let (LineModel::Dynamic(before), LineModel::Dynamic(after)) =
+        let (LineModelDef::Dynamic(before), LineModelDef::Dynamic(after)) =
             (a.3.dynamic_with(if a.3.is_quasi_static() { segments } else { segments_of(&a.3) }), b.3)
         else {
             panic!("{}: not dynamic after import", path.display())
         };
-        assert_eq!(after, LumpedMass { friction_speed: after.friction_speed, ..before }, "{}", path.display());
+        assert_eq!(after, DynamicLineDef { friction_speed: after.friction_speed, ..before }, "{}", path.display());
         let (x, y) = (before.friction_speed, after.friction_speed);
         assert!((x - y).abs() <= 16.0 * f64::EPSILON * x, "{}: friction speed {x} → {y}", path.display());
         let mass_per_length = f64::from_bits(a.2[0]);
-        let area = if a.1[1] > 0.0 { a.1[1] } else { mass_per_length / export::STEEL_DENSITY };
+        let area = if a.1[1] > 0.0 { a.1[1] } else { mass_per_length / STEEL_DENSITY };
         for (x, y) in [a.1[0], area].iter().zip(&b.1) {
             assert!((x - y).abs() <= 4.0 * f64::EPSILON * x.abs(), "{}: {x} → {y}", path.display());
         }
     }
 }
 
-fn segments_of(model: &LineModel) -> u32 {
+fn segments_of(model: &LineModelDef) -> u32 {
     match model {
-        LineModel::Dynamic(line) => line.segments,
-        LineModel::QuasiStatic => 0,
+        LineModelDef::Dynamic(line) => line.segments,
+        LineModelDef::QuasiStatic => 0,
     }
 }
 

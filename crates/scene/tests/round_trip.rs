@@ -43,21 +43,22 @@ fn a_tuned_catenary_is_saved_with_its_tuned_values() {
     }
     let again = scene::parse(&scene::to_ron(&loaded.file).unwrap(), Path::new("saved.ron")).unwrap();
     match &again.world.couplings()[0].kind {
-        CouplingKind::Catenary(line) => assert_eq!(line.length, 97.5),
+        CouplingKind::Catenary(line) => assert_eq!(line.length(), 97.5),
         other => panic!("not a catenary: {other:?}"),
     }
 }
 
 /// A dynamic line whose every value differs from the others and from its default is written
-/// and read back to the same physics model, field by field (the file form of
-/// `tether_physics::coupling::lumped_line::file_form` writes each field under its own name).
+/// and read back to the same file model and the same physics model, field by field (the file
+/// form of `scene::line_model` writes each field under its own name).
 #[test]
 fn a_dynamic_line_round_trips_each_of_its_values() {
-    use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass};
+    use scene::line_model::{DampingDef, DynamicLineDef, LineModelDef};
+    use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass, LumpedMassSpec};
     let mut loaded = scene::load(&repo("scenes/moored_buoy.ron")).unwrap();
-    let tuned = LumpedMass {
+    let tuned = DynamicLineDef {
         segments: 37,
-        damping: InternalDamping::Coefficient(1234.5),
+        damping: DampingDef::Coefficient(1234.5),
         drag_normal: 2.1,
         drag_tangential: 0.3,
         added_mass_normal: 0.9,
@@ -67,13 +68,28 @@ fn a_dynamic_line_round_trips_each_of_its_values() {
         friction_speed: 0.02,
     };
     if let scene::file::CouplingDef::Catenary { model, .. } = &mut loaded.file.couplings[0] {
-        *model = LineModel::Dynamic(tuned);
+        *model = LineModelDef::Dynamic(tuned);
     }
     let text = scene::to_ron(&loaded.file).unwrap();
     assert!(text.contains("model: Dynamic(\n"), "written with one pair of parentheses:\n{text}");
     let again = scene::parse(&text, Path::new("saved.ron")).unwrap_or_else(|e| panic!("{e}\n{text}"));
     match &again.file.couplings[0] {
-        scene::file::CouplingDef::Catenary { model, .. } => assert_eq!(*model, LineModel::Dynamic(tuned)),
+        scene::file::CouplingDef::Catenary { model, .. } => assert_eq!(*model, LineModelDef::Dynamic(tuned)),
+        other => panic!("not a catenary: {other:?}"),
+    }
+    let built = LumpedMass::new(LumpedMassSpec {
+        segments: 37,
+        damping: InternalDamping::Coefficient(1234.5),
+        drag_normal: 2.1,
+        drag_tangential: 0.3,
+        added_mass_normal: 0.9,
+        added_mass_tangential: 0.2,
+        seabed_stiffness: 4.0e6,
+        seabed_damping: 2.5e5,
+        friction_speed: 0.02,
+    });
+    match &again.world.couplings()[0].kind {
+        CouplingKind::Catenary(line) => assert_eq!(Ok(line.model()), built.map(LineModel::Dynamic)),
         other => panic!("not a catenary: {other:?}"),
     }
 }

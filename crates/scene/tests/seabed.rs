@@ -55,7 +55,7 @@ fn a_chain_anchored_on_the_seabed_lies_on_it_and_a_block_touches_it() {
     let world = &loaded.world;
     let line = world.line_state(0).expect("a catenary");
     assert!(line.grounded_length() > 20.0, "L_B = {}", line.grounded_length());
-    assert_eq!(world.system().seabed().map(|s| (s.elevation, s.line_friction)), Some((-40.0, 0.6)));
+    assert_eq!(world.system().seabed().map(|s| (s.elevation(), s.line_friction())), Some((-40.0, 0.6)));
     let contact = &world.couplings()[1];
     assert_eq!(contact.name, "seabed.block");
     assert!(matches!(contact.kind, CouplingKind::Contact(_)));
@@ -148,7 +148,7 @@ fn in_water_the_seabed_lies_at_its_depth_and_the_lines_weigh_what_they_displace_
     assert!(!text.contains("elevation"), "{text}");
     let loaded = common::scene(&text);
     let system = loaded.world.system();
-    assert_eq!(system.seabed().map(|s| s.elevation), Some(-40.0));
+    assert_eq!(system.seabed().map(|s| s.elevation()), Some(-40.0));
     assert_eq!(system.surroundings().fluid_density, 1025.0);
     // The same line dry with λ0 − ρ A_d per metre gives the same forces: W = (λ0 − ρ A_d) g.
     let dry =
@@ -163,7 +163,7 @@ fn in_water_the_seabed_lies_at_its_depth_and_the_lines_weigh_what_they_displace_
     assert_relative_eq!(wet.grounded_length(), reference.grounded_length(), max_relative = 1e-12);
     // A declared elevation that agrees with the water's bottom is accepted.
     let agreeing = text.replacen("    seabed: Seabed(\n", "    seabed: Seabed(\n        elevation: -40.0,\n", 1);
-    assert_eq!(common::scene(&agreeing).world.system().seabed().map(|s| s.elevation), Some(-40.0));
+    assert_eq!(common::scene(&agreeing).world.system().seabed().map(|s| s.elevation()), Some(-40.0));
 }
 
 #[test]
@@ -199,11 +199,11 @@ fn edited_water_moves_the_seabed_and_reweighs_the_lines() {
     let mut world = common::scene(&in_water("Water(density: 1025.0, depth: 40.0)")).world;
     let spec = *world.system().water().expect("water").water.spec();
     world.replace_water(tether_physics::water::WaterSpec { depth: Some(45.0), density: 1030.0, ..spec }).unwrap();
-    assert_eq!(world.system().seabed().map(|s| s.elevation), Some(-45.0));
+    assert_eq!(world.system().seabed().map(|s| s.elevation()), Some(-45.0));
     assert_eq!(world.system().surroundings().fluid_density, 1030.0);
     let error = world.replace_water(tether_physics::water::WaterSpec { depth: Some(35.0), ..spec }).unwrap_err();
     assert!(error.to_string().contains("coupling \"chain\": end 1 is 5 m below the seabed (z_b = -35 m)"), "{error}");
-    assert_eq!(world.system().seabed().map(|s| s.elevation), Some(-45.0), "unchanged");
+    assert_eq!(world.system().seabed().map(|s| s.elevation()), Some(-45.0), "unchanged");
 }
 
 /// `moored_buoy` (C_B = 1 on its three grounded chains, waves, current, a 5 m push) run for

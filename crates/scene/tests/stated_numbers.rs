@@ -196,7 +196,7 @@ fn sinking_sphere() {
 
 /// The height of G [m] at which the barge floats in still water: its hull displaces m/ρ.
 fn barge_floats_at(world: &World) -> f64 {
-    let hull = &world.system().water().expect("water").floating[0].hull;
+    let hull = &world.system().water().expect("water").floating[0].hull();
     let volume = world.bodies()[0].mass() / RHO;
     tether_physics::water::hydrostatics::equilibrium_height(
         hull,

@@ -45,7 +45,7 @@ fn the_good_scene_reaches_the_physics_in_radians() {
     assert_eq!(stage.floating.len(), 1);
     // Projected areas from the mesh: 2 × 1 m across x and y, 2 × 2 m across z.
     assert_eq!(
-        stage.floating[0].hydro.drag_areas.map(|a| (a * 1e12).round() / 1e12),
+        stage.floating[0].hydro().drag_areas().map(|a| (a * 1e12).round() / 1e12),
         nalgebra::Vector3::new(2.0, 2.0, 4.0)
     );
 }

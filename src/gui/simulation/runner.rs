@@ -36,7 +36,7 @@ const PACE_WINDOW: Duration = Duration::from_millis(500);
 
 /// Runs the thread until the GUI's handle drops: commands, steps, status.
 pub(super) fn run(sinks: Sinks, reports: Sender<Report>, wake: Wake, inbox: &Receiver<Command>) {
-    Runner::new(sinks, reports, wake).run(inbox);
+    SimulationLoop::new(sinks, reports, wake).run(inbox);
 }
 
 /// Where simulated time should be: `sim + speed × (now − wall)`.
@@ -78,7 +78,7 @@ impl Pace {
 }
 
 /// The thread's state.
-struct Runner {
+struct SimulationLoop {
     reports: Sender<Report>,
     wake: Wake,
     run: Option<Run>,
@@ -93,7 +93,7 @@ struct Runner {
     last_advance: Instant,
 }
 
-impl Runner {
+impl SimulationLoop {
     fn new(sinks: Sinks, reports: Sender<Report>, wake: Wake) -> Self {
         Self {
             reports,
@@ -360,9 +360,9 @@ impl Runner {
                 }
                 _ => Report::Message(format!(
                     "dt = {}, {} substep(s), {:?} from t = {}",
-                    figures::quantity(timing.dt, "s", 6),
+                    figures::quantity(timing.dt(), "s", 6),
                     run.world.substeps(),
-                    timing.integrator.name(),
+                    timing.integrator().name(),
                     figures::quantity(run.world.time(), "s", 5)
                 )),
             },
@@ -436,7 +436,7 @@ impl Runner {
             self.report(Report::Error("the scene has no seabed".into()));
             return;
         };
-        let applied = Seabed::new(seabed.elevation, friction)
+        let applied = Seabed::new(seabed.elevation(), friction)
             .map_err(|e| e.to_string())
             .and_then(|seabed| run.world.set_seabed(seabed).map_err(|e| e.to_string()));
         match applied {
@@ -519,7 +519,7 @@ impl Runner {
 /// Whether coupling `index` of `world` is a line, and a dynamic one (`None`: not a line).
 fn line_model(world: &World, index: usize) -> Option<bool> {
     match &world.couplings().get(index)?.kind {
-        CouplingKind::Catenary(line) => Some(line.model != LineModel::QuasiStatic),
+        CouplingKind::Catenary(line) => Some(line.model() != LineModel::QuasiStatic),
         CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => None,
     }
 }

@@ -144,7 +144,7 @@ pub fn status(world: &World, run: &RunState) -> Status {
         water_limits,
         potential_flow: world.system().water().map_or_else(Vec::new, |stage| {
             let with_data = stage.floating.iter().filter(|f| f.has_potential_data());
-            with_data.map(|f| (f.body, f.potential.is_some())).collect()
+            with_data.map(|f| (f.body(), f.potential().is_some())).collect()
         }),
         impact_limits: world.impact_limits().iter().map(|l| (l.describe(world.system()), l.dt)).collect(),
         contacts: contacts(world),
@@ -160,13 +160,13 @@ fn contacts(world: &World) -> Vec<ContactStatus> {
         CouplingKind::Contact(contact) => Some(ContactStatus {
             index,
             name: coupling.name.clone(),
-            mass: world.bodies()[contact.body].mass(),
-            other_mass: match &contact.against {
+            mass: world.bodies()[contact.body()].mass(),
+            other_mass: match &contact.against() {
                 Opposing::Body { body, .. } => Some(world.bodies()[*body].mass()),
                 Opposing::Planes(_) => None,
             },
-            area: contact.expected_area,
-            range: contact.law.range,
+            area: contact.expected_area(),
+            range: contact.law().range(),
         }),
         CouplingKind::SpringDamper(_) | CouplingKind::Catenary(_) => None,
     };
@@ -193,14 +193,14 @@ pub fn short_line(world: &World, index: usize) -> Option<String> {
         CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => return None,
     };
     let frames = world.frames();
-    let span = (line.end2.motion(frames).position - line.end1.motion(frames).position).norm();
-    (line.length < span).then(|| {
+    let span = (line.end2().motion(frames).position - line.end1().motion(frames).position).norm();
+    (line.length() < span).then(|| {
         format!(
             "warning: line \"{}\" is {} long, shorter than the {} between its ends: it is stretched by EA = {} at once",
             coupling.name,
-            figures::quantity(line.length, "m", 4),
+            figures::quantity(line.length(), "m", 4),
             figures::quantity(span, "m", 4),
-            figures::quantity(line.stiffness * line.length, "N", 3)
+            figures::quantity(line.stiffness() * line.length(), "N", 3)
         )
     })
 }

@@ -27,7 +27,7 @@ pub use contact::{Contact, ContactCache};
 pub use elastic_law::ElasticLaw;
 pub use ends::{Attachment, EndMotion, Endpoint};
 pub use forces::CouplingForces;
-pub use lumped_line::{InternalDamping, LineError, LineModel, LumpedMass};
+pub use lumped_line::{InternalDamping, LineError, LineModel, LumpedMass, LumpedMassSpec};
 pub use spring_damper::{SpringCache, SpringDamper};
 
 /// The physical model of a coupling.
@@ -72,12 +72,12 @@ impl Coupling {
     /// or the world origin for the environment).
     pub fn ends(&self) -> [Endpoint; 2] {
         match &self.kind {
-            CouplingKind::SpringDamper(spring) => [spring.end1, spring.end2],
-            CouplingKind::Catenary(line) => [line.end1, line.end2],
+            CouplingKind::SpringDamper(spring) => [spring.end1(), spring.end2()],
+            CouplingKind::Catenary(line) => [line.end1(), line.end2()],
             CouplingKind::Contact(contact) => {
                 let other =
                     contact.other_body().map_or(Endpoint::World(Vec3::zeros()), |body| Endpoint::Center { body });
-                [Endpoint::Center { body: contact.body }, other]
+                [Endpoint::Center { body: contact.body() }, other]
             }
         }
     }

@@ -19,11 +19,10 @@ const COINCIDENT: f64 = 1e-12;
 /// which checks its values.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SpringDamper {
-    pub end1: Endpoint,
-    pub end2: Endpoint,
-    pub law: ElasticLaw,
-    /// `k_d` [N·s/m] ≥ 0.
-    pub damping: f64,
+    end1: Endpoint,
+    end2: Endpoint,
+    law: ElasticLaw,
+    damping: f64,
 }
 
 /// What a spring remembers: its last well-defined direction `d`, used while the ends coincide
@@ -55,6 +54,23 @@ impl SpringDamper {
     pub fn new(end1: Endpoint, end2: Endpoint, law: ElasticLaw, damping: f64) -> Result<Self, ParameterError> {
         law.check()?;
         Ok(Self { end1, end2, law, damping: require("damping", damping, Bound::NonNegative, "N·s/m")? })
+    }
+
+    pub fn end1(&self) -> Endpoint {
+        self.end1
+    }
+
+    pub fn end2(&self) -> Endpoint {
+        self.end2
+    }
+
+    pub fn law(&self) -> &ElasticLaw {
+        &self.law
+    }
+
+    /// `k_d` [N·s/m] ≥ 0.
+    pub fn damping(&self) -> f64 {
+        self.damping
     }
 
     /// Forces at the kinematics `frames` (PHYSICS.md §2 \[4944]–\[4945]), added to the end bodies' `loads`

@@ -67,7 +67,7 @@ pub struct Dopri45 {
 impl Dopri45 {
     /// The scheme with `tolerances`, for integrator steps of `step` \[s] and `bodies` bodies.
     pub fn new(tolerances: Tolerances, step: f64, bodies: usize) -> Self {
-        let max_step = tolerances.max_step.map_or(step, |m| m.min(step));
+        let max_step = tolerances.max_step().map_or(step, |m| m.min(step));
         Self { stages: Stages::new(&TABLEAU, bodies), tolerances, max_step, next_step: 0.0, retry: None }
     }
 
@@ -98,7 +98,7 @@ impl Dopri45 {
         time: f64,
         remaining: f64,
     ) -> Result<StepReport, StepFailure> {
-        let (rtol, atol) = (self.tolerances.rtol, self.tolerances.atol);
+        let (rtol, atol) = (self.tolerances.rtol(), self.tolerances.atol());
         let proposal = match self.next_step {
             h if h > 0.0 => h.min(self.max_step),
             _ => self.max_step,

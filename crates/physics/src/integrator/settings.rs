@@ -5,8 +5,7 @@
 use crate::parameter::{Bound, ParameterError, require};
 
 /// The scheme that advances a world by one step.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Integrator {
     /// The central-difference scheme of PHYSICS.md §1 "Time integration" ([`super::leapfrog`]).
     #[default]
@@ -53,7 +52,7 @@ impl Integrator {
 
 /// How many integrator steps one world step takes: the world advances by `dt`, its integrator
 /// by `dt / n` (recordings log world steps).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Substeps {
     /// `n ≥ 1` integrator steps per world step.
     Fixed(u32),
@@ -79,13 +78,9 @@ impl Default for Substeps {
 /// orientation quaternion [–], angular velocity [rad/s]), in the root-mean-square sense.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Tolerances {
-    /// Relative tolerance [–] > 0.
-    pub rtol: f64,
-    /// Absolute tolerance [SI unit of each component] > 0.
-    pub atol: f64,
-    /// Largest step \[s] > 0, if any; the integrator step `dt / substeps` bounds it anyway, as
-    /// every world step ends exactly on its boundary.
-    pub max_step: Option<f64>,
+    rtol: f64,
+    atol: f64,
+    max_step: Option<f64>,
 }
 
 impl Tolerances {
@@ -101,6 +96,22 @@ impl Tolerances {
             max_step: max_step.map(|step| require("max_step", step, Bound::Positive, "s")).transpose()?,
         })
     }
+
+    /// Relative tolerance [–] in (0, 1).
+    pub fn rtol(&self) -> f64 {
+        self.rtol
+    }
+
+    /// Absolute tolerance [SI unit of each component] > 0.
+    pub fn atol(&self) -> f64 {
+        self.atol
+    }
+
+    /// Largest step \[s] > 0, if any; the integrator step `dt / substeps` bounds it anyway, as
+    /// every world step ends exactly on its boundary.
+    pub fn max_step(&self) -> Option<f64> {
+        self.max_step
+    }
 }
 
 impl Default for Tolerances {
@@ -112,12 +123,10 @@ impl Default for Tolerances {
 /// The time step settings of a world, built by [`Timing::new`], which checks them.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Timing {
-    /// World step \[s] > 0.
-    pub dt: f64,
-    pub integrator: Integrator,
-    pub substeps: Substeps,
-    /// Used by [`Integrator::Dopri45`] only.
-    pub tolerances: Tolerances,
+    dt: f64,
+    integrator: Integrator,
+    substeps: Substeps,
+    tolerances: Tolerances,
 }
 
 impl Timing {
@@ -138,6 +147,34 @@ impl Timing {
         }
         Ok(Self { dt, integrator, substeps, tolerances })
     }
+
+    /// World step \[s] > 0.
+    pub fn dt(&self) -> f64 {
+        self.dt
+    }
+
+    pub fn integrator(&self) -> Integrator {
+        self.integrator
+    }
+
+    /// Integrator steps per world step as declared (`Fixed(n)` with `n ≥ 1`, or `Auto`).
+    pub fn substeps(&self) -> Substeps {
+        self.substeps
+    }
+
+    /// Integrator steps per world step before `Auto` is planned: `n` of `Fixed(n)`, else one
+    /// (the world then plans `Auto` from the stable time steps at its current state).
+    pub(crate) fn first_substeps(&self) -> u32 {
+        match self.substeps {
+            Substeps::Fixed(n) => n,
+            Substeps::Auto => 1,
+        }
+    }
+
+    /// Used by [`Integrator::Dopri45`] only.
+    pub fn tolerances(&self) -> Tolerances {
+        self.tolerances
+    }
 }
 
 #[cfg(test)]
@@ -153,7 +190,7 @@ mod tests {
             refused(Timing::new(1e-3, Integrator::Rk4, Substeps::Fixed(0), tolerances)),
             "substeps must be at least 1, got 0"
         );
-        assert_eq!(Timing::new(1e-3, Integrator::Rk4, Substeps::Fixed(2), tolerances).unwrap().dt, 1e-3);
+        assert_eq!(Timing::new(1e-3, Integrator::Rk4, Substeps::Fixed(2), tolerances).unwrap().dt(), 1e-3);
         assert_eq!(Tolerances::new(0.0, 1e-9, None).unwrap_err().to_string(), "rtol must be > 0 and < 1, got 0");
         assert_eq!(Tolerances::new(1e-6, -1e-9, None).unwrap_err().field(), "atol");
         assert_eq!(Tolerances::new(1e-6, 1e-9, Some(0.0)).unwrap_err().to_string(), "max_step must be > 0 s, got 0");

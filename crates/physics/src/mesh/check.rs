@@ -67,14 +67,34 @@ impl std::fmt::Display for TurnedOver {
 #[derive(Debug, Clone, PartialEq)]
 pub struct OutwardMesh {
     /// Vertices \[m], as given.
-    pub vertices: Vec<Vec3>,
+    vertices: Vec<Vec3>,
     /// Triangles (vertex indices), counter-clockwise seen from outside.
-    pub triangles: Vec<[u32; 3]>,
+    triangles: Vec<[u32; 3]>,
     /// Set when the triangles were given wound inwards and turned over here.
-    pub turned_over: Option<TurnedOver>,
+    turned_over: Option<TurnedOver>,
 }
 
 impl OutwardMesh {
+    /// Vertices \[m], as given.
+    pub fn vertices(&self) -> &[Vec3] {
+        &self.vertices
+    }
+
+    /// Triangles (vertex indices), counter-clockwise seen from outside.
+    pub fn triangles(&self) -> &[[u32; 3]] {
+        &self.triangles
+    }
+
+    /// Set when the triangles were given wound inwards and turned over here.
+    pub fn turned_over(&self) -> Option<&TurnedOver> {
+        self.turned_over.as_ref()
+    }
+
+    /// The vertices and the triangles, to build on.
+    pub fn into_parts(self) -> (Vec<Vec3>, Vec<[u32; 3]>) {
+        (self.vertices, self.triangles)
+    }
+
     /// Checks `vertices` \[m] and `triangles` (vertex indices) and winds them outward.
     ///
     /// # Errors

@@ -84,9 +84,9 @@ impl FaceGroup {
 #[derive(Debug, Clone, PartialEq)]
 pub struct BoundaryMesh {
     /// Vertices \[m].
-    pub vertices: Vec<Vec3>,
+    vertices: Vec<Vec3>,
     /// Counter-clockwise seen from outside.
-    pub triangles: Vec<[u32; 3]>,
+    triangles: Vec<[u32; 3]>,
     /// Ordered group by group.
     faces: Vec<Face>,
     groups: Vec<FaceGroup>,
@@ -95,6 +95,16 @@ pub struct BoundaryMesh {
 }
 
 impl BoundaryMesh {
+    /// Vertices \[m].
+    pub fn vertices(&self) -> &[Vec3] {
+        &self.vertices
+    }
+
+    /// Counter-clockwise seen from outside.
+    pub fn triangles(&self) -> &[[u32; 3]] {
+        &self.triangles
+    }
+
     /// A boundary from vertices \[m] and triangles (vertex indices), checked and wound outward by
     /// [`OutwardMesh::new`] (a mesh wound inwards is turned over). Degenerate triangles are kept
     /// for display but give no face.
@@ -102,7 +112,7 @@ impl BoundaryMesh {
     /// # Errors
     /// See [`OutwardMesh::new`].
     pub fn new(vertices: Vec<Vec3>, triangles: Vec<[u32; 3]>) -> Result<Self, MeshError> {
-        let OutwardMesh { vertices, triangles, .. } = OutwardMesh::new(vertices, triangles)?;
+        let (vertices, triangles) = OutwardMesh::new(vertices, triangles)?.into_parts();
         let mut faces: Vec<Face> = triangles
             .iter()
             .filter_map(|t| {

@@ -16,7 +16,7 @@ use crate::body::{BodyFrame, Load};
 use crate::math::{Mat3, Vec3};
 
 /// Which hydrostatics a potential-flow body feels.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum HydrostaticsModel {
     /// The still-water pressure integrated over the mesh at its actual pose (PHYSICS.md §6).
     #[default]

@@ -16,7 +16,7 @@ use super::state_space::RadiationStateSpace;
 use std::collections::VecDeque;
 
 /// How the radiation force is evaluated.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum RadiationMethod {
     /// The state space fitted to `K(t)`: `O(states)` per evaluation.
     #[default]

@@ -8,8 +8,7 @@ use crate::math::{Rotation, Vec3};
 use crate::system::System;
 
 /// A direction a body moves in: along or about a world axis.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "lowercase")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Direction {
     X,
     Y,

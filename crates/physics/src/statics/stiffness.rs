@@ -47,7 +47,7 @@ pub fn tangent(system: &System, evaluation: &Evaluation) -> DMatrix<f64> {
                 }
             }
             CouplingKind::Contact(contact) => {
-                let bodies: Vec<usize> = [Some(contact.body), contact.other_body()].into_iter().flatten().collect();
+                let bodies: Vec<usize> = [Some(contact.body()), contact.other_body()].into_iter().flatten().collect();
                 add_differences(&mut jacobian, system, frames, &bodies, |moved, loads| {
                     let mut cache = evaluation.caches()[index].clone();
                     let mut record = CouplingForces::default();
@@ -58,7 +58,7 @@ pub fn tangent(system: &System, evaluation: &Evaluation) -> DMatrix<f64> {
         }
     }
     if let Some(stage) = system.water() {
-        let bodies: Vec<usize> = stage.floating.iter().map(|f| f.body).collect();
+        let bodies: Vec<usize> = stage.floating.iter().map(|f| f.body()).collect();
         let mut records = vec![WaterForces::default(); bodies.len()];
         let mut radiation = vec![crate::potential::RadiationRun::default(); bodies.len()];
         let mut scratch = WaterScratch::default();

@@ -7,7 +7,7 @@
 use crate::math::Vec3;
 
 /// How the current's speed varies with depth.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Profile {
     /// The same speed at every depth.
     #[default]

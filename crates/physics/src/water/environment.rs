@@ -14,7 +14,7 @@ use crate::parameter::{Bound, ParameterError, require};
 pub use super::current::Profile as CurrentProfile;
 
 /// Waves (angles in radians).
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum WaveSpec {
     /// Still water.
     Calm,
@@ -27,7 +27,7 @@ pub enum WaveSpec {
 }
 
 /// A current: surface speed [m/s], heading \[rad], profile.
-#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct CurrentSpec {
     pub speed: f64,
     pub heading: f64,
@@ -35,7 +35,7 @@ pub struct CurrentSpec {
 }
 
 /// What a scene says about its water (SI units, angles in radians).
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct WaterSpec {
     /// ρ [kg/m³] > 0.
     pub density: f64,
@@ -72,9 +72,9 @@ pub const BREAKING_STEEPNESS: f64 = 1.0 / 7.0;
 /// Water that cannot be.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum WaterError {
-    /// A number out of its range ([`crate::parameter`]).
-    #[error(transparent)]
-    Parameter(#[from] ParameterError),
+    /// A number out of its range ([`crate::parameter`]): the value of the spec at `field`.
+    #[error("{source}")]
+    Parameter { field: WaterField, source: ParameterError },
     #[error("JONSWAP gamma must be ≥ 1, got {0}")]
     Gamma(f64),
     #[error("a JONSWAP sea needs 1 to {MAX_COMPONENTS} components, got {0}")]
@@ -85,6 +85,25 @@ pub enum WaterError {
     ProfileWithoutDepth,
     #[error("water needs gravity along −z, got ({0}, {1}, {2}) m/s²")]
     Gravity(f64, f64, f64),
+}
+
+/// A number of a [`WaterSpec`], to say which one an error is about (a file maps each to its own
+/// spelling, by type).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WaterField {
+    Density,
+    Level,
+    Depth,
+    CurrentSpeed,
+    CurrentHeading,
+    Ramp,
+    WaveHeight,
+    WavePeriod,
+    WaveHeading,
+    WavePhase,
+    SignificantHeight,
+    PeakPeriod,
+    Gamma,
 }
 
 /// The water of a system: its spec, and what is derived from it once (the sea's components, the
@@ -240,35 +259,39 @@ impl Water {
 
 /// Every number finite and in its range.
 fn check(spec: &WaterSpec) -> Result<(), WaterError> {
-    require("density", spec.density, Bound::Positive, "kg/m³")?;
-    require("level", spec.level, Bound::Finite, "m")?;
+    use WaterField as F;
+    let require = |field: WaterField, name, value, bound, unit| {
+        require(name, value, bound, unit).map_err(|source| WaterError::Parameter { field, source })
+    };
+    require(F::Density, "density", spec.density, Bound::Positive, "kg/m³")?;
+    require(F::Level, "level", spec.level, Bound::Finite, "m")?;
     if let Some(depth) = spec.depth {
-        require("depth", depth, Bound::Positive, "m")?;
+        require(F::Depth, "depth", depth, Bound::Positive, "m")?;
     }
-    require("current speed", spec.current.speed, Bound::NonNegative, "m/s")?;
-    require("current heading", spec.current.heading, Bound::Finite, "rad")?;
+    require(F::CurrentSpeed, "current speed", spec.current.speed, Bound::NonNegative, "m/s")?;
+    require(F::CurrentHeading, "current heading", spec.current.heading, Bound::Finite, "rad")?;
     if spec.current.profile.needs_depth() && spec.depth.is_none() {
         return Err(WaterError::ProfileWithoutDepth);
     }
     if let Some(ramp) = spec.ramp {
-        require("ramp", ramp, Bound::NonNegative, "s")?;
+        require(F::Ramp, "ramp", ramp, Bound::NonNegative, "s")?;
     }
     match spec.waves {
         WaveSpec::Calm => {}
         WaveSpec::Regular { height, period, heading, phase } => {
-            require("wave height", height, Bound::NonNegative, "m")?;
-            require("wave period", period, Bound::Positive, "s")?;
-            require("wave heading", heading, Bound::Finite, "rad")?;
-            require("wave phase", phase, Bound::Finite, "rad")?;
+            require(F::WaveHeight, "wave height", height, Bound::NonNegative, "m")?;
+            require(F::WavePeriod, "wave period", period, Bound::Positive, "s")?;
+            require(F::WaveHeading, "wave heading", heading, Bound::Finite, "rad")?;
+            require(F::WavePhase, "wave phase", phase, Bound::Finite, "rad")?;
         }
         WaveSpec::Jonswap { significant_height, peak_period, gamma, heading, components, .. } => {
-            require("significant wave height", significant_height, Bound::NonNegative, "m")?;
-            require("peak period", peak_period, Bound::Positive, "s")?;
-            require("gamma", gamma, Bound::Finite, "")?;
+            require(F::SignificantHeight, "significant wave height", significant_height, Bound::NonNegative, "m")?;
+            require(F::PeakPeriod, "peak period", peak_period, Bound::Positive, "s")?;
+            require(F::Gamma, "gamma", gamma, Bound::Finite, "")?;
             if !(gamma >= 1.0) {
                 return Err(WaterError::Gamma(gamma));
             }
-            require("wave heading", heading, Bound::Finite, "rad")?;
+            require(F::WaveHeading, "wave heading", heading, Bound::Finite, "rad")?;
             if !(1..=MAX_COMPONENTS).contains(&components) {
                 return Err(WaterError::Components(components));
             }

@@ -38,7 +38,7 @@ impl Hull {
     /// # Errors
     /// Those of [`OutwardMesh::new`], an open mesh, or one that encloses no volume.
     pub fn new(vertices: Vec<Vec3>, triangles: Vec<[u32; 3]>) -> Result<Self, MeshError> {
-        let OutwardMesh { vertices, triangles, .. } = OutwardMesh::new(vertices, triangles)?;
+        let (vertices, triangles) = OutwardMesh::new(vertices, triangles)?.into_parts();
         let corner = |t: &[u32; 3], i: usize| vertices[t[i] as usize];
         let double_area_normals: Vec<Vec3> = triangles.iter().map(|t| double_area_normal(&vertices, t)).collect();
         let area = 0.5 * double_area_normals.iter().map(Vec3::norm).sum::<f64>();

@@ -161,19 +161,19 @@ pub fn floating_equilibrium(
     state: &BodyState,
     pull: f64,
 ) -> Option<FloatingEquilibrium> {
-    let hull = &floating.hull;
+    let hull = &floating.hull();
     let rotation = state.rotation_matrix();
     let volume = (body.mass() * water.gravity() - pull) / water.specific_weight();
     let height = equilibrium_height(hull, &rotation, water.level(), state.position.x, state.position.y, volume)?;
     let statics =
         Hydrostatics::at(hull, &Vec3::new(state.position.x, state.position.y, height), &rotation, water.level());
     let metacentric_heights = statics.metacentric_heights(height);
-    let hydro = &floating.hydro;
+    let hydro = &floating.hydro();
     let wetted = (statics.displaced_volume / hull.volume()).min(1.0);
     let added = AddedMass::new(
-        &hydro.axes,
-        &hydro.spec.added_mass,
-        &hydro.spec.added_inertia,
+        hydro.axes(),
+        &hydro.spec().added_mass,
+        &hydro.spec().added_inertia,
         hull.volume(),
         water.density(),
         wetted,

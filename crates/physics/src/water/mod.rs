@@ -47,7 +47,7 @@ pub mod spectrum;
 pub mod stage;
 pub mod waves;
 
-pub use environment::{CurrentProfile, CurrentSpec, Water, WaterError, WaterSpec, WaveSpec};
+pub use environment::{CurrentProfile, CurrentSpec, Water, WaterError, WaterField, WaterSpec, WaveSpec};
 pub use forces::WaterForces;
 pub use hull::Hull;
 pub use morison::Hydro;

@@ -20,7 +20,7 @@ use crate::body::{BodyFrame, Load, RigidBody};
 use crate::math::{Mat3, Vec3};
 
 /// What a scene declares of a body in water, in its reference axes (SI units).
-#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct HydroSpec {
     /// `C_dj` [–] ≥ 0 per reference axis.
     pub drag: Vec3,
@@ -54,16 +54,36 @@ pub enum HydroError {
 /// A body's coefficients, resolved into its principal frame.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Hydro {
-    pub spec: HydroSpec,
+    spec: HydroSpec,
     /// `b_j` as the columns, principal frame.
-    pub axes: Mat3,
+    axes: Mat3,
     /// `A_j` \[m²].
-    pub drag_areas: Vec3,
+    drag_areas: Vec3,
     /// The drag centre, principal frame \[m].
-    pub drag_center: Vec3,
+    drag_center: Vec3,
 }
 
 impl Hydro {
+    /// The coefficients as the scene declared them, in its reference axes.
+    pub fn spec(&self) -> &HydroSpec {
+        &self.spec
+    }
+
+    /// `b_j` as the columns, principal frame.
+    pub fn axes(&self) -> &Mat3 {
+        &self.axes
+    }
+
+    /// `A_j` \[m²].
+    pub fn drag_areas(&self) -> &Vec3 {
+        &self.drag_areas
+    }
+
+    /// The drag centre, principal frame \[m].
+    pub fn drag_center(&self) -> &Vec3 {
+        &self.drag_center
+    }
+
     /// `spec` for `body` with hull `hull`.
     ///
     /// # Errors

@@ -21,19 +21,27 @@ use std::sync::Arc;
 /// A body in the water: its index, hull and coefficients, and its potential flow if it has any.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FloatingBody {
-    pub body: usize,
-    pub hull: Arc<Hull>,
-    pub hydro: Hydro,
-    /// Its potential flow while on: the stage applies it.
-    pub potential: Option<FloatingPotential>,
-    /// Its potential flow while switched off by a live edit ([`WaterStage::switch_potential_flow`]),
-    /// kept with its fitted model to switch it on again without reading the files; the stage
-    /// ignores it, so that the body is then exactly what it would be without potential data.
-    pub switched_off: Option<FloatingPotential>,
+    body: usize,
+    hull: Arc<Hull>,
+    hydro: Hydro,
+    potential: PotentialFlow,
     /// Its potential flow's linear hydrostatics in a system at rest
     /// ([`crate::system::System::at_rest`]), which has no potential flow but keeps these, so
     /// that a static solve sees the restoring a run feels; `None` everywhere else.
-    pub hydrostatics_at_rest: Option<LinearHydrostatics>,
+    hydrostatics_at_rest: Option<LinearHydrostatics>,
+}
+
+/// A floating body's potential flow (PHYSICS.md §9), if it has panel data.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PotentialFlow {
+    /// No panel data: Morison's coefficients and the hull's pressure alone.
+    Absent,
+    /// On: the stage applies it.
+    On(FloatingPotential),
+    /// Switched off by a live edit ([`WaterStage::switch_potential_flow`]), kept with its fitted
+    /// model to switch it on again without reading the files; the stage ignores it, so that the
+    /// body is then exactly what it would be without potential data.
+    SwitchedOff(FloatingPotential),
 }
 
 /// A floating body's potential flow (PHYSICS.md §9): its model, the mean horizontal position
@@ -73,15 +81,62 @@ impl FloatingBody {
             body: index,
             hull: Arc::new(hull),
             hydro,
-            potential: None,
-            switched_off: None,
+            potential: PotentialFlow::Absent,
             hydrostatics_at_rest: None,
         })
     }
 
+    /// The body's index in the system.
+    pub fn body(&self) -> usize {
+        self.body
+    }
+
+    /// Its hull, principal frame.
+    pub fn hull(&self) -> &Arc<Hull> {
+        &self.hull
+    }
+
+    /// Its Morison coefficients, resolved.
+    pub fn hydro(&self) -> &Hydro {
+        &self.hydro
+    }
+
+    /// Its potential flow while on, which the stage applies.
+    pub fn potential(&self) -> Option<&FloatingPotential> {
+        match &self.potential {
+            PotentialFlow::On(potential) => Some(potential),
+            PotentialFlow::Absent | PotentialFlow::SwitchedOff(_) => None,
+        }
+    }
+
     /// Whether the body has potential-flow data, on or switched off.
     pub fn has_potential_data(&self) -> bool {
-        self.potential.is_some() || self.switched_off.is_some()
+        match &self.potential {
+            PotentialFlow::On(_) | PotentialFlow::SwitchedOff(_) => true,
+            PotentialFlow::Absent => false,
+        }
+    }
+
+    /// Its potential flow's linear hydrostatics in a system at rest, if kept there.
+    pub fn hydrostatics_at_rest(&self) -> Option<&LinearHydrostatics> {
+        self.hydrostatics_at_rest.as_ref()
+    }
+
+    /// The body with its potential flow `potential`, on (the system's build, PHYSICS.md §9).
+    pub(crate) fn with_potential(self, potential: FloatingPotential) -> Self {
+        Self { potential: PotentialFlow::On(potential), ..self }
+    }
+
+    /// The body with the coefficients `hydro` (a live edit; checked by [`Hydro::new`]).
+    pub(crate) fn set_hydro(&mut self, hydro: Hydro) {
+        self.hydro = hydro;
+    }
+
+    /// The body as a system at rest has it ([`crate::system::System::at_rest`]): coefficients
+    /// `hydro`, no potential flow, but its linear hydrostatics kept, a static restoring.
+    pub(crate) fn at_rest(&self, hydro: Hydro) -> Self {
+        let hydrostatics_at_rest = self.potential().and_then(|p| p.linear_hydrostatics.clone());
+        Self { hydro, potential: PotentialFlow::Absent, hydrostatics_at_rest, ..self.clone() }
     }
 }
 
@@ -159,7 +214,7 @@ impl WaterStage {
     pub fn excite(&mut self) -> Result<(), (usize, HeadingMissing)> {
         let components = self.water.sea().components();
         for floating in &mut self.floating {
-            if let Some(potential) = &mut floating.potential {
+            if let PotentialFlow::On(potential) = &mut floating.potential {
                 let excitation = potential.model.coefficients().excitation();
                 potential.excitation = WaveExcitation::new(excitation, components, potential.mean_position)
                     .map_err(|error| (floating.body, error))?;
@@ -190,23 +245,17 @@ impl WaterStage {
         if !floating.has_potential_data() {
             return Err(SwitchError::NoPotentialData);
         }
-        let (from, to) = if on {
-            (&mut floating.switched_off, &mut floating.potential)
-        } else {
-            (&mut floating.potential, &mut floating.switched_off)
-        };
-        let Some(mut potential) = from.take() else { return Ok(None) };
-        if on {
-            let excitation = potential.model.coefficients().excitation();
-            match WaveExcitation::new(excitation, components, potential.mean_position) {
-                Ok(built) => potential.excitation = built,
-                Err(error) => {
-                    *from = Some(potential);
-                    return Err(error.into());
-                }
+        match (&mut floating.potential, on) {
+            (PotentialFlow::SwitchedOff(potential), true) => {
+                let excitation = potential.model.coefficients().excitation();
+                potential.excitation = WaveExcitation::new(excitation, components, potential.mean_position)?;
+                floating.potential = PotentialFlow::On(potential.clone());
+            }
+            (PotentialFlow::On(potential), false) => floating.potential = PotentialFlow::SwitchedOff(potential.clone()),
+            (PotentialFlow::On(_), true) | (PotentialFlow::SwitchedOff(_), false) | (PotentialFlow::Absent, _) => {
+                return Ok(None);
             }
         }
-        *to = Some(potential);
         Ok(Some(index))
     }
 
@@ -278,7 +327,7 @@ impl WaterStage {
             return record;
         }
         // With potential flow the incident wave's pressure is in the excitation (PHYSICS.md §9).
-        let froude_krylov = waves && floating.potential.is_none();
+        let froude_krylov = waves && floating.potential().is_none();
         self.vertex_pressures(hull, frame, scratch, ramp, froude_krylov);
         let integral = integrate(hull, &scratch.pressures, &scratch.heads);
         let up = frame.rotation.row(2).transpose();
@@ -286,7 +335,7 @@ impl WaterStage {
         record.waterplane_area = (-up.dot(&integral.wet_normal)).max(0.0);
         record.wetted_fraction = (record.submerged_volume / hull.volume()).min(1.0);
         record.pressure = Load { force: frame.rotation * integral.force, moment: frame.rotation * integral.moment };
-        let linear = match &floating.potential {
+        let linear = match floating.potential() {
             Some(potential) => potential.linear_hydrostatics.as_ref(),
             None => floating.hydrostatics_at_rest.as_ref(),
         };
@@ -298,11 +347,11 @@ impl WaterStage {
         let (flow, acceleration) = water.flow(&(frame.position + hydro.drag_arm(&frame.rotation)), time);
         if record.wetted_fraction > 0.0 {
             record.drag = hydro.load(frame, &flow, water.density(), record.wetted_fraction);
-            if hydro.has_added_mass() && floating.potential.is_none() {
+            if hydro.has_added_mass() && floating.potential().is_none() {
                 let added = AddedMass::new(
-                    &hydro.axes,
-                    &hydro.spec.added_mass,
-                    &hydro.spec.added_inertia,
+                    hydro.axes(),
+                    &hydro.spec().added_mass,
+                    &hydro.spec().added_inertia,
                     hull.volume(),
                     water.density(),
                     record.wetted_fraction,
@@ -314,7 +363,7 @@ impl WaterStage {
                 record.added_mass = added.reaction(body, frame, &before, &acceleration);
             }
         }
-        if let Some(potential) = &floating.potential {
+        if let Some(potential) = floating.potential() {
             potential_forces(potential, &mut record, BodyInputs { body, frame, load, run }, instant);
         }
         record.power = power(&record.total(), frame);

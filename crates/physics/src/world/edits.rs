@@ -9,7 +9,7 @@ use super::error::{EditError, StepError};
 use crate::body::BodyState;
 use crate::coupling::Coupling;
 use crate::energy::Work;
-use crate::integrator::{Substeps, Timing};
+use crate::integrator::Timing;
 use crate::seabed::Seabed;
 use crate::stability;
 use crate::system::SystemError;
@@ -123,7 +123,7 @@ impl World {
             .system
             .water()
             .and_then(|stage| stage.floating_body(body))
-            .is_some_and(|floating| floating.has_potential_data() && floating.potential.is_some() == on);
+            .is_some_and(|floating| floating.has_potential_data() && floating.potential().is_some() == on);
         if already {
             return Ok(());
         }
@@ -172,20 +172,9 @@ impl World {
         let synchronized = self.synchronized_states();
         self.states.clone_from(&synchronized);
         self.timing = timing;
-        self.substeps = match timing.substeps {
-            Substeps::Fixed(n) => n,
-            Substeps::Auto => 1,
-        };
+        self.substeps = timing.first_substeps();
         self.start_integrator()?;
-        if timing.substeps == Substeps::Auto {
-            let needed = self.auto_substeps();
-            if needed > 1 {
-                self.substeps = needed;
-                self.states = synchronized;
-                self.start_integrator()?;
-            }
-        }
-        Ok(())
+        self.plan_auto_substeps(synchronized)
     }
 
     /// Starts the integrator again after a live edit of the world that was `before`, with
@@ -196,16 +185,7 @@ impl World {
     /// forces, the world goes back to `before`.
     fn restart_after_edit(&mut self, before: World) -> Result<(), StepError> {
         let edited = self.states.clone();
-        let mut started = self.start_integrator();
-        if started.is_ok() && self.timing.substeps == Substeps::Auto {
-            let needed = self.auto_substeps();
-            if needed != self.substeps {
-                self.substeps = needed;
-                self.states = edited;
-                started = self.start_integrator();
-            }
-        }
-        if let Err(error) = started {
+        if let Err(error) = self.start_integrator().and_then(|()| self.plan_auto_substeps(edited)) {
             *self = before;
             return Err(error);
         }

@@ -123,7 +123,7 @@ pub fn fall_energy(system: &System, states: &[BodyState], ends: impl Iterator<It
     let mass: f64 = system.bodies().iter().filter(|b| !b.is_kinematic()).map(|b| b.mass()).sum();
     let floating = system.water().map_or(0.0, |stage| {
         let rho_g = stage.water.specific_weight();
-        stage.floating.iter().map(|f| rho_g * f.hull.volume() * 2.0 * f.hull.bounding_radius()).sum()
+        stage.floating.iter().map(|f| rho_g * f.hull().volume() * 2.0 * f.hull().bounding_radius()).sum()
     });
     mass * system.gravity().norm() * size + floating
 }

@@ -72,14 +72,11 @@ impl World {
     /// # Errors
     /// A coupling that cannot give its forces at t = 0.
     pub fn new(system: System, timing: Timing) -> Result<Self, StepError> {
-        let substeps = match timing.substeps {
-            Substeps::Fixed(n) => n.max(1),
-            Substeps::Auto => 1,
-        };
+        let substeps = timing.first_substeps();
         let bodies = system.bodies().len();
         let mut world = Self {
             states: system.initial_states().to_vec(),
-            scheme: Scheme::new(timing.integrator, timing.tolerances, timing.dt / f64::from(substeps), bodies),
+            scheme: Scheme::new(timing.integrator(), timing.tolerances(), timing.dt() / f64::from(substeps), bodies),
             evaluation: Evaluation::new(bodies, system.couplings()),
             system,
             timing,
@@ -91,14 +88,8 @@ impl World {
         };
         world.start_integrator()?;
         world.health.limit = stability::binding(&world.limits());
-        if timing.substeps == Substeps::Auto {
-            let needed = world.auto_substeps();
-            if needed > 1 {
-                world.substeps = needed;
-                world.states = world.system.initial_states().to_vec();
-                world.start_integrator()?;
-            }
-        }
+        let initial_states = world.system.initial_states().to_vec();
+        world.plan_auto_substeps(initial_states)?;
         world.health.initial_energy = world.energy();
         let ends: Vec<Vec3> = world.evaluation.forces().iter().flat_map(|f| [f.point1, f.point2]).collect();
         world.health.fall_energy = health::fall_energy(&world.system, &world.states, ends.into_iter());
@@ -109,7 +100,7 @@ impl World {
     /// `self.states` (synchronised velocities): forces, accelerations and energies.
     fn start_integrator(&mut self) -> Result<(), StepError> {
         let h = self.step_size();
-        self.scheme = Scheme::new(self.timing.integrator, self.timing.tolerances, h, self.system.bodies().len());
+        self.scheme = Scheme::new(self.timing.integrator(), self.timing.tolerances(), h, self.system.bodies().len());
         let time = self.clock.time;
         self.body_energy = self
             .scheme
@@ -128,7 +119,7 @@ impl World {
     pub fn step(&mut self) -> Result<(), StepError> {
         let h = self.step_size();
         for _ in 0..self.substeps {
-            if self.timing.integrator.is_adaptive() {
+            if self.timing.integrator().is_adaptive() {
                 self.adaptive_span(h)?;
             } else {
                 let report = self
@@ -219,13 +210,31 @@ impl World {
     /// integrator and of every contact's impact resolution, at most [`MAX_AUTO_SUBSTEPS`]; one
     /// for an adaptive scheme, whose steps adapt.
     fn auto_substeps(&self) -> u32 {
-        if self.timing.integrator.is_adaptive() {
+        if self.timing.integrator().is_adaptive() {
             return 1;
         }
         let limits = [self.limits(), self.impact_limits()].concat();
         stability::binding(&limits).map_or(1, |limit| {
-            (self.timing.dt / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil().clamp(1.0, f64::from(MAX_AUTO_SUBSTEPS)) as u32
+            (self.timing.dt() / (AUTO_SUBSTEP_MARGIN * limit.dt)).ceil().clamp(1.0, f64::from(MAX_AUTO_SUBSTEPS)) as u32
         })
+    }
+
+    /// Under `Substeps::Auto`, the integrator steps per world step planned again for the
+    /// current state ([`World::auto_substeps`]); when the plan differs from the steps it was
+    /// started with, the integrator starts again from `states` (synchronised velocities) with
+    /// the new step. Under `Fixed`, nothing. The one place `Auto` is resolved: at t = 0, on a
+    /// change of the time step settings and after a live edit.
+    fn plan_auto_substeps(&mut self, states: Vec<BodyState>) -> Result<(), StepError> {
+        if self.timing.substeps() != Substeps::Auto {
+            return Ok(());
+        }
+        let needed = self.auto_substeps();
+        if needed != self.substeps {
+            self.substeps = needed;
+            self.states = states;
+            self.start_integrator()?;
+        }
+        Ok(())
     }
 
     // ----- what a world shows -----
@@ -253,12 +262,12 @@ impl World {
     }
 
     pub fn integrator(&self) -> Integrator {
-        self.timing.integrator
+        self.timing.integrator()
     }
 
     /// The adaptive scheme's settings.
     pub fn tolerances(&self) -> Tolerances {
-        self.timing.tolerances
+        self.timing.tolerances()
     }
 
     /// Simulated time \[s].
@@ -273,7 +282,7 @@ impl World {
 
     /// World step \[s]: what one [`World::step`] advances.
     pub fn dt(&self) -> f64 {
-        self.timing.dt
+        self.timing.dt()
     }
 
     /// Integrator steps accepted since t = 0 (for `dopri45`, its adaptive steps).
@@ -293,7 +302,7 @@ impl World {
 
     /// The integrator's step `dt / substeps` \[s], the one the stable time step bounds.
     pub fn step_size(&self) -> f64 {
-        self.timing.dt / f64::from(self.substeps)
+        self.timing.dt() / f64::from(self.substeps)
     }
 
     /// State of body `index` at the current time, velocities included.
@@ -354,7 +363,7 @@ impl World {
         let states = self.synchronized_states();
         stability::limits(
             &Situation { system: &self.system, evaluation: &self.evaluation, states: &states },
-            self.timing.integrator,
+            self.timing.integrator(),
         )
     }
 

@@ -54,7 +54,7 @@ impl Boundaries {
         let mut planes: Vec<(String, Vec<Plane>)> = Vec::new();
         for coupling in world.couplings() {
             let against = match &coupling.kind {
-                CouplingKind::Contact(contact) => match &contact.against {
+                CouplingKind::Contact(contact) => match &contact.against() {
                     Opposing::Planes(planes) => planes,
                     Opposing::Body { .. } => continue,
                 },
@@ -70,8 +70,8 @@ impl Boundaries {
             .couplings()
             .iter()
             .flat_map(|coupling| match &coupling.kind {
-                CouplingKind::SpringDamper(spring) => vec![spring.end1, spring.end2],
-                CouplingKind::Catenary(line) => vec![line.end1, line.end2],
+                CouplingKind::SpringDamper(spring) => vec![spring.end1(), spring.end2()],
+                CouplingKind::Catenary(line) => vec![line.end1(), line.end2()],
                 // A contact's ends are its bodies' centres, or the origin for its planes.
                 CouplingKind::Contact(_) => Vec::new(),
             })

@@ -20,7 +20,7 @@ use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;
 use tether_physics::coupling::lumped_line::LineRun;
-use tether_physics::coupling::{Catenary, CouplingKind, LineModel};
+use tether_physics::coupling::{CouplingKind, LineModel};
 use tether_physics::math::Vec3;
 use tether_physics::world::World;
 
@@ -62,7 +62,7 @@ impl Catenaries {
             .iter()
             .enumerate()
             .filter_map(|(index, coupling)| match &coupling.kind {
-                CouplingKind::Catenary(line) => Some((index, coupling, line.model != LineModel::QuasiStatic)),
+                CouplingKind::Catenary(line) => Some((index, coupling, line.model() != LineModel::QuasiStatic)),
                 CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => None,
             })
             .map(|(index, coupling, dynamic)| Line {
@@ -184,7 +184,7 @@ fn quasi_static_tensions(
     forces: &tether_physics::coupling::CouplingForces,
 ) -> [f64; 2] {
     let CouplingKind::Catenary(line) = &coupling.kind else { return [0.0; 2] };
-    let quasi_static = Catenary { model: LineModel::QuasiStatic, ..line.clone() };
+    let quasi_static = line.clone().with_model(LineModel::QuasiStatic);
     quasi_static
         .solve(&forces.point1, &forces.point2, world.system().surroundings(), None)
         .map_or([0.0; 2], |state| state.end_tensions().into())

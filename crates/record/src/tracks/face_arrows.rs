@@ -208,7 +208,7 @@ impl Track for FaceArrowTrack {
 /// Appends `contact`'s face forces above the threshold, as world arrows from the face
 /// centroids, the largest one body radius long; returns how many.
 fn face_arrows(world: &World, contact: &Contact, origins: &mut Vec<[f32; 3]>, vectors: &mut Vec<[f32; 3]>) -> usize {
-    let body = &world.bodies()[contact.body];
+    let body = &world.bodies()[contact.body()];
     let weight = body.mass() * world.gravity().norm().max(1.0);
     let faces: Vec<_> = contact
         .active_faces(world.frames())
@@ -216,8 +216,8 @@ fn face_arrows(world: &World, contact: &Contact, origins: &mut Vec<[f32; 3]>, ve
         .filter(|face| face.force.norm() > ARROW_THRESHOLD * weight)
         .collect();
     let largest = faces.iter().map(|face| face.force.norm()).fold(0.0, f64::max);
-    let scale = contact.boundary.bounding_radius() / largest.max(f64::MIN_POSITIVE);
-    let frame = &world.frames()[contact.body];
+    let scale = contact.boundary().bounding_radius() / largest.max(f64::MIN_POSITIVE);
+    let frame = &world.frames()[contact.body()];
     for face in &faces {
         origins.push(f32x3(&(frame.position + frame.rotation * face.centroid)));
         vectors.push(f32x3(&(frame.rotation * face.force * scale)));

@@ -17,7 +17,7 @@ use crate::stats::KindStats;
 use crate::{RecordError, paths};
 use rerun::RecordingStream;
 use tether_physics::coupling::catenary::{LineEnd, LineState};
-use tether_physics::coupling::{Catenary, CouplingKind, LineModel};
+use tether_physics::coupling::{CouplingKind, LineModel};
 use tether_physics::math::Vec3;
 use tether_physics::world::World;
 
@@ -79,7 +79,7 @@ impl Track for SeabedTrack {
     fn log_static(&self, stream: &RecordingStream, world: &World) -> Result<(), RecordError> {
         let water_draws_it = world.system().water().is_some_and(|stage| stage.water.seabed().is_some());
         if let (Some(seabed), false) = (world.system().seabed(), water_draws_it) {
-            log_plane(stream, world, seabed.elevation)?;
+            log_plane(stream, world, seabed.elevation())?;
         }
         let [r, g, b] = SAND_RGB;
         let sand = rerun::LineStrips3D::update_fields()
@@ -183,10 +183,11 @@ fn log_plane(stream: &RecordingStream, world: &World, elevation: f64) -> Result<
 fn grounded_length(world: &World, index: usize, state: Option<&LineState>) -> f64 {
     let nodes = world.evaluation().line_run(index).and_then(|run| run.nodes());
     let dynamic = match &world.couplings()[index].kind {
-        CouplingKind::Catenary(Catenary { model: LineModel::Dynamic(model), length, .. }) => {
-            Some(length / f64::from(model.segments))
-        }
-        CouplingKind::Catenary(_) | CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => None,
+        CouplingKind::Catenary(line) => match line.model() {
+            LineModel::Dynamic(model) => Some(line.length() / f64::from(model.segments())),
+            LineModel::QuasiStatic => None,
+        },
+        CouplingKind::SpringDamper(_) | CouplingKind::Contact(_) => None,
     };
     let up = -world.gravity().try_normalize(0.0).unwrap_or_else(|| -Vec3::z());
     match (nodes, dynamic, world.system().seabed()) {

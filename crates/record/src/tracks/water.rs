@@ -103,10 +103,10 @@ impl WaterTrack {
             .floating
             .iter()
             .map(|f| {
-                let name = &world.bodies()[f.body].name;
-                let state = world.state(f.body);
+                let name = &world.bodies()[f.body()].name;
+                let state = world.state(f.body());
                 Floating {
-                    body: f.body,
+                    body: f.body(),
                     force_path: paths::water_force(name),
                     force_label: format!("water force on {name}"),
                     motion_path: paths::water_plot(name, "motion"),
@@ -257,7 +257,8 @@ impl Track for WaterTrack {
                 self.excitation.push(six(&record.excitation));
                 bytes += 2 * 6 * 8;
             }
-            self.arrows.push((f32x3(&state.position), f32x3(&(force * (stage_body.hull.bounding_radius() / weight)))));
+            self.arrows
+                .push((f32x3(&state.position), f32x3(&(force * (stage_body.hull().bounding_radius() / weight)))));
             self.motion.push([elevation(state.position.x, state.position.y), state.position.z - floating.start_height]);
             let (roll, pitch, _) = (state.orientation * floating.start_turn.inverse()).euler_angles();
             self.angles.push([roll.to_degrees(), pitch.to_degrees()]);
@@ -330,13 +331,13 @@ fn square(world: &World, stage: &WaterStage) -> ([f64; 2], f64) {
     let points: Vec<Vec3> = stage
         .floating
         .iter()
-        .map(|f| world.state(f.body).position)
+        .map(|f| world.state(f.body()).position)
         .chain(world.coupling_forces().iter().flat_map(|f| [f.point1, f.point2]))
         .collect();
     let (low, high) = tether_physics::math::bounding_box(points.iter().copied());
     let center = if low.x.is_finite() { [(low.x + high.x) / 2.0, (low.y + high.y) / 2.0] } else { [0.0, 0.0] };
     let extent = if low.x.is_finite() { 0.5 * (high.x - low.x).max(high.y - low.y) } else { 0.0 };
-    let reach = stage.floating.iter().map(|f| f.hull.bounding_radius()).fold(0.0, f64::max);
+    let reach = stage.floating.iter().map(|f| f.hull().bounding_radius()).fold(0.0, f64::max);
     let longest =
         stage.water.sea().components().iter().map(|c| std::f64::consts::TAU / c.wave_number).fold(0.0, f64::max);
     (center, (extent + 3.0 * reach).max(longest).max(10.0))

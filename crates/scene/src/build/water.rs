@@ -85,8 +85,8 @@ const HYDROSTATICS_MISMATCH: f64 = 0.05;
 /// system without its potential flow) by more than [`HYDROSTATICS_MISMATCH`] in heave, roll or
 /// pitch (`tether_physics::rao::stiffness_about`: the weight's terms the same on both sides).
 fn linear_hydrostatics_warnings(with_mesh: &System, linear: &System, index: usize, name: &str) -> Vec<String> {
-    let floating = linear.water().and_then(|stage| stage.floating.iter().find(|f| f.body == index));
-    let Some(potential) = floating.and_then(|f| f.potential.as_ref()) else { return Vec::new() };
+    let floating = linear.water().and_then(|stage| stage.floating.iter().find(|f| f.body() == index));
+    let Some(potential) = floating.and_then(|f| f.potential()) else { return Vec::new() };
     let arm = potential.model.arm(&linear.initial_states()[index].frame());
     let stiffness = |system: &System| tether_physics::rao::stiffness_about(system, index, &arm);
     // Both evaluate the start pose, which the rest of loading evaluates too: a failure there

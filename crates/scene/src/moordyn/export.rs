@@ -4,8 +4,8 @@
 //!
 //! | Tether | MoorDyn |
 //! |---|---|
-//! | `Catenary` (dynamic) | a line and a line type of its λ0, d = √(4 A_d/π) (a steel rod's when A_d = 0, [`diameter_of`]), EA = D L, BA or −ζ, C_dn, C_an, C_dt, C_at |
-//! | `Catenary` (quasi-static) | the same with `segments` (the export's flag) and the coefficients a line switched to dynamic gets ([`LumpedMass::wire`]) |
+//! | `Catenary` (dynamic) | a line and a line type of its λ0, d = √(4 A_d/π) (a steel rod's when A_d = 0, [`bearing_diameter`]), EA = D L, BA or −ζ, C_dn, C_an, C_dt, C_at |
+//! | `Catenary` (quasi-static) | the same with `segments` (the export's flag) and the coefficients a line switched to dynamic gets ([`crate::line_model::DynamicLineDef::wire`]) |
 //! | world end | a Fixed point (one per position) |
 //! | body with its rotation held, translation free | a Free point (the mapping's point mass, inverted) |
 //! | kinematic (or partly fixed) / free / fixed body | a Coupled / Free / Fixed body, its reference the master node, with Body points |
@@ -15,9 +15,11 @@
 
 use super::mapping::STEP;
 use crate::file::{BodyDef, CouplingDef, EndDef, SceneFile, ShapeDef, SupportDef};
+use crate::line_model::{DampingDef, DynamicLineDef, LineModelDef};
 use std::fmt::Write as _;
 use tether_physics::body::RigidBody;
-use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass};
+use tether_physics::coupling::LumpedMassSpec;
+use tether_physics::coupling::lumped_line::discrete::bearing_diameter;
 use tether_physics::math::{Rotation, Vec3};
 
 /// The segments a quasi-static line is written with when the export is not told (the
@@ -30,7 +32,7 @@ struct LineRow {
     ends: [usize; 2],
     length: f64,
     segments: u32,
-    /// `v_s` \[m/s] of its seabed friction ([`LumpedMass::friction_speed`]).
+    /// `v_s` \[m/s] of its seabed friction ([`tether_physics::coupling::LumpedMassSpec::friction_speed`]).
     friction_speed: f64,
 }
 
@@ -76,7 +78,7 @@ pub fn export(file: &SceneFile, bodies: &[RigidBody], source: &str, segments: u3
             left_out.push(coupling.name().to_string());
             continue;
         };
-        let LumpedMass {
+        let DynamicLineDef {
             segments: count,
             damping,
             drag_normal,
@@ -87,15 +89,18 @@ pub fn export(file: &SceneFile, bodies: &[RigidBody], source: &str, segments: u3
             seabed_damping,
             friction_speed,
         } = match model {
-            LineModel::QuasiStatic => LumpedMass::wire(segments),
-            LineModel::Dynamic(line) => *line,
+            LineModelDef::QuasiStatic => DynamicLineDef::wire(segments),
+            LineModelDef::Dynamic(line) => *line,
         };
         seabed.get_or_insert((seabed_stiffness, seabed_damping));
         let ba = match damping {
-            InternalDamping::Ratio(zeta) => -zeta,
-            InternalDamping::Coefficient(ba) => ba,
+            DampingDef::Ratio(zeta) => -zeta,
+            DampingDef::Coefficient(ba) => ba,
         };
-        let diameter = diameter_of(*displaced_area, *mass_per_length);
+        // MoorDyn's diameter `d = √(4 A_d/π)`; a dry line is written as the steel rod Tether's
+        // seabed bears it on: MoorDyn's lines need `d > 0` (its drag and seabed divide by it),
+        // and in water that rod's buoyancy is then counted.
+        let diameter = bearing_diameter(*displaced_area, *mass_per_length);
         let values = [
             diameter,
             *mass_per_length,
@@ -143,20 +148,9 @@ pub fn export(file: &SceneFile, bodies: &[RigidBody], source: &str, segments: u3
     write_bodies(&mut text, file, bodies, &body_ids);
     write_points(&mut text, &points);
     write_lines(&mut text, &lines, &types);
-    write_options(&mut text, file, &lines, &types, seabed.unwrap_or((3.0e6, 3.0e5)));
+    let moordyn_seabed = (LumpedMassSpec::SEABED_STIFFNESS, LumpedMassSpec::SEABED_DAMPING);
+    write_options(&mut text, file, &lines, &types, seabed.unwrap_or(moordyn_seabed));
     text
-}
-
-/// Density of the steel rod a line without a displaced area is written as \[kg/m³] (the rod
-/// Tether's seabed bears such a line on, PHYSICS.md §8 "Seabed width").
-pub const STEEL_DENSITY: f64 = 7850.0;
-
-/// MoorDyn's diameter `d = √(4 A_d/π)` \[m]; a line without a displaced area (a dry line) is
-/// written as a steel rod of its mass, `√(4 λ0/(π ρ_steel))`: MoorDyn's lines need `d > 0`
-/// (its drag and seabed divide by it), and in water that rod's buoyancy is then counted.
-pub fn diameter_of(displaced_area: f64, mass_per_length: f64) -> f64 {
-    let area = if displaced_area > 0.0 { displaced_area } else { mass_per_length / STEEL_DENSITY };
-    (4.0 * area / std::f64::consts::PI).sqrt()
 }
 
 /// A value within a few rounding errors of zero is zero (a point's mass less its end nodes').

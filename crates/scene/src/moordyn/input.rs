@@ -5,6 +5,7 @@
 
 use super::Located;
 use super::reader::{Field, Row, Section, SectionKind};
+use tether_physics::coupling::LumpedMassSpec;
 
 /// A line type (`LINE TYPES`): SI units.
 #[derive(Debug, Clone, PartialEq)]
@@ -186,8 +187,8 @@ impl Default for Options {
             gravity: 9.80665,
             density: 1025.0,
             depth: 0.0,
-            seabed_stiffness: 3.0e6,
-            seabed_damping: 3.0e5,
+            seabed_stiffness: LumpedMassSpec::SEABED_STIFFNESS,
+            seabed_damping: LumpedMassSpec::SEABED_DAMPING,
             friction: 0.0,
             friction_damping: 200.0,
             unused: Vec::new(),

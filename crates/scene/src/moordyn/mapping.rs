@@ -17,9 +17,10 @@ use super::input::{Attachment, Body, BodyKind, Input, Line, LineType, Options, P
 use crate::file::{
     BodyDef, CouplingDef, EndDef, InertiaDef, NodeDef, SceneFile, SeabedDef, ShapeDef, SupportDef, VelocityDef,
 };
+use crate::line_model::{DampingDef, DynamicLineDef, LineModelDef};
 use crate::water::{HydroDef, WaterDef, WavesDef};
 use std::collections::BTreeMap;
-use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass};
+use tether_physics::coupling::LumpedMassSpec;
 use tether_physics::integrator::{Integrator, Substeps};
 use tether_physics::math::{Rotation, Vec3};
 use tether_physics::parameter::{Bound, ParameterError, require_derived};
@@ -212,12 +213,12 @@ fn line_def(input: &Input, line: &Line, line_type: &LineType) -> CouplingDef {
         length: line.length,
         stiffness: stiffness(line, line_type),
         displaced_area: area(line_type),
-        model: LineModel::Dynamic(LumpedMass {
+        model: LineModelDef::Dynamic(DynamicLineDef {
             segments: line.segments,
             damping: if line_type.damping < 0.0 {
-                InternalDamping::Ratio(-line_type.damping)
+                DampingDef::Ratio(-line_type.damping)
             } else {
-                InternalDamping::Coefficient(line_type.damping)
+                DampingDef::Coefficient(line_type.damping)
             },
             drag_normal: line_type.drag_normal,
             drag_tangential: line_type.drag_tangential,
@@ -244,7 +245,7 @@ fn friction_speed(input: &Input, line: &Line, line_type: &LineType) -> f64 {
     let options = &input.options;
     let wet = (line_type.mass_per_length - options.density * area(line_type)) * options.gravity;
     let speed = wet * line.length / f64::from(line.segments) / options.friction_damping;
-    if options.friction > 0.0 && speed.is_finite() && speed > 0.0 { speed } else { LumpedMass::FRICTION_SPEED }
+    if options.friction > 0.0 && speed.is_finite() && speed > 0.0 { speed } else { LumpedMassSpec::FRICTION_SPEED }
 }
 
 /// Where a line end is: the world, a point body, or a point on a body.

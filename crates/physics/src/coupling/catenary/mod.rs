@@ -46,18 +46,13 @@ pub const ON_SEABED: f64 = 1e-9;
 /// A catenary line between two ends, built by [`Catenary::new`], which checks its values.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Catenary {
-    pub end1: Endpoint,
-    pub end2: Endpoint,
-    /// `λ0` [kg/m] ≥ 0.
-    pub mass_per_length: f64,
-    /// `L_eq` \[m] > 0.
-    pub length: f64,
-    /// `D` [N/m] > 0: the stiffness of the whole line, `EA = D L_eq`.
-    pub stiffness: f64,
-    /// `A_d` \[m²] ≥ 0: the line's displaced volume per length, for its submerged weight.
-    pub displaced_area: f64,
-    /// Quasi-static (this module) or dynamic ([`super::lumped_line`], PHYSICS.md §8).
-    pub model: LineModel,
+    end1: Endpoint,
+    end2: Endpoint,
+    mass_per_length: f64,
+    length: f64,
+    stiffness: f64,
+    displaced_area: f64,
+    model: LineModel,
 }
 
 /// What a line remembers: its last solution, the warm start of the next solve (and what the
@@ -109,6 +104,39 @@ impl Catenary {
     /// A negative or non-finite area.
     pub fn with_displaced_area(self, displaced_area: f64) -> Result<Self, ParameterError> {
         Ok(Self { displaced_area: require("displaced_area", displaced_area, Bound::NonNegative, "m²")?, ..self })
+    }
+
+    pub fn end1(&self) -> Endpoint {
+        self.end1
+    }
+
+    pub fn end2(&self) -> Endpoint {
+        self.end2
+    }
+
+    /// `λ0` [kg/m] ≥ 0.
+    pub fn mass_per_length(&self) -> f64 {
+        self.mass_per_length
+    }
+
+    /// `L_eq` \[m] > 0.
+    pub fn length(&self) -> f64 {
+        self.length
+    }
+
+    /// `D` [N/m] > 0: the stiffness of the whole line, `EA = D L_eq`.
+    pub fn stiffness(&self) -> f64 {
+        self.stiffness
+    }
+
+    /// `A_d` \[m²] ≥ 0: the line's displaced volume per length, for its submerged weight.
+    pub fn displaced_area(&self) -> f64 {
+        self.displaced_area
+    }
+
+    /// Quasi-static (this module) or dynamic ([`super::lumped_line`], PHYSICS.md §8).
+    pub fn model(&self) -> LineModel {
+        self.model
     }
 
     /// `λ0 − ρ A_d` [kg/m] in a fluid of density `fluid_density` ρ [kg/m³]: what weighs.
@@ -256,7 +284,7 @@ impl Catenary {
             return Ok(state);
         }
         let free = self.solve_free(frame, vertical, last)?;
-        if free.lowest_height() >= seabed.elevation {
+        if free.lowest_height() >= seabed.elevation() {
             return Ok(free);
         }
         Ok(self.solve_grounded(&frame, seabed, Warm::Tension(free.horizontal_tension / free.weight)).unwrap_or(free))
@@ -267,7 +295,7 @@ impl Catenary {
     /// [`ON_SEABED`]; an end below it counts as on it), else end 1.
     fn solve_grounded(&self, frame: &LineState, seabed: &Seabed, warm: Warm) -> Option<LineState> {
         let height = |y: f64| {
-            let z = (y - seabed.elevation) / self.length;
+            let z = (y - seabed.elevation()) / self.length;
             if z <= ON_SEABED { 0.0 } else { z }
         };
         let y1 = frame.origin.dot(&frame.e_y);
@@ -279,7 +307,7 @@ impl Catenary {
             z1: z_anchor,
             z2: z_other,
             epsilon: frame.weight / frame.axial_stiffness,
-            friction: seabed.line_friction,
+            friction: seabed.line_friction(),
         };
         let start = match warm {
             Warm::Tension(h) => h,
@@ -288,7 +316,7 @@ impl Catenary {
         };
         let Outcome::Grounded(solved) = grounded::solver::solve(&grounding, Some(start))? else { return None };
         let profile = solved.profile;
-        let ground = Ground { anchor, grounding, profile, seabed: seabed.elevation };
+        let ground = Ground { anchor, grounding, profile, seabed: seabed.elevation() };
         let mut state = LineState {
             horizontal_tension: profile.h * frame.weight,
             iterations: solved.iterations,
@@ -434,7 +462,7 @@ mod tests {
     fn a_grounded_lines_friction_gives_back_what_it_takes() {
         let water = Surroundings {
             fluid_density: 1025.0,
-            seabed: Some(Seabed { elevation: -50.0, line_friction: 1.0 }),
+            seabed: Some(Seabed::new(-50.0, 1.0).expect("valid")),
             ..Surroundings::dry(Vec3::new(0.0, 0.0, -9.81))
         };
         let chain = Catenary::new(

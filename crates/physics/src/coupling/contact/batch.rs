@@ -99,8 +99,8 @@ impl FaceBatch {
         let contacts = std::array::from_fn(|lane| {
             let centroid = self.centroid(lane);
             let distance = plane.height + plane.normal.dot(&centroid);
-            let area = if distance < law.range { self.area[lane] } else { 0.0 };
-            in_range |= u32::from(distance < law.range) << lane;
+            let area = if distance < law.range() { self.area[lane] } else { 0.0 };
+            in_range |= u32::from(distance < law.range()) << lane;
             let face_velocity = plane.velocity + plane.spin.cross(&centroid);
             law.face_force(area, distance, &plane.normal, &face_velocity)
         });
@@ -123,12 +123,11 @@ pub fn accumulate(batches: &[FaceBatch], law: &ContactLaw, plane: &PlaneView, la
     for batch in batches {
         // Each lane runs the same code: one vector instruction for the four. The lane's code is
         // written out here rather than shared with `contacts` through a function returning the
-        // contact: that way the compiler (rustc 1.95) stopped vectorising this loop, and chain100
-        // took 167k instructions per step instead of 103k (callgrind).
+        // contact, which the compiler does not vectorise (docs/speed.md, "Against MuJoCo").
         for lane in 0..LANES {
             let centroid = batch.centroid(lane);
             let distance = plane.height + plane.normal.dot(&centroid);
-            let area = if distance < law.range { batch.area[lane] } else { 0.0 };
+            let area = if distance < law.range() { batch.area[lane] } else { 0.0 };
             let face_velocity = plane.velocity + plane.spin.cross(&centroid);
             lanes.add(lane, &centroid, &law.face_force(area, distance, &plane.normal, &face_velocity));
         }
@@ -197,7 +196,7 @@ mod tests {
     fn sunk_sphere() -> (BoundaryMesh, ContactLaw, PlaneView) {
         let (vertices, triangles) = primitives::icosphere(0.05, &Vec3::zeros(), 1);
         let boundary = BoundaryMesh::new(vertices, triangles).expect("an icosphere is a valid mesh");
-        let law = ContactLaw { stiffness: 2e6, damping: 3e4, range: 0.005, friction: 0.5, friction_sharpness: 20.0 };
+        let law = ContactLaw::new(2e6, 3e4, 0.005, 0.5, 20.0).expect("valid");
         let plane = PlaneView {
             height: 0.043,
             normal: Vec3::new(0.1, -0.2, -1.0).normalize(),
@@ -227,8 +226,8 @@ mod tests {
                     &plane.normal,
                     &(plane.velocity + plane.spin.cross(&face.centroid)),
                 );
-                assert_eq!(lanes & (1 << lane) != 0, distance < law.range);
-                if distance < law.range {
+                assert_eq!(lanes & (1 << lane) != 0, distance < law.range());
+                if distance < law.range() {
                     assert_eq!(contacts[lane], one, "face {index}: the same arithmetic, bit for bit");
                     expected.add(&face.centroid, &one);
                     in_range += 1;

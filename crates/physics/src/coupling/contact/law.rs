@@ -17,16 +17,11 @@ use crate::parameter::{Bound, ParameterError, require};
 /// Contact parameters (PHYSICS.md §4), built by [`ContactLaw::new`], which checks them.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactLaw {
-    /// `k1`: normal stiffness per unit face area [N/m³] (N/m for each m² in contact).
-    pub stiffness: f64,
-    /// `k2`: normal damping per unit face area [N·s/m³].
-    pub damping: f64,
-    /// `d0`: distance at which the contact starts to push \[m].
-    pub range: f64,
-    /// `μ`: friction coefficient [-].
-    pub friction: f64,
-    /// `k_t`: sharpness of the tanh friction law [s/m].
-    pub friction_sharpness: f64,
+    stiffness: f64,
+    damping: f64,
+    range: f64,
+    friction: f64,
+    friction_sharpness: f64,
 }
 
 /// What the law gives for one face.
@@ -64,6 +59,31 @@ impl ContactLaw {
             friction: require("friction", friction, Bound::NonNegative, "")?,
             friction_sharpness: require("friction_sharpness", friction_sharpness, Bound::Positive, "s/m")?,
         })
+    }
+
+    /// `k1`: normal stiffness per unit face area [N/m³] (N/m for each m² in contact).
+    pub fn stiffness(&self) -> f64 {
+        self.stiffness
+    }
+
+    /// `k2`: normal damping per unit face area [N·s/m³].
+    pub fn damping(&self) -> f64 {
+        self.damping
+    }
+
+    /// `d0`: distance at which the contact starts to push \[m].
+    pub fn range(&self) -> f64 {
+        self.range
+    }
+
+    /// `μ`: friction coefficient [–].
+    pub fn friction(&self) -> f64 {
+        self.friction
+    }
+
+    /// `k_t`: sharpness of the tanh friction law [s/m].
+    pub fn friction_sharpness(&self) -> f64 {
+        self.friction_sharpness
     }
 
     /// The force on a face of area `area` \[m²] at distance `distance` \[m] < d0 from the opposing

@@ -89,12 +89,12 @@ pub struct ContactTotals {
 /// [`Contact::new`], which checks its values.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Contact {
-    pub body: usize,
-    pub boundary: Arc<BoundaryMesh>,
-    pub against: Opposing,
-    pub law: ContactLaw,
+    body: usize,
+    boundary: Arc<BoundaryMesh>,
+    against: Opposing,
+    law: ContactLaw,
     /// `A`, the expected contact area \[m²] (PHYSICS.md §4) behind the time step limit.
-    pub expected_area: f64,
+    expected_area: f64,
 }
 
 /// A contact's resultant normal force and friction at an evaluation, as the step summed them
@@ -127,6 +127,28 @@ impl ContactCache {
 }
 
 impl Contact {
+    /// The body whose faces push.
+    pub fn body(&self) -> usize {
+        self.body
+    }
+
+    pub fn boundary(&self) -> &Arc<BoundaryMesh> {
+        &self.boundary
+    }
+
+    pub fn against(&self) -> &Opposing {
+        &self.against
+    }
+
+    pub fn law(&self) -> ContactLaw {
+        self.law
+    }
+
+    /// `A`, the expected contact area \[m²] (PHYSICS.md §4) behind the time step limit.
+    pub fn expected_area(&self) -> f64 {
+        self.expected_area
+    }
+
     /// The faces of body `body`'s `boundary` against `against` under `law`, with the expected
     /// contact area `expected_area` A \[m²] > 0.
     ///
@@ -255,7 +277,7 @@ impl Contact {
     /// `1/inverse_mass` (PHYSICS.md §4); infinite when neither side responds to forces.
     pub fn stopping_time(&self, area: f64, inverse_mass: f64) -> f64 {
         if inverse_mass > 0.0 {
-            estimator::stopping_time(inverse_mass.recip(), area, self.law.stiffness)
+            estimator::stopping_time(inverse_mass.recip(), area, self.law.stiffness())
         } else {
             f64::INFINITY
         }
@@ -345,13 +367,13 @@ fn plane_view<'a>(
     frame: &BodyFrame,
 ) -> Option<(PlaneView, &'a [FaceBatch])> {
     let height = plane.normal.dot(&(frame.position - plane.point));
-    if height - boundary.bounding_radius() >= law.range {
+    if height - boundary.bounding_radius() >= law.range() {
         return None;
     }
     let rotation: &Mat3 = &frame.rotation;
     let normal = rotation.tr_mul(&plane.normal);
     let view = PlaneView { height, normal, velocity: rotation.tr_mul(&frame.velocity), spin: frame.angular_velocity };
-    Some((view, shortlist.batches(boundary, height, &normal, law.range)))
+    Some((view, shortlist.batches(boundary, height, &normal, law.range())))
 }
 
 /// Every face of body A's `boundary` against body B's `surface`, evaluated in B's principal
@@ -367,7 +389,7 @@ fn against_body(
     sums: &mut Accumulated,
     mut on_face: impl FnMut(&Face, &FaceContact),
 ) -> bool {
-    if (a.position - b.position).norm() >= boundary.bounding_radius() + surface.bounding_radius() + law.range {
+    if (a.position - b.position).norm() >= boundary.bounding_radius() + surface.bounding_radius() + law.range() {
         return false;
     }
     // B's frame: x_B = b.position, axes b.rotation; A's faces are carried into it.
@@ -379,12 +401,12 @@ fn against_body(
     let groups = boundary
         .groups()
         .iter()
-        .filter(|group| surface.near_bounds(&(offset + a_to_b * group.center), law.range + group.radius));
+        .filter(|group| surface.near_bounds(&(offset + a_to_b * group.center), law.range() + group.radius));
     for face in groups.flat_map(|group| &faces[group.faces()]) {
         let arm = a_to_b * face.centroid;
         let point = offset + arm;
-        let Some(nearest) = surface.nearest(&point, law.range) else { continue };
-        if nearest.distance >= law.range {
+        let Some(nearest) = surface.nearest(&point, law.range()) else { continue };
+        if nearest.distance >= law.range() {
             continue;
         }
         let relative_velocity = velocity_a + spin_a.cross(&arm) - b.angular_velocity.cross(&point);

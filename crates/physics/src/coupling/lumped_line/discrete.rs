@@ -56,24 +56,20 @@ impl Discrete {
         surroundings: &Surroundings,
         water_level: Option<f64>,
     ) -> Self {
-        let segments = parameters.segments as usize;
-        let segment = line.length / segments as f64;
-        let ea = line.stiffness * line.length;
+        let segments = parameters.segments() as usize;
+        let segment = line.length() / segments as f64;
+        let ea = line.stiffness() * line.length();
         let g = surroundings.gravity.norm();
         let up = if g > 0.0 { -surroundings.gravity / g } else { Vec3::z() };
         Self {
             segments,
             segment,
             ea,
-            ba: parameters.damping.coefficient(segment, ea, line.mass_per_length),
-            mass_per_length: line.mass_per_length,
-            displaced_area: line.displaced_area,
-            diameter: diameter(line.displaced_area),
-            bearing: if line.displaced_area > 0.0 {
-                diameter(line.displaced_area)
-            } else {
-                diameter(line.mass_per_length / STEEL_DENSITY)
-            },
+            ba: parameters.damping().coefficient(segment, ea, line.mass_per_length()),
+            mass_per_length: line.mass_per_length(),
+            displaced_area: line.displaced_area(),
+            diameter: diameter(line.displaced_area()),
+            bearing: bearing_diameter(line.displaced_area(), line.mass_per_length()),
             gravity: surroundings.gravity,
             up,
             density: if water_level.is_some() { surroundings.fluid_density } else { 0.0 },
@@ -98,16 +94,16 @@ impl Discrete {
     /// [`ParameterError::Derived`], named with the value of `line` or its model that made it.
     pub fn check(&self, line: &Catenary) -> Result<(), ParameterError> {
         let p = &self.parameters;
-        let (ba_quantity, ba) = match p.damping {
+        let (ba_quantity, ba) = match p.damping() {
             InternalDamping::Coefficient(ba) => ("BA", ba),
             InternalDamping::Ratio(zeta) => ("BA = ζ l √(EA λ0)", zeta),
         };
         let line_inputs = [
-            ("length", line.length),
+            ("length", line.length()),
             ("segments", self.segments as f64),
-            ("mass_per_length", line.mass_per_length),
-            ("stiffness", line.stiffness),
-            ("displaced_area", line.displaced_area),
+            ("mass_per_length", line.mass_per_length()),
+            ("stiffness", line.stiffness()),
+            ("displaced_area", line.displaced_area()),
             ("damping", ba),
         ];
         let with = |more: &[(&'static str, f64)]| [&line_inputs[..], more].concat();
@@ -118,29 +114,29 @@ impl Discrete {
         let limits = self.limits();
         require_derived("the axial stable step", limits.axial, Bound::Positive, "s", &line_inputs)?;
         if let Some(seabed) = &self.seabed {
-            let inputs = with(&[("seabed_stiffness", p.seabed_stiffness), ("seabed_damping", p.seabed_damping)]);
+            let inputs = with(&[("seabed_stiffness", p.seabed_stiffness()), ("seabed_damping", p.seabed_damping())]);
             require_derived("the seabed's stable step", limits.seabed, Bound::Positive, "s", &inputs)?;
-            let stiffness = p.seabed_stiffness * self.bearing * self.segment;
+            let stiffness = p.seabed_stiffness() * self.bearing * self.segment;
             require_derived("a node's seabed stiffness k_b d l", stiffness, Bound::Finite, "N/m", &inputs)?;
-            let damping = p.seabed_damping * self.bearing * self.segment;
+            let damping = p.seabed_damping() * self.bearing * self.segment;
             require_derived("a node's seabed damping c_b d l", damping, Bound::Finite, "N·s/m", &inputs)?;
             let weight = line.submerged_mass_per_length(self.density) * self.gravity.norm();
-            let friction = seabed.line_friction * weight.abs() * self.segment / p.friction_speed;
-            let inputs = with(&[("line_friction", seabed.line_friction), ("friction_speed", p.friction_speed)]);
+            let friction = seabed.line_friction() * weight.abs() * self.segment / p.friction_speed();
+            let inputs = with(&[("line_friction", seabed.line_friction()), ("friction_speed", p.friction_speed())]);
             require_derived("a node's friction damper C_B |w| l/v_s", friction, Bound::Finite, "N·s/m", &inputs)?;
         }
         if self.density > 0.0 {
             let drag = |c: f64| 0.5 * self.density * c * self.diameter * self.segment;
-            let inputs = with(&[("drag_normal", p.drag_normal), ("density", self.density)]);
-            require_derived("a node's drag ½ ρ C_dn d l", drag(p.drag_normal), Bound::Finite, "kg/m", &inputs)?;
-            let inputs = with(&[("drag_tangential", p.drag_tangential), ("density", self.density)]);
-            let tangential = drag(p.drag_tangential) * std::f64::consts::PI;
+            let inputs = with(&[("drag_normal", p.drag_normal()), ("density", self.density)]);
+            require_derived("a node's drag ½ ρ C_dn d l", drag(p.drag_normal()), Bound::Finite, "kg/m", &inputs)?;
+            let inputs = with(&[("drag_tangential", p.drag_tangential()), ("density", self.density)]);
+            let tangential = drag(p.drag_tangential()) * std::f64::consts::PI;
             require_derived("a node's drag ½ ρ C_dt π d l", tangential, Bound::Finite, "kg/m", &inputs)?;
-            let coefficient = p.added_mass_normal.max(p.added_mass_tangential);
+            let coefficient = p.added_mass_normal().max(p.added_mass_tangential());
             let added = self.density * self.displaced_area * self.segment * coefficient;
             let inputs = with(&[
-                ("added_mass_normal", p.added_mass_normal),
-                ("added_mass_tangential", p.added_mass_tangential),
+                ("added_mass_normal", p.added_mass_normal()),
+                ("added_mass_tangential", p.added_mass_tangential()),
                 ("density", self.density),
             ]);
             require_derived("a node's added mass ρ A_d l C_a", added, Bound::Finite, "kg", &inputs)?;
@@ -171,7 +167,7 @@ impl Discrete {
         let l2 = self.segment * self.segment;
         let axial = oscillator(2.0 * (self.ea / (lambda * l2)).sqrt(), 2.0 * self.ba / (lambda * l2));
         let seabed = self.seabed.map_or(f64::INFINITY, |_| {
-            oscillator((self.parameters.seabed_stiffness * self.bearing / lambda).sqrt(), 0.0)
+            oscillator((self.parameters.seabed_stiffness() * self.bearing / lambda).sqrt(), 0.0)
         });
         LineLimits { axial, seabed }
     }
@@ -205,7 +201,15 @@ pub struct LineLimits {
 }
 
 /// Density of steel [kg/m³], for the bearing width of a line without a displaced area.
-const STEEL_DENSITY: f64 = 7850.0;
+pub const STEEL_DENSITY: f64 = 7850.0;
+
+/// The width \[m] the seabed bears a line on (PHYSICS.md §8 "Seabed width"), from its displaced
+/// area `displaced_area` A_d \[m²] and mass per length `mass_per_length` λ0 [kg/m]: its diameter
+/// `√(4 A_d/π)`, or, for a line without a displaced area (a dry line), a steel rod's of its mass,
+/// `√(4 λ0/(π ρ_steel))`. MoorDyn's files write this as the line's diameter.
+pub fn bearing_diameter(displaced_area: f64, mass_per_length: f64) -> f64 {
+    diameter(if displaced_area > 0.0 { displaced_area } else { mass_per_length / STEEL_DENSITY })
+}
 
 /// `√(4 A/π)` \[m] of a circle of area `area` \[m²].
 fn diameter(area: f64) -> f64 {
@@ -221,24 +225,34 @@ fn oscillator(omega: f64, rate: f64) -> f64 {
 mod tests {
     use super::*;
     use crate::coupling::ends::Endpoint;
-    use crate::coupling::lumped_line::LineModel;
+    use crate::coupling::lumped_line::{LineModel, LumpedMassSpec};
+
+    /// The values of a line that a test may change before [`Catenary::new`] checks them.
+    struct LineValues {
+        mass_per_length: f64,
+        length: f64,
+        stiffness: f64,
+    }
 
     /// `lines.txt`'s OC3 line (λ0 = 77.7066 kg/m, d = 0.09 m, EA = 384.243 MN over 902.2 m, N =
-    /// 20, ζ = 0.8, C_dn 1.6, C_dt 0.1, C_an 1) with `edit` made to it and to its model, on a
-    /// seabed in water of 1025 kg/m³: its constants' check.
-    fn check(edit: impl Fn(&mut Catenary, &mut LumpedMass)) -> Result<(), ParameterError> {
-        let mut model = LumpedMass {
+    /// 20, ζ = 0.8, C_dn 1.6, C_dt 0.1, C_an 1) with `edit` made to its values and to its model's
+    /// before their constructors check them, on a seabed in water of 1025 kg/m³: its constants'
+    /// check.
+    fn check(edit: impl Fn(&mut LineValues, &mut LumpedMassSpec)) -> Result<(), ParameterError> {
+        let mut model = LumpedMassSpec {
             drag_normal: 1.6,
             drag_tangential: 0.1,
             added_mass_normal: 1.0,
-            ..LumpedMass::plain(20, InternalDamping::Ratio(0.8)).expect("valid")
+            ..LumpedMassSpec::plain(20, InternalDamping::Ratio(0.8))
         };
+        let mut values = LineValues { mass_per_length: 77.7066, length: 902.2, stiffness: 384.243e6 / 902.2 };
+        edit(&mut values, &mut model);
+        let model = LumpedMass::new(model).expect("a value its own check lets through");
         let ends = (Endpoint::World(Vec3::new(853.87, 0.0, -320.0)), Endpoint::World(Vec3::new(5.2, 0.0, -70.0)));
-        let mut line = Catenary::new(ends.0, ends.1, 77.7066, 902.2, 384.243e6 / 902.2)
+        let line = Catenary::new(ends.0, ends.1, values.mass_per_length, values.length, values.stiffness)
             .and_then(|line| line.with_displaced_area(std::f64::consts::PI * 0.09 * 0.09 / 4.0))
-            .expect("valid");
-        edit(&mut line, &mut model);
-        let line = line.with_model(LineModel::Dynamic(model));
+            .expect("a value its own check lets through")
+            .with_model(LineModel::Dynamic(model));
         let seabed = Seabed::new(-320.0, 0.5).expect("valid");
         let surroundings = Surroundings { seabed: Some(seabed), ..Surroundings::dry(Vec3::new(0.0, 0.0, -9.80665)) };
         let surroundings = Surroundings { fluid_density: 1025.0, ..surroundings };
@@ -250,7 +264,7 @@ mod tests {
     #[test]
     fn each_overflowing_or_vanishing_constant_is_refused_naming_its_field() {
         assert_eq!(check(|_, _| {}), Ok(()));
-        let refused = |edit: &dyn Fn(&mut Catenary, &mut LumpedMass)| check(edit).unwrap_err().to_string();
+        let refused = |edit: &dyn Fn(&mut LineValues, &mut LumpedMassSpec)| check(edit).unwrap_err().to_string();
         assert_eq!(
             refused(&|line, _| line.stiffness = 1e305),
             "BA = ζ l √(EA λ0) must be finite, got inf (from stiffness = 1e305)"
@@ -264,7 +278,10 @@ mod tests {
             "a node's mass λ0 l must be > 0 kg, got 0 (from mass_per_length = 0)"
         );
         assert_eq!(
-            refused(&|line, _| line.length = 1e308),
+            refused(&|line, _| {
+                line.length = 1e308;
+                line.stiffness = 1e-3;
+            }),
             "a node's mass λ0 l must be finite, got inf (from length = 1e308)"
         );
         assert_eq!(

@@ -18,7 +18,6 @@
 
 pub mod axial;
 pub mod discrete;
-pub mod file_form;
 pub mod nodes;
 pub mod parameters;
 pub mod run;
@@ -26,5 +25,5 @@ pub mod statics;
 
 pub use discrete::Discrete;
 pub use nodes::LineNodes;
-pub use parameters::{InternalDamping, LineModel, LumpedMass, MAX_SEGMENTS};
+pub use parameters::{InternalDamping, LineModel, LumpedMass, LumpedMassSpec, MAX_SEGMENTS};
 pub use run::{LineError, LineRun};

@@ -41,7 +41,7 @@ impl LineNodes {
     /// node touching it half (the touchdown is somewhere along it). The dynamic line's `L_B`,
     /// as the quasi-static line's is its grounded arc.
     pub fn grounded_length(&self, seabed: &Seabed, up: &Vec3, segment: f64) -> f64 {
-        let touching: Vec<bool> = self.positions.iter().map(|p| p.dot(up) <= seabed.elevation).collect();
+        let touching: Vec<bool> = self.positions.iter().map(|p| p.dot(up) <= seabed.elevation()).collect();
         let halves: usize = touching.windows(2).map(|pair| usize::from(pair[0]) + usize::from(pair[1])).sum();
         0.5 * segment * halves as f64
     }
@@ -211,7 +211,8 @@ fn evaluate_into<const POTENTIAL: bool, const SEGMENTS: bool, const INTERIOR: bo
         let height = position.dot(&line.up);
         let displaced = line.density * line.displaced_area * share;
         // The seabed and the node's depth into it, when the node is below it.
-        let grounded = line.seabed.map(|seabed| (seabed, seabed.elevation - height)).filter(|&(_, depth)| depth > 0.0);
+        let grounded =
+            line.seabed.map(|seabed| (seabed, seabed.elevation() - height)).filter(|&(_, depth)| depth > 0.0);
         let area = line.bearing * share;
         if POTENTIAL {
             potential += mass * g * height;
@@ -220,7 +221,7 @@ fn evaluate_into<const POTENTIAL: bool, const SEGMENTS: bool, const INTERIOR: bo
                 potential -= displaced * g * (height - level).min(0.0);
             }
             if let Some((_, depth)) = grounded {
-                potential += 0.5 * p.seabed_stiffness * area * depth * depth;
+                potential += 0.5 * p.seabed_stiffness() * area * depth * depth;
             }
         }
         if !INTERIOR && node != 0 && node != n {
@@ -233,8 +234,8 @@ fn evaluate_into<const POTENTIAL: bool, const SEGMENTS: bool, const INTERIOR: bo
         if submerged {
             total[node] += line.up * (displaced * g);
             matrix = (
-                mass + displaced * p.added_mass_normal,
-                displaced * (p.added_mass_tangential - p.added_mass_normal),
+                mass + displaced * p.added_mass_normal(),
+                displaced * (p.added_mass_tangential() - p.added_mass_normal()),
                 tangent,
             );
             if let Some((water_velocity, water_acceleration)) = flow.get(node) {
@@ -245,14 +246,17 @@ fn evaluate_into<const POTENTIAL: bool, const SEGMENTS: bool, const INTERIOR: bo
         }
         if let Some((seabed, depth)) = grounded {
             let sinking = v[node].dot(&line.up);
-            total[node] += line.up * (p.seabed_stiffness * area * depth);
-            let normal = (p.seabed_stiffness * depth - p.seabed_damping * sinking).max(0.0) * area;
+            total[node] += line.up * (p.seabed_stiffness() * area * depth);
+            let normal = (p.seabed_stiffness() * depth - p.seabed_damping() * sinking).max(0.0) * area;
             let sliding = v[node] - line.up * sinking;
             let speed = sliding.norm();
             // tanh(s/v_s)/s, 1/v_s at s = 0.
-            let secant =
-                if speed > 0.0 { (speed / p.friction_speed).tanh() * (1.0 / speed) } else { 1.0 / p.friction_speed };
-            let damping = (p.seabed_damping * area, seabed.line_friction * normal * secant);
+            let secant = if speed > 0.0 {
+                (speed / p.friction_speed()).tanh() * (1.0 / speed)
+            } else {
+                1.0 / p.friction_speed()
+            };
+            let damping = (p.seabed_damping() * area, seabed.line_friction() * normal * secant);
             if node == 0 || node == n {
                 let force = -seabed_damping_force(damping, &line.up, &v[node]);
                 total[node] += force;
@@ -327,13 +331,13 @@ fn water_forces(line: &Discrete, share: f64, tangent: &Vec3, relative: &Vec3, ac
     let across = relative - along;
     let half_rho = 0.5 * line.density;
     // |v_rt| = |q̂·v_r|, q̂ a unit vector: no square root.
-    let drag = across * (half_rho * p.drag_normal * line.diameter * share * across.norm())
-        + along * (half_rho * p.drag_tangential * std::f64::consts::PI * line.diameter * share * tangential.abs());
+    let drag = across * (half_rho * p.drag_normal() * line.diameter * share * across.norm())
+        + along * (half_rho * p.drag_tangential() * std::f64::consts::PI * line.diameter * share * tangential.abs());
     let accel_along = tangent * tangent.dot(acceleration);
     let accel_across = acceleration - accel_along;
     let displaced = line.density * line.displaced_area * share;
     let inertia =
-        (accel_across * (1.0 + p.added_mass_normal) + accel_along * (1.0 + p.added_mass_tangential)) * displaced;
+        (accel_across * (1.0 + p.added_mass_normal()) + accel_along * (1.0 + p.added_mass_tangential())) * displaced;
     drag + inertia
 }
 
@@ -391,11 +395,11 @@ mod tests {
     /// above: two segments lie on it whole, the touchdown segment half: 25 m.
     #[test]
     fn the_grounded_length_counts_the_segments_on_the_seabed() {
-        let seabed = Seabed { elevation: -50.0, line_friction: 0.5 };
+        let seabed = Seabed::new(-50.0, 0.5).expect("valid");
         let heights = [-50.002, -50.0, -50.001, -49.99, -45.0];
         let positions = heights.iter().enumerate().map(|(i, &z)| Vec3::new(10.0 * i as f64, 0.0, z)).collect();
         let nodes = LineNodes::at_rest(0.0, positions);
         assert_eq!(nodes.grounded_length(&seabed, &Vec3::z(), 10.0), 25.0);
-        assert_eq!(nodes.grounded_length(&Seabed { elevation: -60.0, ..seabed }, &Vec3::z(), 10.0), 0.0);
+        assert_eq!(nodes.grounded_length(&Seabed::new(-60.0, 0.5).expect("valid"), &Vec3::z(), 10.0), 0.0);
     }
 }

@@ -1,14 +1,7 @@
 //! A dynamic line's parameters beyond those it shares with the catenary (PHYSICS.md §8), and
-//! the model a line coupling runs: [`LineModel`]. These are also the scene file's types (one type
-//! from the file to the step): a file writes
-//!
-//! ```ron
-//! model: Dynamic(segments: 40, damping: Ratio(0.8), drag_normal: 2.4, drag_tangential: 1.15,
-//!                added_mass_normal: 1.0, added_mass_tangential: 0.5)
-//! ```
-//!
-//! and the scene's build passes what was read through [`LumpedMass::new`], the one place that
-//! refuses a value out of its range.
+//! the model a line coupling runs: [`LineModel`]. The values come in as a [`LumpedMassSpec`]
+//! (plain fields, as a scene file or an importer states them) and are checked once, by
+//! [`LumpedMass::new`]; a [`LumpedMass`] is only ever a checked one.
 
 use crate::parameter::{Bound, ParameterError, require};
 
@@ -16,8 +9,7 @@ use crate::parameter::{Bound, ParameterError, require};
 /// as `N²` per simulated second for no gain in accuracy a mooring study can use.
 pub const MAX_SEGMENTS: u32 = 10_000;
 
-/// How a line coupling is modelled: `QuasiStatic` (the default) or `Dynamic(…)`, written in a
-/// scene file as [`super::file_form`] says.
+/// How a line coupling is modelled: `QuasiStatic` (the default) or `Dynamic`.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum LineModel {
     /// The elastic catenary of PHYSICS.md §3/§7: no inertia, tension from the end positions.
@@ -27,35 +19,8 @@ pub enum LineModel {
     Dynamic(LumpedMass),
 }
 
-impl LineModel {
-    /// The model dynamic at `count` segments: a dynamic one keeps its other values, a
-    /// quasi-static one becomes [`LumpedMass::wire`].
-    pub fn dynamic_with(self, count: u32) -> Self {
-        match self {
-            Self::Dynamic(line) => Self::Dynamic(LumpedMass { segments: count, ..line }),
-            Self::QuasiStatic => Self::Dynamic(LumpedMass::wire(count)),
-        }
-    }
-
-    /// Whether this is the default, quasi-static model (left out when a file is written).
-    pub fn is_quasi_static(&self) -> bool {
-        *self == Self::QuasiStatic
-    }
-
-    /// This model with each of its values checked ([`LumpedMass::new`]).
-    ///
-    /// # Errors
-    /// A value out of its range.
-    pub fn checked(self) -> Result<Self, ParameterError> {
-        match self {
-            Self::QuasiStatic => Ok(Self::QuasiStatic),
-            Self::Dynamic(line) => Ok(Self::Dynamic(LumpedMass::new(line)?)),
-        }
-    }
-}
-
 /// Internal (axial) damping of the line's segments (PHYSICS.md §8).
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum InternalDamping {
     /// `BA` \[N·s]: a segment carries `BA ε̇` along it.
     Coefficient(f64),
@@ -75,71 +40,87 @@ impl InternalDamping {
     }
 }
 
-/// The parameters of a dynamic line beyond those it shares with the catenary, built by
-/// [`LumpedMass::new`], which checks each. A file may leave out the drag and added-mass
-/// coefficients (0) and the seabed's values (MoorDyn's, [`LumpedMass::SEABED_STIFFNESS`] …).
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct LumpedMass {
+/// The values of a dynamic line as stated, unchecked: [`LumpedMass::new`] checks them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LumpedMassSpec {
     /// `N` segments, 1 ..= [`MAX_SEGMENTS`].
     pub segments: u32,
     /// `BA` or `ζ`, ≥ 0 (`ζ` ≤ 1).
     pub damping: InternalDamping,
-    /// `C_dn`, `C_dt` [–] ≥ 0: drag normal and tangential to the line, on the diameter `d`
-    /// and on the surface `π d` per length.
-    #[serde(default)]
+    /// `C_dn` [–] ≥ 0: drag normal to the line, on the diameter `d`.
     pub drag_normal: f64,
-    #[serde(default)]
+    /// `C_dt` [–] ≥ 0: drag tangential to the line, on the surface `π d` per length.
     pub drag_tangential: f64,
-    /// `C_an`, `C_at` [–] ≥ 0: added mass normal and tangential, on `ρ A_d` per length.
-    #[serde(default)]
+    /// `C_an` [–] ≥ 0: added mass normal to the line, on `ρ A_d` per length.
     pub added_mass_normal: f64,
-    #[serde(default)]
+    /// `C_at` [–] ≥ 0: added mass tangential to the line, on `ρ A_d` per length.
     pub added_mass_tangential: f64,
-    /// `k_b` [Pa/m] > 0 and `c_b` [Pa·s/m] ≥ 0 of the seabed under a node: per penetration
-    /// `δ` the bottom pushes `(k_b δ − c_b v_z) d l_i`.
-    #[serde(default = "LumpedMass::default_seabed_stiffness")]
+    /// `k_b` [Pa/m] > 0 of the seabed under a node: per penetration `δ` the bottom pushes
+    /// `(k_b δ − c_b v_z) d l_i`.
     pub seabed_stiffness: f64,
-    #[serde(default = "LumpedMass::default_seabed_damping")]
+    /// `c_b` [Pa·s/m] ≥ 0 of the seabed under a node.
     pub seabed_damping: f64,
     /// `v_s` [m/s] > 0: the sliding speed at which the seabed's friction reaches `tanh(1)` of
     /// its Coulomb value (§4's regularisation).
-    #[serde(default = "LumpedMass::default_friction_speed")]
     pub friction_speed: f64,
 }
 
-impl LumpedMass {
+impl LumpedMassSpec {
     /// MoorDyn's defaults for the seabed (`kBot` 3·10⁶ Pa/m, `cBot` 3·10⁵ Pa·s/m) and a
-    /// friction speed of 1 cm/s.
+    /// friction speed of 1 cm/s: what a file that leaves them out gets.
     pub const SEABED_STIFFNESS: f64 = 3.0e6;
     pub const SEABED_DAMPING: f64 = 3.0e5;
     pub const FRICTION_SPEED: f64 = 0.01;
 
-    fn default_seabed_stiffness() -> f64 {
-        Self::SEABED_STIFFNESS
+    /// A dynamic line of `segments` with a wire's coefficients (C_dn 1.2, C_dt 0.008, C_an 1,
+    /// C_at 0), ζ = 0.8 and MoorDyn's seabed: what a quasi-static line becomes when switched.
+    pub fn wire(segments: u32) -> Self {
+        Self {
+            drag_normal: 1.2,
+            drag_tangential: 0.008,
+            added_mass_normal: 1.0,
+            ..Self::plain(segments, InternalDamping::Ratio(0.8))
+        }
     }
 
-    fn default_seabed_damping() -> f64 {
-        Self::SEABED_DAMPING
+    /// `N` segments with damping `damping`, no drag, no added mass and MoorDyn's seabed.
+    pub fn plain(segments: u32, damping: InternalDamping) -> Self {
+        Self {
+            segments,
+            damping,
+            drag_normal: 0.0,
+            drag_tangential: 0.0,
+            added_mass_normal: 0.0,
+            added_mass_tangential: 0.0,
+            seabed_stiffness: Self::SEABED_STIFFNESS,
+            seabed_damping: Self::SEABED_DAMPING,
+            friction_speed: Self::FRICTION_SPEED,
+        }
     }
+}
 
-    fn default_friction_speed() -> f64 {
-        Self::FRICTION_SPEED
-    }
+/// The parameters of a dynamic line beyond those it shares with the catenary, built by
+/// [`LumpedMass::new`], which checks each; read through its accessors (documented on
+/// [`LumpedMassSpec`]'s fields).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LumpedMass {
+    values: LumpedMassSpec,
+}
 
-    /// `parts` with each value checked.
+impl LumpedMass {
+    /// `spec` with each value checked.
     ///
     /// # Errors
     /// A value out of its range, named as the scene file spells it.
-    pub fn new(parts: Self) -> Result<Self, ParameterError> {
-        if !(1..=MAX_SEGMENTS).contains(&parts.segments) {
-            return Err(if parts.segments < 1 {
-                ParameterError::TooFew { field: "segments", value: parts.segments, least: 1 }
+    pub fn new(spec: LumpedMassSpec) -> Result<Self, ParameterError> {
+        if !(1..=MAX_SEGMENTS).contains(&spec.segments) {
+            return Err(if spec.segments < 1 {
+                ParameterError::TooFew { field: "segments", value: spec.segments, least: 1 }
             } else {
-                ParameterError::TooMany { field: "segments", value: parts.segments, most: MAX_SEGMENTS }
+                ParameterError::TooMany { field: "segments", value: spec.segments, most: MAX_SEGMENTS }
             });
         }
-        let damping = match parts.damping {
+        let damping = match spec.damping {
             InternalDamping::Coefficient(ba) => {
                 InternalDamping::Coefficient(require("damping", ba, Bound::NonNegative, "N·s")?)
             }
@@ -156,57 +137,72 @@ impl LumpedMass {
                 InternalDamping::Ratio(zeta)
             }
         };
-        Ok(Self {
-            segments: parts.segments,
+        let values = LumpedMassSpec {
+            segments: spec.segments,
             damping,
-            drag_normal: require("drag_normal", parts.drag_normal, Bound::NonNegative, "")?,
-            drag_tangential: require("drag_tangential", parts.drag_tangential, Bound::NonNegative, "")?,
-            added_mass_normal: require("added_mass_normal", parts.added_mass_normal, Bound::NonNegative, "")?,
+            drag_normal: require("drag_normal", spec.drag_normal, Bound::NonNegative, "")?,
+            drag_tangential: require("drag_tangential", spec.drag_tangential, Bound::NonNegative, "")?,
+            added_mass_normal: require("added_mass_normal", spec.added_mass_normal, Bound::NonNegative, "")?,
             added_mass_tangential: require(
                 "added_mass_tangential",
-                parts.added_mass_tangential,
+                spec.added_mass_tangential,
                 Bound::NonNegative,
                 "",
             )?,
-            seabed_stiffness: require("seabed_stiffness", parts.seabed_stiffness, Bound::Positive, "Pa/m")?,
-            seabed_damping: require("seabed_damping", parts.seabed_damping, Bound::NonNegative, "Pa·s/m")?,
-            friction_speed: require("friction_speed", parts.friction_speed, Bound::Positive, "m/s")?,
-        })
+            seabed_stiffness: require("seabed_stiffness", spec.seabed_stiffness, Bound::Positive, "Pa/m")?,
+            seabed_damping: require("seabed_damping", spec.seabed_damping, Bound::NonNegative, "Pa·s/m")?,
+            friction_speed: require("friction_speed", spec.friction_speed, Bound::Positive, "m/s")?,
+        };
+        Ok(Self { values })
     }
 
-    /// A dynamic line of `segments` with a wire's coefficients (C_dn 1.2, C_dt 0.008, C_an 1,
-    /// C_at 0), ζ = 0.8 and MoorDyn's seabed: what a quasi-static line becomes when switched
-    /// (unchecked: [`LumpedMass::new`] checks it where the scene is built).
-    pub fn wire(segments: u32) -> Self {
-        Self {
-            segments,
-            damping: InternalDamping::Ratio(0.8),
-            drag_normal: 1.2,
-            drag_tangential: 0.008,
-            added_mass_normal: 1.0,
-            added_mass_tangential: 0.0,
-            seabed_stiffness: Self::SEABED_STIFFNESS,
-            seabed_damping: Self::SEABED_DAMPING,
-            friction_speed: Self::FRICTION_SPEED,
-        }
-    }
-
-    /// `N` segments with damping `damping`, no drag, no added mass and MoorDyn's seabed.
+    /// [`LumpedMassSpec::plain`], checked.
     ///
     /// # Errors
     /// As [`LumpedMass::new`].
     pub fn plain(segments: u32, damping: InternalDamping) -> Result<Self, ParameterError> {
-        Self::new(Self {
-            segments,
-            damping,
-            drag_normal: 0.0,
-            drag_tangential: 0.0,
-            added_mass_normal: 0.0,
-            added_mass_tangential: 0.0,
-            seabed_stiffness: Self::SEABED_STIFFNESS,
-            seabed_damping: Self::SEABED_DAMPING,
-            friction_speed: Self::FRICTION_SPEED,
-        })
+        Self::new(LumpedMassSpec::plain(segments, damping))
+    }
+
+    /// The checked values, as a spec (to write them out, or to change one and check again).
+    pub fn spec(&self) -> LumpedMassSpec {
+        self.values
+    }
+
+    pub fn segments(&self) -> u32 {
+        self.values.segments
+    }
+
+    pub fn damping(&self) -> InternalDamping {
+        self.values.damping
+    }
+
+    pub fn drag_normal(&self) -> f64 {
+        self.values.drag_normal
+    }
+
+    pub fn drag_tangential(&self) -> f64 {
+        self.values.drag_tangential
+    }
+
+    pub fn added_mass_normal(&self) -> f64 {
+        self.values.added_mass_normal
+    }
+
+    pub fn added_mass_tangential(&self) -> f64 {
+        self.values.added_mass_tangential
+    }
+
+    pub fn seabed_stiffness(&self) -> f64 {
+        self.values.seabed_stiffness
+    }
+
+    pub fn seabed_damping(&self) -> f64 {
+        self.values.seabed_damping
+    }
+
+    pub fn friction_speed(&self) -> f64 {
+        self.values.friction_speed
     }
 }
 
@@ -233,11 +229,11 @@ mod tests {
             LumpedMass::plain(4, InternalDamping::Coefficient(-1.0)).unwrap_err().to_string(),
             "damping must be ≥ 0 N·s, got -1"
         );
-        let refused = LumpedMass::new(LumpedMass { drag_normal: f64::NAN, ..ok }).unwrap_err();
+        let refused = LumpedMass::new(LumpedMassSpec { drag_normal: f64::NAN, ..ok.spec() }).unwrap_err();
         assert_eq!(refused.field(), "drag_normal");
-        let refused = LumpedMass::new(LumpedMass { added_mass_tangential: -0.1, ..ok }).unwrap_err();
+        let refused = LumpedMass::new(LumpedMassSpec { added_mass_tangential: -0.1, ..ok.spec() }).unwrap_err();
         assert_eq!(refused.to_string(), "added_mass_tangential must be ≥ 0, got -0.1");
-        let refused = LumpedMass::new(LumpedMass { seabed_stiffness: 0.0, ..ok }).unwrap_err();
+        let refused = LumpedMass::new(LumpedMassSpec { seabed_stiffness: 0.0, ..ok.spec() }).unwrap_err();
         assert_eq!(refused.to_string(), "seabed_stiffness must be > 0 Pa/m, got 0");
     }
 

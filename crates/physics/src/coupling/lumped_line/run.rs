@@ -13,8 +13,8 @@
 //! mid-interval time (in a harmonic sea by powers of one complex number, [`Water::flow_at`]:
 //! PHYSICS.md §8 "The waves' kinematics at the nodes", the same sums to round-off at a fraction
 //! of the cost; a Runge–Kutta step's two middle stages share their interval, nodes and water, so
-//! the second takes the first's kinematics, the same numbers for 13% fewer instructions per RK4
-//! step of `moored_buoy` with its chains dynamic in the JONSWAP sea of `scripts/line-speed.sh`).
+//! the second takes the first's kinematics: the same numbers for fewer instructions, docs/speed.md
+//! "Dynamic lines in a sea").
 //! The bodies then feel each end node's force at `t`. Evaluating again at the same time or at a
 //! stage of a Runge–Kutta step starts from the same committed nodes, so an integrator may
 //! evaluate as often as it likes; the world commits the last evaluation when it accepts a step
@@ -28,9 +28,8 @@
 //! drag and seabed forces on what the ends move with, and reported as the interval's mean
 //! dissipated power. The exchange with the bodies is the partitioned scheme's first error: they
 //! feel the end forces at `t` while the line felt the ends along their path, a balance error
-//! that falls with the bodies' step; the line's own sub-steps add theirs (on `moored_buoy` with
-//! its chains dynamic: 121 J at 2.5 ms over 60 s, of 0.67 MJ exchanged, 32 J when the chains
-//! sub-stepped explicitly at 1.2 ms; the interval's mean force instead of the end force lags by
+//! that falls with the bodies' step; the line's own sub-steps add theirs (PHYSICS.md §8 gives the
+//! balance `moored_buoy` closes to; the interval's mean force instead of the end force lags by
 //! half a step and does worse).
 
 use super::axial::AxialSolve;
@@ -133,9 +132,9 @@ const UNDER_WAY_DT: f64 = 1e-3;
 /// Refuses a line whose ends start more than [`MAX_START_STRAIN`] beyond its length apart.
 fn check_start_strain(line: &Catenary, ends: &[EndMotion; 2]) -> Result<(), LineError> {
     let chord = (ends[1].position - ends[0].position).norm();
-    let strain = chord / line.length - 1.0;
+    let strain = chord / line.length() - 1.0;
     if strain > MAX_START_STRAIN {
-        return Err(LineError::Overstretched { chord, length: line.length, strain });
+        return Err(LineError::Overstretched { chord, length: line.length(), strain });
     }
     Ok(())
 }
@@ -411,7 +410,7 @@ mod tests {
     use super::*;
     use crate::coupling::catenary::Catenary;
     use crate::coupling::ends::{Attachment, Endpoint};
-    use crate::coupling::lumped_line::{InternalDamping, LineModel, LumpedMass};
+    use crate::coupling::lumped_line::{InternalDamping, LineModel, LumpedMass, LumpedMassSpec};
     use crate::seabed::Seabed;
     use crate::water::{CurrentProfile, CurrentSpec, WaterSpec, WaveSpec};
 
@@ -434,13 +433,14 @@ mod tests {
             ..WaterSpec::default()
         };
         let water = Water::new(spec, &gravity).expect("the scene's water");
-        let chain = LumpedMass {
+        let chain = LumpedMass::new(LumpedMassSpec {
             drag_normal: 2.4,
             drag_tangential: 1.15,
             added_mass_normal: 1.0,
             added_mass_tangential: 0.5,
-            ..LumpedMass::plain(40, InternalDamping::Ratio(0.8)).expect("valid")
-        };
+            ..LumpedMassSpec::plain(40, InternalDamping::Ratio(0.8))
+        })
+        .expect("valid");
         let (anchor, fairlead) = (Vec3::new(-237.0, 0.0, -50.0), Vec3::new(0.0, 0.0, -1.0));
         let line = Catenary::new(Endpoint::World(anchor), Endpoint::World(fairlead), 25.79, 250.0, 442714.0)
             .and_then(|l| l.with_displaced_area(0.003298))
@@ -544,11 +544,11 @@ mod tests {
     /// ten evaluations 50 ms apart: the first error, if any.
     fn ten_steps_of(length: f64, stiffness: f64) -> Result<(), LineError> {
         let (line, _, surroundings, water) = chain_in_a_jonswap_sea();
-        let LineModel::Dynamic(chain) = line.model else { unreachable!("the chain is dynamic") };
+        let LineModel::Dynamic(chain) = line.model() else { unreachable!("the chain is dynamic") };
         let (anchor, fairlead) = (Vec3::new(-237.0, 0.0, -50.0), Vec3::new(0.0, 0.0, -1.0));
         let line = Catenary::new(Endpoint::World(anchor), Endpoint::World(fairlead), 25.79, length, stiffness)
             .expect("finite positive values")
-            .with_model(line.model);
+            .with_model(line.model());
         let discrete = Discrete::new(&line, &chain, &surroundings, Some(0.0));
         let at = |position| EndMotion { position, velocity: Vec3::zeros(), attachment: Attachment::World };
         let mut run = LineRun::new(0);

@@ -45,7 +45,7 @@ pub fn solve(
     let n = discrete.segments;
     let mut forces = NodeForces::default();
     nodes::evaluate(discrete, &nodes, &[], &mut forces);
-    let scale = line.mass_per_length * discrete.gravity.norm() * line.length + 1e-6 * discrete.ea;
+    let scale = line.mass_per_length() * discrete.gravity.norm() * line.length() + 1e-6 * discrete.ea;
     let mut residual = largest(&forces, n);
     let mut iterations = 0;
     let mut trial = nodes.clone();
@@ -80,11 +80,9 @@ pub fn solve(
 /// The nodes at `s_i = i L/N` on the catenary (PHYSICS.md §3/§7, frictionless seabed) through
 /// `p1`, `p2`; on the chord if it cannot be solved.
 fn first_guess(line: &Catenary, segments: usize, surroundings: &Surroundings, p1: &Vec3, p2: &Vec3) -> Vec<Vec3> {
-    let frictionless = Surroundings {
-        seabed: surroundings.seabed.map(|seabed| crate::seabed::Seabed { line_friction: 0.0, ..seabed }),
-        ..*surroundings
-    };
-    let static_line = Catenary { model: super::parameters::LineModel::QuasiStatic, ..line.clone() };
+    let frictionless =
+        Surroundings { seabed: surroundings.seabed.map(crate::seabed::Seabed::frictionless), ..*surroundings };
+    let static_line = line.clone().with_model(super::parameters::LineModel::QuasiStatic);
     match static_line.solve(p1, p2, &frictionless, None) {
         Ok(state) => state.sample(segments).into_iter().map(|(point, _)| point).collect(),
         Err(_) => (0..=segments).map(|i| p1 + (p2 - p1) * (i as f64 / segments as f64)).collect(),
@@ -127,9 +125,9 @@ fn newton_step(line: &Discrete, nodes: &LineNodes, forces: &NodeForces) -> Vec<V
     let mut diagonal: Vec<Mat3> = (1..n).map(|i| segment_stiffness[i - 1] + segment_stiffness[i]).collect();
     if let Some(seabed) = &line.seabed {
         for (i, block) in (1..n).zip(diagonal.iter_mut()) {
-            if x[i].dot(&line.up) < seabed.elevation {
+            if x[i].dot(&line.up) < seabed.elevation() {
                 *block +=
-                    line.up * line.up.transpose() * (line.parameters.seabed_stiffness * line.bearing * line.share(i));
+                    line.up * line.up.transpose() * (line.parameters.seabed_stiffness() * line.bearing * line.share(i));
             }
         }
     }

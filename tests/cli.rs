@@ -82,7 +82,7 @@ fn record_refuses_bad_flags_and_unwritable_paths_before_running() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("--duration must be > 0 s, got -1"));
     let out = tether(&["record", scene, "-o", "/tmp/x.rrd", "--log-hz", "0"]);
     assert_eq!(out.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("--log-hz must be a positive"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--log-hz must be > 0 Hz, got 0"));
     let out = tether(&["record", scene, "-o", "/no/such/dir/x.rrd"]);
     assert_eq!(out.status.code(), Some(1));
     assert!(

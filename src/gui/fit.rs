@@ -35,9 +35,10 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{self, Receiver, TryRecvError};
+use tether_physics::coupling::InternalDamping;
 use tether_scene::SceneFile;
 use tether_scene::file::{CouplingDef, LawDef};
-use tether_scene::line_model::{DampingDef, LineModelDef};
+use tether_scene::line_model::LineModelDef;
 use tether_scene::water::{HydroDef, WaterDef, WavesDef};
 
 /// Points of a model curve sent to the viewer at most (a run's every world step, thinned).
@@ -118,8 +119,8 @@ fn coupling_values(section: &mut Section, def: &CouplingDef) {
                 LineModelDef::QuasiStatic => {}
                 LineModelDef::Dynamic(line) => {
                     match line.damping {
-                        DampingDef::Ratio(zeta) => section.add("model.damping", "damping ratio ζ", "–", zeta),
-                        DampingDef::Coefficient(ba) => section.add("model.damping", "damping BA", "N·s", ba),
+                        InternalDamping::Ratio(zeta) => section.add("model.damping", "damping ratio ζ", "–", zeta),
+                        InternalDamping::Coefficient(ba) => section.add("model.damping", "damping BA", "N·s", ba),
                     }
                     section.add("model.drag_normal", "drag C_dn", "–", line.drag_normal);
                     section.add("model.drag_tangential", "drag C_dt", "–", line.drag_tangential);

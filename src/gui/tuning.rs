@@ -14,9 +14,10 @@ use crate::line_hint::Measures;
 use rerun::external::egui;
 use rerun::external::egui::emath::Numeric;
 use std::fmt::Display;
+use tether_physics::coupling::{InternalDamping, LumpedMassSpec};
 use tether_scene::SceneFile;
 use tether_scene::file::{CouplingDef, LawDef};
-use tether_scene::line_model::{DampingDef, DynamicLineDef, LineModelDef};
+use tether_scene::line_model::LineModelDef;
 
 /// What the tuning panel asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -128,14 +129,14 @@ fn line_model_knobs(ui: &mut egui::Ui, model: &mut LineModelDef) -> bool {
     ui.label("");
     ui.end_row();
     if switched {
-        *model = if dynamic { LineModelDef::Dynamic(DynamicLineDef::wire(20)) } else { LineModelDef::QuasiStatic };
+        *model = if dynamic { LineModelDef::Dynamic(LumpedMassSpec::wire(20)) } else { LineModelDef::QuasiStatic };
     }
     let edited = match model {
         LineModelDef::QuasiStatic => false,
         LineModelDef::Dynamic(line) => {
             let damping = match &mut line.damping {
-                DampingDef::Ratio(zeta) => knob(ui, "damping ratio ζ", zeta, "–"),
-                DampingDef::Coefficient(ba) => knob(ui, "damping BA", ba, "N·s"),
+                InternalDamping::Ratio(zeta) => knob(ui, "damping ratio ζ", zeta, "–"),
+                InternalDamping::Coefficient(ba) => knob(ui, "damping BA", ba, "N·s"),
             };
             knob(ui, "segments N", &mut line.segments, "–")
                 | damping

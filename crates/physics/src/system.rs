@@ -207,8 +207,7 @@ impl System {
                 Some(LinearHydrostatics::new(stiffness, &frame, &arm, &pressure))
             }
         };
-        let floating = stage.floating[position].clone();
-        stage.floating[position] = floating.with_potential(FloatingPotential {
+        stage.floating[position].set_potential(FloatingPotential {
             model: std::sync::Arc::new(model),
             mean_position,
             excitation,

@@ -5,7 +5,7 @@
 //!                added_mass_normal: 1.0, added_mass_tangential: 0.5)
 //! ```
 //!
-//! with [`DynamicLineDef`]'s fields inside the variant's one pair of parentheses. The build turns
+//! with [`LumpedMassSpec`]'s fields inside the variant's one pair of parentheses. The build turns
 //! it into the physics' [`LineModel`] through [`LineModelDef::build`], where
 //! [`LumpedMass::new`] refuses a value out of its range.
 //!
@@ -13,10 +13,11 @@
 //! newtype variant, `Dynamic((segments: 40, …))`, and RON's `unwrap_variant_newtypes` extension,
 //! which would accept the single parentheses, does so for every newtype variant of the file and so
 //! refuses `World((237.0, 0.0, -50.0))`. Hence the two impls here: the struct variant's fields go
-//! to [`DynamicLineDef`]'s derived `Deserialize` through serde's `MapAccessDeserializer`, and are
-//! written field by field from an exhaustive destructuring (a field added to [`DynamicLineDef`]
-//! fails to compile here until it is written).
+//! to [`LumpedMassSpecForm`]'s derived `Deserialize` through serde's `MapAccessDeserializer`, and
+//! are written field by field from an exhaustive destructuring (a field added to
+//! [`LumpedMassSpec`] fails to compile here until it is written).
 
+use crate::spelling::{InternalDampingForm, LumpedMassSpecForm};
 use serde::de::value::MapAccessDeserializer;
 use serde::de::{EnumAccess, MapAccess, VariantAccess, Visitor};
 use serde::ser::SerializeStructVariant;
@@ -25,58 +26,15 @@ use std::fmt;
 use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass, LumpedMassSpec};
 use tether_physics::parameter::ParameterError;
 
-/// A line coupling's `model:` as written: `QuasiStatic` (the default) or `Dynamic(…)`.
+/// A line coupling's `model:` as written: `QuasiStatic` (the default) or `Dynamic(…)`, the
+/// physics' [`LumpedMassSpec`] as the file states it (its spelling: [`LumpedMassSpecForm`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum LineModelDef {
     /// The elastic catenary of PHYSICS.md §3/§7.
     #[default]
     QuasiStatic,
     /// The lumped-mass line of PHYSICS.md §8.
-    Dynamic(DynamicLineDef),
-}
-
-/// A dynamic line's values as the file writes them, each as [`LumpedMassSpec`] documents it. A
-/// file may leave out the drag and added-mass coefficients (0) and the seabed's values
-/// (MoorDyn's, [`LumpedMassSpec::SEABED_STIFFNESS`] …).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct DynamicLineDef {
-    pub segments: u32,
-    pub damping: DampingDef,
-    #[serde(default)]
-    pub drag_normal: f64,
-    #[serde(default)]
-    pub drag_tangential: f64,
-    #[serde(default)]
-    pub added_mass_normal: f64,
-    #[serde(default)]
-    pub added_mass_tangential: f64,
-    #[serde(default = "seabed_stiffness")]
-    pub seabed_stiffness: f64,
-    #[serde(default = "seabed_damping")]
-    pub seabed_damping: f64,
-    #[serde(default = "friction_speed")]
-    pub friction_speed: f64,
-}
-
-/// A segment's internal damping as written: `Coefficient(BA)` \[N·s] or `Ratio(ζ)` [–]
-/// ([`InternalDamping`]).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub enum DampingDef {
-    Coefficient(f64),
-    Ratio(f64),
-}
-
-fn seabed_stiffness() -> f64 {
-    LumpedMassSpec::SEABED_STIFFNESS
-}
-
-fn seabed_damping() -> f64 {
-    LumpedMassSpec::SEABED_DAMPING
-}
-
-fn friction_speed() -> f64 {
-    LumpedMassSpec::FRICTION_SPEED
+    Dynamic(LumpedMassSpec),
 }
 
 impl LineModelDef {
@@ -86,11 +44,11 @@ impl LineModelDef {
     }
 
     /// The model dynamic at `count` segments: a dynamic one keeps its other values, a
-    /// quasi-static one becomes [`DynamicLineDef::wire`].
+    /// quasi-static one becomes [`LumpedMassSpec::wire`].
     pub fn dynamic_with(self, count: u32) -> Self {
         match self {
-            Self::Dynamic(line) => Self::Dynamic(DynamicLineDef { segments: count, ..line }),
-            Self::QuasiStatic => Self::Dynamic(DynamicLineDef::wire(count)),
+            Self::Dynamic(line) => Self::Dynamic(LumpedMassSpec { segments: count, ..line }),
+            Self::QuasiStatic => Self::Dynamic(LumpedMassSpec::wire(count)),
         }
     }
 
@@ -101,76 +59,7 @@ impl LineModelDef {
     pub fn build(self) -> Result<LineModel, ParameterError> {
         match self {
             Self::QuasiStatic => Ok(LineModel::QuasiStatic),
-            Self::Dynamic(line) => Ok(LineModel::Dynamic(LumpedMass::new(line.into())?)),
-        }
-    }
-}
-
-impl DynamicLineDef {
-    /// [`LumpedMassSpec::wire`]: what a quasi-static line becomes when switched to dynamic.
-    pub fn wire(segments: u32) -> Self {
-        LumpedMassSpec::wire(segments).into()
-    }
-}
-
-impl From<DynamicLineDef> for LumpedMassSpec {
-    fn from(def: DynamicLineDef) -> Self {
-        let DynamicLineDef {
-            segments,
-            damping,
-            drag_normal,
-            drag_tangential,
-            added_mass_normal,
-            added_mass_tangential,
-            seabed_stiffness,
-            seabed_damping,
-            friction_speed,
-        } = def;
-        let damping = match damping {
-            DampingDef::Coefficient(ba) => InternalDamping::Coefficient(ba),
-            DampingDef::Ratio(zeta) => InternalDamping::Ratio(zeta),
-        };
-        Self {
-            segments,
-            damping,
-            drag_normal,
-            drag_tangential,
-            added_mass_normal,
-            added_mass_tangential,
-            seabed_stiffness,
-            seabed_damping,
-            friction_speed,
-        }
-    }
-}
-
-impl From<LumpedMassSpec> for DynamicLineDef {
-    fn from(spec: LumpedMassSpec) -> Self {
-        let LumpedMassSpec {
-            segments,
-            damping,
-            drag_normal,
-            drag_tangential,
-            added_mass_normal,
-            added_mass_tangential,
-            seabed_stiffness,
-            seabed_damping,
-            friction_speed,
-        } = spec;
-        let damping = match damping {
-            InternalDamping::Coefficient(ba) => DampingDef::Coefficient(ba),
-            InternalDamping::Ratio(zeta) => DampingDef::Ratio(zeta),
-        };
-        Self {
-            segments,
-            damping,
-            drag_normal,
-            drag_tangential,
-            added_mass_normal,
-            added_mass_tangential,
-            seabed_stiffness,
-            seabed_damping,
-            friction_speed,
+            Self::Dynamic(line) => Ok(LineModel::Dynamic(LumpedMass::new(line)?)),
         }
     }
 }
@@ -215,18 +104,18 @@ impl<'de> Visitor<'de> for ModelVisitor {
     }
 }
 
-/// The fields of `Dynamic(…)`, read by [`DynamicLineDef`]'s derived `Deserialize`.
+/// The fields of `Dynamic(…)`, read by [`LumpedMassSpecForm`]'s derived `Deserialize`.
 struct DynamicLineVisitor;
 
 impl<'de> Visitor<'de> for DynamicLineVisitor {
-    type Value = DynamicLineDef;
+    type Value = LumpedMassSpec;
 
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
         f.write_str("a dynamic line's parameters (segments: …, damping: …)")
     }
 
-    fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<DynamicLineDef, A::Error> {
-        DynamicLineDef::deserialize(MapAccessDeserializer::new(map))
+    fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<LumpedMassSpec, A::Error> {
+        LumpedMassSpecForm::deserialize(MapAccessDeserializer::new(map))
     }
 }
 
@@ -241,7 +130,7 @@ impl Serialize for LineModelDef {
         match self {
             Self::QuasiStatic => serializer.serialize_unit_variant(NAME, 0, VARIANTS[0]),
             Self::Dynamic(line) => {
-                let DynamicLineDef {
+                let LumpedMassSpec {
                     segments,
                     damping,
                     drag_normal,
@@ -254,7 +143,7 @@ impl Serialize for LineModelDef {
                 } = line;
                 let mut variant = serializer.serialize_struct_variant(NAME, 1, VARIANTS[1], FIELDS.len())?;
                 variant.serialize_field(FIELDS[0], segments)?;
-                variant.serialize_field(FIELDS[1], damping)?;
+                variant.serialize_field(FIELDS[1], &Damping(damping))?;
                 variant.serialize_field(FIELDS[2], drag_normal)?;
                 variant.serialize_field(FIELDS[3], drag_tangential)?;
                 variant.serialize_field(FIELDS[4], added_mass_normal)?;
@@ -265,5 +154,14 @@ impl Serialize for LineModelDef {
                 variant.end()
             }
         }
+    }
+}
+
+/// A line's damping written as the file spells it ([`InternalDampingForm`]).
+struct Damping<'a>(&'a InternalDamping);
+
+impl Serialize for Damping<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        InternalDampingForm::serialize(self.0, serializer)
     }
 }

@@ -1,10 +1,12 @@
-//! How a scene file spells the physics' closed enums: `integrator: rk4`, `substeps: Auto`,
-//! `profile: PowerLaw`, `radiation: Convolution`, `hydrostatics: Linear`. The physics crate knows
+//! How a scene file spells the physics' closed enums and a dynamic line's values: `integrator:
+//! rk4`, `substeps: Auto`, `profile: PowerLaw`, `radiation: Convolution`, `hydrostatics: Linear`,
+//! `damping: Ratio(0.8)`. The physics crate knows
 //! no file format; each mirror here is serde's remote derive of one physics type (a field reads
 //! `#[serde(with = "…")]`), so the compiler checks it against the type, variant for variant: a
 //! variant added to the physics fails to compile here until the file can spell it.
 
 use serde::{Deserialize, Serialize};
+use tether_physics::coupling::{InternalDamping, LumpedMassSpec};
 use tether_physics::integrator::{Integrator, Substeps};
 use tether_physics::potential::{HydrostaticsModel, RadiationMethod};
 use tether_physics::water::CurrentProfile;
@@ -50,4 +52,49 @@ pub enum RadiationMethodForm {
 pub enum HydrostaticsModelForm {
     Mesh,
     Linear,
+}
+
+/// [`InternalDamping`]: `Coefficient(BA)` \[N·s] or `Ratio(ζ)` [–].
+#[derive(Serialize, Deserialize)]
+#[serde(remote = "InternalDamping")]
+pub enum InternalDampingForm {
+    Coefficient(f64),
+    Ratio(f64),
+}
+
+/// [`LumpedMassSpec`], a dynamic line's values, each as the physics documents it. A file may leave
+/// out the drag and added-mass coefficients (0) and the seabed's values (MoorDyn's,
+/// [`LumpedMassSpec::SEABED_STIFFNESS`] …). Written inside `Dynamic(…)` (`crate::line_model`).
+#[derive(Serialize, Deserialize)]
+#[serde(remote = "LumpedMassSpec", deny_unknown_fields)]
+pub struct LumpedMassSpecForm {
+    segments: u32,
+    #[serde(with = "InternalDampingForm")]
+    damping: InternalDamping,
+    #[serde(default)]
+    drag_normal: f64,
+    #[serde(default)]
+    drag_tangential: f64,
+    #[serde(default)]
+    added_mass_normal: f64,
+    #[serde(default)]
+    added_mass_tangential: f64,
+    #[serde(default = "seabed_stiffness")]
+    seabed_stiffness: f64,
+    #[serde(default = "seabed_damping")]
+    seabed_damping: f64,
+    #[serde(default = "friction_speed")]
+    friction_speed: f64,
+}
+
+fn seabed_stiffness() -> f64 {
+    LumpedMassSpec::SEABED_STIFFNESS
+}
+
+fn seabed_damping() -> f64 {
+    LumpedMassSpec::SEABED_DAMPING
+}
+
+fn friction_speed() -> f64 {
+    LumpedMassSpec::FRICTION_SPEED
 }

@@ -4,11 +4,11 @@
 
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
-use tether_physics::coupling::LumpedMassSpec;
 use tether_physics::coupling::lumped_line::discrete::{STEEL_DENSITY, bearing_diameter};
+use tether_physics::coupling::{InternalDamping, LumpedMassSpec};
 use tether_physics::statics::{Settings, equilibrium};
 use tether_scene::file::{CouplingDef, EndDef, SceneFile, SupportDef};
-use tether_scene::line_model::{DampingDef, DynamicLineDef, LineModelDef};
+use tether_scene::line_model::LineModelDef;
 use tether_scene::moordyn::{self, export};
 use tether_scene::{Scene, SceneError};
 use tether_test_support::{here, repo, scene_files};
@@ -104,9 +104,9 @@ fn oc3_lines_become_dynamic_catenaries_with_the_files_values() {
     assert_eq!(area, PI * 0.09 * 0.09 / 4.0);
     assert_eq!(
         model,
-        LineModelDef::Dynamic(DynamicLineDef {
+        LineModelDef::Dynamic(LumpedMassSpec {
             segments: 20,
-            damping: DampingDef::Ratio(0.8),
+            damping: InternalDamping::Ratio(0.8),
             drag_normal: 1.6,
             drag_tangential: 0.1,
             added_mass_normal: 1.0,
@@ -155,7 +155,7 @@ fn the_iea_15_mw_semis_v1_file_imports_with_its_columns_in_v1_order() {
     let LineModelDef::Dynamic(line) = model else { panic!("{model:?}") };
     // main 0.333 685.00 3.27E+09 -1 | Can 0.82 Cat 0.27 Cdn 1.11 Cdt 0.20.
     assert_eq!(line.segments, 50);
-    assert_eq!(line.damping, DampingDef::Ratio(1.0));
+    assert_eq!(line.damping, InternalDamping::Ratio(1.0));
     assert_eq!(
         (line.added_mass_normal, line.added_mass_tangential, line.drag_normal, line.drag_tangential),
         (0.82, 0.27, 1.11, 0.20)
@@ -205,7 +205,7 @@ fn moordyns_friction_damping_sets_each_lines_friction_speed() {
     // A file without friction keeps the default friction speed (it does not matter there).
     let frictionless = load(&input("WD0050_Chain_frictionless.txt")).unwrap();
     let (.., model) = catenary(&frictionless.file, 0);
-    assert_eq!(model, LineModelDef::Dynamic(DynamicLineDef { friction_speed: LumpedMassSpec::FRICTION_SPEED, ..line }));
+    assert_eq!(model, LineModelDef::Dynamic(LumpedMassSpec { friction_speed: LumpedMassSpec::FRICTION_SPEED, ..line }));
 }
 
 /// The export writes the `FricDamp` that gives its first line its friction speed, `CV = w l /
@@ -432,7 +432,7 @@ fn assert_same_lines(before: &[LineSummary], after: &[LineSummary], segments: u3
         else {
             panic!("{}: not dynamic after import", path.display())
         };
-        assert_eq!(after, DynamicLineDef { friction_speed: after.friction_speed, ..before }, "{}", path.display());
+        assert_eq!(after, LumpedMassSpec { friction_speed: after.friction_speed, ..before }, "{}", path.display());
         let (x, y) = (before.friction_speed, after.friction_speed);
         assert!((x - y).abs() <= 16.0 * f64::EPSILON * x, "{}: friction speed {x} → {y}", path.display());
         let mass_per_length = f64::from_bits(a.2[0]);

@@ -53,12 +53,12 @@ fn a_tuned_catenary_is_saved_with_its_tuned_values() {
 /// form of `scene::line_model` writes each field under its own name).
 #[test]
 fn a_dynamic_line_round_trips_each_of_its_values() {
-    use scene::line_model::{DampingDef, DynamicLineDef, LineModelDef};
+    use scene::line_model::LineModelDef;
     use tether_physics::coupling::{InternalDamping, LineModel, LumpedMass, LumpedMassSpec};
     let mut loaded = scene::load(&repo("scenes/moored_buoy.ron")).unwrap();
-    let tuned = DynamicLineDef {
+    let tuned = LumpedMassSpec {
         segments: 37,
-        damping: DampingDef::Coefficient(1234.5),
+        damping: InternalDamping::Coefficient(1234.5),
         drag_normal: 2.1,
         drag_tangential: 0.3,
         added_mass_normal: 0.9,
@@ -77,17 +77,7 @@ fn a_dynamic_line_round_trips_each_of_its_values() {
         scene::file::CouplingDef::Catenary { model, .. } => assert_eq!(*model, LineModelDef::Dynamic(tuned)),
         other => panic!("not a catenary: {other:?}"),
     }
-    let built = LumpedMass::new(LumpedMassSpec {
-        segments: 37,
-        damping: InternalDamping::Coefficient(1234.5),
-        drag_normal: 2.1,
-        drag_tangential: 0.3,
-        added_mass_normal: 0.9,
-        added_mass_tangential: 0.2,
-        seabed_stiffness: 4.0e6,
-        seabed_damping: 2.5e5,
-        friction_speed: 0.02,
-    });
+    let built = LumpedMass::new(tuned);
     match &again.world.couplings()[0].kind {
         CouplingKind::Catenary(line) => assert_eq!(Ok(line.model()), built.map(LineModel::Dynamic)),
         other => panic!("not a catenary: {other:?}"),

@@ -122,9 +122,9 @@ impl FloatingBody {
         self.hydrostatics_at_rest.as_ref()
     }
 
-    /// The body with its potential flow `potential`, on (the system's build, PHYSICS.md §9).
-    pub(crate) fn with_potential(self, potential: FloatingPotential) -> Self {
-        Self { potential: PotentialFlow::On(potential), ..self }
+    /// Gives the body its potential flow `potential`, on (the system's build, PHYSICS.md §9).
+    pub(crate) fn set_potential(&mut self, potential: FloatingPotential) {
+        self.potential = PotentialFlow::On(potential);
     }
 
     /// The body with the coefficients `hydro` (a live edit; checked by [`Hydro::new`]).
@@ -135,8 +135,13 @@ impl FloatingBody {
     /// The body as a system at rest has it ([`crate::system::System::at_rest`]): coefficients
     /// `hydro`, no potential flow, but its linear hydrostatics kept, a static restoring.
     pub(crate) fn at_rest(&self, hydro: Hydro) -> Self {
-        let hydrostatics_at_rest = self.potential().and_then(|p| p.linear_hydrostatics.clone());
-        Self { hydro, potential: PotentialFlow::Absent, hydrostatics_at_rest, ..self.clone() }
+        Self {
+            body: self.body,
+            hull: Arc::clone(&self.hull),
+            hydro,
+            potential: PotentialFlow::Absent,
+            hydrostatics_at_rest: self.potential().and_then(|p| p.linear_hydrostatics.clone()),
+        }
     }
 }
 

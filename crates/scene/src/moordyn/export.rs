@@ -5,7 +5,7 @@
 //! | Tether | MoorDyn |
 //! |---|---|
 //! | `Catenary` (dynamic) | a line and a line type of its λ0, d = √(4 A_d/π) (a steel rod's when A_d = 0, [`bearing_diameter`]), EA = D L, BA or −ζ, C_dn, C_an, C_dt, C_at |
-//! | `Catenary` (quasi-static) | the same with `segments` (the export's flag) and the coefficients a line switched to dynamic gets ([`crate::line_model::DynamicLineDef::wire`]) |
+//! | `Catenary` (quasi-static) | the same with `segments` (the export's flag) and the coefficients a line switched to dynamic gets ([`LumpedMassSpec::wire`]) |
 //! | world end | a Fixed point (one per position) |
 //! | body with its rotation held, translation free | a Free point (the mapping's point mass, inverted) |
 //! | kinematic (or partly fixed) / free / fixed body | a Coupled / Free / Fixed body, its reference the master node, with Body points |
@@ -15,11 +15,11 @@
 
 use super::mapping::STEP;
 use crate::file::{BodyDef, CouplingDef, EndDef, SceneFile, ShapeDef, SupportDef};
-use crate::line_model::{DampingDef, DynamicLineDef, LineModelDef};
+use crate::line_model::LineModelDef;
 use std::fmt::Write as _;
 use tether_physics::body::RigidBody;
-use tether_physics::coupling::LumpedMassSpec;
 use tether_physics::coupling::lumped_line::discrete::bearing_diameter;
+use tether_physics::coupling::{InternalDamping, LumpedMassSpec};
 use tether_physics::math::{Rotation, Vec3};
 
 /// The segments a quasi-static line is written with when the export is not told (the
@@ -78,7 +78,7 @@ pub fn export(file: &SceneFile, bodies: &[RigidBody], source: &str, segments: u3
             left_out.push(coupling.name().to_string());
             continue;
         };
-        let DynamicLineDef {
+        let LumpedMassSpec {
             segments: count,
             damping,
             drag_normal,
@@ -89,13 +89,13 @@ pub fn export(file: &SceneFile, bodies: &[RigidBody], source: &str, segments: u3
             seabed_damping,
             friction_speed,
         } = match model {
-            LineModelDef::QuasiStatic => DynamicLineDef::wire(segments),
+            LineModelDef::QuasiStatic => LumpedMassSpec::wire(segments),
             LineModelDef::Dynamic(line) => *line,
         };
         seabed.get_or_insert((seabed_stiffness, seabed_damping));
         let ba = match damping {
-            DampingDef::Ratio(zeta) => -zeta,
-            DampingDef::Coefficient(ba) => ba,
+            InternalDamping::Ratio(zeta) => -zeta,
+            InternalDamping::Coefficient(ba) => ba,
         };
         // MoorDyn's diameter `d = √(4 A_d/π)`; a dry line is written as the steel rod Tether's
         // seabed bears it on: MoorDyn's lines need `d > 0` (its drag and seabed divide by it),

@@ -17,10 +17,10 @@ use super::input::{Attachment, Body, BodyKind, Input, Line, LineType, Options, P
 use crate::file::{
     BodyDef, CouplingDef, EndDef, InertiaDef, NodeDef, SceneFile, SeabedDef, ShapeDef, SupportDef, VelocityDef,
 };
-use crate::line_model::{DampingDef, DynamicLineDef, LineModelDef};
+use crate::line_model::LineModelDef;
 use crate::water::{HydroDef, WaterDef, WavesDef};
 use std::collections::BTreeMap;
-use tether_physics::coupling::LumpedMassSpec;
+use tether_physics::coupling::{InternalDamping, LumpedMassSpec};
 use tether_physics::integrator::{Integrator, Substeps};
 use tether_physics::math::{Rotation, Vec3};
 use tether_physics::parameter::{Bound, ParameterError, require_derived};
@@ -213,12 +213,12 @@ fn line_def(input: &Input, line: &Line, line_type: &LineType) -> CouplingDef {
         length: line.length,
         stiffness: stiffness(line, line_type),
         displaced_area: area(line_type),
-        model: LineModelDef::Dynamic(DynamicLineDef {
+        model: LineModelDef::Dynamic(LumpedMassSpec {
             segments: line.segments,
             damping: if line_type.damping < 0.0 {
-                DampingDef::Ratio(-line_type.damping)
+                InternalDamping::Ratio(-line_type.damping)
             } else {
-                DampingDef::Coefficient(line_type.damping)
+                InternalDamping::Coefficient(line_type.damping)
             },
             drag_normal: line_type.drag_normal,
             drag_tangential: line_type.drag_tangential,

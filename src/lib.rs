@@ -20,5 +20,6 @@ pub mod rao_chart;
 pub mod run_length;
 pub mod runner;
 pub mod statics;
+pub mod storm;
 pub mod study;
 pub mod sweep;

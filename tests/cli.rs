@@ -440,7 +440,7 @@ fn rao_prints_the_frequency_domain_solve() {
         9.1290755523e5,
         7.8249219019e5,
     ));
-    let xi = tether_physics::potential::response::response(model.coefficients(), &mass, &model.stiffness(), omega, 0)
+    let xi = tether_physics::potential::response::response(model.coefficients(), &mass, model.stiffness(), omega, 0)
         .unwrap();
     println!("heave {} ∠{}° (CLI), {} ∠{}° (response)", row[6], row[7], xi[2].norm(), xi[2].arg().to_degrees());
     assert_relative_eq!(row[6], xi[2].norm(), max_relative = 1e-9);
@@ -631,7 +631,7 @@ fn check_prints_the_radiation_fit_of_each_potential_flow_body() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     let loaded = tether_scene::load(std::path::Path::new(scene)).unwrap();
     let stage = loaded.world.system().water().unwrap();
-    let model = &stage.floating[0].potential().as_ref().unwrap().model;
+    let model = &stage.floating[0].potential().as_ref().unwrap().model();
     let tether_physics::potential::Radiation::StateSpace(fit) = model.radiation() else { panic!("the default method") };
     // The A∞ the time domain's mass holds (PHYSICS.md §9): the cylinder's pitch and surge shifted
     // by the band's damping tail, its heave not.
@@ -707,7 +707,7 @@ fn check_prints_the_radiation_fit_of_each_potential_flow_body() {
         .potential()
         .as_ref()
         .unwrap()
-        .model
+        .model()
         .coefficients()
         .hydrostatic_stiffness()
         .unwrap();

@@ -506,7 +506,7 @@ fn the_potential_flow_switch_says_when_it_brings_linear_hydrostatics() {
         world.system().water().expect("water").floating[0]
             .potential()
             .as_ref()
-            .is_some_and(|p| p.linear_hydrostatics.is_some())
+            .is_some_and(|p| p.linear_hydrostatics().is_some())
     };
     assert!(linear(&world(&harness)));
     harness.get_by_label(label).click();

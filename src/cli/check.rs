@@ -9,11 +9,14 @@ use tether_physics::coupling::{
     SpringDamper,
 };
 use tether_physics::math::{Mat3, Vec3};
-use tether_physics::potential::{LinearHydrostatics, PotentialBody, Radiation, RadiationStateSpace};
+use tether_physics::potential::{
+    DriftModel, DriftSource, LinearHydrostatics, PotentialBody, Radiation, RadiationStateSpace,
+};
 use tether_physics::stability;
 use tether_physics::water::WaveSpec;
 use tether_physics::water::dispersion::wavelength;
 use tether_physics::water::hydrostatics::floating_equilibrium;
+use tether_physics::water::stage::FloatingPotential;
 use tether_physics::world::World;
 use tether_scene::Scene;
 
@@ -89,7 +92,7 @@ fn coupling_report(out: &mut String, world: &World, index: usize, coupling: &Cou
 /// A spring-damper: its ends, its law, and its length and tension at t = 0.
 fn spring_report(out: &mut String, ends: &str, spring: &SpringDamper, chord: f64, forces: &CouplingForces) {
     let _ = writeln!(out, "{ends}");
-    let _ = writeln!(out, "  law {}, damping {} N·s/m", law(&spring.law()), spring.damping());
+    let _ = writeln!(out, "  law {}, damping {} N·s/m", law(spring.law()), spring.damping());
     let _ = writeln!(out, "  length {chord:.6} m, tension {:.6} N", forces.tension);
 }
 
@@ -263,8 +266,9 @@ fn water_report(out: &mut String, world: &World) {
             vector(&record.total().force)
         );
         if let Some(potential) = &floating.potential() {
-            potential_report(out, world, index, &potential.model);
-            hydrostatics_report(out, potential.linear_hydrostatics.as_ref());
+            potential_report(out, world, index, potential.model());
+            drift_report(out, potential);
+            hydrostatics_report(out, potential.linear_hydrostatics());
         }
         if body.is_kinematic() {
             let _ = writeln!(out, "  kinematic: its motion is prescribed and the water does not act on it");
@@ -376,6 +380,37 @@ fn potential_report(out: &mut String, world: &World, index: usize, model: &Poten
                 world.step_size()
             );
         }
+    }
+}
+
+/// A potential-flow body's wave drift (PHYSICS.md §10): which file's coefficients, which model,
+/// and the mean drift in the scene's sea.
+fn drift_report(out: &mut String, potential: &FloatingPotential) {
+    let model = potential.model().drift_model();
+    let Some(table) = potential.model().coefficients().mean_drift() else {
+        let _ = writeln!(out, "  wave drift: none (no .8 or .9 file beside the .1 and .3)");
+        return;
+    };
+    let source = match table.source() {
+        DriftSource::Momentum => ".8, momentum conservation (far field)",
+        DriftSource::Pressure => ".9, pressure integration",
+    };
+    let omegas = table.frequencies();
+    let _ = writeln!(
+        out,
+        "  wave drift: {} from {source}, {} frequencies, {:.4} to {:.4} rad/s",
+        model.name(),
+        omegas.len(),
+        omegas.first().copied().unwrap_or(0.0),
+        omegas.last().copied().unwrap_or(0.0),
+    );
+    let mean = potential.drift().mean();
+    if model != DriftModel::Off {
+        let _ = writeln!(
+            out,
+            "  mean drift in this sea: ({:.6e}, {:.6e}) N, yaw {:.6e} N·m (at the reference point, world axes)",
+            mean[0], mean[1], mean[5]
+        );
     }
 }
 

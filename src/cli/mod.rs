@@ -12,6 +12,7 @@ mod import;
 mod offsets;
 mod rao;
 mod record;
+mod storm;
 mod study;
 mod sweep;
 mod timing;
@@ -56,6 +57,11 @@ enum Command {
     /// to results.csv, results.parquet, summary.md and charts. `tether sweep merge DIR` joins
     /// the shards' rows.
     Sweep(sweep::SweepArgs),
+    /// The scene's storm over seeds (its JONSWAP sea's and gusts'): per line and per body the
+    /// seeds' maxima, their Gumbel fits, the most probable maximum, the 90 % quantile and the
+    /// code of practice's check (API RP 2SK, DNV-OS-E301), written as storm.md, storm.csv,
+    /// storm.parquet and storm.png; on every core or as a Slurm array's shards.
+    Storm(storm::StormArgs),
     /// Fit the scene's parameters (by the sweep's value paths) to a measured record — CSV,
     /// Parquet or a recording — by bounded least squares; print the fitted values with their 95 %
     /// intervals and what the data cannot determine; write the report, a chart per signal, the
@@ -122,6 +128,10 @@ pub fn run(cli: Cli) -> anyhow::Result<u8> {
         Command::Sweep(args) => sweep::run(&args).map(|outcome| match outcome {
             sweep::Outcome::Finished => 0,
             sweep::Outcome::Interrupted => INTERRUPTED,
+        }),
+        Command::Storm(args) => storm::run(&args).map(|outcome| match outcome {
+            storm::Outcome::Finished => 0,
+            storm::Outcome::Interrupted => INTERRUPTED,
         }),
     }
 }

@@ -2,7 +2,8 @@
 //!
 //! `total = kinetic + gravity + elastic` \[J]. Dampers dissipate `dissipated = ∫ P_d dt` ≥ 0 and
 //! kinematic (prescribed) bodies inject `−∫ Σ (F_k·v_k + M_k·ω_k) dt`, the work the drivers do
-//! against the couplings, and the water (§6) `∫ Σ (F_w·v + M_w·ω) dt` on the floating bodies:
+//! against the couplings, and the water (§6) and the air (§10) `∫ Σ (F_w·v + M_w·ω) dt` on the
+//! bodies they load:
 //! together the `external_work`. The balance `total + dissipated − external_work` is
 //! constant for the exact motion; a numerical run keeps it to the integrator's order. Each
 //! integrator integrates the powers by its own rule ([`crate::integrator::StepReport::work`]);
@@ -29,7 +30,7 @@ pub struct EnergyReport {
     pub elastic: f64,
     /// Work dissipated since t = 0 (dampers, contact, friction against slip): never decreases.
     pub dissipated: f64,
-    /// Work done by prescribed motions and by the water on the system since t = 0.
+    /// Work done by prescribed motions, the water and the air on the system since t = 0.
     pub external_work: f64,
 }
 
@@ -54,17 +55,17 @@ pub struct CouplingPower {
 }
 
 /// Power \[W] at one force evaluation: the couplings', put in by prescribed motions, and put in
-/// by the water (kept apart: the staggered schemes integrate it with their half-step velocities,
-/// see [`crate::integrator::leapfrog`]).
+/// by the environment, water and air (kept apart: the staggered schemes integrate it with their
+/// half-step velocities, see [`crate::integrator::leapfrog`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Powers {
     pub couplings: CouplingPower,
     pub external: f64,
-    pub water: f64,
+    pub environment: f64,
 }
 
 /// Work \[J] over a span of time: dissipated, held by the quasi-static lines' seabed friction,
-/// and put in by prescribed motions and the water.
+/// and put in by prescribed motions, the water and the air.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Work {
     pub dissipated: f64,
@@ -79,19 +80,19 @@ impl Work {
     }
 
     /// `h Σ b_j P_j`: the quadrature of weights `weights` over a step `h` \[s] of the couplings'
-    /// and the external powers at the evaluations `powers` (the water's included: the schemes
+    /// and the external powers at the evaluations `powers` (the environment's included: the schemes
     /// that take it apart add theirs).
     pub fn quadrature<'a>(h: f64, weights: &[f64], powers: impl IntoIterator<Item = &'a Powers>) -> Self {
         let sum = weights.iter().zip(powers).fold(Self::default(), |sum, (b, p)| Self {
             dissipated: sum.dissipated + b * p.couplings.dissipated,
             held: sum.held + b * p.couplings.held,
-            external: sum.external + b * (p.external + p.water),
+            external: sum.external + b * (p.external + p.environment),
         });
         Self { dissipated: h * sum.dissipated, held: h * sum.held, external: h * sum.external }
     }
 
     /// `½ h (P_a + P_b)`: the trapezoid rule over a step `h` \[s] between two evaluations, of the
-    /// couplings' and the external power (the water's is the caller's).
+    /// couplings' and the external power (the environment's is the caller's).
     pub fn trapezoid(h: f64, a: &Powers, b: &Powers) -> Self {
         let half = 0.5 * h;
         Self {

@@ -2,6 +2,7 @@
 //! the bodies, what each coupling did, and what each coupling remembers for the next evaluation
 //! (MuJoCo's mutable data, beside the constant system of bodies and couplings).
 
+use crate::air::AirForces;
 use crate::body::{BodyFrame, Load};
 use crate::coupling::catenary::LineState;
 use crate::coupling::contact::ContactForces;
@@ -31,6 +32,8 @@ pub struct Evaluation {
     pub(crate) radiation: Vec<RadiationRun>,
     /// The water stage's buffers.
     pub(crate) water_scratch: WaterScratch,
+    /// What the air did to each wind-loaded body (empty without air).
+    pub(crate) air: Vec<AirForces>,
 }
 
 impl Evaluation {
@@ -46,6 +49,7 @@ impl Evaluation {
             water: Vec::new(),
             radiation: Vec::new(),
             water_scratch: WaterScratch::default(),
+            air: Vec::new(),
         }
     }
 
@@ -76,7 +80,7 @@ impl Evaluation {
         let Some(stage) = stage else { return };
         for (floating, run) in stage.floating.iter().zip(&mut self.radiation) {
             if let Some(potential) = &floating.potential() {
-                run.commit(potential.model.radiation());
+                run.commit(potential.model().radiation());
             }
         }
     }
@@ -120,6 +124,12 @@ impl Evaluation {
     /// system's floating bodies (empty without water).
     pub fn water(&self) -> &[WaterForces] {
         &self.water
+    }
+
+    /// What the air did to each wind-loaded body at the last evaluation, in the order of the
+    /// system's wind-loaded bodies (empty without air).
+    pub fn air(&self) -> &[AirForces] {
+        &self.air
     }
 
     /// What each coupling remembers.

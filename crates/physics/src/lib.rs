@@ -46,6 +46,7 @@
 //!
 //! The world frame is right-handed with z up.
 
+pub mod air;
 pub mod body;
 pub mod coupling;
 pub mod dynamics;

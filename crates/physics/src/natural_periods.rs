@@ -37,7 +37,7 @@ pub fn at_equilibrium(
     added: AddedMassAt,
 ) -> Option<Vec<NaturalMode>> {
     let floating = system.water()?.floating.iter().find(|f| f.body() == index)?;
-    let model = &floating.potential()?.model;
+    let model = &floating.potential()?.model();
     let state = &solved.states[index];
     let mass = mass_at_center(&system.bodies()[index], &state.orientation.to_rotation_matrix().into_inner());
     Some(natural_modes(model, &state.frame(), &mass, &solved.body_stiffness(index), added))

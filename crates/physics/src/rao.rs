@@ -104,7 +104,7 @@ impl LinearModel {
             .find(|f| f.body() == index)
             .and_then(|f| f.potential())
             .ok_or_else(|| RaoError::NoPotential { name: name.to_string() })?
-            .model
+            .model()
             .clone();
         let state = &system.initial_states()[index];
         let arm = model.arm(&state.frame());

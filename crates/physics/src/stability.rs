@@ -58,6 +58,8 @@ pub enum Limiter {
     Impact(usize),
     /// Body index: the water's stiffness and drag on it.
     Water(usize),
+    /// Body index: the air's drag and a rotor's thrust on it (their aerodynamic damping).
+    Air(usize),
 }
 
 /// A stable time step \[s] and what sets it.
@@ -75,6 +77,7 @@ impl Limit {
             Limiter::Rotation(i) => format!("rotation of body \"{}\"", system.bodies()[i].name),
             Limiter::Impact(i) => format!("impact of contact \"{}\" (τ/10)", system.couplings()[i].name),
             Limiter::Water(i) => format!("water on body \"{}\"", system.bodies()[i].name),
+            Limiter::Air(i) => format!("air on body \"{}\"", system.bodies()[i].name),
         }
     }
 }
@@ -238,6 +241,7 @@ pub fn limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
         }
     }
     limits.extend(water_limits(situation, integrator));
+    limits.extend(air_limits(situation, integrator));
     // The adaptive scheme keeps its own rotation accurate.
     let spinning = if integrator.is_adaptive() { 0 } else { system.bodies().len() };
     for index in (0..spinning).filter(|&i| !system.bodies()[i].is_kinematic()) {
@@ -247,6 +251,41 @@ pub fn limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
         }
     }
     limits
+}
+
+/// The stable step of each wind-loaded body that responds to forces under its aerodynamic
+/// damping (PHYSICS.md §10): `ρ_a C_i A_i |u_r|` per axis of its windage and `ρ_a A C_T |U_r|`
+/// of its rotor, linearised at the mean wind at the load point plus four of its gusts' standard
+/// deviations and the body's own speed, against the body's mass.
+fn air_limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
+    let Situation { system, states, .. } = *situation;
+    let Some(stage) = system.air() else { return Vec::new() };
+    let density = stage.air().density();
+    let mut limits = Vec::new();
+    for loaded in stage.bodies().iter().filter(|b| !system.bodies()[b.body()].is_kinematic()) {
+        let (body, state) = (&system.bodies()[loaded.body()], &states[loaded.body()]);
+        let own = state.velocity.norm() + state.angular_velocity.norm() * body_extent(loaded);
+        let (windage_speed, rotor_speed) = loaded.speeds_for_damping();
+        let mut damping = 0.0;
+        if let (Some(windage), Some(speed)) = (loaded.windage(), windage_speed) {
+            damping += density * windage.drag_areas().into_iter().fold(0.0, f64::max) * (speed + own);
+        }
+        if let (Some(rotor), Some(speed)) = (loaded.rotor(), rotor_speed) {
+            damping += density * rotor.area() * rotor.largest_thrust_coefficient() * (speed + own);
+        }
+        let dt = oscillator_limit(integrator, 0.0, damping, 1.0 / body.mass());
+        if dt.is_finite() {
+            limits.push(Limit { limiter: Limiter::Air(loaded.body()), dt });
+        }
+    }
+    limits
+}
+
+/// The farthest of a wind-loaded body's load points from G \[m].
+fn body_extent(loaded: &crate::air::WindBody) -> f64 {
+    let windage = loaded.windage().map_or(0.0, |w| w.center().norm());
+    let rotor = loaded.rotor().map_or(0.0, |r| r.hub().norm());
+    windage.max(rotor)
 }
 
 /// The stable step of each floating body that responds to forces, under the water's stiffness
@@ -283,7 +322,7 @@ fn water_limits(situation: &Situation, integrator: Integrator) -> Vec<Limit> {
             let mass = match &floating.potential() {
                 // Potential flow: `A∞` about G along the axis (PHYSICS.md §9).
                 Some(potential) => {
-                    let infinite = potential.model.infinite_added_mass_at_center(&frame);
+                    let infinite = potential.model().infinite_added_mass_at_center(&frame);
                     body.mass() + axis.dot(&(infinite.fixed_view::<3, 3>(0, 0) * axis))
                 }
                 None => body.mass() + wetted * rho * hull.volume() * hydro.spec().added_mass[j],

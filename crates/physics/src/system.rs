@@ -10,14 +10,21 @@
 //! 3. *clear* the loads and add *gravity* ([`System::gravity_load`]);
 //! 4. *couplings*: each coupling's forces, kept per coupling and summed into the bodies' loads
 //!    ([`System::apply_couplings`]);
-//! 5. *water*, an environment stage declared by the scene ([`System::with_water`]) and skipped
-//!    when it declares none: pressure, Morison loads and added mass on each floating body, kept
-//!    per body and summed into the loads ([`System::apply_water`], [`crate::water`]);
-//! 6. *powers*: dissipated by the couplings, put in by prescribed motions and by the water
-//!    ([`System::external_power`]).
+//! 5. *air*, an environment stage declared by the scene ([`System::with_air`]) and skipped when
+//!    it declares none: the wind's drag and a rotor's thrust on each body they load, kept per
+//!    body and summed into the loads ([`System::apply_air`], [`crate::air`], PHYSICS.md §10);
+//! 6. *water*, the other environment stage ([`System::with_water`]), last because its added
+//!    mass reacts to every other force: pressure, Morison loads, potential flow and added mass
+//!    on each floating body, kept per body and summed into the loads ([`System::apply_water`],
+//!    [`crate::water`]);
+//! 7. *powers*: dissipated by the couplings, put in by prescribed motions and by the
+//!    environment ([`System::external_power`]).
 //!
-//! [`System::evaluate`] runs 2–6; the leapfrog fuses 1–3 into its pass over the bodies.
+//! [`System::evaluate`] runs 2–7 (5 and 6 as [`System::apply_environment`]); the leapfrog fuses
+//! 1–3 into its pass over the bodies.
 
+use crate::air::stage::AirStageInputs;
+use crate::air::{AirError, AirForces, AirSpec, AirStage, AirStageError, WindLoadError, WindLoadSpec};
 use crate::body::{BodyState, Load, RigidBody, Support};
 use crate::coupling::catenary::ON_SEABED;
 use crate::coupling::lumped_line::Discrete;
@@ -26,9 +33,7 @@ use crate::energy::{CouplingPower, Powers};
 use crate::evaluation::Evaluation;
 use crate::math::Vec3;
 use crate::parameter::ParameterError;
-use crate::potential::{
-    HydrostaticsModel, LinearHydrostatics, PotentialBody, PotentialError, PotentialSpec, WaveExcitation,
-};
+use crate::potential::{HydrostaticsModel, LinearHydrostatics, PotentialBody, PotentialError, PotentialSpec};
 use crate::seabed::Seabed;
 use crate::simd::{Level, SupportedLevel};
 use crate::surroundings::Surroundings;
@@ -52,6 +57,8 @@ pub struct System {
     level: SupportedLevel,
     /// The water and the bodies in it, if the scene has water.
     water: Option<WaterStage>,
+    /// The air and the bodies it loads, if the scene has air.
+    air: Option<AirStage>,
 }
 
 /// A system that does not hold together.
@@ -73,6 +80,10 @@ pub enum SystemError {
     Switch { body: String, source: SwitchError },
     #[error("coupling \"{coupling}\": {source}")]
     BelowSeabed { coupling: String, source: BelowSeabed },
+    #[error("air: {0}")]
+    Air(AirError),
+    #[error("body \"{body}\": {source}")]
+    Wind { body: String, source: WindLoadError },
     /// A line whose weight or dynamic constants, derived in its surroundings, are out of range
     /// ([`crate::coupling::Catenary::check_weight`], [`Discrete::check`]).
     #[error("coupling \"{coupling}\": {source}")]
@@ -127,6 +138,7 @@ impl System {
             kinematic_bodies,
             level: SupportedLevel::best(),
             water: None,
+            air: None,
         })
     }
 
@@ -193,9 +205,6 @@ impl System {
         let arm = model.arm(&frame);
         let reference = frame.position + arm;
         let mean_position = [reference.x, reference.y];
-        let excitation =
-            WaveExcitation::new(model.coefficients().excitation(), stage.water.sea().components(), mean_position)
-                .map_err(|e| hydro(e.into()))?;
         let linear_hydrostatics = match hydrostatics {
             HydrostaticsModel::Mesh => None,
             HydrostaticsModel::Linear => {
@@ -207,18 +216,45 @@ impl System {
                 Some(LinearHydrostatics::new(stiffness, &frame, &arm, &pressure))
             }
         };
-        stage.floating[position].set_potential(FloatingPotential {
-            model: std::sync::Arc::new(model),
-            mean_position,
-            excitation,
-            linear_hydrostatics,
-        });
+        let components = stage.water.sea().components();
+        let potential =
+            FloatingPotential::new(std::sync::Arc::new(model), mean_position, linear_hydrostatics, components)
+                .map_err(|e| hydro(e.into()))?;
+        stage.floating[position].set_potential(potential);
+        Ok(self)
+    }
+
+    /// The system in the air of `spec`, loading each `(body, spec)` of `loads` (PHYSICS.md §10):
+    /// heights from the still water level (0 without water: give the system its water first),
+    /// the load points' exposure from the bodies' poses at t = 0.
+    ///
+    /// # Errors
+    /// Air that is bad, or a body whose windage or rotor is.
+    pub fn with_air(mut self, spec: AirSpec, loads: Vec<(usize, WindLoadSpec)>) -> Result<Self, SystemError> {
+        let count = self.bodies.len();
+        if let Some(&(body, _)) = loads.iter().find(|(body, _)| *body >= count) {
+            return Err(SystemError::FloatingBody { body, count });
+        }
+        let frames: Vec<_> = self.initial_states.iter().map(BodyState::frame).collect();
+        let level = self.water_level().unwrap_or(0.0);
+        let stage = AirStage::new(spec, loads, &self.bodies, &frames, level).map_err(|error| match error {
+            AirStageError::Air(air) => SystemError::Air(air),
+            AirStageError::Body { index, source } => {
+                SystemError::Wind { body: self.bodies[index].name.clone(), source }
+            }
+        })?;
+        self.air = Some(stage);
         Ok(self)
     }
 
     /// The water stage, if the system has water.
     pub fn water(&self) -> Option<&WaterStage> {
         self.water.as_ref()
+    }
+
+    /// The air stage, if the system has air.
+    pub fn air(&self) -> Option<&AirStage> {
+        self.air.as_ref()
     }
 
     /// The system as a static solve sees it ([`crate::statics`]): nothing moves, so the water has
@@ -229,7 +265,7 @@ impl System {
     pub fn at_rest(&self) -> std::borrow::Cow<'_, System> {
         let dynamic =
             |c: &Coupling| matches!(&c.kind, CouplingKind::Catenary(line) if line.model() != LineModel::QuasiStatic);
-        if self.water.is_none() && !self.couplings.iter().any(dynamic) {
+        if self.water.is_none() && self.air.is_none() && !self.couplings.iter().any(dynamic) {
             return std::borrow::Cow::Borrowed(self);
         }
         let couplings = self
@@ -244,7 +280,8 @@ impl System {
             })
             .collect();
         let water = self.water.as_ref().map(|stage| self.still(stage));
-        std::borrow::Cow::Owned(Self { water, couplings, ..self.clone() })
+        let air = self.air.as_ref().map(AirStage::at_rest);
+        std::borrow::Cow::Owned(Self { water, air, couplings, ..self.clone() })
     }
 
     /// `stage` as [`System::at_rest`] has it: no waves, no added mass, no ramp.
@@ -414,8 +451,8 @@ impl System {
         }
         self.apply_lines(evaluation, time)?;
         let couplings = self.apply_couplings(evaluation)?;
-        let water = self.apply_water(evaluation, time);
-        Ok(Powers { couplings, external: self.external_power(evaluation), water })
+        let environment = self.apply_environment(evaluation, time);
+        Ok(Powers { couplings, external: self.external_power(evaluation), environment })
     }
 
     /// Stages *clear* and *gravity* for one body: `F = m g`, `M = 0` (nothing for a kinematic
@@ -499,8 +536,25 @@ impl System {
         Ok(power)
     }
 
-    /// Stage *water* at time `time` \[s] (after the couplings: the added mass reacts to every
-    /// other force): each floating body's water forces, kept per body and added to the loads;
+    /// Stages *air* and *water* at time `time` \[s], in that order; returns their power \[W].
+    #[inline]
+    pub fn apply_environment(&self, evaluation: &mut Evaluation, time: f64) -> f64 {
+        self.apply_air(evaluation, time) + self.apply_water(evaluation, time)
+    }
+
+    /// Stage *air* at time `time` \[s]: each wind-loaded body's windage and rotor thrust, kept
+    /// per body and added to the loads; returns their power \[W], external work. Nothing without
+    /// air.
+    #[inline]
+    pub fn apply_air(&self, evaluation: &mut Evaluation, time: f64) -> f64 {
+        let Some(stage) = &self.air else { return 0.0 };
+        let Evaluation { frames, loads, air, .. } = evaluation;
+        air.resize(stage.bodies().len(), AirForces::default());
+        stage.apply(AirStageInputs { bodies: &self.bodies, frames, loads, records: air }, time)
+    }
+
+    /// Stage *water* at time `time` \[s] (after the couplings and the air: the added mass reacts
+    /// to every other force): each floating body's water forces, kept per body and added to the loads;
     /// returns their power `Σ F·v + M·ω` \[W], external work. Nothing without water.
     #[inline]
     pub fn apply_water(&self, evaluation: &mut Evaluation, time: f64) -> f64 {
@@ -515,18 +569,21 @@ impl System {
         stage.apply(self.level, on, time)
     }
 
-    /// `Σ F·v + M·ω` \[W] of the water's forces still in `evaluation` (those of the previous
-    /// evaluation) at the kinematics now in its frames: the left end of the staggered schemes'
-    /// water work (see [`crate::integrator::leapfrog`]).
-    pub fn water_power(&self, evaluation: &Evaluation) -> f64 {
-        if self.water.is_none() {
-            return 0.0;
-        }
-        evaluation
-            .water
-            .iter()
-            .map(|record| crate::water::stage::power(&record.total(), &evaluation.frames[record.body]))
-            .sum()
+    /// `Σ F·v + M·ω` \[W] of the water's and the air's forces still in `evaluation` (those of
+    /// the previous evaluation) at the kinematics now in its frames: the left end of the
+    /// staggered schemes' environment work (see [`crate::integrator::leapfrog`]).
+    pub fn environment_power(&self, evaluation: &Evaluation) -> f64 {
+        let power = crate::water::stage::power;
+        let frames = &evaluation.frames;
+        let water: f64 = match self.water {
+            None => 0.0,
+            Some(_) => evaluation.water.iter().map(|record| power(&record.total(), &frames[record.body])).sum(),
+        };
+        let air: f64 = match self.air {
+            None => 0.0,
+            Some(_) => evaluation.air.iter().map(|record| power(&record.total(), &frames[record.body])).sum(),
+        };
+        water + air
     }
 
     /// Stage *powers*: what the prescribed motions put in, `−Σ (F_k·v_k + M_k·ω_k)` \[W] (of

@@ -196,7 +196,7 @@ fn linear_hydrostatics_keep_the_energy_balance() {
 fn held_infinite(potential: &str) -> Matrix6 {
     let world = cylinder("", 0.0, potential, 0.01);
     let floating = &world.system().water().expect("water").floating[0];
-    *floating.potential().as_ref().expect("potential flow").model.infinite_added_mass()
+    *floating.potential().as_ref().expect("potential flow").model().infinite_added_mass()
 }
 
 /// Surge \[m], heave \[m] and pitch \[rad] of the body from its start.
@@ -570,7 +570,7 @@ fn the_cylinders_infinite_added_mass_is_made_consistent_with_its_band() {
     println!("relative shift per dof: {:?}", consistency.relative_shift(file));
 
     let world = cylinder("", 0.0, "", 0.02);
-    let model = &world.system().water().expect("water").floating[0].potential().as_ref().expect("potential").model;
+    let model = &world.system().water().expect("water").floating[0].potential().as_ref().expect("potential").model();
     assert_eq!(model.infinite_added_mass(), &consistency.infinite, "the scene's body holds A∞_eff");
     assert!(!model.infinite_is_the_files());
 
@@ -584,6 +584,7 @@ fn the_cylinders_infinite_added_mass_is_made_consistent_with_its_band() {
         added_mass_zero: *c.added_mass_zero(),
         excitation: c.excitation().clone(),
         hydrostatic_stiffness: None,
+        mean_drift: None,
     })
     .expect("the cut file");
     let cut_kernel = SampledKernel::from_damping(&cut, 0.05, 60.0);

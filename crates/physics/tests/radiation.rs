@@ -69,6 +69,7 @@ fn body(omega_c: f64) -> Coefficients {
         added_mass_zero: added,
         excitation: Excitation { frequencies: vec![1.0], headings: vec![0.0], values: vec![ComplexVector6::zeros()] },
         hydrostatic_stiffness: None,
+        mean_drift: None,
     })
     .expect("the test body's data are valid")
 }

@@ -143,12 +143,15 @@ pub fn plot_tabs(world: &World, columns: &[&str]) -> Vec<Tab> {
         tabs.push(Tab::new(if lines { "lines" } else { "tensions" }, plots));
     }
     tabs.extend(floating.into_iter().map(|body| Tab::new(body.name, body.plots)));
+    if let Some(air) = air_plots(world) {
+        tabs.push(Tab::new("wind", air));
+    }
     tabs.push(Tab::new("energy", energy_plots()));
     tabs
 }
 
-/// A floating body's name and plots: elevation and heave, roll and pitch, and a potential-flow
-/// body's radiation force and wave excitation.
+/// A floating body's name and plots: elevation and heave, roll and pitch, a potential-flow
+/// body's radiation force and wave excitation, and its wave drift when it has a drift model.
 struct FloatingPlots {
     name: String,
     plots: Vec<Plot>,
@@ -169,9 +172,32 @@ fn floating_bodies(world: &World) -> Vec<FloatingPlots> {
                 plots.push(Plot::new(format!("{name}: {what} at G [N, N·m]"), paths::water_plot(&name, plot)));
             }
         }
+        if has_drift(floating) {
+            let title = format!("{name}: wave drift at G [N, N·m]");
+            plots.push(Plot::new(title, paths::water_plot(&name, paths::DRIFT_PLOT)));
+        }
         FloatingPlots { name, plots }
     };
     stage.floating.iter().map(plots).collect()
+}
+
+/// The wind's force on each body it loads (PHYSICS.md §10), `None` without air.
+fn air_plots(world: &World) -> Option<Vec<Plot>> {
+    let stage = world.system().air()?;
+    let plots: Vec<_> = stage
+        .bodies()
+        .iter()
+        .map(|b| {
+            let name = &world.bodies()[b.body()].name;
+            Plot::new(format!("{name}: wind on windage and rotor [N, N·m]"), paths::air_plot(name))
+        })
+        .collect();
+    (!plots.is_empty()).then_some(plots)
+}
+
+/// Whether `floating` feels a wave drift (PHYSICS.md §10): potential flow on, a drift model.
+pub(crate) fn has_drift(floating: &tether_physics::water::FloatingBody) -> bool {
+    floating.potential().is_some_and(|p| p.model().drift_model() != tether_physics::potential::DriftModel::Off)
 }
 
 /// The energy account (PHYSICS.md §5) in two plots: the stored energies with their total and

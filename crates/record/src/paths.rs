@@ -57,6 +57,16 @@ pub const WATER_PLOTS: &str = "plots/water";
 pub const RADIATION_PLOT: &str = "radiation";
 /// A potential-flow body's plot of its wave excitation ([`water_plot`]).
 pub const EXCITATION_PLOT: &str = "excitation";
+/// A potential-flow body's plot of its second-order wave drift (PHYSICS.md §10, [`water_plot`]).
+pub const DRIFT_PLOT: &str = "drift";
+
+/// The wind-loaded bodies' plots (PHYSICS.md §10).
+pub const AIR_PLOTS: &str = "plots/air";
+
+/// `plots/air/<body>`: the wind's force on body `body`.
+pub fn air_plot(body: &str) -> String {
+    format!("{AIR_PLOTS}/{body}")
+}
 
 /// The seabed plane of a scene without water.
 pub const SEABED_PLANE: &str = "world/seabed/plane";

@@ -24,6 +24,7 @@ use tether_physics::seabed::{Seabed, SeabedError};
 use tether_physics::system::{System, SystemError};
 use tether_physics::world::{StepError, World};
 
+mod air;
 mod water;
 pub use water::{hydro_spec, water_spec};
 
@@ -120,7 +121,8 @@ pub fn build(file: &SceneFile, directory: &Path) -> Result<Built, Problem> {
     warn_about_lines(file, &mut warnings);
     let system = System::new(vec3(file.gravity), bodies.bodies.clone(), couplings, states)
         .map_err(|e| system_problem(file, e))?;
-    let mut system = water::add_water(system, file, &bodies.bodies, directory, &mut warnings)?;
+    let system = water::add_water(system, file, &bodies.bodies, directory, &mut warnings)?;
+    let mut system = air::add_air(system, file, &mut warnings)?;
     if let Some(seabed) = seabed {
         system = system.with_seabed(seabed).map_err(|e| system_problem(file, e))?;
     }
@@ -260,6 +262,10 @@ fn system_problem(file: &SceneFile, error: SystemError) -> Problem {
         | SystemError::Hydro { .. }
         | SystemError::NoWater
         | SystemError::Switch { .. } => Problem { place: Place::Top("water"), message: error.to_string() },
+        // The air's, which `air::add_air` places.
+        SystemError::Air(_) | SystemError::Wind { .. } => {
+            Problem { place: Place::Top("air"), message: error.to_string() }
+        }
     }
 }
 
@@ -572,7 +578,20 @@ fn build_coupling(def: &CouplingDef, built: &mut Bodies, at: &ItemAt) -> Result<
             let law = build_law(law).map_err(|e| at.refused(&e))?;
             CouplingKind::SpringDamper(SpringDamper::new(end1, end2, law, *damping).map_err(|e| at.refused(&e))?)
         }
-        CouplingDef::Catenary { end1, end2, mass_per_length, length, stiffness, displaced_area, model, .. } => {
+        CouplingDef::Catenary {
+            end1,
+            end2,
+            mass_per_length,
+            length,
+            stiffness,
+            displaced_area,
+            model,
+            breaking_load,
+            ..
+        } => {
+            if let Some(load) = breaking_load {
+                require("breaking_load", *load, Bound::Positive, "N").map_err(|e| at.refused(&e))?;
+            }
             let (end1, end2) = build_ends(end1, end2, bodies, at)?;
             let model = model.build().map_err(|e| at.refused(&e))?;
             let line = Catenary::new(end1, end2, *mass_per_length, *length, *stiffness)

@@ -4,6 +4,7 @@
 //! axes parallel to the world axes at t = 0. Vectors are RON tuples `(x, y, z)`. Every number
 //! must be finite; unknown fields are rejected.
 
+use super::air::{AirDef, RotorDef, WindageDef};
 pub use super::finite::Triple;
 use super::finite::{finite, finite_option, finite_pairs, finite_velocity_table, finite3};
 use super::line_model::LineModelDef;
@@ -40,6 +41,9 @@ pub struct SceneFile {
     /// Water (PHYSICS.md §6, see [`crate::water`]); absent: none, and no body feels any.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub water: Option<WaterDef>,
+    /// Air: the wind (PHYSICS.md §10, see [`crate::air`]); absent: none, and no body feels any.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub air: Option<AirDef>,
     /// The bottom lines lie on and bodies touch (PHYSICS.md §7), at the water's depth when
     /// the scene has water; none when absent.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -138,6 +142,13 @@ pub struct BodyDef {
     /// its shape must then be a closed, outward hull.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub hydro: Option<HydroDef>,
+    /// The wind's drag on the body (PHYSICS.md §10): only a body that declares it (or a rotor)
+    /// feels the scene's air.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub windage: Option<WindageDef>,
+    /// A wind turbine's rotor on the body: its quasi-steady thrust (PHYSICS.md §10).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rotor: Option<RotorDef>,
 }
 
 /// A node: position at t = 0 \[m], mass \[kg], and inertia about itself [kg·m²].
@@ -326,6 +337,10 @@ pub enum CouplingDef {
         displaced_area: f64,
         #[serde(default, skip_serializing_if = "LineModelDef::is_quasi_static")]
         model: LineModelDef,
+        /// The line's minimum breaking load \[N] > 0, for the design check of `tether storm`
+        /// (docs/design-loads.md); the physics does not use it.
+        #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "finite_option")]
+        breaking_load: Option<f64>,
     },
     /// Penalty contact with tanh friction (PHYSICS.md §4) between the faces of body `body`'s
     /// shape and `against`. Per unit face area: `stiffness` k1 [N/m³] > 0, `damping` k2

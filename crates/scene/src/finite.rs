@@ -45,3 +45,14 @@ pub fn finite_velocity_table<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<(f64
     }
     Ok(v)
 }
+
+/// An optional triple of finite numbers.
+pub fn finite3_option<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Triple>, D::Error> {
+    let value = Option::<Triple>::deserialize(d)?;
+    if let Some(v) = value
+        && let Some(x) = v.iter().find(|x| !x.is_finite())
+    {
+        return Err(serde::de::Error::custom(format!("number must be finite, got {x}")));
+    }
+    Ok(value)
+}

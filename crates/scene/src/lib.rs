@@ -3,6 +3,7 @@
 //! Every failure is a [`SceneError`] that prints as one line `path:line:col: message`, naming
 //! the body or coupling at fault. Loading never panics.
 
+pub mod air;
 pub mod build;
 pub mod file;
 mod finite;

@@ -8,7 +8,7 @@
 use serde::{Deserialize, Serialize};
 use tether_physics::coupling::{InternalDamping, LumpedMassSpec};
 use tether_physics::integrator::{Integrator, Substeps};
-use tether_physics::potential::{HydrostaticsModel, RadiationMethod};
+use tether_physics::potential::{DriftModel, HydrostaticsModel, RadiationMethod};
 use tether_physics::water::CurrentProfile;
 
 /// [`Integrator`], in lower case as the command line spells it ([`Integrator::name`]).
@@ -52,6 +52,15 @@ pub enum RadiationMethodForm {
 pub enum HydrostaticsModelForm {
     Mesh,
     Linear,
+}
+
+/// [`DriftModel`]: `Off`, `Mean` or `Newman` (PHYSICS.md §10).
+#[derive(Serialize, Deserialize)]
+#[serde(remote = "DriftModel")]
+pub enum DriftModelForm {
+    Off,
+    Mean,
+    Newman,
 }
 
 /// [`InternalDamping`]: `Coefficient(BA)` \[N·s] or `Ratio(ζ)` [–].

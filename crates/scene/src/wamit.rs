@@ -1,6 +1,8 @@
 //! WAMIT's output files read into a body's potential-flow data (PHYSICS.md §9, "WAMIT files"):
-//! `STEM.1` (added mass and damping), `STEM.3` (excitation) and, when it exists, `STEM.hst`
-//! (linear hydrostatic stiffness), dimensional with the scene's water density ρ, gravity g and
+//! `STEM.1` (added mass and damping), `STEM.3` (excitation) and, when they exist, `STEM.hst`
+//! (linear hydrostatic stiffness) and the mean drift coefficients of `STEM.8` (momentum
+//! conservation, far field), or of `STEM.9` (pressure integration) when there is no `.8`
+//! (PHYSICS.md §10), dimensional with the scene's water density ρ, gravity g and
 //! the file's length scale L, in WAMIT's time convention (Capytaine 3.0's export writes it).
 //!
 //! Every problem is one line naming the file, and the line and column where there is one; the
@@ -12,16 +14,21 @@
 //! | `.1` | `PER I J Ā [B̄]` (PER = −1: ω = 0, PER = 0: ω = ∞, no `B̄`) | `A = Ā ρ L^k`, `B = B̄ ρ ω L^k` |
 //! | `.3` | `PER β I \|X̄\| phase Re Im` (β, phase in degrees) | `X = (Re + i Im) ρ g L^m` |
 //! | `.hst` | `I J C̄` | `C = C̄ ρ g L^k` |
+//! | `.8`, `.9` | `PER β₁ β₂ I \|F̄\| phase Re Im` (or `PER β I …`, 7 columns) | `D = Re ρ g L^d` |
 //!
 //! `k = 3, 4, 5` for translation–translation, mixed and rotation–rotation pairs (`.hst`: 2, 3,
-//! 4); `m = 2` for a force, 3 for a moment. Pairs a file leaves out are 0.
+//! 4); `m = 2` for a force, 3 for a moment; `d = 1` for a force, 2 for a moment (the drift is per
+//! unit wave amplitude squared). Pairs a file leaves out are 0. Of the drift, the rows of a
+//! unidirectional sea (`β₁ = β₂`) are read; the bidirectional pairs of a spread sea are not used.
 
 use nalgebra::Complex;
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 use tether_physics::potential::coefficients::CoefficientsError;
-use tether_physics::potential::{Coefficients, CoefficientsData, ComplexVector6, Excitation, Matrix6};
+use tether_physics::potential::{
+    Coefficients, CoefficientsData, ComplexVector6, DriftSource, Excitation, Matrix6, MeanDrift, Vector6,
+};
 
 /// The scale the files' non-dimensional numbers are multiplied by.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -55,8 +62,8 @@ fn place(line: Option<usize>, col: Option<usize>) -> String {
     }
 }
 
-/// Reads `STEM.1`, `STEM.3` and, if present, `STEM.hst` (`stem` is the path without the
-/// extension).
+/// Reads `STEM.1`, `STEM.3` and, if present, `STEM.hst` and `STEM.8` (else `STEM.9`) (`stem`
+/// is the path without the extension).
 ///
 /// # Errors
 /// The first problem met, as one line with the file, and its line and column where it has them.
@@ -67,6 +74,7 @@ pub fn read(stem: &Path, scale: Scale) -> Result<Coefficients, WamitError> {
     let hst_path = with_extension(stem, "hst");
     let hydrostatic_stiffness =
         if hst_path.exists() { Some(parse_hydrostatics(&Text::read(&hst_path)?, scale)?) } else { None };
+    let mean_drift = read_mean_drift(stem, scale)?;
     let infinite_line = radiation.infinite_line;
     Coefficients::new(CoefficientsData {
         frequencies: radiation.frequencies,
@@ -76,11 +84,28 @@ pub fn read(stem: &Path, scale: Scale) -> Result<Coefficients, WamitError> {
         added_mass_zero: radiation.zero,
         excitation,
         hydrostatic_stiffness,
+        mean_drift,
     })
     .map_err(|e| {
         let line = matches!(e, CoefficientsError::SwappedLimits { .. }).then_some(infinite_line);
         WamitError { path: radiation_path.display().to_string(), line, col: None, message: e.to_string() }
     })
+}
+
+/// The drift file read: `STEM.8` when it exists, else `STEM.9`.
+fn drift_path(stem: &Path) -> PathBuf {
+    let momentum = with_extension(stem, "8");
+    if momentum.exists() { momentum } else { with_extension(stem, "9") }
+}
+
+/// `STEM.8`, or `STEM.9` without it, as mean drift coefficients; `None` with neither.
+fn read_mean_drift(stem: &Path, scale: Scale) -> Result<Option<MeanDrift>, WamitError> {
+    let path = drift_path(stem);
+    if !path.exists() {
+        return Ok(None);
+    }
+    let source = if path.extension().is_some_and(|e| e == "8") { DriftSource::Momentum } else { DriftSource::Pressure };
+    parse_mean_drift(&Text::read(&path)?, scale, source).map(Some)
 }
 
 /// `stem` with `.extension` appended (a stem may itself hold dots: `hydro/buoy.v2`).
@@ -344,6 +369,58 @@ fn parse_excitation(file: &Text, scale: Scale) -> Result<Excitation, WamitError>
         }
     }
     Ok(Excitation { frequencies, headings: headings.into_values().collect(), values: grid })
+}
+
+fn parse_mean_drift(file: &Text, scale: Scale, source: DriftSource) -> Result<MeanDrift, WamitError> {
+    let mut values: BTreeMap<(u64, i64), Vector6> = BTreeMap::new();
+    let (mut periods, mut headings) = (BTreeMap::new(), BTreeMap::new());
+    for row in file.rows(&[7, 8], "PER β₁ β₂ I |F| phase Re Im (8 columns, or 7 with one heading)")? {
+        let period = match file.period(&row)? {
+            Period::Finite(p) => p,
+            Period::Zero | Period::Infinite => {
+                return Err(file.error(
+                    row.line,
+                    Some(row.fields[0].col),
+                    "the mean drift is defined at finite periods only (PER > 0)".into(),
+                ));
+            }
+        };
+        let bidirectional = row.fields.len() == 8;
+        let heading = file.number(&row, 1, "the heading β₁")?;
+        if bidirectional && file.number(&row, 2, "the heading β₂")? != heading {
+            continue;
+        }
+        let first_value = if bidirectional { 4 } else { 3 };
+        let i = file.dof(&row, first_value - 1)?;
+        let unit = scale.density * scale.gravity * scale.length.powi(if i < 3 { 1 } else { 2 });
+        let d = file.number(&row, first_value + 2, "Re F̄")? * unit;
+        let heading_key = (heading * 1000.0).round() as i64;
+        periods.insert(period.to_bits(), 2.0 * PI / period);
+        headings.insert(heading_key, heading.to_radians());
+        values.entry((period.to_bits(), heading_key)).or_insert_with(Vector6::zeros)[i] = d;
+    }
+    if values.is_empty() {
+        return Err(WamitError {
+            path: file.path.clone(),
+            line: None,
+            col: None,
+            message: "no row with β₁ = β₂: Tether reads the drift of a unidirectional sea".into(),
+        });
+    }
+    let frequencies: Vec<f64> = periods.values().rev().copied().collect();
+    let period_keys: Vec<u64> = periods.keys().rev().copied().collect();
+    let mut grid = Vec::with_capacity(frequencies.len() * headings.len());
+    for heading in headings.keys() {
+        for period in &period_keys {
+            grid.push(values.get(&(*period, *heading)).copied().unwrap_or_else(Vector6::zeros));
+        }
+    }
+    MeanDrift::new(frequencies, headings.into_values().collect(), grid, source).map_err(|e| WamitError {
+        path: file.path.clone(),
+        line: None,
+        col: None,
+        message: e.to_string(),
+    })
 }
 
 fn parse_hydrostatics(file: &Text, scale: Scale) -> Result<Matrix6, WamitError> {

@@ -14,11 +14,11 @@
 //! ),
 //! ```
 
-use super::finite::{Triple, finite, finite_option, finite3};
-use super::spelling::{CurrentProfileForm, HydrostaticsModelForm, RadiationMethodForm};
+use super::finite::{Triple, finite, finite_option, finite3, finite3_option};
+use super::spelling::{CurrentProfileForm, DriftModelForm, HydrostaticsModelForm, RadiationMethodForm};
 use serde::{Deserialize, Serialize};
 use tether_physics::math::Vec3;
-use tether_physics::potential::{HydrostaticsModel, RadiationMethod};
+use tether_physics::potential::{DriftModel, HydrostaticsModel, RadiationMethod};
 use tether_physics::water::morison::HydroSpec;
 use tether_physics::water::{CurrentProfile, CurrentSpec, WaterError, WaterField, WaterSpec, WaveSpec};
 
@@ -158,6 +158,7 @@ pub struct HydroDef {
 ///     kernel_duration: 60.0,   // the kernel's truncation t_K [s] (default 60)
 ///     kernel_step: 0.05,       // its sampling step [s] (default 0.05)
 ///     hydrostatics: Mesh,      // or Linear: Q₀ − C ξ from hydro/buoy.hst, about the pose at t = 0 (default Mesh)
+///     drift: Off,              // or Mean, or Newman: the second-order drift from hydro/buoy.8 (else .9) (default Off; §10)
 /// ),
 /// ```
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -180,6 +181,12 @@ pub struct WamitDef {
     pub kernel_step: f64,
     #[serde(default, with = "HydrostaticsModelForm")]
     pub hydrostatics: HydrostaticsModel,
+    #[serde(default, with = "DriftModelForm", skip_serializing_if = "is_off")]
+    pub drift: DriftModel,
+}
+
+fn is_off(drift: &DriftModel) -> bool {
+    *drift == DriftModel::Off
 }
 
 fn default_length() -> f64 {
@@ -200,16 +207,6 @@ fn default_kernel_duration() -> f64 {
 
 fn default_kernel_step() -> f64 {
     0.05
-}
-
-fn finite3_option<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<Triple>, D::Error> {
-    let value = Option::<Triple>::deserialize(d)?;
-    if let Some(v) = value
-        && let Some(x) = v.iter().find(|x| !x.is_finite())
-    {
-        return Err(serde::de::Error::custom(format!("number must be finite, got {x}")));
-    }
-    Ok(value)
 }
 
 fn vec3(t: Triple) -> Vec3 {

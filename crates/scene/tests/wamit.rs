@@ -273,6 +273,7 @@ fn transposed(c: &Coefficients) -> Coefficients {
         added_mass_zero: c.added_mass_zero().transpose(),
         excitation: c.excitation().clone(),
         hydrostatic_stiffness: c.hydrostatic_stiffness().copied(),
+        mean_drift: c.mean_drift().cloned(),
     })
     .expect("the shipped cylinder transposed")
 }
@@ -339,6 +340,7 @@ fn the_cylinders_added_mass_and_damping_are_consistent() {
         added_mass_zero: *c.added_mass_zero(),
         excitation: c.excitation().clone(),
         hydrostatic_stiffness: None,
+        mean_drift: None,
     })
     .expect("valid");
     let doubled_kernel = SampledKernel::from_damping(&doubled, 0.05, 60.0);

@@ -108,14 +108,14 @@ pub fn status(world: &World, run: &RunState) -> Status {
         .iter()
         .filter_map(|l| match l.limiter {
             Limiter::Rotation(body) => Some((world.bodies()[body].name.clone(), l.dt)),
-            Limiter::Coupling(_) | Limiter::Impact(_) | Limiter::Water(_) => None,
+            Limiter::Coupling(_) | Limiter::Impact(_) | Limiter::Water(_) | Limiter::Air(_) => None,
         })
         .min_by(|a, b| a.1.total_cmp(&b.1));
     let water_limits = limits
         .iter()
         .filter_map(|l| match l.limiter {
             Limiter::Water(body) => Some((world.bodies()[body].name.clone(), l.dt)),
-            Limiter::Coupling(_) | Limiter::Impact(_) | Limiter::Rotation(_) => None,
+            Limiter::Coupling(_) | Limiter::Impact(_) | Limiter::Rotation(_) | Limiter::Air(_) => None,
         })
         .collect();
     let wall = run.wall.max(1e-6);

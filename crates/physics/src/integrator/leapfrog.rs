@@ -137,15 +137,15 @@ impl Leapfrog {
         }
         system.apply_lines(evaluation, time)?;
         let couplings = system.apply_couplings(evaluation)?;
-        // The water's work: the trapezoid of the forces at both ends against the half-step
+        // The water's and the air's work: the trapezoid of the forces at both ends against the half-step
         // velocities they straddle (second order; against each end's own lagged velocity it
         // would drift at first order, ½h ∫ F·a dt).
-        let water_before = system.water_power(evaluation);
-        let water = system.apply_water(evaluation, time);
+        let environment_before = system.environment_power(evaluation);
+        let environment = system.apply_environment(evaluation, time);
         let energy = self.accelerate(system, states, evaluation, self.gyroscopic, 0.5 * h);
-        let powers = Powers { couplings, external: system.external_power(evaluation), water };
+        let powers = Powers { couplings, external: system.external_power(evaluation), environment };
         let mut work = Work::trapezoid(h, &self.powers, &powers);
-        work.external += 0.5 * h * (water_before + water);
+        work.external += 0.5 * h * (environment_before + environment);
         self.powers = powers;
         Ok(StepReport::accepted(h, work, energy))
     }

@@ -26,6 +26,7 @@
 //! [`PotentialBody::infinite_is_the_files`] says so, for the adapters to warn.
 
 use super::coefficients::{Coefficients, Matrix6, Vector6};
+use super::drift::DriftModel;
 use super::hydrostatics::HydrostaticsModel;
 use super::kernel::{BandConsistency, SampledKernel, consistent_with_band};
 use super::radiation::{Radiation, RadiationMethod};
@@ -50,6 +51,8 @@ pub struct PotentialSpec {
     pub kernel_step: f64,
     /// The mesh's hydrostatics or linear ones from the coefficients' `.hst` stiffness.
     pub hydrostatics: HydrostaticsModel,
+    /// How the coefficients' mean drift loads the body (PHYSICS.md §10).
+    pub drift: DriftModel,
 }
 
 /// A body's potential-flow data that cannot be used.
@@ -69,6 +72,11 @@ pub enum PotentialError {
         "hydrostatics: Linear needs the panel code's hydrostatic stiffness, and no .hst file was read beside the .1 and .3 files"
     )]
     NoHydrostaticStiffness,
+    #[error(
+        "drift: {} needs the panel code's mean drift coefficients, and no .8 or .9 file was read beside the .1 and .3 files (validation/potential-flow/drift.py writes one)",
+        model.name()
+    )]
+    NoDriftData { model: DriftModel },
 }
 
 /// The largest turn \[deg] of a body's reference frame from the world's axes at t = 0 that its
@@ -102,6 +110,8 @@ pub struct PotentialBody {
     /// The `A∞` the time domain's mass holds \[kg, kg·m, kg·m²] about P: `A∞_eff`, or the file's
     /// when `M + A∞_eff` is not positive definite.
     infinite: Matrix6,
+    /// How the mean drift loads the body (PHYSICS.md §10).
+    drift: DriftModel,
 }
 
 impl PotentialBody {
@@ -109,8 +119,12 @@ impl PotentialBody {
     /// `A∞_eff` from the kernel and the file's `A(ω)` (module docs).
     ///
     /// # Errors
-    /// A kernel step or duration out of range, or a kernel no order up to the limit fits.
+    /// A kernel step or duration out of range, a kernel no order up to the limit fits, or a
+    /// drift model without the file's drift coefficients.
     pub fn new(spec: PotentialSpec, body: &RigidBody) -> Result<Self, PotentialError> {
+        if spec.drift != DriftModel::Off && spec.coefficients.mean_drift().is_none() {
+            return Err(PotentialError::NoDriftData { model: spec.drift });
+        }
         let step = require("kernel_step", spec.kernel_step, Bound::Positive, "s")?;
         let duration = require("kernel_duration", spec.kernel_duration, Bound::Positive, "s")?;
         if step >= duration {
@@ -132,7 +146,12 @@ impl PotentialBody {
         } else {
             *spec.coefficients.added_mass_infinite()
         };
-        Ok(Self { coefficients: spec.coefficients, reference, radiation, consistency, infinite })
+        Ok(Self { coefficients: spec.coefficients, reference, radiation, consistency, infinite, drift: spec.drift })
+    }
+
+    /// How the mean drift loads the body (PHYSICS.md §10).
+    pub fn drift_model(&self) -> DriftModel {
+        self.drift
     }
 
     /// The `A∞` the time domain's mass holds, about P \[kg, kg·m, kg·m²]: `A∞_eff` (module docs),
@@ -291,6 +310,7 @@ mod tests {
                 values: vec![ComplexVector6::zeros()],
             },
             hydrostatic_stiffness: None,
+            mean_drift: None,
         })
         .expect("valid data")
     }
@@ -326,6 +346,7 @@ mod tests {
                     values: vec![ComplexVector6::zeros()],
                 },
                 hydrostatic_stiffness: None,
+                mean_drift: None,
             })
             .expect("valid data");
             let spec = PotentialSpec {
@@ -336,6 +357,7 @@ mod tests {
                 kernel_duration: 20.0,
                 kernel_step: 0.05,
                 hydrostatics: HydrostaticsModel::Mesh,
+                drift: DriftModel::Off,
             };
             PotentialBody::new(spec, &body).expect("valid")
         };
@@ -375,6 +397,7 @@ mod tests {
             kernel_duration: 1.0,
             kernel_step: 0.1,
             hydrostatics: HydrostaticsModel::Mesh,
+            drift: DriftModel::Off,
         };
         let potential = PotentialBody::new(spec, &body).expect("valid");
         let rotation = nalgebra::Rotation3::from_euler_angles(0.05, -0.03, 0.2).into_inner();

@@ -7,6 +7,9 @@
 //! kg/s, kg·m/s, kg·m²/s; `X` in N/m and N·m/m; `ω` in rad/s; `β` in rad. Degrees of freedom in
 //! the order surge, sway, heave, roll, pitch, yaw.
 
+use super::drift::MeanDrift;
+pub use super::tables::CoefficientsError;
+use super::tables::{check_count, check_finite, check_frequencies, check_headings};
 use nalgebra::Complex;
 
 /// 6 × 6 matrix over the body's degrees of freedom (added mass, damping, stiffness).
@@ -15,28 +18,6 @@ pub type Matrix6 = nalgebra::Matrix6<f64>;
 pub type Vector6 = nalgebra::Vector6<f64>;
 /// A complex 6-vector: an excitation per unit wave amplitude, or a response amplitude.
 pub type ComplexVector6 = nalgebra::Vector6<Complex<f64>>;
-
-/// Why a body's frequency-domain data were refused: each names the quantity as PHYSICS.md §9 does.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum CoefficientsError {
-    #[error("{what}: no finite frequency given")]
-    NoFrequencies { what: &'static str },
-    #[error("{what}: frequencies must increase strictly and be > 0 rad/s ({previous} then {value} at index {index})")]
-    FrequencyOrder { what: &'static str, index: usize, previous: f64, value: f64 },
-    #[error("excitation headings must increase strictly ({previous} then {value} rad at index {index})")]
-    HeadingOrder { index: usize, previous: f64, value: f64 },
-    #[error("{what}: {count} values given for {expected} (one per frequency{per_heading})")]
-    Count { what: &'static str, count: usize, expected: usize, per_heading: &'static str },
-    #[error("{what} at index {index} is not finite")]
-    NotFinite { what: &'static str, index: usize },
-    #[error(
-        "the ω = ∞ added mass is not the limit of the finite-ω added mass (A{dof}{dof}: {at_infinity:.6e} at \
-         ω = ∞, {at_zero:.6e} at ω = 0, {highest:.6e} at the highest ω, {omega} rad/s): the ω = 0 and ω = ∞ \
-         blocks look swapped, as Capytaine's WAMIT export before version 3.0 wrote them (Capytaine PR #855); \
-         export again with Capytaine 3.0 or later"
-    )]
-    SwappedLimits { dof: usize, at_infinity: f64, at_zero: f64, highest: f64, omega: f64 },
-}
 
 /// The excitation `X(ω, β)` per unit wave amplitude at its frequencies and headings.
 #[derive(Debug, Clone, PartialEq)]
@@ -84,6 +65,7 @@ pub struct Coefficients {
     added_mass_zero: Matrix6,
     excitation: Excitation,
     hydrostatic_stiffness: Option<Matrix6>,
+    mean_drift: Option<MeanDrift>,
 }
 
 /// What [`Coefficients::new`] is built from: the panel code's data, already in SI units.
@@ -103,6 +85,8 @@ pub struct CoefficientsData {
     pub excitation: Excitation,
     /// The linear hydrostatic stiffness `C` [N/m, N, N·m/rad] when the panel code gave one.
     pub hydrostatic_stiffness: Option<Matrix6>,
+    /// The mean drift coefficients `D(ω, β)` when the panel code gave them (PHYSICS.md §10).
+    pub mean_drift: Option<MeanDrift>,
 }
 
 impl Coefficients {
@@ -135,6 +119,7 @@ impl Coefficients {
             added_mass_zero: data.added_mass_zero,
             excitation: data.excitation,
             hydrostatic_stiffness: data.hydrostatic_stiffness,
+            mean_drift: data.mean_drift,
         })
     }
 
@@ -170,6 +155,10 @@ impl Coefficients {
     pub fn hydrostatic_stiffness(&self) -> Option<&Matrix6> {
         self.hydrostatic_stiffness.as_ref()
     }
+    /// The mean drift coefficients `D(ω, β)`, when the panel code gave them.
+    pub fn mean_drift(&self) -> Option<&MeanDrift> {
+        self.mean_drift.as_ref()
+    }
 
     /// `A(ω)` and `B(ω)` interpolated linearly in ω: below the first frequency between `A(0)`,
     /// `B(0) = 0` (a three-dimensional body radiates nothing as ω → 0) and the first point; above
@@ -191,48 +180,10 @@ impl Coefficients {
     }
 }
 
-fn check_frequencies(what: &'static str, frequencies: &[f64]) -> Result<(), CoefficientsError> {
-    if frequencies.is_empty() {
-        return Err(CoefficientsError::NoFrequencies { what });
-    }
-    let mut previous = 0.0;
-    for (index, &value) in frequencies.iter().enumerate() {
-        if !(value.is_finite() && value > previous) {
-            return Err(CoefficientsError::FrequencyOrder { what, index, previous, value });
-        }
-        previous = value;
-    }
-    Ok(())
-}
-
-fn check_count(
-    what: &'static str,
-    count: usize,
-    expected: usize,
-    per_heading: &'static str,
-) -> Result<(), CoefficientsError> {
-    if count == expected { Ok(()) } else { Err(CoefficientsError::Count { what, count, expected, per_heading }) }
-}
-
-fn check_finite(what: &'static str, finite: impl Iterator<Item = bool>) -> Result<(), CoefficientsError> {
-    match finite.enumerate().find(|(_, ok)| !ok) {
-        Some((index, _)) => Err(CoefficientsError::NotFinite { what, index }),
-        None => Ok(()),
-    }
-}
-
 fn check_excitation(excitation: &Excitation) -> Result<(), CoefficientsError> {
     check_frequencies("excitation", &excitation.frequencies)?;
     let headings = &excitation.headings;
-    if headings.is_empty() {
-        return Err(CoefficientsError::Count { what: "excitation headings", count: 0, expected: 1, per_heading: "" });
-    }
-    for (index, pair) in headings.windows(2).enumerate() {
-        if !(pair[1] > pair[0]) {
-            return Err(CoefficientsError::HeadingOrder { index: index + 1, previous: pair[0], value: pair[1] });
-        }
-    }
-    check_finite("excitation heading", headings.iter().map(|h| h.is_finite()))?;
+    check_headings("excitation", headings)?;
     check_count("excitation", excitation.values.len(), excitation.frequencies.len() * headings.len(), " and heading")?;
     check_finite("excitation", excitation.values.iter().map(|x| x.iter().all(|c| c.re.is_finite() && c.im.is_finite())))
 }
@@ -292,6 +243,7 @@ mod tests {
                 values: vec![ComplexVector6::repeat(Complex::new(1.0, -1.0))],
             },
             hydrostatic_stiffness: None,
+            mean_drift: None,
         }
     }
 
@@ -353,6 +305,6 @@ mod tests {
         assert!(matches!(Coefficients::new(d), Err(CoefficientsError::Count { expected: 3, count: 2, .. })));
         let mut d = data();
         d.excitation.headings = vec![0.0, 0.0];
-        assert!(matches!(Coefficients::new(d), Err(CoefficientsError::HeadingOrder { .. })));
+        assert!(matches!(Coefficients::new(d), Err(CoefficientsError::HeadingOrder { what: "excitation", .. })));
     }
 }

@@ -11,26 +11,10 @@
 //! only once rotated, which is the panel code's job.
 
 use super::coefficients::{ComplexVector6, Excitation, Vector6};
+pub use super::tables::HeadingMissing;
+use super::tables::bracket_heading;
 use crate::water::waves::WaveComponent;
 use nalgebra::Complex;
-use std::f64::consts::TAU;
-
-/// Headings this close \[rad] to a file's heading are taken as it.
-const SAME_HEADING: f64 = 1e-6;
-
-/// A sea heading the body's file does not cover.
-#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
-#[error(
-    "the waves travel toward {heading:.3}° but the potential-flow file's excitation covers headings \
-     {first:.3}° to {last:.3}° only: run the panel code for this heading"
-)]
-pub struct HeadingMissing {
-    /// The sea's heading \[deg].
-    pub heading: f64,
-    /// The file's first and last headings \[deg].
-    pub first: f64,
-    pub last: f64,
-}
 
 /// The excitation of one body in one sea: `(ω, c)` per wave component.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -68,25 +52,19 @@ impl WaveExcitation {
 
 /// `X(ω, β)`: linear in ω at the bracketing headings, then linear in β between them.
 fn at_heading(excitation: &Excitation, omega: f64, heading: f64) -> Result<ComplexVector6, HeadingMissing> {
-    let headings = &excitation.headings;
-    let (first, last) = (headings[0], headings[headings.len() - 1]);
-    let inside = [heading, heading - TAU, heading + TAU]
-        .into_iter()
-        .find(|&b| b >= first - SAME_HEADING && b <= last + SAME_HEADING)
-        .ok_or(HeadingMissing { heading: heading.to_degrees(), first: first.to_degrees(), last: last.to_degrees() })?;
-    let upper = headings.partition_point(|&b| b < inside).min(headings.len() - 1);
-    if upper == 0 || (headings[upper] - inside).abs() <= SAME_HEADING {
-        return Ok(excitation.interpolate(omega, upper));
+    let bracket = bracket_heading(&excitation.headings, heading, "excitation")?;
+    let lower = excitation.interpolate(omega, bracket.lower);
+    if bracket.upper == bracket.lower {
+        return Ok(lower);
     }
-    let (b0, b1) = (headings[upper - 1], headings[upper]);
-    let s = ((inside - b0) / (b1 - b0)).clamp(0.0, 1.0);
-    let (x0, x1) = (excitation.interpolate(omega, upper - 1), excitation.interpolate(omega, upper));
-    Ok(x0 + (x1 - x0) * Complex::from(s))
+    let upper = excitation.interpolate(omega, bracket.upper);
+    Ok(lower + (upper - lower) * Complex::from(bracket.fraction))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::f64::consts::TAU;
 
     fn excitation() -> Excitation {
         let x = |v: f64| ComplexVector6::from_fn(|i, _| if i == 2 { Complex::new(v, -v) } else { Complex::ZERO });

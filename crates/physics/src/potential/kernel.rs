@@ -356,6 +356,7 @@ mod tests {
                     values: vec![ComplexVector6::zeros()],
                 },
                 hydrostatic_stiffness: None,
+                mean_drift: None,
             })
             .expect("valid data")
         };

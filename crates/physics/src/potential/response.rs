@@ -47,6 +47,7 @@ mod tests {
                 values: vec![ComplexVector6::from_fn(|i, _| if i == 2 { x } else { Complex::ZERO }); 2],
             },
             hydrostatic_stiffness: None,
+            mean_drift: None,
         })
         .expect("valid data");
         let omega = 3.0;

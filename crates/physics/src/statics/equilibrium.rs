@@ -204,8 +204,9 @@ pub fn solve(
     })
 }
 
-/// The force and length scales of a scene: the weight of the bodies that move and the largest
-/// coupling force; the size of the box around the bodies and the coupling ends (at least 1 m).
+/// The force and length scales of a scene: the weight of the bodies that move, the largest
+/// coupling force and the largest load on a body (the environment's: a wind may be the only
+/// load); the size of the box around the bodies and the coupling ends (at least 1 m).
 #[derive(Debug, Clone, Copy)]
 struct Scale {
     force: f64,
@@ -217,10 +218,11 @@ impl Scale {
         let weight: f64 =
             system.bodies().iter().filter(|b| !b.is_kinematic()).map(|b| b.mass() * system.gravity().norm()).sum();
         let largest = evaluation.forces().iter().map(|f| f.f1.norm().max(f.f2.norm())).fold(0.0, f64::max);
+        let load = evaluation.loads().iter().map(|l| l.force.norm()).fold(0.0, f64::max);
         let ends = evaluation.forces().iter().flat_map(|f| [f.point1, f.point2]);
         let (low, high) = bounding_box(states.iter().map(|s| s.position).chain(ends));
         let size = if low.x.is_finite() { (high - low).norm() } else { 0.0 };
-        Self { force: weight.max(largest).max(1e-6), length: size.max(1.0) }
+        Self { force: weight.max(largest).max(load).max(1e-6), length: size.max(1.0) }
     }
 
     /// A load's size against its scale: force, or moment over the length.

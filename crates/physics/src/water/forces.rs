@@ -19,6 +19,8 @@ pub struct WaterForces {
     pub radiation: Load,
     /// Potential flow's wave excitation `F_exc`, ramped, moved to G.
     pub excitation: Load,
+    /// Potential flow's second-order wave drift (PHYSICS.md §10), ramped, moved to G.
+    pub drift: Load,
     /// `V_sub` \[m³]: `−∫_wet (z_w − z) n_z dA`.
     pub submerged_volume: f64,
     /// `w = V_sub / V`, within [0, 1].
@@ -37,12 +39,14 @@ impl WaterForces {
                 + self.drag.force
                 + self.added_mass.force
                 + self.radiation.force
-                + self.excitation.force,
+                + self.excitation.force
+                + self.drift.force,
             moment: self.pressure.moment
                 + self.drag.moment
                 + self.added_mass.moment
                 + self.radiation.moment
-                + self.excitation.moment,
+                + self.excitation.moment
+                + self.drift.moment,
         }
     }
 }

@@ -9,11 +9,12 @@ use super::hull::Hull;
 use super::morison::{Hydro, HydroError, HydroSpec};
 use super::pressure::integrate;
 use super::waves::SeaInstant;
+use super::waves::WaveComponent;
 use crate::body::{BodyFrame, Load, RigidBody};
 use crate::math::Vec3;
 use crate::mesh::MeshError;
 use crate::potential::{
-    HeadingMissing, LinearHydrostatics, PotentialBody, PotentialError, RadiationRun, WaveExcitation,
+    HeadingMissing, LinearHydrostatics, PotentialBody, PotentialError, RadiationRun, WaveDrift, WaveExcitation,
 };
 use crate::simd::SupportedLevel;
 use std::sync::Arc;
@@ -45,14 +46,75 @@ pub enum PotentialFlow {
 }
 
 /// A floating body's potential flow (PHYSICS.md §9): its model, the mean horizontal position
-/// of its reference point \[m], its excitation in the water's sea, and its linear hydrostatics
-/// when the scene asks for them (absent: the mesh's pressure, as without potential flow).
+/// of its reference point \[m], its excitation and drift (§10) in the water's sea, and its
+/// linear hydrostatics when the scene asks for them (absent: the mesh's pressure, as without
+/// potential flow).
 #[derive(Debug, Clone, PartialEq)]
 pub struct FloatingPotential {
-    pub model: Arc<PotentialBody>,
-    pub mean_position: [f64; 2],
-    pub excitation: WaveExcitation,
-    pub linear_hydrostatics: Option<LinearHydrostatics>,
+    model: Arc<PotentialBody>,
+    mean_position: [f64; 2],
+    excitation: WaveExcitation,
+    drift: WaveDrift,
+    linear_hydrostatics: Option<LinearHydrostatics>,
+}
+
+impl FloatingPotential {
+    /// `model` about the mean horizontal position `mean_position` \[m] of its reference point,
+    /// excited by the sea of `components`.
+    ///
+    /// # Errors
+    /// A sea heading the file's excitation or drift lacks.
+    pub fn new(
+        model: Arc<PotentialBody>,
+        mean_position: [f64; 2],
+        linear_hydrostatics: Option<LinearHydrostatics>,
+        components: &[WaveComponent],
+    ) -> Result<Self, HeadingMissing> {
+        let mut potential = Self {
+            model,
+            mean_position,
+            excitation: WaveExcitation::default(),
+            drift: WaveDrift::default(),
+            linear_hydrostatics,
+        };
+        potential.excite(components)?;
+        Ok(potential)
+    }
+
+    /// The excitation and the drift built again for the sea of `components`.
+    ///
+    /// # Errors
+    /// A sea heading the file's excitation or drift lacks; the body is then unchanged.
+    fn excite(&mut self, components: &[WaveComponent]) -> Result<(), HeadingMissing> {
+        let coefficients = self.model.coefficients();
+        let excitation = WaveExcitation::new(coefficients.excitation(), components, self.mean_position)?;
+        let drift = match coefficients.mean_drift() {
+            Some(table) => WaveDrift::new(self.model.drift_model(), table, components, self.mean_position)?,
+            None => WaveDrift::default(),
+        };
+        (self.excitation, self.drift) = (excitation, drift);
+        Ok(())
+    }
+
+    /// The model.
+    pub fn model(&self) -> &Arc<PotentialBody> {
+        &self.model
+    }
+
+    /// The mean horizontal position of the reference point \[m].
+    pub fn mean_position(&self) -> [f64; 2] {
+        self.mean_position
+    }
+
+    /// The drift in the water's sea (PHYSICS.md §10).
+    pub fn drift(&self) -> &WaveDrift {
+        &self.drift
+    }
+
+    /// The linear hydrostatics, when the scene asks for them.
+    pub fn linear_hydrostatics(&self) -> Option<&LinearHydrostatics> {
+        self.linear_hydrostatics.as_ref()
+    }
 }
 
 /// A body that cannot float, and why.
@@ -212,7 +274,8 @@ impl WaterStage {
         Ok(Self { water: Water::new(spec, gravity)?, floating: self.floating.clone() })
     }
 
-    /// Each potential-flow body's excitation rebuilt for the water's sea (after it changed).
+    /// Each potential-flow body's excitation and drift rebuilt for the water's sea (after it
+    /// changed).
     ///
     /// # Errors
     /// The index of the first floating body whose file lacks the sea's heading, and why.
@@ -220,9 +283,7 @@ impl WaterStage {
         let components = self.water.sea().components();
         for floating in &mut self.floating {
             if let PotentialFlow::On(potential) = &mut floating.potential {
-                let excitation = potential.model.coefficients().excitation();
-                potential.excitation = WaveExcitation::new(excitation, components, potential.mean_position)
-                    .map_err(|error| (floating.body, error))?;
+                potential.excite(components).map_err(|error| (floating.body, error))?;
             }
         }
         Ok(())
@@ -252,8 +313,7 @@ impl WaterStage {
         }
         match (&mut floating.potential, on) {
             (PotentialFlow::SwitchedOff(potential), true) => {
-                let excitation = potential.model.coefficients().excitation();
-                potential.excitation = WaveExcitation::new(excitation, components, potential.mean_position)?;
+                potential.excite(components)?;
                 floating.potential = PotentialFlow::On(potential.clone());
             }
             (PotentialFlow::On(potential), false) => floating.potential = PotentialFlow::SwitchedOff(potential.clone()),
@@ -341,7 +401,7 @@ impl WaterStage {
         record.wetted_fraction = (record.submerged_volume / hull.volume()).min(1.0);
         record.pressure = Load { force: frame.rotation * integral.force, moment: frame.rotation * integral.moment };
         let linear = match floating.potential() {
-            Some(potential) => potential.linear_hydrostatics.as_ref(),
+            Some(potential) => potential.linear_hydrostatics(),
             None => floating.hydrostatics_at_rest.as_ref(),
         };
         // Linear hydrostatics replace the mesh's pressure; its wetted part still sets the drag's.
@@ -403,8 +463,8 @@ impl WaterStage {
     }
 }
 
-/// A potential-flow body's radiation force, excitation (ramped with the waves) and `A∞`
-/// reaction (PHYSICS.md §9) into `record`, which holds its pressure and drag already.
+/// A potential-flow body's radiation force, excitation (ramped with the waves), drift (ramped
+/// with the square of the waves' ramp, §10) and `A∞` reaction (PHYSICS.md §9) into `record`, which holds its pressure and drag already.
 #[inline(always)]
 fn potential_forces(potential: &FloatingPotential, record: &mut WaterForces, on: BodyInputs<'_>, instant: &Instant) {
     let BodyInputs { body, frame, load, run } = on;
@@ -413,6 +473,10 @@ fn potential_forces(potential: &FloatingPotential, record: &mut WaterForces, on:
     record.radiation = model.at_center(frame, &radiation);
     if instant.waves {
         record.excitation = model.at_center(frame, &(potential.excitation.force(instant.time) * instant.ramp));
+        if !potential.drift.is_zero() {
+            let drift = potential.drift.force(instant.time) * instant.ramp.powi(2);
+            record.drift = model.at_center(frame, &drift);
+        }
     }
     let others = record.total();
     let before = Load { force: load.force + others.force, moment: load.moment + others.moment };

@@ -337,6 +337,12 @@ impl World {
         self.evaluation.water()
     }
 
+    /// What the air did to each wind-loaded body at the current time, in the order of the
+    /// system's wind-loaded bodies (empty without air).
+    pub fn air_forces(&self) -> &[crate::air::AirForces] {
+        self.evaluation.air()
+    }
+
     /// The buffers of the last force evaluation.
     pub fn evaluation(&self) -> &Evaluation {
         &self.evaluation

@@ -14,8 +14,10 @@
 //! - [`energy`]: the energy balance plot;
 //! - [`water`]: the sea surface, the seabed, the water's force on each floating body and its
 //!   motion plots;
-//! - [`seabed`]: the lines' grounded parts, touchdowns and grounded lengths.
+//! - [`seabed`]: the lines' grounded parts, touchdowns and grounded lengths;
+//! - [`air`]: the wind's force on each body it loads.
 
+mod air;
 mod bodies;
 pub(crate) mod boundaries;
 mod catenaries;
@@ -93,6 +95,9 @@ pub(crate) fn for_world(world: &World) -> Vec<(Box<dyn Track>, KindStats)> {
     }
     if let Some(seabed) = seabed::SeabedTrack::new(world) {
         add("seabed", seabed.entities(), Box::new(seabed));
+    }
+    if let Some(air) = air::AirTrack::new(world) {
+        add("air", air.entities(), Box::new(air));
     }
     tracks
 }

@@ -21,7 +21,8 @@
 //! - `plots/water/<body>/angles`: its roll and pitch (the turn since t = 0 about the world x and
 //!   y axes) [deg];
 //! - `plots/water/<body>/radiation`, `…/excitation`: for a body with potential-flow data
-//!   (PHYSICS.md §9), its radiation force and wave excitation as the water stage records them
+//!   (PHYSICS.md §9), its radiation force and wave excitation as the water stage records them;
+//!   `…/drift`: its second-order wave drift, when it has a drift model (§10)
 //!   ([`tether_physics::water::WaterForces`]: about G, world axes), six series each — `Fx`, `Fy`,
 //!   `Fz` [N], `Mx`, `My`, `Mz` [N·m] — zero while its potential flow is switched off. A body
 //!   without potential data has neither: a scene without any records what it recorded before.
@@ -67,6 +68,8 @@ struct Floating {
     angles_path: String,
     /// Its radiation and excitation plots, if it has potential-flow data.
     potential_paths: Option<[String; 2]>,
+    /// Its wave drift plot, if it has a drift model (PHYSICS.md §10).
+    drift_path: Option<String>,
     /// Height of G [m] and orientation at t = 0.
     start_height: f64,
     start_turn: Rotation,
@@ -92,6 +95,7 @@ pub(super) struct WaterTrack {
     angles: Vec<[f64; 2]>,
     radiation: Vec<[f64; 6]>,
     excitation: Vec<[f64; 6]>,
+    drift: Vec<[f64; 6]>,
 }
 
 impl WaterTrack {
@@ -117,6 +121,7 @@ impl WaterTrack {
                             paths::water_plot(name, paths::EXCITATION_PLOT),
                         ]
                     }),
+                    drift_path: crate::layout::has_drift(f).then(|| paths::water_plot(name, paths::DRIFT_PLOT)),
                     start_height: state.position.z,
                     start_turn: state.orientation,
                 }
@@ -136,13 +141,19 @@ impl WaterTrack {
             angles: Vec::new(),
             radiation: Vec::new(),
             excitation: Vec::new(),
+            drift: Vec::new(),
         })
     }
 
     /// Floating bodies (each has an arrow and two plots, two more with potential flow), and the
     /// surface.
     pub(super) fn entities(&self) -> usize {
-        1 + 3 * self.floating.len() + 2 * self.potential_plots().count()
+        1 + 3 * self.floating.len() + 2 * self.potential_plots().count() + self.drift_plots().count()
+    }
+
+    /// The wave drift plot of each floating body that has one.
+    fn drift_plots(&self) -> impl Iterator<Item = &String> {
+        self.floating.iter().filter_map(|f| f.drift_path.as_ref())
     }
 
     /// The radiation and excitation plots of each floating body that has them.
@@ -223,10 +234,8 @@ impl Track for WaterTrack {
             stream
                 .log_static(floating.angles_path.as_str(), &rerun::SeriesLines::new().with_names(["roll", "pitch"]))?;
         }
-        for paths in self.potential_plots() {
-            for path in paths {
-                stream.log_static(path.as_str(), &rerun::SeriesLines::new().with_names(FORCE_SERIES))?;
-            }
+        for path in self.potential_plots().flatten().chain(self.drift_plots()) {
+            stream.log_static(path.as_str(), &rerun::SeriesLines::new().with_names(FORCE_SERIES))?;
         }
         Ok(())
     }
@@ -256,6 +265,10 @@ impl Track for WaterTrack {
                 self.radiation.push(six(&record.radiation));
                 self.excitation.push(six(&record.excitation));
                 bytes += 2 * 6 * 8;
+            }
+            if floating.drift_path.is_some() {
+                self.drift.push(six(&record.drift));
+                bytes += 6 * 8;
             }
             self.arrows
                 .push((f32x3(&state.position), f32x3(&(force * (stage_body.hull().bounding_radius() / weight)))));
@@ -310,6 +323,12 @@ impl Track for WaterTrack {
                 send_chunk(stream, path, frames.columns(), vec![plot(values, 6)], sent)?;
             }
         }
+        let drifting = self.drift_plots().count();
+        for (index, path) in self.drift_plots().enumerate() {
+            let values = of_entity(&self.drift, index, drifting).flatten().collect();
+            send_chunk(stream, path, frames.columns(), vec![plot(values, 6)], sent)?;
+        }
+        self.drift.clear();
         self.arrows.clear();
         self.motion.clear();
         self.angles.clear();

@@ -65,6 +65,7 @@ pub fn add_water(
             kernel_duration: wamit.kernel_duration,
             kernel_step: wamit.kernel_step,
             hydrostatics: wamit.hydrostatics,
+            drift: wamit.drift,
         };
         let with_mesh = (wamit.hydrostatics == HydrostaticsModel::Linear).then(|| system.clone());
         system = system.with_potential_flow(index, spec).map_err(placed)?;
@@ -87,7 +88,7 @@ const HYDROSTATICS_MISMATCH: f64 = 0.05;
 fn linear_hydrostatics_warnings(with_mesh: &System, linear: &System, index: usize, name: &str) -> Vec<String> {
     let floating = linear.water().and_then(|stage| stage.floating.iter().find(|f| f.body() == index));
     let Some(potential) = floating.and_then(|f| f.potential()) else { return Vec::new() };
-    let arm = potential.model.arm(&linear.initial_states()[index].frame());
+    let arm = potential.model().arm(&linear.initial_states()[index].frame());
     let stiffness = |system: &System| tether_physics::rao::stiffness_about(system, index, &arm);
     // Both evaluate the start pose, which the rest of loading evaluates too: a failure there
     // is reported where it happens, not as a warning here.

@@ -72,8 +72,9 @@ pub fn export(file: &SceneFile, bodies: &[RigidBody], source: &str, segments: u3
     let mut left_out = Vec::new();
     let mut seabed = None;
     for coupling in &file.couplings {
-        let CouplingDef::Catenary { name, end1, end2, mass_per_length, length, stiffness, displaced_area, model } =
-            coupling
+        let CouplingDef::Catenary {
+            name, end1, end2, mass_per_length, length, stiffness, displaced_area, model, ..
+        } = coupling
         else {
             left_out.push(coupling.name().to_string());
             continue;

@@ -114,6 +114,7 @@ pub fn map(input: &Input) -> Result<Mapped, Located> {
             contact: None,
         }),
         water,
+        air: None,
     };
     Ok(Mapped { file, origins, warnings })
 }
@@ -213,6 +214,7 @@ fn line_def(input: &Input, line: &Line, line_type: &LineType) -> CouplingDef {
         length: line.length,
         stiffness: stiffness(line, line_type),
         displaced_area: area(line_type),
+        breaking_load: None,
         model: LineModelDef::Dynamic(LumpedMassSpec {
             segments: line.segments,
             damping: if line_type.damping < 0.0 {
@@ -292,6 +294,8 @@ fn kinematic(name: String, position: [f64; 3], rotation: [f64; 3], mass: f64, in
         support: SupportDef::Kinematic { velocity: VelocityDef::Constant([0.0; 3]), angular_velocity: [0.0; 3] },
         shape: ShapeDef::Sphere { radius: 0.5, center: [0.0; 3], subdivisions: 2 },
         hydro: None,
+        windage: None,
+        rotor: None,
     }
 }
 
@@ -361,6 +365,8 @@ fn body_def(body: &Body, density: f64, warnings: &mut Vec<Located>) -> Result<Op
                 support: SupportDef::Free,
                 shape,
                 hydro,
+                windage: None,
+                rotor: None,
             }))
         }
     }
@@ -445,6 +451,8 @@ fn point_mass(input: &Input, index: usize) -> Result<BodyDef, Located> {
             ShapeDef::Sphere { radius: 0.25, center: [0.0; 3], subdivisions: 2 }
         },
         hydro,
+        windage: None,
+        rotor: None,
     })
 }
 

@@ -1,0 +1,200 @@
+//! Second-order wave drift (PHYSICS.md §10): the `.8`/`.9` reader on hand-made files (scaling,
+//! headings, missing frequencies, which file is read, the refusals), the shipped Capytaine
+//! cylinder's far-field drift against the short-wave limit, a moored body's mean offset in
+//! regular waves against `a² D(ω)/k`, and a drift scene's refusals.
+
+use std::f64::consts::PI;
+use std::path::{Path, PathBuf};
+use tether_physics::potential::{Coefficients, DriftSource};
+use tether_scene::wamit::{Scale, read};
+use tether_test_support::repo;
+
+const SCALE: Scale = Scale { density: 1000.0, gravity: 10.0, length: 2.0 };
+
+/// ω = 1 and ω = 2 rad/s as WAMIT periods.
+const PER_1: &str = "6.283185307179586";
+const PER_2: &str = "3.141592653589793";
+
+/// The smallest `.1` and `.3` that read: the radiation at two frequencies, one heading.
+fn first_order() -> [(&'static str, String); 2] {
+    let radiation =
+        ["-1 1 1 3.0", " 0 1 1 2.0", &format!("{PER_2} 1 1 2.2 0.3"), &format!("{PER_1} 1 1 2.5 0.1")].join("\n");
+    let excitation = [format!("{PER_1} 0.0 1 9 9 1.5 -0.5"), format!("{PER_2} 0.0 1 9 9 1.0 0.25")].join("\n");
+    [("1", radiation), ("3", excitation)]
+}
+
+/// Writes the first-order files and each `(ext, text)` of `drift` as `body.EXT` into a fresh
+/// directory; returns it and the stem.
+fn files(drift: &[(&str, &str)]) -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let stem = dir.path().join("body");
+    let first = first_order();
+    let all = first.iter().map(|(e, t)| (*e, t.as_str())).chain(drift.iter().copied());
+    for (extension, text) in all {
+        std::fs::write(dir.path().join(format!("body.{extension}")), text).expect("written");
+    }
+    (dir, stem)
+}
+
+fn read_ok(stem: &Path) -> Coefficients {
+    read(stem, SCALE).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// `.8` rows `PER β₁ β₂ I |F| phase Re Im`: `D = Re ρ g L` for a force, `Re ρ g L²` for a
+/// moment; lowest frequency first; a heading pair β₁ ≠ β₂ (a spread sea's) not read; a
+/// frequency a heading lacks is 0 there.
+#[test]
+fn the_momentum_file_is_scaled_per_dof_and_sorted_by_frequency() {
+    let text = [
+        format!("{PER_2} 0.0 0.0 1 0.8 180.0 -0.8 0.0"),
+        format!("{PER_2} 0.0 0.0 6 0.1 0.0 0.1 0.0"),
+        format!("{PER_1} 0.0 0.0 1 0.3 0.0 0.3 0.0"),
+        format!("{PER_1} 0.0 45.0 1 9.0 0.0 9.0 0.0"),
+        format!("{PER_1} 90.0 90.0 2 0.5 0.0 0.5 0.0"),
+    ]
+    .join("\n");
+    let (_dir, stem) = files(&[("8", &text)]);
+    let coefficients = read_ok(&stem);
+    let drift = coefficients.mean_drift().expect("the .8 was read");
+    assert_eq!(drift.source(), DriftSource::Momentum);
+    assert_eq!(drift.frequencies(), &[1.0, 2.0]);
+    assert_eq!(drift.headings(), &[0.0, PI / 2.0]);
+    let rho_g_l = 1000.0 * 10.0 * 2.0;
+    let at = |omega: f64, heading: f64| drift.coefficient(omega, heading).expect("inside");
+    assert_eq!(at(1.0, 0.0)[0], 0.3 * rho_g_l, "surge at ω = 1, β = 0; the β₂ = 45° row not read");
+    assert_eq!(at(2.0, 0.0)[0], -0.8 * rho_g_l);
+    assert_eq!(at(2.0, 0.0)[5], 0.1 * rho_g_l * 2.0, "a moment takes L²");
+    assert_eq!(at(1.0, PI / 2.0)[1], 0.5 * rho_g_l);
+    assert_eq!(at(2.0, PI / 2.0)[1], 0.0, "ω = 2 is missing at 90°: zero");
+    // Half way in ω and in β.
+    let middle = at(1.5, PI / 4.0);
+    assert!((middle[0] - 0.5 * (0.5 * (0.3 - 0.8) * rho_g_l)).abs() < 1e-9, "{middle}");
+}
+
+/// A `.9` is read when there is no `.8`, and said to be; with both the `.8` is; seven columns
+/// (`PER β I …`, one heading per row) read as `β₁ = β₂`; without either, no drift.
+#[test]
+fn the_pressure_file_is_read_only_without_a_momentum_file() {
+    let seven = format!("{PER_1} 0.0 1 0.4 0.0 0.4 0.0\n{PER_2} 0.0 1 0.6 0.0 0.6 0.0");
+    let eight = format!("{PER_1} 0.0 0.0 1 0.3 0.0 0.3 0.0");
+    let (_dir, stem) = files(&[("9", &seven)]);
+    let pressure = read_ok(&stem);
+    let drift = pressure.mean_drift().expect("the .9 was read");
+    assert_eq!(drift.source(), DriftSource::Pressure);
+    assert_eq!(drift.coefficient(2.0, 0.0).expect("inside")[0], 0.6 * 2.0e4);
+    let (_dir, stem) = files(&[("9", &seven), ("8", &eight)]);
+    assert_eq!(read_ok(&stem).mean_drift().expect("read").source(), DriftSource::Momentum);
+    let (_dir, stem) = files(&[]);
+    assert!(read_ok(&stem).mean_drift().is_none());
+}
+
+/// Every refusal is one line at the drift file's line and column.
+#[test]
+fn a_bad_drift_file_is_refused_at_its_line() {
+    let cases = [
+        (format!("{PER_1} 0.0 0.0 1 0.3 0.0 0.3 0.0 9"), "body.8:1: expected PER β₁ β₂ I |F| phase Re Im"),
+        // Seven columns are `PER β I |F| phase Re Im`: an eight-column row cut short reads its
+        // β₂ as the dof.
+        (format!("{PER_1} 0.0 0.0 1 0.3 0.0 0.3"), "body.8:1:23: dof index must be an integer from 1 to 6"),
+        (format!("{PER_1} 0.0 0.0 1 0.3 0.0 nan 0.0"), "body.8:1:"),
+        ("0 0.0 0.0 1 0.3 0.0 0.3 0.0".to_string(), "body.8:1:1: the mean drift is defined at finite periods only"),
+        (format!("{PER_1} 0.0 0.0 7 0.3 0.0 0.3 0.0"), "body.8:1:"),
+        (format!("{PER_1} 0.0 45.0 1 0.3 0.0 0.3 0.0"), "no row with β₁ = β₂"),
+        (String::new(), "body.8: the file is empty"),
+    ];
+    for (text, expected) in cases {
+        let (_dir, stem) = files(&[("8", &text)]);
+        let error = read(&stem, SCALE).expect_err(&text).to_string();
+        assert!(error.contains(expected) && !error.contains('\n'), "{text:?}: {error}");
+    }
+}
+
+/// The shipped cylinder's files' stem.
+fn cylinder() -> PathBuf {
+    repo("validation/potential-flow/cylinder/cylinder")
+}
+
+/// The project cylinder (R 3 m, draft 6 m; `validation/potential-flow/drift.py`, Capytaine
+/// 3.0's far-field drift): its surge drift tends to the short-wave limit of a vertical
+/// surface-piercing cylinder, `D₁ → (2/3) ρ g R` (Faltinsen, Sea Loads), within 5 % where
+/// kR ≥ 3, and to 0 in long waves; an axisymmetric body has no yaw drift.
+#[test]
+fn the_cylinders_surge_drift_tends_to_the_short_wave_limit() {
+    let stem = cylinder();
+    let scale = Scale { density: 1025.0, gravity: 9.80665, length: 1.0 };
+    let coefficients = read(&stem, scale).expect("the shipped cylinder");
+    let drift = coefficients.mean_drift().expect("its .8");
+    let (radius, rho_g) = (3.0, 1025.0 * 9.80665);
+    let limit = 2.0 / 3.0 * rho_g * radius;
+    let short: Vec<f64> = drift.frequencies().iter().copied().filter(|w| w * w / 9.80665 * radius >= 3.0).collect();
+    assert!(!short.is_empty(), "the file reaches kR = 3: {:?}", drift.frequencies());
+    for omega in short {
+        let d = drift.coefficient(omega, 0.0).expect("heading 0");
+        println!(
+            "ω {omega:.3} rad/s, kR {:.2}: D₁/(ρgR) = {:.4}",
+            omega * omega / 9.80665 * radius,
+            d[0] / (rho_g * radius)
+        );
+        assert!((d[0] / limit - 1.0).abs() < 0.05, "ω {omega}: {} against {limit}", d[0]);
+        assert!(d[5].abs() < 1e-3 * d[0] * radius, "yaw {}", d[5]);
+    }
+    let longest = drift.frequencies()[0];
+    let d = drift.coefficient(longest, 0.0).expect("heading 0");
+    assert!(d[0].abs() < 0.02 * limit, "at ω = {longest}: {} against the limit {limit}", d[0]);
+}
+
+/// The cylinder of `validation/potential-flow/cylinder.ron` held in surge by a horizontal
+/// spring of `stiffness` [N/m] (1 km long, at G: heave Z tilts it and pulls G back by `Z²/(4L)`,
+/// 1.8 cm at L = 100 m in the cylinder's heave resonance near 1.2 rad/s) with a damper
+/// (a third of critical in surge: the slow surge settles in a few minutes; a damper to the
+/// world, not Morison's linear damping, which acts on the velocity relative to the waves' and
+/// so takes a Stokes drift of its own), with `potential`'s `Wamit` fields in the water of
+/// `water`.
+fn moored_cylinder(water: &str, potential: &str, stiffness: f64) -> String {
+    format!(
+        "Scene(dt: 0.02, integrator: rk4, water: {water}, bodies: [Body(name: \"cylinder\",
+            master: Node(position: (0.0, 0.0, -4.0), mass: 172771.98917748,
+                         inertia: Inertia(xx: 907052.94318179, yy: 907052.94318179, zz: 777473.95129867)),
+            shape: Cylinder(radius: 3.0, length: 8.0, center: (0.0, 0.0, 2.0)),
+            hydro: Hydro(potential: Wamit({potential})))],
+         couplings: [SpringDamper(name: \"surge_spring\", end1: World((-1000.0, 0.0, -4.0)),
+            end2: Body(body: \"cylinder\", point: (0.0, 0.0, 0.0)),
+            law: Linear(stiffness: {stiffness}, rest_length: 1000.0), damping: 2.6e4)])"
+    )
+}
+
+/// Check 1 of §10: the cylinder on a linear surge_spring k in a regular wave of amplitude a
+/// settles at the mean offset `a² D₁(ω)/k` within 1 %, at five frequencies, with the drift of
+/// either model (in a regular wave both are the constant `a² D`); without drift, at none.
+#[test]
+fn a_moored_body_in_regular_waves_settles_at_the_mean_drift_over_its_stiffness() {
+    let file = cylinder().display().to_string();
+    let scale = Scale { density: 1025.0, gravity: 9.80665, length: 1.0 };
+    let coefficients = read(&cylinder(), scale).expect("the shipped cylinder");
+    let drift = coefficients.mean_drift().expect("its .8");
+    let (amplitude, stiffness) = (0.3, 4.0e3);
+    for (omega, model) in [(1.1, "Newman"), (1.5, "Mean"), (1.9, "Newman"), (2.5, "Mean"), (3.1, "Newman")] {
+        let period = 2.0 * PI / omega;
+        let water = format!("Water(waves: Regular(height: {}, period: {period}), ramp: 30.0)", 2.0 * amplitude);
+        let mut scene =
+            tether_test_support::scene(&moored_cylinder(&water, &format!("file: {file:?}, drift: {model}"), stiffness));
+        let world = &mut scene.world;
+        let settle = 20.0 * period.ceil().max(15.0);
+        while world.time() < settle {
+            world.step().expect("a stable cylinder");
+        }
+        // The mean over a whole number of wave periods.
+        let window = period * (200.0 / period).ceil();
+        let (mut sum, mut count) = (0.0, 0);
+        let end = world.time() + window;
+        while world.time() < end {
+            world.step().expect("a stable cylinder");
+            sum += world.state(0).position.x;
+            count += 1;
+        }
+        let mean = sum / f64::from(count);
+        let expected = amplitude * amplitude * drift.coefficient(omega, 0.0).expect("heading 0")[0] / stiffness;
+        println!("ω {omega} rad/s ({model}): mean surge {mean:.5} m, a² D₁/k {expected:.5} m");
+        assert!((mean / expected - 1.0).abs() < 0.01, "ω {omega}: {mean} against {expected}");
+    }
+}

@@ -31,6 +31,7 @@ fn report(world: &World, label: &str) -> String {
         body_report(&mut out, body);
     }
     water_report(&mut out, world);
+    air_report(&mut out, world);
     for (index, (coupling, forces)) in world.couplings().iter().zip(world.coupling_forces()).enumerate() {
         coupling_report(&mut out, world, index, coupling, forces);
     }
@@ -210,6 +211,67 @@ fn energy_report(out: &mut String, world: &World) {
         e.elastic + 0.0,
         e.total() + 0.0
     );
+}
+
+/// The air (PHYSICS.md §10): the wind, and per body it loads its windage and rotor with the
+/// mean wind at each and the steady force it gives on the body at rest.
+fn air_report(out: &mut String, world: &World) {
+    let Some(stage) = world.system().air() else { return };
+    let air = stage.air();
+    let spec = air.spec();
+    let wind = &spec.wind;
+    let _ = writeln!(
+        out,
+        "\nair: ρ_a {} kg/m³; wind {} m/s at {} m toward {}° ({:?}), gusts {:?}, ramp {} s",
+        spec.density,
+        wind.speed,
+        wind.height,
+        wind.heading.to_degrees(),
+        wind.profile,
+        wind.gusts,
+        spec.ramp
+    );
+    if !air.gusts().is_steady() {
+        let at = air.gusts().at(wind.height, air.mean_speed(10.0), wind.speed);
+        let _ = writeln!(
+            out,
+            "  gusts at {} m: standard deviation {:.4} m/s (turbulence intensity {:.3}) over {} components, {} to {} Hz",
+            wind.height,
+            at.variance().sqrt(),
+            at.variance().sqrt() / wind.speed.max(f64::MIN_POSITIVE),
+            air.gusts().frequencies().len(),
+            tether_physics::air::BAND.0,
+            tether_physics::air::BAND.1
+        );
+    }
+    for loaded in stage.bodies() {
+        let name = &world.bodies()[loaded.body()].name;
+        // Points from G in world axes at t = 0.
+        let rotation = world.state(loaded.body()).frame().rotation;
+        let (windage_speed, rotor_speed) = loaded.mean_speeds();
+        if let (Some(windage), Some(speed)) = (loaded.windage(), windage_speed) {
+            let areas = windage.drag_areas();
+            let _ = writeln!(
+                out,
+                "  body \"{name}\" windage: C·A = ({:.4}, {:.4}, {:.4}) m² along its reference axes, centre {} m from G (world axes); mean wind there {speed:.4} m/s: steady drag along its x {:.6e} N",
+                areas[0],
+                areas[1],
+                areas[2],
+                vector(&(rotation * windage.center())),
+                0.5 * air.density() * areas[0] * speed * speed
+            );
+        }
+        if let (Some(rotor), Some(speed)) = (loaded.rotor(), rotor_speed) {
+            let coefficient = rotor.thrust_coefficient(speed);
+            let _ = writeln!(
+                out,
+                "  body \"{name}\" rotor: area {} m², hub {} m from G (world axes); mean wind there {speed:.4} m/s, C_T {coefficient:.4}: thrust {:.6e} N (quasi-steady, not an aeroelastic rotor)",
+                rotor.area(),
+                vector(&(rotation * rotor.hub())),
+                0.5 * air.density() * rotor.area() * coefficient * speed * speed
+            );
+        }
+    }
 }
 
 /// The water (PHYSICS.md §6) and each floating body's hydrostatics at its free-floating

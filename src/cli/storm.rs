@@ -218,7 +218,8 @@ fn write_report(dir: &Path, code: Code) -> anyhow::Result<()> {
 /// The storm's hours: its spec's duration less the warm-up its metrics start after (the spec
 /// [`spec::spec_text`] wrote).
 fn storm_hours(spec_text: &str) -> anyhow::Result<f64> {
-    let spec: tether::sweep::spec::SpecFile = ron::from_str(spec_text).context("the storm's spec in its manifest")?;
+    let text = tether::sweep::spec::SpecText { path: Path::new("storm.ron"), text: spec_text };
+    let spec: tether::sweep::spec::SpecFile = text.parse().context("the storm's spec in its manifest")?;
     let warmup = spec.metrics.first().map_or(0.0, |m| m.after);
     Ok((spec.duration.unwrap_or(0.0) - warmup) / 3600.0)
 }

@@ -237,10 +237,37 @@ fn a_job_array_and_its_merge_give_the_rows_of_a_local_run() {
     let rows = without_cpu(&merged);
     assert_eq!(rows.len(), 11, "header and ten cases");
     assert_eq!(rows, without_cpu(&work.join("local/results.csv")), "the cluster's rows are the local run's");
+    let storm_began = Instant::now();
+    a_storms_array_and_report_give_the_local_storm(&cluster, &work);
     eprintln!(
-        "slurm: cluster up in {:.1} s, the array and the merge done in {:.1} s, {:.1} s in all",
+        "slurm: cluster up in {:.1} s, the sweep's array and merge done in {:.1} s, the storm's in {:.1} s, {:.1} s in all",
         started.as_secs_f64(),
         jobs.as_secs_f64(),
+        storm_began.elapsed().as_secs_f64(),
         begin.elapsed().as_secs_f64()
     );
+}
+
+/// A storm (docs/design-loads.md) through `examples/slurm/submit-storm.sh`: three seeds as a job
+/// array of three tasks and its report job; its `storm.csv` equals a local `--jobs 1` storm's,
+/// byte for byte (the seeds' rows are the same bit for bit, and so are their fits).
+fn a_storms_array_and_report_give_the_local_storm(cluster: &Cluster, work: &Path) {
+    let scene = common::repo("scenes/buoy_in_a_storm.ron").display().to_string();
+    let storm_args = "--hours 0.005 --seeds 3 --warmup 10";
+    let submitted = run(cluster
+        .command(&common::repo("examples/slurm/submit-storm.sh").display().to_string())
+        .args([scene.as_str(), "storm-cluster", "3", "--cpus-per-task=1"])
+        .env("TETHER", env!("CARGO_BIN_EXE_tether"))
+        .env("STORM_ARGS", storm_args)
+        .current_dir(work));
+    assert!(submitted.starts_with("array job ") && submitted.contains("(3 tasks), report job "), "{submitted}");
+    cluster.wait_for_jobs();
+    let report = work.join("storm-cluster/storm.csv");
+    assert!(report.is_file(), "no storm report:\n{}", cluster.logs());
+    let mut local_args = vec!["storm", scene.as_str(), "-o", "storm-local", "--jobs", "1"];
+    local_args.extend(storm_args.split(' '));
+    let local = Command::new(env!("CARGO_BIN_EXE_tether")).args(&local_args).current_dir(work).output().unwrap();
+    assert!(local.status.success(), "{}", String::from_utf8_lossy(&local.stderr));
+    let read = |path: PathBuf| std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    assert_eq!(read(report), read(work.join("storm-local/storm.csv")), "the cluster's storm is the local one's");
 }

@@ -18,8 +18,8 @@
 //! rotor: Rotor(point: (-5.0, 0.0, 90.0), area: 12469.0, thrust: Table([(3.0, 0.8), (11.4, 0.75), (25.0, 0.1)])),
 //! ```
 //!
-//! A windage's `areas` [m²] are its projected areas normal to the body's reference axes, and its
-//! `center` [m] (reference frame) where the wind acts; without `areas`, both come from the hull
+//! A windage's `areas` \[m²] are its projected areas normal to the body's reference axes, and its
+//! `center` \[m] (reference frame) where the wind acts; without `areas`, both come from the hull
 //! above the still water at t = 0. A rotor's `axis` (default `(1, 0, 0)`) is the direction of
 //! its thrust when the wind blows along it.
 

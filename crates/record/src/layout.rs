@@ -92,7 +92,8 @@ impl Tab {
 /// `contacts` (their forces, and the normal forces with any tensions); `lines` (the tensions,
 /// the catenaries' end tensions and grounded lengths; `tensions` for springs alone); a tab per
 /// floating body (elevation and heave, roll and pitch, a potential-flow body's radiation force
-/// and excitation); `energy` (stored; moving). A plot may be in two tabs.
+/// and excitation); the design loads (`drift`, `wind`: each body's wave drift and wind, PHYSICS.md
+/// §10); `energy` (stored; moving). A plot may be in two tabs.
 pub fn plot_tabs(world: &World, columns: &[&str]) -> Vec<Tab> {
     let (mut pulls, mut lines, mut contacts) = (false, false, false);
     for coupling in world.couplings() {
@@ -143,15 +144,15 @@ pub fn plot_tabs(world: &World, columns: &[&str]) -> Vec<Tab> {
         tabs.push(Tab::new(if lines { "lines" } else { "tensions" }, plots));
     }
     tabs.extend(floating.into_iter().map(|body| Tab::new(body.name, body.plots)));
-    if let Some(air) = air_plots(world) {
-        tabs.push(Tab::new("wind", air));
+    if let Some((name, plots)) = design_load_plots(world) {
+        tabs.push(Tab::new(name, plots));
     }
     tabs.push(Tab::new("energy", energy_plots()));
     tabs
 }
 
-/// A floating body's name and plots: elevation and heave, roll and pitch, a potential-flow
-/// body's radiation force and wave excitation, and its wave drift when it has a drift model.
+/// A floating body's name and plots: elevation and heave, roll and pitch, and a potential-flow
+/// body's radiation force and wave excitation (its drift is in the design loads' tab).
 struct FloatingPlots {
     name: String,
     plots: Vec<Plot>,
@@ -172,27 +173,43 @@ fn floating_bodies(world: &World) -> Vec<FloatingPlots> {
                 plots.push(Plot::new(format!("{name}: {what} at G [N, N·m]"), paths::water_plot(&name, plot)));
             }
         }
-        if has_drift(floating) {
-            let title = format!("{name}: wave drift at G [N, N·m]");
-            plots.push(Plot::new(title, paths::water_plot(&name, paths::DRIFT_PLOT)));
-        }
+
         FloatingPlots { name, plots }
     };
     stage.floating.iter().map(plots).collect()
 }
 
-/// The wind's force on each body it loads (PHYSICS.md §10), `None` without air.
-fn air_plots(world: &World) -> Option<Vec<Plot>> {
-    let stage = world.system().air()?;
-    let plots: Vec<_> = stage
-        .bodies()
-        .iter()
-        .map(|b| {
-            let name = &world.bodies()[b.body()].name;
-            Plot::new(format!("{name}: wind on windage and rotor [N, N·m]"), paths::air_plot(name))
-        })
-        .collect();
-    (!plots.is_empty()).then_some(plots)
+/// The design loads' tab (PHYSICS.md §10): each floating body's wave drift and each wind-loaded
+/// body's wind, named for what it holds (`drift`, `wind`, `drift, wind`); `None` with neither.
+fn design_load_plots(world: &World) -> Option<(&'static str, Vec<Plot>)> {
+    let drift: Vec<Plot> = world.system().water().map_or_else(Vec::new, |stage| {
+        stage
+            .floating
+            .iter()
+            .filter(|f| has_drift(f))
+            .map(|f| {
+                let name = &world.bodies()[f.body()].name;
+                Plot::new(format!("{name}: wave drift at G [N, N·m]"), paths::water_plot(name, paths::DRIFT_PLOT))
+            })
+            .collect()
+    });
+    let wind: Vec<Plot> = world.system().air().map_or_else(Vec::new, |stage| {
+        stage
+            .bodies()
+            .iter()
+            .map(|b| {
+                let name = &world.bodies()[b.body()].name;
+                Plot::new(format!("{name}: wind on windage and rotor [N, N·m]"), paths::air_plot(name))
+            })
+            .collect()
+    });
+    let name = match (drift.is_empty(), wind.is_empty()) {
+        (true, true) => return None,
+        (false, true) => "drift",
+        (true, false) => "wind",
+        (false, false) => "drift, wind",
+    };
+    Some((name, drift.into_iter().chain(wind).collect()))
 }
 
 /// Whether `floating` feels a wave drift (PHYSICS.md §10): potential flow on, a drift model.

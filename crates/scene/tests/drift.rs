@@ -163,7 +163,7 @@ fn moored_cylinder(water: &str, potential: &str, stiffness: f64) -> String {
     )
 }
 
-/// Check 1 of §10: the cylinder on a linear surge_spring k in a regular wave of amplitude a
+/// Check 1 of §10: the cylinder on a linear surge spring k in a regular wave of amplitude a
 /// settles at the mean offset `a² D₁(ω)/k` within 1 %, at five frequencies, with the drift of
 /// either model (in a regular wave both are the constant `a² D`); without drift, at none.
 #[test]
@@ -197,4 +197,93 @@ fn a_moored_body_in_regular_waves_settles_at_the_mean_drift_over_its_stiffness()
         println!("ω {omega} rad/s ({model}): mean surge {mean:.5} m, a² D₁/k {expected:.5} m");
         assert!((mean / expected - 1.0).abs() < 0.01, "ω {omega}: {mean} against {expected}");
     }
+}
+
+/// Check 2 of §10 at the response: the cylinder on its surge spring (4 kN/m, half of critical
+/// damping) in a JONSWAP sea of 200 components (Hs 2 m, Tp 4 s: its drift's band) under Newman's
+/// drift, 10 seeds of two hours after a 10-minute warm-up. Its slow surge — the surge averaged
+/// over 60 s, which keeps the minutes-long motion and removes the waves' (their periods under 7 s
+/// pass at most 1/9 of their amplitude) — has the variance `Σ_{m<n} 2 w_m² w_n² |H(μ_mn)|²
+/// G(μ_mn)²` of the sea's difference-frequency lines (`S_F`'s discrete form, `w = a √D`) through
+/// `H(μ) = 1/(k − (m + A₁₁(0)) μ² + i c μ)` and the average's gain `G = sinc(30 μ)`, within 5 %;
+/// its mean is `Σ a² D / k`, within 1 %.
+#[test]
+fn the_slow_surge_of_a_moored_body_in_an_irregular_sea_has_the_drifts_variance() {
+    let file = cylinder().display().to_string();
+    let scale = Scale { density: 1025.0, gravity: 9.80665, length: 1.0 };
+    let coefficients = read(&cylinder(), scale).expect("the shipped cylinder");
+    let drift = coefficients.mean_drift().expect("its .8");
+    let (stiffness, damping, mass) = (4.0e3, 3.72e4, 172_771.989_177_48);
+    let surge_mass = mass + coefficients.added_mass_zero()[(0, 0)];
+    let (warmup, duration, average) = (600.0, 7200.0, 60.0);
+    let (expected_variance, expected_mean, measured): (Vec<f64>, Vec<f64>, Vec<(f64, f64)>) = {
+        let runs: Vec<_> = (1..=10u64)
+            .map(|seed| {
+                let water =
+                    format!("Water(waves: Jonswap(hs: 2.0, tp: 4.0, components: 200, seed: {seed}), ramp: 60.0)");
+                let text = moored_cylinder(&water, &format!("file: {file:?}, drift: Newman"), stiffness)
+                    .replace("damping: 2.6e4", &format!("damping: {damping}"))
+                    .replace("dt: 0.02", "dt: 0.05");
+                std::thread::spawn(move || {
+                    let mut scene = tether_test_support::scene(&text);
+                    let world = &mut scene.world;
+                    let components = world.system().water().expect("water").water.sea().components().to_vec();
+                    while world.time() < warmup {
+                        world.step().expect("a stable cylinder");
+                    }
+                    let mut surge = Vec::new();
+                    while world.time() < warmup + duration {
+                        world.step().expect("a stable cylinder");
+                        surge.push(world.state(0).position.x);
+                    }
+                    (components, surge, world.dt())
+                })
+            })
+            .collect();
+        let mut variances = Vec::new();
+        let mut means = Vec::new();
+        let mut measured = Vec::new();
+        for run in runs {
+            let (components, surge, dt) = run.join().expect("a run");
+            let weights: Vec<(f64, f64)> = components
+                .iter()
+                .map(|c| (c.frequency, c.amplitude * c.amplitude * drift.coefficient(c.frequency, 0.0).expect("in")[0]))
+                .collect();
+            let mut variance = 0.0;
+            for (m, &(wm_frequency, wm)) in weights.iter().enumerate() {
+                for &(wn_frequency, wn) in &weights[m + 1..] {
+                    let mu = (wm_frequency - wn_frequency).abs();
+                    let re = stiffness - surge_mass * mu * mu;
+                    let response = 1.0 / (re * re + (damping * mu).powi(2));
+                    let x = 0.5 * average * mu;
+                    let gain = if x > 0.0 { (x.sin() / x).powi(2) } else { 1.0 };
+                    variance += 2.0 * wm * wn * response * gain;
+                }
+            }
+            variances.push(variance);
+            means.push(weights.iter().map(|w| w.1).sum::<f64>() / stiffness);
+            // The 60 s moving average of the surge, its mean and variance.
+            let window = (average / dt).round() as usize;
+            let mut sum: f64 = surge[..window].iter().sum();
+            let mut averaged = vec![sum / window as f64];
+            for i in window..surge.len() {
+                sum += surge[i] - surge[i - window];
+                averaged.push(sum / window as f64);
+            }
+            let mean = surge.iter().sum::<f64>() / surge.len() as f64;
+            let slow = averaged.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / averaged.len() as f64;
+            measured.push((mean, slow));
+        }
+        (variances, means, measured)
+    };
+    let seeds = measured.len() as f64;
+    let mean = measured.iter().map(|m| m.0).sum::<f64>() / seeds;
+    let variance = measured.iter().map(|m| m.1).sum::<f64>() / seeds;
+    let expected_mean = expected_mean.iter().sum::<f64>() / seeds;
+    let expected_variance = expected_variance.iter().sum::<f64>() / seeds;
+    println!(
+        "slow surge: mean {mean:.4} m (Σa²D/k {expected_mean:.4}), variance {variance:.5} m² (lines through H {expected_variance:.5})"
+    );
+    assert!((mean / expected_mean - 1.0).abs() < 0.01, "mean {mean} against {expected_mean}");
+    assert!((variance / expected_variance - 1.0).abs() < 0.05, "variance {variance} against {expected_variance}");
 }

@@ -166,7 +166,8 @@ fn stability_ui(ui: &mut egui::Ui, status: &Status) {
         let rotation =
             status.rotation_limit.iter().map(|(body, dt)| ((format!("rotation of {body}"), Some(*dt)), None));
         let water = status.water_limits.iter().map(|(body, dt)| ((format!("water on {body}"), Some(*dt)), None));
-        for ((name, limit), substeps) in couplings.chain(rotation).chain(water) {
+        let air = status.air_limits.iter().map(|(body, dt)| ((format!("air on {body}"), Some(*dt)), None));
+        for ((name, limit), substeps) in couplings.chain(rotation).chain(water).chain(air) {
             ui.label(name);
             let (color, text) = match limit {
                 Some(dt) => {

@@ -83,8 +83,9 @@ fn the_realised_gusts_follow_the_npd_spectrum() {
     let bands: Vec<(f64, f64)> = (0..3).map(|i| (1.0 / 600.0 * 4f64.powi(i), 1.0 / 600.0 * 4f64.powi(i + 1))).collect();
     let mut band_power = vec![0.0; bands.len()];
     for seed in 0..seeds {
-        let gusts = Gusts::new(&GustSpec::Npd { seed, components: 200 }).expect("npd").at(10.0, 20.0, 20.0);
-        let series: Vec<f64> = (0..samples).map(|i| gusts.speed(i as f64 * step)).collect();
+        let gusts = Gusts::new(&GustSpec::Npd { seed, components: 200 }).expect("npd");
+        let point = gusts.at(10.0, 20.0, 20.0);
+        let series: Vec<f64> = (0..samples).map(|i| gusts.speed(&point, i as f64 * step)).collect();
         let mean = series.iter().sum::<f64>() / samples as f64;
         variance += series.iter().map(|u| (u - mean).powi(2)).sum::<f64>() / samples as f64 / f64::from(seeds as u32);
         // The periodogram's power in each band, at the record's Fourier frequencies n/T.

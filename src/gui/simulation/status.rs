@@ -43,6 +43,8 @@ pub struct Status {
     pub rotation_limit: Option<(String, f64)>,
     /// Stable time step of each floating body under the water's stiffness and drag [s].
     pub water_limits: Vec<(String, f64)>,
+    /// Stable time step of each wind-loaded body under its aerodynamic damping [s].
+    pub air_limits: Vec<(String, f64)>,
     /// Each floating body with potential-flow data (PHYSICS.md §9): its index, and whether its
     /// potential flow runs (it may be switched off live).
     pub potential_flow: Vec<(usize, bool)>,
@@ -118,6 +120,13 @@ pub fn status(world: &World, run: &RunState) -> Status {
             Limiter::Coupling(_) | Limiter::Impact(_) | Limiter::Rotation(_) | Limiter::Air(_) => None,
         })
         .collect();
+    let air_limits = limits
+        .iter()
+        .filter_map(|l| match l.limiter {
+            Limiter::Air(body) => Some((world.bodies()[body].name.clone(), l.dt)),
+            Limiter::Coupling(_) | Limiter::Impact(_) | Limiter::Rotation(_) | Limiter::Water(_) => None,
+        })
+        .collect();
     let wall = run.wall.max(1e-6);
     Status {
         label: run.label.clone(),
@@ -142,6 +151,7 @@ pub fn status(world: &World, run: &RunState) -> Status {
         line_hints: (0..world.couplings().len()).map(|i| line_hint::measures(world, i)).collect(),
         rotation_limit,
         water_limits,
+        air_limits,
         potential_flow: world.system().water().map_or_else(Vec::new, |stage| {
             let with_data = stage.floating.iter().filter(|f| f.has_potential_data());
             with_data.map(|f| (f.body(), f.potential().is_some())).collect()

@@ -81,12 +81,13 @@ impl GustSpectrum {
     }
 }
 
-/// A gust realisation: its spectrum, frequencies \[Hz], bin widths \[Hz] and phases \[rad]; none
-/// for a steady wind.
+/// A gust realisation: its spectrum, frequencies \[Hz] (and angular, rad/s), bin widths \[Hz]
+/// and phases \[rad]; none for a steady wind.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Gusts {
     spectrum: Option<GustSpectrum>,
     frequencies: Vec<f64>,
+    angular: Vec<f64>,
     widths: Vec<f64>,
     phases: Vec<f64>,
 }
@@ -115,14 +116,15 @@ impl Gusts {
         let count = components as usize;
         let ratio = (BAND.1 / BAND.0).powf(1.0 / count as f64);
         let edge = |n: usize| BAND.0 * ratio.powi(n as i32);
-        let frequencies = (0..count).map(|n| (edge(n) * edge(n + 1)).sqrt()).collect();
+        let frequencies: Vec<f64> = (0..count).map(|n| (edge(n) * edge(n + 1)).sqrt()).collect();
         let widths = (0..count).map(|n| edge(n + 1) - edge(n)).collect();
         let mut random = Pcg64Mcg::seed_from_u64(seed);
         // 53 random bits to a uniform number in [0, 1).
         let phases = (0..count)
             .map(|_| std::f64::consts::TAU * ((random.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)))
             .collect();
-        Ok(Self { spectrum: Some(spectrum), frequencies, widths, phases })
+        let angular = frequencies.iter().map(|f| std::f64::consts::TAU * f).collect();
+        Ok(Self { spectrum: Some(spectrum), frequencies, angular, widths, phases })
     }
 
     /// Whether there are no gusts (a steady wind).
@@ -139,7 +141,8 @@ impl Gusts {
     pub fn at(&self, z: f64, u10: f64, mean: f64) -> GustPoint {
         let Some(spectrum) = self.spectrum else { return GustPoint::default() };
         if z <= 0.0 {
-            return GustPoint::default();
+            // No wind at or below the water: every amplitude 0.
+            return GustPoint { amplitudes: vec![0.0; self.frequencies.len()] };
         }
         let amplitudes = self
             .frequencies
@@ -147,33 +150,36 @@ impl Gusts {
             .zip(&self.widths)
             .map(|(&f, &width)| (2.0 * spectrum.density(f, z, u10, mean) * width).sqrt())
             .collect();
-        GustPoint {
-            amplitudes,
-            angular: self.frequencies.iter().map(|f| std::f64::consts::TAU * f).collect(),
-            phases: self.phases.clone(),
+        GustPoint { amplitudes }
+    }
+
+    /// `u(t)` [m/s] at `point` and `time` \[s], before the ramp.
+    pub fn speed(&self, point: &GustPoint, time: f64) -> f64 {
+        self.speeds(&[point], time)[0]
+    }
+
+    /// `u(t)` [m/s] at each of `points` (a body's windage and rotor) at `time` \[s], before the
+    /// ramp: each component's cosine once for all of them.
+    pub fn speeds<const N: usize>(&self, points: &[&GustPoint; N], time: f64) -> [f64; N] {
+        let mut speeds = [0.0; N];
+        for (n, (w, phi)) in self.angular.iter().zip(&self.phases).enumerate() {
+            let c = (w * time + phi).cos();
+            for (speed, point) in speeds.iter_mut().zip(points) {
+                *speed += point.amplitudes[n] * c;
+            }
         }
+        speeds
     }
 }
 
-/// The gusts at one point: amplitudes [m/s], angular frequencies [rad/s] and phases \[rad].
+/// The gusts' amplitudes at one point [m/s], one per component of the [`Gusts`] that made it
+/// (none for a steady wind).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct GustPoint {
     amplitudes: Vec<f64>,
-    angular: Vec<f64>,
-    phases: Vec<f64>,
 }
 
 impl GustPoint {
-    /// `u(t)` [m/s] at `time` \[s], before the ramp.
-    pub fn speed(&self, time: f64) -> f64 {
-        self.amplitudes
-            .iter()
-            .zip(&self.angular)
-            .zip(&self.phases)
-            .map(|((a, w), phi)| a * (w * time + phi).cos())
-            .sum()
-    }
-
     /// `Σ a_n²/2` [(m/s)²]: the realised variance.
     pub fn variance(&self) -> f64 {
         self.amplitudes.iter().map(|a| 0.5 * a * a).sum()
@@ -230,9 +236,22 @@ mod tests {
 
     #[test]
     fn the_same_seed_gives_the_same_gusts_bit_for_bit() {
-        let (a, b, c) = (npd(7).at(10.0, 20.0, 20.0), npd(7).at(10.0, 20.0, 20.0), npd(8).at(10.0, 20.0, 20.0));
-        assert_eq!(a.speed(123.4).to_bits(), b.speed(123.4).to_bits());
-        assert_ne!(a.speed(123.4), c.speed(123.4));
+        let speed = |seed| {
+            let gusts = npd(seed);
+            gusts.speed(&gusts.at(10.0, 20.0, 20.0), 123.4)
+        };
+        assert_eq!(speed(7).to_bits(), speed(7).to_bits());
+        assert_ne!(speed(7), speed(8));
+    }
+
+    /// Two points at once are each point alone.
+    #[test]
+    fn the_speeds_of_two_points_are_each_points() {
+        let gusts = npd(2);
+        let (low, high) = (gusts.at(10.0, 20.0, 20.0), gusts.at(90.0, 20.0, 25.0));
+        let [a, b] = gusts.speeds(&[&low, &high], 55.5);
+        assert_eq!((a, b), (gusts.speed(&low, 55.5), gusts.speed(&high, 55.5)));
+        assert!(a != b);
     }
 
     #[test]

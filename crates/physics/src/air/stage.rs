@@ -205,25 +205,46 @@ impl AirStage {
     fn body_forces(&self, loaded: &WindBody, frame: &BodyFrame, ramp: f64, time: f64) -> AirForces {
         let omega = frame.rotation * frame.angular_velocity;
         let density = self.air.density();
-        // The wind at a point of exposure `exposure`, relative to a point `arm` from G.
-        let relative = |exposure: &Exposure, arm: &Vec3| {
-            let wind = self.air.direction() * ((exposure.mean + exposure.gusts.speed(time)) * ramp);
+        let (windage_gust, rotor_gust) = self.gust_speeds(loaded, time);
+        // The wind at a point of mean speed `mean` and gust `gust`, relative to a point `arm` from G.
+        let relative = |mean: f64, gust: f64, arm: &Vec3| {
+            let wind = self.air.direction() * ((mean + gust) * ramp);
             wind - (frame.velocity + omega.cross(arm))
         };
         let mut record = AirForces { body: loaded.body, ..AirForces::default() };
         if let Some((windage, exposure)) = &loaded.windage {
             let arm = frame.rotation * windage.center();
-            let force = windage.force(&frame.rotation, &relative(exposure, &arm), density);
+            let force = windage.force(&frame.rotation, &relative(exposure.mean, windage_gust, &arm), density);
             record.windage = Load { force, moment: arm.cross(&force) };
         }
         if let Some((rotor, exposure)) = &loaded.rotor {
             let arm = frame.rotation * rotor.hub();
             let axis = frame.rotation * rotor.axis();
-            let force = rotor.force(&axis, &relative(exposure, &arm), density);
+            let force = rotor.force(&axis, &relative(exposure.mean, rotor_gust, &arm), density);
             record.rotor = Load { force, moment: arm.cross(&force) };
         }
         record.power = crate::water::stage::power(&record.total(), frame);
         record
+    }
+}
+
+impl AirStage {
+    /// The gusts [m/s] at a body's windage and rotor at `time` \[s] (0 where it has none), each
+    /// component's cosine once for both.
+    fn gust_speeds(&self, loaded: &WindBody, time: f64) -> (f64, f64) {
+        let gusts = self.air.gusts();
+        if gusts.is_steady() {
+            return (0.0, 0.0);
+        }
+        match (&loaded.windage, &loaded.rotor) {
+            (Some((_, w)), Some((_, r))) => {
+                let [windage, rotor] = gusts.speeds(&[&w.gusts, &r.gusts], time);
+                (windage, rotor)
+            }
+            (Some((_, w)), None) => (gusts.speed(&w.gusts, time), 0.0),
+            (None, Some((_, r))) => (0.0, gusts.speed(&r.gusts, time)),
+            (None, None) => (0.0, 0.0),
+        }
     }
 }
 

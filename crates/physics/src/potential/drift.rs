@@ -161,6 +161,9 @@ pub struct WaveDrift {
     mean: Vector6,
     /// The components of the `Newman` model; empty for `Mean` and `Off`.
     envelopes: Vec<Envelope>,
+    /// The degrees of freedom with a drift (a `.8` gives surge, sway and yaw): the others are
+    /// not summed.
+    dofs: Vec<usize>,
 }
 
 impl WaveDrift {
@@ -196,7 +199,8 @@ impl WaveDrift {
         if model == DriftModel::Mean {
             envelopes.clear();
         }
-        Ok(Self { mean, envelopes })
+        let dofs = (0..6).filter(|&dof| envelopes.iter().any(|e| e.weight[dof] != 0.0)).collect();
+        Ok(Self { mean, envelopes, dofs })
     }
 
     /// Whether the drift is zero at every time (the `Off` model, or no waves).
@@ -218,7 +222,7 @@ impl WaveDrift {
         let mut z_signed = [Complex::<f64>::ZERO; 6];
         for envelope in &self.envelopes {
             let turn = Complex::from_polar(1.0, envelope.frequency * time + envelope.phase);
-            for dof in 0..6 {
+            for &dof in &self.dofs {
                 z[dof] += turn * envelope.weight[dof];
                 z_signed[dof] += turn * envelope.signed[dof];
             }

@@ -7,7 +7,6 @@
 use super::flags::positive;
 use anyhow::{Context as _, bail};
 use clap::{Args, Subcommand, ValueEnum};
-use indicatif::{ProgressBar, ProgressStyle};
 use std::num::NonZeroUsize;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -17,7 +16,7 @@ use tether::storm::{report, spec};
 use tether::sweep::rows::Rows;
 use tether::sweep::shard::{self, ShardArg};
 use tether::sweep::store::Store;
-use tether::sweep::{self, Options, Progress, SweepError};
+use tether::sweep::{Options, SweepError};
 use tether_physics::body::Support;
 use tether_scene::file::{CouplingDef, SceneFile};
 
@@ -127,20 +126,7 @@ pub fn run(args: &StormArgs) -> anyhow::Result<Outcome> {
         args.hours,
         args.warmup
     );
-    let bar = ProgressBar::hidden();
-    let report = sweep::run(&plan, output, &options, |p: Progress| {
-        if bar.length().is_none() {
-            bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
-            bar.set_style(
-                ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} seeds, {msg}, {eta} left")
-                    .expect("the template is a valid literal"),
-            );
-            bar.set_length(p.total as u64);
-        }
-        bar.set_position(p.done as u64);
-        bar.set_message(format!("{} failed", p.failed));
-    });
-    bar.finish_and_clear();
+    let report = super::sweep::run_with_progress(&plan, output, &options, "seeds");
     let report = match report {
         Err(SweepError::Interrupted(stage)) => {
             eprintln!("interrupted while {stage}");

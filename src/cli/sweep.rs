@@ -107,26 +107,36 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<Outcome> {
     };
     let which = shard.as_ref().map_or_else(String::new, |(s, source)| format!(", shard {s} (from {source})"));
     eprintln!("sweep {}: {} cases ({}){which}, on {jobs} threads", plan.name, plan.cases.len(), plan.design.describe());
-    let bar = ProgressBar::hidden();
-    let report = sweep::run(&plan, output, &options, |p: Progress| {
-        if bar.is_hidden() && bar.length().is_none() {
-            bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
-            bar.set_style(
-                ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} cases, {msg}, {eta} left")
-                    .expect("the template is a valid literal"),
-            );
-            bar.set_length(p.total as u64);
-        }
-        bar.set_position(p.done as u64);
-        bar.set_message(format!("{} failed", p.failed));
-    });
-    bar.finish_and_clear();
+    let report = run_with_progress(&plan, output, &options, "cases");
     let report = match report {
         Err(SweepError::Interrupted(stage)) => return Ok(interrupted(stage)),
         other => other?,
     };
     super::print(&describe(&report, output, jobs))?;
     Ok(if report.interrupted { Outcome::Interrupted } else { Outcome::Finished })
+}
+
+/// Runs `plan` into `output` with a progress bar counting its cases as `unit` ("cases",
+/// "seeds"), shown from the first finished one and cleared at the end.
+pub(super) fn run_with_progress(
+    plan: &Plan,
+    output: &std::path::Path,
+    options: &Options,
+    unit: &str,
+) -> Result<Report, SweepError> {
+    let bar = ProgressBar::hidden();
+    let template = format!("{{elapsed_precise}} [{{bar:40}}] {{pos}}/{{len}} {unit}, {{msg}}, {{eta}} left");
+    let report = sweep::run(plan, output, options, |p: Progress| {
+        if bar.is_hidden() && bar.length().is_none() {
+            bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+            bar.set_style(ProgressStyle::with_template(&template).expect("the template is a valid literal"));
+            bar.set_length(p.total as u64);
+        }
+        bar.set_position(p.done as u64);
+        bar.set_message(format!("{} failed", p.failed));
+    });
+    bar.finish_and_clear();
+    report
 }
 
 /// Says which stage Ctrl-C or SIGTERM stopped, and what it left.

@@ -223,6 +223,18 @@ impl Text {
             ))
         }
     }
+
+    /// A finite period (PER > 0) of `what`, which has no ω = 0 or ω = ∞ rows.
+    fn finite_period(&self, row: &Row<'_>, what: &str) -> Result<f64, WamitError> {
+        match self.period(row)? {
+            Period::Finite(p) => Ok(p),
+            Period::Zero | Period::Infinite => Err(self.error(
+                row.line,
+                Some(row.fields[0].col),
+                format!("{what} is defined at finite periods only (PER > 0)"),
+            )),
+        }
+    }
 }
 
 fn fields(line: &str) -> Vec<Field<'_>> {
@@ -336,55 +348,66 @@ fn parse_radiation(file: &Text, scale: Scale) -> Result<Radiation, WamitError> {
     })
 }
 
-fn parse_excitation(file: &Text, scale: Scale) -> Result<Excitation, WamitError> {
-    let mut values: BTreeMap<(u64, i64), ComplexVector6> = BTreeMap::new();
-    let (mut periods, mut headings) = (BTreeMap::new(), BTreeMap::new());
-    for row in file.rows(&[7], "PER β I |X| phase Re Im (7 columns)")? {
-        let period = match file.period(&row)? {
-            Period::Finite(p) => p,
-            Period::Zero | Period::Infinite => {
-                return Err(file.error(
-                    row.line,
-                    Some(row.fields[0].col),
-                    "the excitation is defined at finite periods only (PER > 0)".into(),
-                ));
+/// A table read row by row, one value per degree of freedom at each period and heading, gathered
+/// into the physics' layout: frequencies increasing, heading by heading, a pair a file leaves
+/// out 0.
+struct HeadingTable<T> {
+    values: BTreeMap<(u64, i64), T>,
+    periods: BTreeMap<u64, f64>,
+    headings: BTreeMap<i64, f64>,
+}
+
+impl<T: Copy> HeadingTable<T> {
+    fn new() -> Self {
+        Self { values: BTreeMap::new(), periods: BTreeMap::new(), headings: BTreeMap::new() }
+    }
+
+    /// The entry at `period` \[s] and `heading` \[deg] (`zero` until set), to set a dof of.
+    fn entry(&mut self, period: f64, heading: f64, zero: T) -> &mut T {
+        // Headings keyed in millidegrees: the same heading written alike by every row.
+        let heading_key = (heading * 1000.0).round() as i64;
+        self.periods.insert(period.to_bits(), 2.0 * PI / period);
+        self.headings.insert(heading_key, heading.to_radians());
+        self.values.entry((period.to_bits(), heading_key)).or_insert(zero)
+    }
+
+    fn is_empty(&self) -> bool {
+        self.values.is_empty()
+    }
+
+    /// Frequencies [rad/s] increasing, headings \[rad] and the values heading by heading.
+    fn finish(self, zero: T) -> (Vec<f64>, Vec<f64>, Vec<T>) {
+        // Longest period first is lowest frequency first.
+        let frequencies: Vec<f64> = self.periods.values().rev().copied().collect();
+        let period_keys: Vec<u64> = self.periods.keys().rev().copied().collect();
+        let mut grid = Vec::with_capacity(frequencies.len() * self.headings.len());
+        for heading in self.headings.keys() {
+            for period in &period_keys {
+                grid.push(self.values.get(&(*period, *heading)).copied().unwrap_or(zero));
             }
-        };
+        }
+        (frequencies, self.headings.into_values().collect(), grid)
+    }
+}
+
+fn parse_excitation(file: &Text, scale: Scale) -> Result<Excitation, WamitError> {
+    let mut table = HeadingTable::new();
+    for row in file.rows(&[7], "PER β I |X| phase Re Im (7 columns)")? {
+        let period = file.finite_period(&row, "the excitation")?;
         let heading = file.number(&row, 1, "the heading β")?;
         let i = file.dof(&row, 2)?;
         let m = scale.density * scale.gravity * scale.length.powi(if i < 3 { 2 } else { 3 });
         let x = Complex::new(file.number(&row, 5, "Re X")?, file.number(&row, 6, "Im X")?) * m;
-        // Headings keyed in millidegrees: the same heading written alike by every row.
-        let heading_key = (heading * 1000.0).round() as i64;
-        periods.insert(period.to_bits(), 2.0 * PI / period);
-        headings.insert(heading_key, heading.to_radians());
-        values.entry((period.to_bits(), heading_key)).or_insert_with(ComplexVector6::zeros)[i] = x;
+        table.entry(period, heading, ComplexVector6::zeros())[i] = x;
     }
-    let frequencies: Vec<f64> = periods.values().rev().copied().collect();
-    let period_keys: Vec<u64> = periods.keys().rev().copied().collect();
-    let mut grid = Vec::with_capacity(frequencies.len() * headings.len());
-    for heading in headings.keys() {
-        for period in &period_keys {
-            grid.push(values.get(&(*period, *heading)).copied().unwrap_or_else(ComplexVector6::zeros));
-        }
-    }
-    Ok(Excitation { frequencies, headings: headings.into_values().collect(), values: grid })
+    let (frequencies, headings, values) = table.finish(ComplexVector6::zeros());
+    Ok(Excitation { frequencies, headings, values })
 }
 
 fn parse_mean_drift(file: &Text, scale: Scale, source: DriftSource) -> Result<MeanDrift, WamitError> {
-    let mut values: BTreeMap<(u64, i64), Vector6> = BTreeMap::new();
-    let (mut periods, mut headings) = (BTreeMap::new(), BTreeMap::new());
+    let mut table = HeadingTable::new();
     for row in file.rows(&[7, 8], "PER β₁ β₂ I |F| phase Re Im (8 columns, or 7 with one heading)")? {
-        let period = match file.period(&row)? {
-            Period::Finite(p) => p,
-            Period::Zero | Period::Infinite => {
-                return Err(file.error(
-                    row.line,
-                    Some(row.fields[0].col),
-                    "the mean drift is defined at finite periods only (PER > 0)".into(),
-                ));
-            }
-        };
+        let period = file.finite_period(&row, "the mean drift")?;
         let bidirectional = row.fields.len() == 8;
         let heading = file.number(&row, 1, "the heading β₁")?;
         if bidirectional && file.number(&row, 2, "the heading β₂")? != heading {
@@ -393,13 +416,9 @@ fn parse_mean_drift(file: &Text, scale: Scale, source: DriftSource) -> Result<Me
         let first_value = if bidirectional { 4 } else { 3 };
         let i = file.dof(&row, first_value - 1)?;
         let unit = scale.density * scale.gravity * scale.length.powi(if i < 3 { 1 } else { 2 });
-        let d = file.number(&row, first_value + 2, "Re F̄")? * unit;
-        let heading_key = (heading * 1000.0).round() as i64;
-        periods.insert(period.to_bits(), 2.0 * PI / period);
-        headings.insert(heading_key, heading.to_radians());
-        values.entry((period.to_bits(), heading_key)).or_insert_with(Vector6::zeros)[i] = d;
+        table.entry(period, heading, Vector6::zeros())[i] = file.number(&row, first_value + 2, "Re F̄")? * unit;
     }
-    if values.is_empty() {
+    if table.is_empty() {
         return Err(WamitError {
             path: file.path.clone(),
             line: None,
@@ -407,15 +426,8 @@ fn parse_mean_drift(file: &Text, scale: Scale, source: DriftSource) -> Result<Me
             message: "no row with β₁ = β₂: Tether reads the drift of a unidirectional sea".into(),
         });
     }
-    let frequencies: Vec<f64> = periods.values().rev().copied().collect();
-    let period_keys: Vec<u64> = periods.keys().rev().copied().collect();
-    let mut grid = Vec::with_capacity(frequencies.len() * headings.len());
-    for heading in headings.keys() {
-        for period in &period_keys {
-            grid.push(values.get(&(*period, *heading)).copied().unwrap_or_else(Vector6::zeros));
-        }
-    }
-    MeanDrift::new(frequencies, headings.into_values().collect(), grid, source).map_err(|e| WamitError {
+    let (frequencies, headings, values) = table.finish(Vector6::zeros());
+    MeanDrift::new(frequencies, headings, values, source).map_err(|e| WamitError {
         path: file.path.clone(),
         line: None,
         col: None,

@@ -9,7 +9,7 @@
 
 use super::drift::MeanDrift;
 pub use super::tables::CoefficientsError;
-use super::tables::{check_count, check_finite, check_frequencies, check_headings};
+use super::tables::{bracket_frequency, check_count, check_finite, check_frequencies, check_headings};
 use nalgebra::Complex;
 
 /// 6 × 6 matrix over the body's degrees of freedom (added mass, damping, stiffness).
@@ -40,18 +40,12 @@ impl Excitation {
     /// `X(ω, β_h)` interpolated linearly in ω (real and imaginary parts) at heading index
     /// `heading`; outside the frequencies, the end value held.
     pub fn interpolate(&self, omega: f64, heading: usize) -> ComplexVector6 {
-        let n = self.frequencies.len();
-        let upper = self.frequencies.partition_point(|&w| w < omega);
-        if upper == 0 {
-            return self.at(heading, 0);
+        let bracket = bracket_frequency(&self.frequencies, omega);
+        let (x0, x1) = (self.at(heading, bracket.lower), self.at(heading, bracket.upper));
+        if bracket.upper == bracket.lower {
+            return x0;
         }
-        if upper == n {
-            return self.at(heading, n - 1);
-        }
-        let (w0, w1) = (self.frequencies[upper - 1], self.frequencies[upper]);
-        let s = (omega - w0) / (w1 - w0);
-        let (x0, x1) = (self.at(heading, upper - 1), self.at(heading, upper));
-        x0 + (x1 - x0) * Complex::from(s)
+        x0 + (x1 - x0) * Complex::from(bracket.fraction)
     }
 }
 

@@ -22,7 +22,8 @@
 //! for the excitation ([`super::excitation`]).
 
 use super::tables::{
-    CoefficientsError, HeadingMissing, bracket_heading, check_count, check_finite, check_frequencies, check_headings,
+    CoefficientsError, HeadingMissing, bracket_frequency, bracket_heading, check_count, check_finite,
+    check_frequencies, check_headings,
 };
 use crate::water::waves::WaveComponent;
 use nalgebra::Complex;
@@ -114,17 +115,12 @@ impl MeanDrift {
 
     /// `D(ω, β_h)` linear in ω at heading index `heading`; outside the frequencies, the end value.
     fn interpolate(&self, omega: f64, heading: usize) -> Vector6 {
-        let n = self.frequencies.len();
-        let upper = self.frequencies.partition_point(|&w| w < omega);
-        if upper == 0 {
-            return self.at(heading, 0);
+        let bracket = bracket_frequency(&self.frequencies, omega);
+        let lower = self.at(heading, bracket.lower);
+        if bracket.upper == bracket.lower {
+            return lower;
         }
-        if upper == n {
-            return self.at(heading, n - 1);
-        }
-        let (w0, w1) = (self.frequencies[upper - 1], self.frequencies[upper]);
-        let s = (omega - w0) / (w1 - w0);
-        self.at(heading, upper - 1) * (1.0 - s) + self.at(heading, upper) * s
+        lower * (1.0 - bracket.fraction) + self.at(heading, bracket.upper) * bracket.fraction
     }
 
     /// `D(ω, β)`: linear in ω at the bracketing headings, then linear in β.

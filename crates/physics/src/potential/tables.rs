@@ -126,3 +126,25 @@ pub(crate) fn check_headings(what: &'static str, headings: &[f64]) -> Result<(),
     }
     Ok(())
 }
+
+/// Where a frequency falls among a table's: the points either side and the fraction of the way
+/// from the lower to the upper; outside the table, its end point twice (the end value held).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct FrequencyBracket {
+    pub lower: usize,
+    pub upper: usize,
+    pub fraction: f64,
+}
+
+/// The bracket of `omega` [rad/s] among `frequencies` (strictly increasing, not empty:
+/// [`check_frequencies`]).
+pub(crate) fn bracket_frequency(frequencies: &[f64], omega: f64) -> FrequencyBracket {
+    let n = frequencies.len();
+    let upper = frequencies.partition_point(|&w| w < omega);
+    if upper == 0 || upper == n {
+        let end = upper.min(n - 1);
+        return FrequencyBracket { lower: end, upper: end, fraction: 0.0 };
+    }
+    let (w0, w1) = (frequencies[upper - 1], frequencies[upper]);
+    FrequencyBracket { lower: upper - 1, upper, fraction: (omega - w0) / (w1 - w0) }
+}

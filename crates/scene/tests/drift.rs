@@ -287,3 +287,48 @@ fn the_slow_surge_of_a_moored_body_in_an_irregular_sea_has_the_drifts_variance()
     assert!((mean / expected_mean - 1.0).abs() < 0.01, "mean {mean} against {expected_mean}");
     assert!((variance / expected_variance - 1.0).abs() < 0.05, "variance {variance} against {expected_variance}");
 }
+
+/// Bad drift input in a scene (check 6): a drift model on a body whose files have no `.8` or
+/// `.9`, and a sea heading the `.8` lacks while the `.3` has it — each one line at the body's
+/// `potential`, no panic.
+#[test]
+fn a_drift_the_files_cannot_give_is_refused_at_the_bodys_potential() {
+    let directory = tempfile::tempdir().expect("a temporary directory");
+    let copy = |extension: &str| {
+        std::fs::copy(cylinder().with_extension(extension), directory.path().join(format!("body.{extension}")))
+            .expect("the shipped cylinder's files");
+    };
+    copy("1");
+    copy("3");
+    let stem = directory.path().join("body").display().to_string();
+    let regular = |heading: f64| format!("Water(waves: Regular(height: 0.5, period: 6.0, heading_deg: {heading}))");
+    let error =
+        tether_test_support::error_of(&moored_cylinder(&regular(0.0), &format!("file: {stem:?}, drift: Mean"), 4.0e3));
+    assert!(
+        error.contains("drift: Mean needs the panel code's mean drift coefficients, and no .8 or .9 file was read")
+            && !error.contains('\n'),
+        "{error}"
+    );
+    // The excitation at 0° and 90° (the 0° rows again: a refusal needs only the headings), the
+    // drift at 0° alone.
+    let excitation = std::fs::read_to_string(cylinder().with_extension("3")).expect("the .3");
+    let turned: String = excitation
+        .lines()
+        .filter_map(|line| {
+            let fields: Vec<&str> = line.split_whitespace().collect();
+            (fields.len() == 7).then(|| format!("{} 90.0 {}\n", fields[0], fields[2..].join(" ")))
+        })
+        .collect();
+    std::fs::write(directory.path().join("body.3"), format!("{excitation}\n{turned}")).expect("written");
+    copy("8");
+    let error = tether_test_support::error_of(&moored_cylinder(
+        &regular(90.0),
+        &format!("file: {stem:?}, drift: Newman"),
+        4.0e3,
+    ));
+    assert!(
+        error.contains("the waves travel toward 90.000° but the potential-flow file's mean drift covers headings 0.000° to 0.000° only")
+            && !error.contains('\n'),
+        "{error}"
+    );
+}

@@ -197,6 +197,23 @@ fn bad_air_is_refused_at_its_field() {
             "rotor: thrust: C_T must be ≥ 0, got -0.7",
         ),
         (good.replace("speed: 20.0", "speed: inf"), "finite"),
+        // Finite numbers whose products overflow: refused where they are derived.
+        (
+            good.replace(
+                "coefficients: (1.2, 1.2, 0.0), areas: (4.0, 4.0, 1.0)",
+                "coefficients: (1e200, 1.2, 0.0), areas: (1e200, 4.0, 1.0)",
+            ),
+            "windage: C·A must be finite, got inf (from areas = 1e200)",
+        ),
+        (
+            sprung_body(
+                "air: Air(wind: Wind(speed: 20.0, height: 10.0, profile: PowerLaw(1e300)), ramp: 0.0),",
+                "rotor: Rotor(point: (0.0, 0.0, 80.0), area: 10.0, thrust: Table([(3.0, 0.8), (25.0, 0.1)]))",
+                500.0,
+                0.0,
+            ),
+            "rotor: the mean wind at a load point must be finite, got inf (from speed = 20)",
+        ),
     ];
     for (text, expected) in cases {
         let error = tether_test_support::error_of(&text);

@@ -15,7 +15,7 @@ use super::windage::{ExposedHull, Windage, WindageSpec, exposed_hull};
 use crate::body::{BodyFrame, Load, RigidBody};
 use crate::math::Vec3;
 use crate::mesh::MeshError;
-use crate::parameter::ParameterError;
+use crate::parameter::{Bound, ParameterError, require_derived};
 
 /// What a scene says of the wind loads on one body: its windage, its rotor, either or both.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -260,10 +260,16 @@ fn wind_body(
     let axes = body.reference_in_principal.rotation.to_rotation_matrix().into_inner();
     let origin = body.reference_in_principal.translation.vector;
     let u10 = air.mean_speed(10.0);
+    // The mean wind and the gusts' variance at a load point, derived from the checked wind:
+    // refused when they overflow, naming the wind's speed.
     let exposure = |point: &Vec3| {
         let height = (frame.position + frame.rotation * point).z - level;
         let mean = air.mean_speed(height);
-        Exposure { mean, gusts: air.gusts().at(height, u10, mean) }
+        let gusts = air.gusts().at(height, u10, mean);
+        let speed = [("speed", air.spec().wind.speed)];
+        require_derived("the mean wind at a load point", mean, Bound::NonNegative, "m/s", &speed)?;
+        require_derived("the gusts' variance at a load point", gusts.variance(), Bound::NonNegative, "m²/s²", &speed)?;
+        Ok(Exposure { mean, gusts })
     };
     let windage = match &spec.windage {
         None => None,
@@ -276,7 +282,7 @@ fn wind_body(
                 }
             };
             let windage = Windage::new(windage, axes, origin, &exposed).map_err(WindLoadError::Windage)?;
-            let at = exposure(windage.center());
+            let at = exposure(windage.center()).map_err(WindLoadError::Windage)?;
             Some((windage, at))
         }
     };
@@ -284,7 +290,7 @@ fn wind_body(
         None => None,
         Some(rotor) => {
             let rotor = Rotor::new(rotor, &axes, &origin).map_err(WindLoadError::Rotor)?;
-            let at = exposure(rotor.hub());
+            let at = exposure(rotor.hub()).map_err(WindLoadError::Rotor)?;
             Some((rotor, at))
         }
     };

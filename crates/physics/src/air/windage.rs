@@ -12,7 +12,7 @@
 //! centroid of those faces.
 
 use crate::math::{Mat3, Vec3};
-use crate::parameter::{Bound, ParameterError, require};
+use crate::parameter::{Bound, ParameterError, require, require_derived};
 
 /// What a scene says of a body's windage, in its reference frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -70,7 +70,11 @@ impl Windage {
             (None, None) => exposed.centroid,
             (None, Some(_)) => Vec3::zeros(),
         };
-        let drag_areas = [0, 1, 2].map(|i| spec.coefficients[i] * areas[i]);
+        let mut drag_areas = [0.0; 3];
+        for (i, drag_area) in drag_areas.iter_mut().enumerate() {
+            let inputs = [("coefficients", spec.coefficients[i]), ("areas", areas[i])];
+            *drag_area = require_derived("C·A", spec.coefficients[i] * areas[i], Bound::NonNegative, "m²", &inputs)?;
+        }
         Ok(Self { drag_areas, axes, center })
     }
 

@@ -480,6 +480,71 @@ fn the_potential_flow_switch_reaches_the_running_world_and_shows_what_runs() {
     assert!(names("/plots/water/block/radiation").is_empty());
 }
 
+/// The drift and air knobs (PHYSICS.md §10) on the cylinder of `tests/fixtures/rao/cylinder.ron`
+/// in a 15 m/s wind: the drift model is a choice for the cylinder (its files have a `.8`), not
+/// for the block; Newman chosen, the running world's cylinder runs Newman's drift and the tuned
+/// scene says so. The wind speed, the gusts (steady to NPD) and their seed reach the running
+/// air; a negative speed is refused with the loader's reason, the run keeping its wind; Revert
+/// puts the file's air and drift back in the running world.
+#[test]
+fn drift_and_air_knobs_tune_the_running_world_and_bad_values_are_refused() {
+    use tether_physics::air::GustSpec;
+    use tether_physics::potential::DriftModel;
+    let file = repo("validation/potential-flow/cylinder/cylinder");
+    let fixture = std::fs::read_to_string(repo("tests/fixtures/rao/cylinder.ron")).unwrap();
+    let text = fixture
+        .replace("\"../../../validation/potential-flow/cylinder/cylinder\"", &format!("{file:?}"))
+        .replace("bodies: [", "air: Air(wind: Wind(speed: 15.0)),\n    bodies: [")
+        .replace(
+            "center: (0.0, 0.0, 2.0)),",
+            "center: (0.0, 0.0, 2.0)),\n windage: Windage(coefficients: (1.0, 1.0, 0.0)),",
+        );
+    assert_eq!(text.matches("windage").count() + text.matches("air: Air").count(), 2, "{text}");
+    let dir = scenes_folder(&[("cylinder.ron", &text)]);
+    let mut harness = tall_harness(panel(dir.path()));
+    open_from_list(&mut harness, "cylinder.ron");
+    until(&mut harness, "the status", |p| p.status().is_some_and(|s| s.drift == [(0, DriftModel::Off)]));
+    harness.run_steps(2);
+    assert_eq!(harness.query_all_by_label("wave drift").count(), 1, "the cylinder's choice, not the block's");
+    let drift = |world: &World| {
+        let floating = world.system().water().expect("water").floating_body(0).expect("the cylinder floats");
+        floating.potential_model().expect("potential flow").drift_model()
+    };
+    let air = |world: &World| *world.system().air().expect("air").air().spec();
+
+    choose_view(&mut harness, "Off", "Newman");
+    until(&mut harness, "the drift applied", |p| p.status().is_some_and(|s| s.drift == [(0, DriftModel::Newman)]));
+    assert_eq!(drift(&world(&harness)), DriftModel::Newman);
+    let tuned = |harness: &Harness<'_, ControlPanel>| harness.state().scene().expect("a scene").tuned.clone();
+    let potential = |file: &tether_scene::SceneFile| file.bodies[0].hydro.as_ref().and_then(|h| h.potential.clone());
+    assert_eq!(potential(&tuned(&harness)).expect("the cylinder's").drift, DriftModel::Newman);
+
+    set_knob(&mut harness, "wind speed U_r (at z_r)", 22.0);
+    until(&mut harness, "the air applied", |p| p.log().any(|l| l.text.starts_with("the air applied at t = ")));
+    assert_eq!(air(&world(&harness)).wind.speed, 22.0);
+    choose_view(&mut harness, "steady", "NPD (API, ISO 19901-1)");
+    until(&mut harness, "the gusts applied", |p| {
+        p.log().filter(|l| l.text.starts_with("the air applied")).count() == 2
+    });
+    assert_eq!(air(&world(&harness)).wind.gusts, GustSpec::Npd { seed: 1, components: 200 });
+    set_knob(&mut harness, "gust seed", 9.0);
+    until(&mut harness, "the seed applied", |p| p.log().filter(|l| l.text.starts_with("the air applied")).count() == 3);
+    assert_eq!(air(&world(&harness)).wind.gusts, GustSpec::Npd { seed: 9, components: 200 });
+
+    set_knob(&mut harness, "wind speed U_r (at z_r)", -1.0);
+    harness.get_by_label_contains("Refused: wind.speed = -1 not applied (the run keeps 22): air: ");
+    harness.get_by_label_contains("speed must be ≥ 0 m/s, got -1");
+    assert_eq!(air(&world(&harness)).wind.speed, 22.0);
+
+    harness.get_by_label("Revert to file").click();
+    until(&mut harness, "the revert", |p| p.scene().is_some_and(|s| s.tuned == s.file));
+    until(&mut harness, "the file's drift", |p| p.status().is_some_and(|s| s.drift == [(0, DriftModel::Off)]));
+    until(&mut harness, "the file's wind", |p| p.log().filter(|l| l.text.starts_with("the air applied")).count() == 4);
+    let reverted = world(&harness);
+    assert_eq!((air(&reverted).wind.speed, air(&reverted).wind.gusts), (15.0, GustSpec::Steady));
+    assert_eq!(drift(&reverted), DriftModel::Off);
+}
+
 /// A body whose scene asks for linear hydrostatics (`hydrostatics: Linear`, PHYSICS.md §9) says
 /// so on its switch, which the plain label does not match, while the running world has them;
 /// switched off, the running world has no potential flow, so its hydrostatics are the mesh's.

@@ -37,6 +37,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{self, Receiver, TryRecvError};
 use tether_physics::coupling::InternalDamping;
 use tether_scene::SceneFile;
+use tether_scene::air::{AirDef, GustsDef};
 use tether_scene::file::{CouplingDef, LawDef};
 use tether_scene::line_model::LineModelDef;
 use tether_scene::water::{HydroDef, WaterDef, WavesDef};
@@ -76,6 +77,9 @@ pub fn fittables(file: &SceneFile) -> Vec<Fittable> {
         if let Some(hydro) = &body.hydro {
             hydro_values(&mut Section::new(&mut found, KnobId::Hydro(index), "bodies", &body.name), hydro);
         }
+    }
+    if let Some(air) = &file.air {
+        air_values(&mut Section { found: &mut found, knob: KnobId::Air, path: "air".into(), name: "air" }, air);
     }
     found
 }
@@ -192,6 +196,15 @@ fn water_values(section: &mut Section, water: &WaterDef) {
         section.add("current.heading_deg", "current heading", "°", current.heading_deg);
     }
     section.add("density", "density ρ", "kg/m³", water.density);
+}
+
+fn air_values(section: &mut Section, air: &AirDef) {
+    section.add("wind.speed", "wind speed U_r", "m/s", air.wind.speed);
+    section.add("wind.heading_deg", "wind heading", "°", air.wind.heading_deg);
+    if let GustsDef::Kaimal { intensity, .. } = air.wind.gusts {
+        section.add("wind.gusts.intensity", "turbulence intensity", "–", intensity);
+    }
+    section.add("density", "air density ρ_a", "kg/m³", air.density);
 }
 
 fn hydro_values(section: &mut Section, hydro: &HydroDef) {

@@ -28,6 +28,7 @@
 //!   memory limit;
 //! - [`watch`], [`dialogs`]: the open file watched on disk, file dialogs off the GUI thread.
 
+pub mod air;
 pub mod app;
 pub mod contact_estimator;
 pub mod dialogs;

@@ -11,6 +11,7 @@ use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 use tether_physics::integrator::Timing;
+use tether_scene::air::AirDef;
 use tether_scene::build::{self, Bodies};
 use tether_scene::file::CouplingDef;
 use tether_scene::water::{HydroDef, WaterDef};
@@ -38,13 +39,26 @@ static WATER: Group<WaterDef, Refusal> = Group {
     build: |candidate, _, _| Ok(Command::SetWater(build::water_spec(candidate).map_err(|p| p.message)?)),
 };
 
-/// Each body's drag and added-mass coefficients (`None`: the body declares none), a knob per
-/// body.
+/// Each body's drag and added-mass coefficients and, with potential flow, its drift model
+/// (`None`: the body declares none), a knob per body.
 static HYDRO: Group<Option<HydroDef>, Refusal> = Group {
     values: |file| file.bodies.iter().map(|body| body.hydro.clone()).collect(),
     put: |file, index, hydro| file.bodies[index].hydro = hydro,
     build: |candidate, body, bodies| {
-        Ok(Command::SetHydro { body, spec: build::hydro_spec(candidate, body, bodies).map_err(|p| p.message)? })
+        let spec = build::hydro_spec(candidate, body, bodies).map_err(|p| p.message)?;
+        let hydro = candidate.bodies[body].hydro.as_ref();
+        let drift = hydro.and_then(|h| h.potential.as_ref()).map(|potential| potential.drift);
+        Ok(Command::SetHydro { body, spec, drift })
+    },
+};
+
+/// The air's wind, gusts and density: one knob, none without air.
+static AIR: Group<AirDef, Refusal> = Group {
+    values: |file| file.air.iter().cloned().collect(),
+    put: |file, _, air| file.air = Some(air),
+    build: |candidate, _, _| {
+        let (spec, loads) = build::air_spec(candidate).map_err(|p| p.message)?;
+        Ok(Command::SetAir { spec, loads })
     },
 };
 
@@ -56,6 +70,7 @@ pub enum KnobId {
     Water,
     /// Body `index`'s coefficients in the water.
     Hydro(usize),
+    Air,
 }
 
 /// Every knob of the scene, read from one scene file: the file's when it is loaded, a sweep
@@ -65,12 +80,18 @@ pub struct SceneKnobs {
     pub couplings: Knobs<CouplingDef, Refusal>,
     pub water: Knobs<WaterDef, Refusal>,
     pub hydro: Knobs<Option<HydroDef>, Refusal>,
+    pub air: Knobs<AirDef, Refusal>,
 }
 
 impl SceneKnobs {
     /// The knobs showing what `file` says.
     pub fn of(file: &SceneFile) -> Self {
-        Self { couplings: Knobs::of(&COUPLINGS, file), water: Knobs::of(&WATER, file), hydro: Knobs::of(&HYDRO, file) }
+        Self {
+            couplings: Knobs::of(&COUPLINGS, file),
+            water: Knobs::of(&WATER, file),
+            hydro: Knobs::of(&HYDRO, file),
+            air: Knobs::of(&AIR, file),
+        }
     }
 }
 
@@ -178,6 +199,7 @@ impl OpenScene {
             KnobId::Coupling(index) => knobs.couplings.tune(index, tuned, bodies),
             KnobId::Water => knobs.water.tune(0, tuned, bodies),
             KnobId::Hydro(index) => knobs.hydro.tune(index, tuned, bodies),
+            KnobId::Air => knobs.air.tune(0, tuned, bodies),
         }
     }
 
@@ -233,6 +255,7 @@ impl OpenScene {
             KnobId::Coupling(index) => self.knobs.couplings.show(index, file),
             KnobId::Water => self.knobs.water.show(0, file),
             KnobId::Hydro(index) => self.knobs.hydro.show(index, file),
+            KnobId::Air => self.knobs.air.show(0, file),
         }
         self.tune(knob)
     }
@@ -258,7 +281,8 @@ impl OpenScene {
         let couplings = knobs.couplings.revert(file, tuned).into_iter().map(KnobId::Coupling);
         let water = knobs.water.revert(file, tuned).into_iter().map(|_| KnobId::Water);
         let hydro = knobs.hydro.revert(file, tuned).into_iter().map(KnobId::Hydro);
-        couplings.chain(water).chain(hydro).collect()
+        let air = knobs.air.revert(file, tuned).into_iter().map(|_| KnobId::Air);
+        couplings.chain(water).chain(hydro).chain(air).collect()
     }
 
     /// The time step settings of `candidate` (the tuned scene with the timing knobs written in),

@@ -5,6 +5,7 @@
 //! State is split the egui-demo way: [`Settings`] is plain data worth keeping between sessions;
 //! the runtime handles (thread, watcher, dialogs) live beside it.
 
+use super::air;
 use super::contact_estimator::{self, ImpactDraft, UseEstimate};
 use super::dialogs::{Dialogs, Purpose};
 use super::fit::{self, Decision, FitAction, FitDraft, FitUpdate, SceneFits};
@@ -346,6 +347,7 @@ impl ControlPanel {
             }
             self.tuning_ui(ui);
             self.water_ui(ui);
+            self.air_ui(ui);
             self.statics_ui(ui, selected);
             self.fit_ui(ui);
         });
@@ -521,6 +523,7 @@ impl ControlPanel {
     fn water_ui(&mut self, ui: &mut egui::Ui) {
         let Some(open) = &mut self.scene else { return };
         let running = self.status.as_ref().map_or(&[][..], |s| s.potential_flow.as_slice());
+        let drift = self.status.as_ref().map_or(&[][..], |s| s.drift.as_slice());
         let knobs = &mut open.knobs;
         let drafts = knobs.water.knobs_mut().first_mut().map(|water| water::WaterKnobs {
             water,
@@ -537,6 +540,7 @@ impl ControlPanel {
                         hydro,
                         refusals: refusals.as_slice(),
                         potential_flow: running.iter().find(|(b, _)| *b == index).map(|(_, on)| *on),
+                        drift_data: drift.iter().any(|(b, _)| *b == index),
                     })
                 })
                 .collect(),
@@ -547,6 +551,14 @@ impl ControlPanel {
                 WaterAction::Hydro(index) => self.tune(KnobId::Hydro(index)),
                 WaterAction::PotentialFlow { body, on } => self.simulation.send(Command::SetPotentialFlow { body, on }),
             }
+        }
+    }
+
+    /// The air panel: the wind, its gusts, the air's density (none without air).
+    fn air_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(open) = &mut self.scene else { return };
+        if air::ui(ui, open.knobs.air.knobs_mut().first_mut()) {
+            self.tune(KnobId::Air);
         }
     }
 

@@ -9,7 +9,7 @@ use super::knobs::{Knob, Refused};
 use super::tuning::knob;
 use rerun::external::egui;
 use std::fmt::Display;
-use tether_physics::potential::HydrostaticsModel;
+use tether_physics::potential::{DriftModel, HydrostaticsModel};
 use tether_scene::water::{CurrentDef, HydroDef, WaterDef, WavesDef};
 
 /// What the water panel asks for.
@@ -32,6 +32,9 @@ pub struct FloatingKnobs<'a, R> {
     pub refusals: &'a [Refused<R>],
     /// Whether its potential flow runs (`None`: it has no potential-flow data).
     pub potential_flow: Option<bool>,
+    /// Whether its panel data hold mean drift coefficients (`.8`/`.9`): then its drift model is
+    /// a knob.
+    pub drift_data: bool,
 }
 
 /// The water's knobs, as the panel shows them; `R` is why a value was refused.
@@ -55,7 +58,7 @@ pub fn ui<R: Display>(ui: &mut egui::Ui, knobs: Option<WaterKnobs<R>>) -> Vec<Wa
         for refused in water_refusals.iter() {
             ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refused}"));
         }
-        for FloatingKnobs { index, name, hydro, refusals, potential_flow } in bodies {
+        for FloatingKnobs { index, name, hydro, refusals, potential_flow, drift_data } in bodies {
             ui.label(format!("body \"{name}\" in the water"));
             let linear = hydro.potential.as_ref().is_some_and(|p| p.hydrostatics == HydrostaticsModel::Linear);
             if let Some(running) = potential_flow
@@ -63,8 +66,10 @@ pub fn ui<R: Display>(ui: &mut egui::Ui, knobs: Option<WaterKnobs<R>>) -> Vec<Wa
             {
                 actions.push(WaterAction::PotentialFlow { body: index, on });
             }
-            let edited =
-                egui::Grid::new(("hydro knobs", index)).num_columns(3).show(ui, |ui| hydro_knobs(ui, hydro)).inner;
+            let edited = egui::Grid::new(("hydro knobs", index))
+                .num_columns(3)
+                .show(ui, |ui| (drift_data && drift_choice(ui, index, hydro)) | hydro_knobs(ui, hydro))
+                .inner;
             if edited {
                 actions.push(WaterAction::Hydro(index));
             }
@@ -124,6 +129,25 @@ fn water_knobs(ui: &mut egui::Ui, water: &mut WaterDef) -> bool {
         edited = true;
     }
     edited | knob(ui, "density ρ", &mut water.density, "kg/m³")
+}
+
+/// The drift model of body `index`'s potential flow (PHYSICS.md §10), a grid row; true when
+/// another was chosen.
+fn drift_choice(ui: &mut egui::Ui, index: usize, hydro: &mut HydroDef) -> bool {
+    let Some(potential) = &mut hydro.potential else { return false };
+    let tip = "The second-order wave drift from the panel code's mean drift coefficients (.8/.9): \
+               Off; Mean, the constant Σ a² D(ω); Newman, the mean and its slow variation at the \
+               sea's difference frequencies (what excites a moored body's surge resonance).";
+    let mut chosen = false;
+    ui.label("wave drift").on_hover_text(tip);
+    egui::ComboBox::from_id_salt(("drift model", index)).selected_text(potential.drift.name()).show_ui(ui, |ui| {
+        for model in DriftModel::ALL {
+            chosen |= ui.selectable_value(&mut potential.drift, model, model.name()).clicked();
+        }
+    });
+    ui.label("");
+    ui.end_row();
+    chosen
 }
 
 /// Drag and added-mass coefficients per body axis; true when one was edited.

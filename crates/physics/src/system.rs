@@ -33,7 +33,9 @@ use crate::energy::{CouplingPower, Powers};
 use crate::evaluation::Evaluation;
 use crate::math::Vec3;
 use crate::parameter::ParameterError;
-use crate::potential::{HydrostaticsModel, LinearHydrostatics, PotentialBody, PotentialError, PotentialSpec};
+use crate::potential::{
+    DriftModel, HydrostaticsModel, LinearHydrostatics, PotentialBody, PotentialError, PotentialSpec,
+};
 use crate::seabed::Seabed;
 use crate::simd::{Level, SupportedLevel};
 use crate::surroundings::Surroundings;
@@ -70,6 +72,8 @@ pub enum SystemError {
     UnknownBody { coupling: String, body: usize, count: usize },
     #[error("floating body {body} of {count} does not exist or floats twice")]
     FloatingBody { body: usize, count: usize },
+    #[error("wind-loaded body {body} does not exist: the system has {count} bodies")]
+    UnknownWindBody { body: usize, count: usize },
     #[error(transparent)]
     Water(#[from] WaterError),
     #[error("body \"{body}\": {source}")]
@@ -78,6 +82,10 @@ pub enum SystemError {
     NoWater,
     #[error("body \"{body}\": potential flow cannot be switched: {source}")]
     Switch { body: String, source: SwitchError },
+    #[error("body \"{body}\": its drift model cannot be changed: {source}")]
+    Drift { body: String, source: SwitchError },
+    #[error("the system has no air")]
+    NoAir,
     #[error("coupling \"{coupling}\": {source}")]
     BelowSeabed { coupling: String, source: BelowSeabed },
     #[error("air: {0}")]
@@ -231,20 +239,35 @@ impl System {
     /// # Errors
     /// Air that is bad, or a body whose windage or rotor is.
     pub fn with_air(mut self, spec: AirSpec, loads: Vec<(usize, WindLoadSpec)>) -> Result<Self, SystemError> {
+        self.air = Some(self.air_stage(spec, loads)?);
+        Ok(self)
+    }
+
+    /// Replaces the air and its loads (a live edit: the world restarts its integrator after it),
+    /// built as [`System::with_air`] builds them: exposures from the poses at t = 0.
+    pub(crate) fn replace_air(&mut self, spec: AirSpec, loads: Vec<(usize, WindLoadSpec)>) -> Result<(), SystemError> {
+        if self.air.is_none() {
+            return Err(SystemError::NoAir);
+        }
+        self.air = Some(self.air_stage(spec, loads)?);
+        Ok(())
+    }
+
+    /// The air stage of `spec` loading `loads`, heights from the still water level (or 0), the
+    /// load points' exposure from the bodies' poses at t = 0.
+    fn air_stage(&self, spec: AirSpec, loads: Vec<(usize, WindLoadSpec)>) -> Result<AirStage, SystemError> {
         let count = self.bodies.len();
         if let Some(&(body, _)) = loads.iter().find(|(body, _)| *body >= count) {
-            return Err(SystemError::FloatingBody { body, count });
+            return Err(SystemError::UnknownWindBody { body, count });
         }
         let frames: Vec<_> = self.initial_states.iter().map(BodyState::frame).collect();
         let level = self.water_level().unwrap_or(0.0);
-        let stage = AirStage::new(spec, loads, &self.bodies, &frames, level).map_err(|error| match error {
+        AirStage::new(spec, loads, &self.bodies, &frames, level).map_err(|error| match error {
             AirStageError::Air(air) => SystemError::Air(air),
             AirStageError::Body { index, source } => {
                 SystemError::Wind { body: self.bodies[index].name.clone(), source }
             }
-        })?;
-        self.air = Some(stage);
-        Ok(self)
+        })
     }
 
     /// The water stage, if the system has water.
@@ -348,6 +371,16 @@ impl System {
     pub(crate) fn switch_potential_flow(&mut self, body: usize, on: bool) -> Result<Option<usize>, SystemError> {
         let stage = self.water.as_mut().ok_or(SystemError::NoWater)?;
         stage.switch_potential_flow(body, on).map_err(|source| SystemError::Switch {
+            body: self.bodies.get(body).map(|b| b.name.clone()).unwrap_or_default(),
+            source,
+        })
+    }
+
+    /// Body `body`'s mean drift loading it as `drift` from now on (a live edit, as above:
+    /// [`WaterStage::set_drift_model`]).
+    pub(crate) fn set_drift_model(&mut self, body: usize, drift: DriftModel) -> Result<(), SystemError> {
+        let stage = self.water.as_mut().ok_or(SystemError::NoWater)?;
+        stage.set_drift_model(body, drift).map(drop).map_err(|source| SystemError::Drift {
             body: self.bodies.get(body).map(|b| b.name.clone()).unwrap_or_default(),
             source,
         })

@@ -102,6 +102,61 @@ pub enum GustsDef {
     },
 }
 
+/// Which spectrum the gusts follow, if any: a [`GustsDef`]'s variant without its values (the
+/// window's choice).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GustKind {
+    Steady,
+    Npd,
+    Kaimal,
+}
+
+impl GustKind {
+    /// Every kind.
+    pub const ALL: [Self; 3] = [Self::Steady, Self::Npd, Self::Kaimal];
+
+    /// Its name as a person reads it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Steady => "steady",
+            Self::Npd => "NPD (API, ISO 19901-1)",
+            Self::Kaimal => "Kaimal (IEC 61400-1)",
+        }
+    }
+}
+
+/// IEC 61400-1's reference turbulence intensity of class B, a Kaimal wind's when it is chosen
+/// from another kind.
+const KAIMAL_INTENSITY: f64 = 0.14;
+
+impl GustsDef {
+    /// Which spectrum.
+    pub fn kind(&self) -> GustKind {
+        match self {
+            Self::Steady => GustKind::Steady,
+            Self::Npd { .. } => GustKind::Npd,
+            Self::Kaimal { .. } => GustKind::Kaimal,
+        }
+    }
+
+    /// The gusts of `kind`, with this one's seed and number of components where it has them
+    /// (the defaults otherwise), a Kaimal wind's intensity IEC class B's (0.14) when it is new.
+    pub fn of_kind(&self, kind: GustKind) -> Self {
+        let (seed, components) = match *self {
+            Self::Steady => (default_seed(), default_components()),
+            Self::Npd { seed, components } | Self::Kaimal { seed, components, .. } => (seed, components),
+        };
+        match (kind, *self) {
+            (GustKind::Steady, _) => Self::Steady,
+            (GustKind::Npd, _) => Self::Npd { seed, components },
+            (GustKind::Kaimal, kaimal @ Self::Kaimal { .. }) => kaimal,
+            (GustKind::Kaimal, Self::Steady | Self::Npd { .. }) => {
+                Self::Kaimal { intensity: KAIMAL_INTENSITY, length_scale: default_length_scale(), seed, components }
+            }
+        }
+    }
+}
+
 /// A body's windage.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(rename = "Windage", deny_unknown_fields)]

@@ -26,6 +26,7 @@ use tether_physics::world::{StepError, World};
 
 mod air;
 mod water;
+pub use air::air_spec;
 pub use water::{hydro_spec, water_spec};
 
 /// Where a problem is in the file.
@@ -261,9 +262,10 @@ fn system_problem(file: &SceneFile, error: SystemError) -> Problem {
         | SystemError::Water(_)
         | SystemError::Hydro { .. }
         | SystemError::NoWater
-        | SystemError::Switch { .. } => Problem { place: Place::Top("water"), message: error.to_string() },
+        | SystemError::Switch { .. }
+        | SystemError::Drift { .. } => Problem { place: Place::Top("water"), message: error.to_string() },
         // The air's, which `air::add_air` places.
-        SystemError::Air(_) | SystemError::Wind { .. } => {
+        SystemError::Air(_) | SystemError::Wind { .. } | SystemError::UnknownWindBody { .. } | SystemError::NoAir => {
             Problem { place: Place::Top("air"), message: error.to_string() }
         }
     }

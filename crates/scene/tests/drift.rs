@@ -332,3 +332,55 @@ fn a_drift_the_files_cannot_give_is_refused_at_the_bodys_potential() {
         "{error}"
     );
 }
+
+/// The drift model set live (the window's choice, PHYSICS.md §10): the cylinder in a JONSWAP
+/// sea built without drift and set to Newman at t = 0 runs as the cylinder built with Newman,
+/// bit for bit over 40 s; set from Newman to Mean, as one built with Mean, and to what it runs,
+/// unchanged. The three models move it differently (so the comparisons can fail). On files
+/// without a `.8` the edit is refused in one line, the world unchanged.
+#[test]
+fn a_drift_model_set_live_runs_as_one_built_with_it() {
+    use tether_physics::potential::DriftModel;
+    use tether_physics::world::World;
+    let file = cylinder().display().to_string();
+    let water = "Water(waves: Jonswap(hs: 2.0, tp: 4.0, components: 50, seed: 3), ramp: 10.0)";
+    let built = |model: &str| {
+        tether_test_support::scene(&moored_cylinder(water, &format!("file: {file:?}, drift: {model}"), 4.0e3)).world
+    };
+    let run = |mut world: World| {
+        while world.time() < 40.0 {
+            world.step().expect("a stable cylinder");
+        }
+        world.synchronized_states()
+    };
+    let mut newman = built("Off");
+    newman.set_drift_model(0, DriftModel::Newman).expect("the cylinder has a .8");
+    let mut mean = built("Newman");
+    mean.set_drift_model(0, DriftModel::Mean).expect("the cylinder has a .8");
+    let unchanged = mean.clone();
+    mean.set_drift_model(0, DriftModel::Mean).expect("what it runs");
+    assert_eq!(mean.synchronized_states(), unchanged.synchronized_states());
+    let (newman, mean, off) = (run(newman), run(mean), run(built("Off")));
+    assert_eq!(newman, run(built("Newman")), "set live as built with Newman");
+    assert_eq!(mean, run(built("Mean")), "set live as built with Mean");
+    let surge = |states: &[tether_physics::body::BodyState]| states[0].position.x;
+    println!("surge at 40 s: off {:.6} m, mean {:.6} m, Newman {:.6} m", surge(&off), surge(&mean), surge(&newman));
+    assert!((surge(&newman) - surge(&off)).abs() > 1e-4 && (surge(&newman) - surge(&mean)).abs() > 1e-5);
+
+    let directory = tempfile::tempdir().expect("a temporary directory");
+    for extension in ["1", "3"] {
+        std::fs::copy(cylinder().with_extension(extension), directory.path().join(format!("body.{extension}")))
+            .expect("the shipped cylinder's files");
+    }
+    let stem = directory.path().join("body").display().to_string();
+    let mut world = tether_test_support::scene(&moored_cylinder(water, &format!("file: {stem:?}"), 4.0e3)).world;
+    let before = world.clone();
+    let error = world.set_drift_model(0, DriftModel::Newman).expect_err("no .8 beside the .1 and .3").to_string();
+    assert!(
+        error.contains("body \"cylinder\": its drift model cannot be changed: hydro: potential: drift: Newman needs the panel code's mean drift coefficients")
+            && !error.contains('\n'),
+        "{error}"
+    );
+    assert_eq!(world.synchronized_states(), before.synchronized_states());
+    assert_eq!(world.time(), before.time());
+}

@@ -227,3 +227,42 @@ fn bad_air_is_refused_at_its_field() {
         "{warnings:?}"
     );
 }
+
+/// The air replaced live (the window's knobs, PHYSICS.md §10): the sprung body built in a
+/// 20 m/s steady wind, given a 25 m/s NPD wind (seed 7) at t = 0, runs as the body built in that
+/// wind, bit for bit over 30 s, and unlike the one left in the steady wind. Bad air is refused
+/// with the loader's message and leaves the world as it was; a world without air refuses air.
+#[test]
+fn the_air_replaced_live_runs_as_air_built_so() {
+    use tether_scene::build::air_spec;
+    let gusty = "air: Air(wind: Wind(speed: 25.0, height: 10.0, gusts: Npd(seed: 7)), ramp: 0.0),";
+    let run = |mut world: tether_physics::world::World| {
+        while world.time() < 30.0 {
+            world.step().expect("a stable body");
+        }
+        world.synchronized_states()
+    };
+    let gusty_file = tether_test_support::scene(&sprung_body(gusty, WINDAGE, 500.0, 0.0)).file;
+    let (spec, loads) = air_spec(&gusty_file).expect("good air");
+    let mut replaced = tether_test_support::scene(&sprung_body(STEADY, WINDAGE, 500.0, 0.0)).world;
+    let steady = replaced.clone();
+    replaced.replace_air(spec, loads.clone()).expect("good air");
+    let built = tether_test_support::scene(&sprung_body(gusty, WINDAGE, 500.0, 0.0)).world;
+    let replaced = run(replaced);
+    assert_eq!(replaced, run(built), "replaced live as built");
+    let offset = replaced[0].position.x - run(steady)[0].position.x;
+    println!("25 m/s NPD against 20 m/s steady at 30 s: {offset:.4} m further");
+    assert!(offset.abs() > 1e-3, "{offset}");
+
+    let mut bad_file = gusty_file.clone();
+    bad_file.air.as_mut().expect("air").wind.speed = -3.0;
+    let refused = air_spec(&bad_file).expect_err("a negative speed");
+    assert!(
+        refused.message.contains("speed must be ≥ 0 m/s, got -3") && !refused.message.contains('\n'),
+        "{}",
+        refused.message
+    );
+    let mut calm = tether_test_support::scene(&sprung_body("", WINDAGE, 500.0, 0.0)).world;
+    let error = calm.replace_air(spec, loads).expect_err("no air to replace").to_string();
+    assert!(error.contains("the system has no air"), "{error}");
+}

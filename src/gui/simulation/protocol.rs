@@ -4,8 +4,10 @@
 use super::status::Status;
 use std::sync::mpsc::Sender;
 use std::time::Instant;
+use tether_physics::air::{AirSpec, WindLoadSpec};
 use tether_physics::coupling::Coupling;
 use tether_physics::integrator::Timing;
+use tether_physics::potential::DriftModel;
 use tether_physics::statics::Direction;
 use tether_physics::water::WaterSpec;
 use tether_physics::water::morison::HydroSpec;
@@ -53,10 +55,18 @@ pub enum Command {
     Follow(Option<String>),
     /// The water replaced by `spec` (checked by the scene builder), without a restart.
     SetWater(WaterSpec),
-    /// Body `body`'s coefficients in the water replaced by `spec` (checked), without a restart.
+    /// Body `body`'s coefficients in the water replaced by `spec` (checked) and, with potential
+    /// flow, its drift model set to `drift` (PHYSICS.md §10), without a restart.
     SetHydro {
         body: usize,
         spec: HydroSpec,
+        drift: Option<DriftModel>,
+    },
+    /// The air replaced by `spec` (checked by the scene builder), loading `loads`, without a
+    /// restart (PHYSICS.md §10).
+    SetAir {
+        spec: AirSpec,
+        loads: Vec<(usize, WindLoadSpec)>,
     },
     /// Body `body`'s potential flow switched on or off (PHYSICS.md §9), without a restart; on,
     /// its radiation memory starts afresh.

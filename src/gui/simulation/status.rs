@@ -10,6 +10,7 @@ use tether_physics::coupling::{Coupling, CouplingKind};
 use tether_physics::energy::EnergyReport;
 use tether_physics::integrator::Timing;
 use tether_physics::math::Vec3;
+use tether_physics::potential::DriftModel;
 use tether_physics::stability::Limiter;
 use tether_physics::world::World;
 
@@ -48,6 +49,9 @@ pub struct Status {
     /// Each floating body with potential-flow data (PHYSICS.md §9): its index, and whether its
     /// potential flow runs (it may be switched off live).
     pub potential_flow: Vec<(usize, bool)>,
+    /// Each floating body whose panel data hold mean drift coefficients (PHYSICS.md §10): its
+    /// index, and the drift model it runs.
+    pub drift: Vec<(usize, DriftModel)>,
     /// Time step that resolves each contact's impact, `τ/10` [s] (not a stability limit).
     pub impact_limits: Vec<(String, f64)>,
     /// What the contact estimator needs of each contact.
@@ -155,6 +159,11 @@ pub fn status(world: &World, run: &RunState) -> Status {
         potential_flow: world.system().water().map_or_else(Vec::new, |stage| {
             let with_data = stage.floating.iter().filter(|f| f.has_potential_data());
             with_data.map(|f| (f.body(), f.potential().is_some())).collect()
+        }),
+        drift: world.system().water().map_or_else(Vec::new, |stage| {
+            let models = stage.floating.iter().filter_map(|f| f.potential_model().map(|model| (f.body(), model)));
+            let with_drift = models.filter(|(_, model)| model.coefficients().mean_drift().is_some());
+            with_drift.map(|(body, model)| (body, model.drift_model())).collect()
         }),
         impact_limits: world.impact_limits().iter().map(|l| (l.describe(world.system()), l.dt)).collect(),
         contacts: contacts(world),

@@ -114,6 +114,14 @@ pub struct PotentialBody {
     drift: DriftModel,
 }
 
+/// A drift model other than `Off` needs the file's mean drift coefficients (`.8`/`.9`).
+fn check_drift_data(drift: DriftModel, coefficients: &Coefficients) -> Result<(), PotentialError> {
+    match (drift, coefficients.mean_drift()) {
+        (DriftModel::Mean | DriftModel::Newman, None) => Err(PotentialError::NoDriftData { model: drift }),
+        (DriftModel::Off, _) | (DriftModel::Mean | DriftModel::Newman, Some(_)) => Ok(()),
+    }
+}
+
 impl PotentialBody {
     /// The model of `spec` for `body`: the kernel sampled and, for the state space, fitted;
     /// `A∞_eff` from the kernel and the file's `A(ω)` (module docs).
@@ -122,9 +130,7 @@ impl PotentialBody {
     /// A kernel step or duration out of range, a kernel no order up to the limit fits, or a
     /// drift model without the file's drift coefficients.
     pub fn new(spec: PotentialSpec, body: &RigidBody) -> Result<Self, PotentialError> {
-        if spec.drift != DriftModel::Off && spec.coefficients.mean_drift().is_none() {
-            return Err(PotentialError::NoDriftData { model: spec.drift });
-        }
+        check_drift_data(spec.drift, &spec.coefficients)?;
         let step = require("kernel_step", spec.kernel_step, Bound::Positive, "s")?;
         let duration = require("kernel_duration", spec.kernel_duration, Bound::Positive, "s")?;
         if step >= duration {
@@ -152,6 +158,16 @@ impl PotentialBody {
     /// How the mean drift loads the body (PHYSICS.md §10).
     pub fn drift_model(&self) -> DriftModel {
         self.drift
+    }
+
+    /// The model with the mean drift loading the body as `drift` (a live edit, PHYSICS.md §10);
+    /// the rest as built.
+    ///
+    /// # Errors
+    /// A drift model without the file's drift coefficients.
+    pub fn with_drift_model(&self, drift: DriftModel) -> Result<Self, PotentialError> {
+        check_drift_data(drift, &self.coefficients)?;
+        Ok(Self { drift, ..self.clone() })
     }
 
     /// The `A∞` the time domain's mass holds, about P \[kg, kg·m, kg·m²]: `A∞_eff` (module docs),

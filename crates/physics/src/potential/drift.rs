@@ -44,6 +44,9 @@ pub enum DriftModel {
 }
 
 impl DriftModel {
+    /// Every model, from none to the most complete.
+    pub const ALL: [Self; 3] = [Self::Off, Self::Mean, Self::Newman];
+
     /// The name a scene spells it with.
     pub fn name(self) -> &'static str {
         match self {

@@ -14,7 +14,8 @@ use crate::body::{BodyFrame, Load, RigidBody};
 use crate::math::Vec3;
 use crate::mesh::MeshError;
 use crate::potential::{
-    HeadingMissing, LinearHydrostatics, PotentialBody, PotentialError, RadiationRun, WaveDrift, WaveExcitation,
+    DriftModel, HeadingMissing, LinearHydrostatics, PotentialBody, PotentialError, RadiationRun, WaveDrift,
+    WaveExcitation,
 };
 use crate::simd::SupportedLevel;
 use std::sync::Arc;
@@ -94,6 +95,20 @@ impl FloatingPotential {
         };
         (self.excitation, self.drift) = (excitation, drift);
         Ok(())
+    }
+
+    /// The potential flow with its mean drift loading the body as `drift` (PHYSICS.md §10),
+    /// the drift built again for the sea of `components`.
+    ///
+    /// # Errors
+    /// A drift model without the file's drift coefficients, or a sea heading they lack.
+    fn with_drift_model(&self, drift: DriftModel, components: &[WaveComponent]) -> Result<Self, SwitchError> {
+        let model = Arc::new(self.model.with_drift_model(drift)?);
+        let drift = match model.coefficients().mean_drift() {
+            Some(table) => WaveDrift::new(drift, table, components, self.mean_position)?,
+            None => WaveDrift::default(),
+        };
+        Ok(Self { model, drift, ..self.clone() })
     }
 
     /// The model.
@@ -179,6 +194,14 @@ impl FloatingBody {
         }
     }
 
+    /// Its potential-flow model, on or switched off.
+    pub fn potential_model(&self) -> Option<&Arc<PotentialBody>> {
+        match &self.potential {
+            PotentialFlow::On(potential) | PotentialFlow::SwitchedOff(potential) => Some(&potential.model),
+            PotentialFlow::Absent => None,
+        }
+    }
+
     /// Its potential flow's linear hydrostatics in a system at rest, if kept there.
     pub fn hydrostatics_at_rest(&self) -> Option<&LinearHydrostatics> {
         self.hydrostatics_at_rest.as_ref()
@@ -216,6 +239,8 @@ pub enum SwitchError {
     NoPotentialData,
     #[error("hydro: potential: {0}")]
     Heading(#[from] HeadingMissing),
+    #[error("hydro: potential: {0}")]
+    Potential(#[from] PotentialError),
 }
 
 /// The water and the bodies in it.
@@ -322,6 +347,26 @@ impl WaterStage {
             }
         }
         Ok(Some(index))
+    }
+
+    /// Body `body`'s mean drift loading it as `drift` from now on (a live edit, PHYSICS.md §10),
+    /// its potential flow on or switched off; returns whether it changed.
+    ///
+    /// # Errors
+    /// A body that does not float or has no potential-flow data, a drift model without the
+    /// file's drift coefficients, or a sea heading they lack; the stage is then unchanged.
+    pub fn set_drift_model(&mut self, body: usize, drift: DriftModel) -> Result<bool, SwitchError> {
+        let components = self.water.sea().components();
+        let floating = self.floating.iter_mut().find(|f| f.body == body).ok_or(SwitchError::NotFloating { body })?;
+        let potential = match &mut floating.potential {
+            PotentialFlow::On(potential) | PotentialFlow::SwitchedOff(potential) => potential,
+            PotentialFlow::Absent => return Err(SwitchError::NoPotentialData),
+        };
+        if potential.model.drift_model() == drift {
+            return Ok(false);
+        }
+        *potential = potential.with_drift_model(drift, components)?;
+        Ok(true)
     }
 
     /// The floating entry of body `body`, if it floats.

@@ -6,10 +6,12 @@
 
 use super::World;
 use super::error::{EditError, StepError};
+use crate::air::{AirSpec, WindLoadSpec};
 use crate::body::BodyState;
 use crate::coupling::Coupling;
 use crate::energy::Work;
 use crate::integrator::Timing;
+use crate::potential::DriftModel;
 use crate::seabed::Seabed;
 use crate::stability;
 use crate::system::SystemError;
@@ -133,6 +135,40 @@ impl World {
             }
             Ok(())
         })
+    }
+
+    /// Sets how the mean drift loads floating body `body` (PHYSICS.md §10: `Off`, `Mean`,
+    /// `Newman`) while running, as [`World::replace_water`] does the water: the drift is built
+    /// again for the sea as it is, on the body's potential flow whether on or switched off. The
+    /// drift stores no energy; its work goes on being booked as external work.
+    ///
+    /// # Errors
+    /// A body that does not float or has no potential-flow data, a drift model without the
+    /// file's drift coefficients (`.8`/`.9`), or a sea heading they lack; the world is then
+    /// unchanged.
+    pub fn set_drift_model(&mut self, body: usize, drift: DriftModel) -> Result<(), EditError> {
+        let already = self
+            .system
+            .water()
+            .and_then(|stage| stage.floating_body(body))
+            .and_then(|floating| floating.potential_model())
+            .is_some_and(|model| model.drift_model() == drift);
+        if already {
+            return Ok(());
+        }
+        self.edit_water(|system, _| system.set_drift_model(body, drift))
+    }
+
+    /// Replaces the air (wind speed, height, heading, profile, gusts, density, ramp) and the
+    /// loads on its bodies while running (PHYSICS.md §10), as [`World::replace_water`] does the
+    /// water: the exposures from the poses at t = 0, as when built; a new gust seed is a new
+    /// realisation from t = 0 on. The air stores no energy; its work is external work.
+    ///
+    /// # Errors
+    /// Air that cannot be, a world without air, a body whose windage or rotor cannot be, or
+    /// forces that cannot be evaluated; the world is then unchanged.
+    pub fn replace_air(&mut self, spec: AirSpec, loads: Vec<(usize, WindLoadSpec)>) -> Result<(), EditError> {
+        self.edit_water(|system, _| system.replace_air(spec, loads))
     }
 
     /// Applies `edit` to the system and the evaluation's buffers and restarts the integrator

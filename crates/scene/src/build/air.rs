@@ -5,19 +5,16 @@ use super::{ItemAt, Place, Problem};
 use crate::air::wind_load_spec;
 use crate::file::SceneFile;
 use crate::source::ItemKind;
-use tether_physics::air::{AirError, GustError, WindLoadError};
+use tether_physics::air::{Air, AirError, AirSpec, GustError, WindLoadError, WindLoadSpec};
+use tether_physics::math::Vec3;
 use tether_physics::system::{System, SystemError};
+use tether_physics::water::Water;
 
 /// `system` (its water already added) in the air of `file`, loading each body that declares a
 /// windage or a rotor (unchanged without air); warns of a body's windage or rotor without air,
 /// and of air that loads no body.
 pub fn add_air(system: System, file: &SceneFile, warnings: &mut Vec<String>) -> Result<System, Problem> {
-    let loads: Vec<_> = file
-        .bodies
-        .iter()
-        .enumerate()
-        .filter_map(|(index, b)| wind_load_spec(b.windage.as_ref(), b.rotor.as_ref()).map(|spec| (index, spec)))
-        .collect();
+    let loads = wind_loads(file);
     let Some(def) = &file.air else {
         for &(index, _) in &loads {
             warnings.push(format!(
@@ -32,6 +29,32 @@ pub fn add_air(system: System, file: &SceneFile, warnings: &mut Vec<String>) -> 
     }
     let water_ramp = system.water().map_or(0.0, |stage| stage.water.ramp_time());
     system.with_air(def.spec(water_ramp), loads).map_err(placed)
+}
+
+/// The air of `file` and the bodies it loads (PHYSICS.md §10), the air checked as loading
+/// checks it, with the same messages (live tuning: the bodies' windage and rotors were checked
+/// when the scene was loaded, and the world checks them again).
+pub fn air_spec(file: &SceneFile) -> Result<(AirSpec, Vec<(usize, WindLoadSpec)>), Problem> {
+    let Some(def) = &file.air else {
+        return Err(Problem { place: Place::Top("air"), message: "the scene has no air".into() });
+    };
+    let water_ramp = match &file.water {
+        Some(_) => {
+            let gravity = Vec3::new(file.gravity[0], file.gravity[1], file.gravity[2]);
+            let water = Water::new(super::water_spec(file)?, &gravity).map_err(|e| placed(SystemError::Water(e)))?;
+            water.ramp_time()
+        }
+        None => 0.0,
+    };
+    let spec = def.spec(water_ramp);
+    Air::new(spec).map_err(|error| placed(SystemError::Air(error)))?;
+    Ok((spec, wind_loads(file)))
+}
+
+/// Each body that declares a windage or a rotor, with its loads' spec.
+fn wind_loads(file: &SceneFile) -> Vec<(usize, WindLoadSpec)> {
+    let loads = file.bodies.iter().map(|b| wind_load_spec(b.windage.as_ref(), b.rotor.as_ref()));
+    loads.enumerate().filter_map(|(index, spec)| spec.map(|spec| (index, spec))).collect()
 }
 
 /// Where `error` is in the file, and its message.

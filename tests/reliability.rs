@@ -140,16 +140,16 @@ fn a_line_too_stiff_to_step_is_refused_as_it_runs() {
 }
 
 /// SIGTERM to each long stage of the headless commands, sent once it runs: the process is gone
-/// within a second with exit code 130 and says it was interrupted. The recording's step loop
-/// and the fit's iterations stop at the flag (cooperatively); the RAO runs and the study's runs
-/// do not look at it, and the watchdog ends them 0.5 s after it (src/interrupt.rs), as it would
+/// within a second with exit code 130 and says it was interrupted. The recording's step loop,
+/// the storm's seeds and the fit's iterations stop at the flag (cooperatively); the RAO runs
+/// and the study's runs do not look at it, and the watchdog ends them 0.5 s after it (src/interrupt.rs), as it would
 /// any other stage.
 #[test]
 fn sigterm_stops_every_long_stage_within_a_second() {
     let dir = tempfile::tempdir().unwrap();
     let path = |p: &str| common::repo(p).to_str().unwrap().to_string();
     let out = |name: &str| dir.path().join(name).to_str().unwrap().to_string();
-    let stages: [(&str, Vec<String>); 4] = [
+    let stages: [(&str, Vec<String>); 5] = [
         (
             "the recording's steps",
             vec![
@@ -182,6 +182,21 @@ fn sigterm_stops_every_long_stage_within_a_second() {
             ["study", &path("scenes/chain_forced_surge.ron"), "--duration", "100000", "-o", &out("study")]
                 .map(String::from)
                 .to_vec(),
+        ),
+        (
+            "the storm's seeds",
+            [
+                "storm",
+                &path("scenes/buoy_in_a_storm.ron"),
+                "-o",
+                &out("storm"),
+                "--hours",
+                "1000",
+                "--seeds",
+                "2",
+            ]
+            .map(String::from)
+            .to_vec(),
         ),
         (
             "the fit's iterations",

@@ -45,12 +45,17 @@ fn shown(measured: &Measured, value: f64) -> String {
     }
 }
 
+/// The unit [`shown`] gives it in: kN for a tension, m for an offset.
+fn shown_unit(measured: &Measured) -> &'static str {
+    match measured {
+        Measured::Tension { .. } => "kN",
+        Measured::Offset { .. } => "m",
+    }
+}
+
 /// `mooring1 tension [kN]`.
 fn label(measured: &Measured) -> String {
-    match measured {
-        Measured::Tension { line, .. } => format!("{line} tension [kN]"),
-        Measured::Offset { body } => format!("{body} offset [m]"),
-    }
+    format!("{} {} [{}]", measured.subject(), measured.quantity(), shown_unit(measured))
 }
 
 /// The check's cell: `SF 2.41 ≥ 1.67 ✓`, `u 0.88 ≤ 1 ✓`, or why there is none.
@@ -100,7 +105,7 @@ pub fn table(stats: &[QuantityStatistics], hours: f64, code: Code) -> String {
 fn csv_text(stats: &[QuantityStatistics]) -> String {
     let mut text = "quantity,unit,seeds,mean,mom_location,mom_scale,ml_location,ml_scale,mpm,quantile_90,check_figure,check_passes,maxima\n".to_string();
     for s in stats {
-        let (name, unit) = name_unit(&s.measured);
+        let (name, unit) = (s.measured.name(), s.measured.unit());
         let maxima: Vec<String> = s.maxima.iter().map(|v| format!("{v}")).collect();
         text += &format!(
             "{name},{unit},{},{},{},{},{},{},{},{},{},{},{}\n",
@@ -120,14 +125,6 @@ fn csv_text(stats: &[QuantityStatistics]) -> String {
     text
 }
 
-/// `(mooring1.tension, N)`, `(buoy.offset, m)`.
-fn name_unit(measured: &Measured) -> (String, &'static str) {
-    match measured {
-        Measured::Tension { line, .. } => (format!("{line}.tension"), "N"),
-        Measured::Offset { body } => (format!("{body}.offset"), "m"),
-    }
-}
-
 fn write_parquet(path: &Path, stats: &[QuantityStatistics]) -> Result<(), StormError> {
     let numbers = |f: &dyn Fn(&QuantityStatistics) -> Option<f64>| -> ArrayRef {
         let mut builder = Float64Builder::new();
@@ -140,7 +137,7 @@ fn write_parquet(path: &Path, stats: &[QuantityStatistics]) -> Result<(), StormE
     let mut units = StringBuilder::new();
     let mut maxima = ListBuilder::new(Float64Builder::new());
     for s in stats {
-        let (name, unit) = name_unit(&s.measured);
+        let (name, unit) = (s.measured.name(), s.measured.unit());
         names.append_value(name);
         units.append_value(unit);
         for &m in &s.maxima {

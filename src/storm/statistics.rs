@@ -56,12 +56,38 @@ pub enum Measured {
 }
 
 impl Measured {
+    /// The line or body measured.
+    pub fn subject(&self) -> &str {
+        match self {
+            Self::Tension { line, .. } => line,
+            Self::Offset { body } => body,
+        }
+    }
+
+    /// `tension` or `offset`.
+    pub fn quantity(&self) -> &'static str {
+        match self {
+            Self::Tension { .. } => "tension",
+            Self::Offset { .. } => "offset",
+        }
+    }
+
+    /// Its SI unit.
+    pub fn unit(&self) -> &'static str {
+        match self {
+            Self::Tension { .. } => "N",
+            Self::Offset { .. } => "m",
+        }
+    }
+
     /// `mooring1 tension [N]`, `buoy offset [m]`.
     pub fn label(&self) -> String {
-        match self {
-            Self::Tension { line, .. } => format!("{line} tension [N]"),
-            Self::Offset { body } => format!("{body} offset [m]"),
-        }
+        format!("{} {} [{}]", self.subject(), self.quantity(), self.unit())
+    }
+
+    /// `mooring1.tension`, the name the tables and the Parquet file give it.
+    pub fn name(&self) -> String {
+        format!("{}.{}", self.subject(), self.quantity())
     }
 }
 

@@ -109,20 +109,8 @@ fn the_state_space_fit_is_within_its_stated_error_and_the_two_forces_agree_to_1e
     // The stated error holds against the closed form's spectrum (a fine Simpson quadrature of
     // `K(t) e^{−iωt}` over 15 s) on a grid 5 × finer than the fit's, weighted as the fit is.
     let closed_form_spectrum = |omega: f64| {
-        let (n, h) = (15_000, 1e-3);
-        let mut sum = Complex::new(0.0, 0.0);
-        for k in 0..=n {
-            let t = k as f64 * h;
-            let simpson = if k == 0 || k == n {
-                1.0
-            } else if k % 2 == 1 {
-                4.0
-            } else {
-                2.0
-            };
-            sum += Complex::from_polar(simpson * h / 3.0 * vanishing_kernel(1.0, omega_c, t), -omega * t);
-        }
-        sum
+        let term = |t: f64| Complex::from_polar(vanishing_kernel(1.0, omega_c, t), -omega * t);
+        tether_test_support::simpson(term, 0.0, 15.0, 15_000)
     };
     let omegas: Vec<f64> = (0..=210).map(|k| k as f64 * band / 210.0).collect();
     let shape: Vec<Complex<f64>> = omegas.iter().map(|&w| closed_form_spectrum(w)).collect();

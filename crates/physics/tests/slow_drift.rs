@@ -38,22 +38,7 @@ fn spectrum() -> impl Fn(f64) -> f64 {
 
 /// `∫ f` from `a` to `b` by Simpson's rule on 4000 intervals.
 fn integral(f: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
-    let n = 4000;
-    let h = (b - a) / f64::from(n);
-    (0..=n)
-        .map(|i| {
-            let weight = if i == 0 || i == n {
-                1.0
-            } else if i % 2 == 1 {
-                4.0
-            } else {
-                2.0
-            };
-            weight * f(a + f64::from(i) * h)
-        })
-        .sum::<f64>()
-        * h
-        / 3.0
+    tether_test_support::simpson(f, a, b, 4000)
 }
 
 /// Over 12 seeds of two hours of a 50-component sea sampled every 0.5 s: the time mean of the

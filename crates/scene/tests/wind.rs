@@ -113,21 +113,13 @@ fn the_realised_gusts_follow_the_npd_spectrum() {
 }
 
 /// NPD's `∫ S df` [(m/s)²] from `low` to `high` \[Hz] at 10 m in a 20 m/s wind, by Simpson's rule
-/// in log f.
+/// in log f (`∫ S f d ln f`).
 fn integral(low: f64, high: f64) -> f64 {
-    let n = 2000;
-    let h = (high / low).ln() / f64::from(n);
-    let f = |i: u32| low * (f64::from(i) * h).exp();
-    let weight = |i: u32| {
-        if i == 0 || i == n {
-            1.0
-        } else if i % 2 == 1 {
-            4.0
-        } else {
-            2.0
-        }
+    let density = |log_f: f64| {
+        let f = log_f.exp();
+        GustSpectrum::Npd.density(f, 10.0, 20.0, 20.0) * f
     };
-    (0..=n).map(|i| weight(i) * GustSpectrum::Npd.density(f(i), 10.0, 20.0, 20.0) * f(i)).sum::<f64>() * h / 3.0
+    tether_test_support::simpson(density, low.ln(), high.ln(), 2000)
 }
 
 /// A rotor's steady thrust `½ ρ_a A C_T U²` at the hub's wind, against the static solve's

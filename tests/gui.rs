@@ -601,9 +601,16 @@ fn statics_panel_tunes_the_seabed_jumps_to_equilibrium_and_draws_the_offset_curv
         p.log().any(|l| l.text.starts_with("seabed line friction C_B = 0.9 applied"))
     });
     assert_eq!(friction(&world(&harness)), 0.9);
+    let tuned = |harness: &Harness<'_, ControlPanel>| harness.state().scene().expect("a scene").tuned.clone();
+    assert_eq!(tuned(&harness).seabed.expect("a seabed").line_friction, 0.9, "what runs, for Save as");
     set_knob(&mut harness, "seabed line friction C_B", -0.1);
-    harness.get_by_label_contains("Refused: seabed: line_friction must be ≥ 0, got -0.1");
+    harness.get_by_label_contains(
+        "Refused: line_friction = -0.1 not applied (the run keeps 0.9): seabed: line_friction must be ≥ 0, got -0.1",
+    );
     assert_eq!(friction(&world(&harness)), 0.9);
+    // A fit can move it as it moves the other knobs.
+    let fittable = tether::gui::fit::fittables(&tuned(&harness));
+    assert!(fittable.iter().any(|f| f.path == "seabed.line_friction" && f.value == 0.9), "{fittable:?}");
 
     // The first line's A_d (three lines show the knob).
     let knob = harness.get_all_by_label("displaced area A_d").next().expect("an A_d knob").accesskit_node().locate();
@@ -627,6 +634,13 @@ fn statics_panel_tunes_the_seabed_jumps_to_equilibrium_and_draws_the_offset_curv
     });
     harness.run_steps(2);
     harness.get_by_label("body \"buoy\": restoring force against offset in x");
+
+    // Revert puts the file's C_B back in the running world.
+    harness.get_by_label("Revert to file").click();
+    until(&mut harness, "the file's C_B", |p| {
+        p.log().any(|l| l.text.starts_with("seabed line friction C_B = 0.5 applied"))
+    });
+    assert_eq!(friction(&world(&harness)), 0.5);
 }
 
 /// A dry rope between a world point and a ball, quasi-static as written.

@@ -185,18 +185,9 @@ fn sigterm_stops_every_long_stage_within_a_second() {
         ),
         (
             "the storm's seeds",
-            [
-                "storm",
-                &path("scenes/buoy_in_a_storm.ron"),
-                "-o",
-                &out("storm"),
-                "--hours",
-                "1000",
-                "--seeds",
-                "2",
-            ]
-            .map(String::from)
-            .to_vec(),
+            ["storm", &path("scenes/buoy_in_a_storm.ron"), "-o", &out("storm"), "--hours", "1000", "--seeds", "2"]
+                .map(String::from)
+                .to_vec(),
         ),
         (
             "the fit's iterations",

@@ -78,6 +78,10 @@ pub fn fittables(file: &SceneFile) -> Vec<Fittable> {
             hydro_values(&mut Section::new(&mut found, KnobId::Hydro(index), "bodies", &body.name), hydro);
         }
     }
+    if let Some(seabed) = &file.seabed {
+        let mut section = Section { found: &mut found, knob: KnobId::Seabed, path: "seabed".into(), name: "seabed" };
+        section.add("line_friction", "line friction C_B", "–", seabed.line_friction);
+    }
     if let Some(air) = &file.air {
         air_values(&mut Section { found: &mut found, knob: KnobId::Air, path: "air".into(), name: "air" }, air);
     }

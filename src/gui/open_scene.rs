@@ -13,7 +13,7 @@ use std::time::{Duration, Instant};
 use tether_physics::integrator::Timing;
 use tether_scene::air::AirDef;
 use tether_scene::build::{self, Bodies};
-use tether_scene::file::CouplingDef;
+use tether_scene::file::{CouplingDef, SeabedDef};
 use tether_scene::water::{HydroDef, WaterDef};
 use tether_scene::{self as scene, SceneError, SceneFile};
 
@@ -52,6 +52,14 @@ static HYDRO: Group<Option<HydroDef>, Refusal> = Group {
     },
 };
 
+/// The seabed's line friction `C_B` (its elevation is the water's bottom or the file's; its
+/// contacts are couplings): one knob, none without a seabed.
+static SEABED: Group<SeabedDef, Refusal> = Group {
+    values: |file| file.seabed.iter().cloned().collect(),
+    put: |file, _, seabed| file.seabed = Some(seabed),
+    build: |candidate, _, _| Ok(Command::SetSeabed(build::seabed(candidate).map_err(|p| p.message)?)),
+};
+
 /// The air's wind, gusts and density: one knob, none without air.
 static AIR: Group<AirDef, Refusal> = Group {
     values: |file| file.air.iter().cloned().collect(),
@@ -70,6 +78,7 @@ pub enum KnobId {
     Water,
     /// Body `index`'s coefficients in the water.
     Hydro(usize),
+    Seabed,
     Air,
 }
 
@@ -80,6 +89,7 @@ pub struct SceneKnobs {
     pub couplings: Knobs<CouplingDef, Refusal>,
     pub water: Knobs<WaterDef, Refusal>,
     pub hydro: Knobs<Option<HydroDef>, Refusal>,
+    pub seabed: Knobs<SeabedDef, Refusal>,
     pub air: Knobs<AirDef, Refusal>,
 }
 
@@ -90,6 +100,7 @@ impl SceneKnobs {
             couplings: Knobs::of(&COUPLINGS, file),
             water: Knobs::of(&WATER, file),
             hydro: Knobs::of(&HYDRO, file),
+            seabed: Knobs::of(&SEABED, file),
             air: Knobs::of(&AIR, file),
         }
     }
@@ -199,6 +210,7 @@ impl OpenScene {
             KnobId::Coupling(index) => knobs.couplings.tune(index, tuned, bodies),
             KnobId::Water => knobs.water.tune(0, tuned, bodies),
             KnobId::Hydro(index) => knobs.hydro.tune(index, tuned, bodies),
+            KnobId::Seabed => knobs.seabed.tune(0, tuned, bodies),
             KnobId::Air => knobs.air.tune(0, tuned, bodies),
         }
     }
@@ -255,6 +267,7 @@ impl OpenScene {
             KnobId::Coupling(index) => self.knobs.couplings.show(index, file),
             KnobId::Water => self.knobs.water.show(0, file),
             KnobId::Hydro(index) => self.knobs.hydro.show(index, file),
+            KnobId::Seabed => self.knobs.seabed.show(0, file),
             KnobId::Air => self.knobs.air.show(0, file),
         }
         self.tune(knob)
@@ -281,8 +294,9 @@ impl OpenScene {
         let couplings = knobs.couplings.revert(file, tuned).into_iter().map(KnobId::Coupling);
         let water = knobs.water.revert(file, tuned).into_iter().map(|_| KnobId::Water);
         let hydro = knobs.hydro.revert(file, tuned).into_iter().map(KnobId::Hydro);
+        let seabed = knobs.seabed.revert(file, tuned).into_iter().map(|_| KnobId::Seabed);
         let air = knobs.air.revert(file, tuned).into_iter().map(|_| KnobId::Air);
-        couplings.chain(water).chain(hydro).chain(air).collect()
+        couplings.chain(water).chain(hydro).chain(seabed).chain(air).collect()
     }
 
     /// The time step settings of `candidate` (the tuned scene with the timing knobs written in),

@@ -112,7 +112,7 @@ impl ControlPanel {
             recordings_to_open: Vec::new(),
             impact: ImpactDraft::default(),
             sweep: None,
-            statics: StaticsDraft::new(None),
+            statics: StaticsDraft::default(),
             fit: FitDraft::default(),
             fits: SceneFits::default(),
             playback: None,
@@ -275,7 +275,7 @@ impl ControlPanel {
         self.timing = TimingDraft::from_file(&loaded.scene.tuned);
         self.impact = ImpactDraft::default();
         self.history = EnergyHistory::default();
-        self.statics = StaticsDraft::new(loaded.scene.tuned.seabed.as_ref().map(|s| s.line_friction));
+        self.statics = StaticsDraft::default();
         let (fittables, signals) = (fit::fittables(&loaded.scene.tuned), fit::signals(&loaded.scene.tuned));
         for dropped in self.fits.switch(&mut self.fit, &loaded.scene.path, &fittables, &signals) {
             self.note(dropped);
@@ -568,21 +568,15 @@ impl ControlPanel {
         let Some(open) = &mut self.scene else { return };
         let bodies: Vec<String> = open.tuned.bodies.iter().map(|b| b.name.clone()).collect();
         let selected = selected.and_then(tether_record::paths::body_of);
-        for action in statics::ui(ui, &mut self.statics, &bodies, selected) {
-            let command = match action {
-                StaticsAction::SeabedFriction(friction) => {
-                    // What runs, for "save as".
-                    if let Some(seabed) = &mut open.tuned.seabed {
-                        seabed.line_friction = friction;
-                    }
-                    Command::SetSeabedFriction(friction)
-                }
-                StaticsAction::Equilibrium => Command::Equilibrium,
+        let seabed = open.knobs.seabed.knobs_mut().first_mut();
+        for action in statics::ui(ui, &mut self.statics, seabed, &bodies, selected) {
+            match action {
+                StaticsAction::Seabed => self.tune(KnobId::Seabed),
+                StaticsAction::Equilibrium => self.simulation.send(Command::Equilibrium),
                 StaticsAction::OffsetCurve { body, direction, to, steps } => {
-                    Command::OffsetCurve { body, direction, to, steps }
+                    self.simulation.send(Command::OffsetCurve { body, direction, to, steps })
                 }
-            };
-            self.simulation.send(command);
+            }
         }
     }
 

@@ -1,22 +1,25 @@
-//! The statics panel (PHYSICS.md §7): the seabed's line friction `C_B`, live; an
+//! The statics panel (PHYSICS.md §7): the seabed's line friction `C_B`, live (the open scene's
+//! seabed knob, checked by the scene builder as the other knobs are); an
 //! "equilibrium" button that puts the scene at its static pose; the offset curve of a body (the
 //! one selected in the viewer, or chosen here) drawn as the restoring force against the offset.
 //! A line's displaced area `A_d` is tuned with its other knobs ([`super::tuning`]).
 
+use super::knobs::Knob;
 use super::line_plot::{self, Framed};
 use super::number_field::number_field;
 use super::simulation::OffsetCurve;
 use super::tuning::knob;
 use crate::figures;
 use rerun::external::egui;
-use tether_physics::seabed::Seabed;
+use std::fmt::Display;
 use tether_physics::statics::Direction;
+use tether_scene::file::SeabedDef;
 
 /// What the panel asks for.
 #[derive(Debug, Clone, PartialEq)]
 pub enum StaticsAction {
-    /// The seabed's `C_B`, checked.
-    SeabedFriction(f64),
+    /// The seabed knob's draft was edited.
+    Seabed,
     Equilibrium,
     OffsetCurve {
         body: usize,
@@ -29,9 +32,6 @@ pub enum StaticsAction {
 /// What the panel's knobs show.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StaticsDraft {
-    /// `C_B` as the knob shows it, if the scene has a seabed, and why it was refused.
-    pub friction: Option<f64>,
-    pub friction_refusal: Option<String>,
     /// The body chosen for the offset curve (index), when none is selected in the viewer.
     pub body: usize,
     pub direction: Direction,
@@ -42,40 +42,34 @@ pub struct StaticsDraft {
     pub curve: Option<OffsetCurve>,
 }
 
-impl StaticsDraft {
-    /// The draft of a newly opened scene, `friction` its seabed's `C_B` if it has one.
-    pub fn new(friction: Option<f64>) -> Self {
-        Self { friction, friction_refusal: None, body: 0, direction: Direction::X, to: 10.0, steps: 20, curve: None }
+impl Default for StaticsDraft {
+    /// A newly opened scene's: the first body's offset curve in x, to 10 m in 20 offsets.
+    fn default() -> Self {
+        Self { body: 0, direction: Direction::X, to: 10.0, steps: 20, curve: None }
     }
 }
 
-/// Draws the panel for a scene with `bodies` (names); `selected` is the body selected in the
-/// viewer, if any.
-pub fn ui(
+/// Draws the panel for a scene with `bodies` (names) and its seabed knob (`None`: no seabed);
+/// `selected` is the body selected in the viewer, if any.
+pub fn ui<R: Display>(
     ui: &mut egui::Ui,
     draft: &mut StaticsDraft,
+    seabed: Option<&mut Knob<SeabedDef, R>>,
     bodies: &[String],
     selected: Option<&str>,
 ) -> Vec<StaticsAction> {
     let mut actions = Vec::new();
     egui::CollapsingHeader::new("Statics and seabed").id_salt("statics").default_open(true).show(ui, |ui| {
-        if let Some(friction) = &mut draft.friction {
+        if let Some(Knob { draft: seabed, refusals }) = seabed {
             let edited = egui::Grid::new("seabed knobs")
                 .num_columns(3)
-                .show(ui, |ui| knob(ui, "seabed line friction C_B", friction, "–"))
+                .show(ui, |ui| knob(ui, "seabed line friction C_B", &mut seabed.line_friction, "–"))
                 .inner;
             if edited {
-                // The elevation is the running seabed's; only C_B is checked here.
-                match Seabed::new(0.0, *friction) {
-                    Ok(_) => {
-                        draft.friction_refusal = None;
-                        actions.push(StaticsAction::SeabedFriction(*friction));
-                    }
-                    Err(error) => draft.friction_refusal = Some(error.to_string()),
-                }
+                actions.push(StaticsAction::Seabed);
             }
-            if let Some(refusal) = &draft.friction_refusal {
-                ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refusal}"));
+            for refused in refusals.iter() {
+                ui.colored_label(ui.visuals().error_fg_color, format!("Refused: {refused}"));
             }
         }
         if ui

@@ -161,13 +161,26 @@ fn build_seabed(
     built: &mut Bodies,
     couplings: &mut Vec<Coupling>,
 ) -> Result<Seabed, Problem> {
-    let at = ItemAt::section("seabed");
-    let elevation = seabed_elevation(def, file, &at)?;
-    let seabed = Seabed::new(elevation, def.line_friction).map_err(seabed_problem)?;
+    let seabed = seabed_of(def, file)?;
     if let Some(contact) = &def.contact {
-        couplings.extend(seabed_contacts(contact, &seabed, file, built, &at)?);
+        couplings.extend(seabed_contacts(contact, &seabed, file, built, &ItemAt::section("seabed"))?);
     }
     Ok(seabed)
+}
+
+/// The seabed of `file` (its elevation and line friction; its contacts are couplings), checked
+/// as loading checks it, with the same messages (live tuning).
+pub fn seabed(file: &SceneFile) -> Result<Seabed, Problem> {
+    let Some(def) = &file.seabed else {
+        return Err(Problem { place: Place::Top("seabed"), message: "the scene has no seabed".into() });
+    };
+    seabed_of(def, file)
+}
+
+/// The seabed `def` of `file`: its elevation and line friction.
+fn seabed_of(def: &SeabedDef, file: &SceneFile) -> Result<Seabed, Problem> {
+    let elevation = seabed_elevation(def, file, &ItemAt::section("seabed"))?;
+    Seabed::new(elevation, def.line_friction).map_err(seabed_problem)
 }
 
 /// The seabed's height `z_b` [m]: the water's bottom `z_w − h` when the scene has water with a

@@ -8,6 +8,7 @@ use tether_physics::air::{AirSpec, WindLoadSpec};
 use tether_physics::coupling::Coupling;
 use tether_physics::integrator::Timing;
 use tether_physics::potential::DriftModel;
+use tether_physics::seabed::Seabed;
 use tether_physics::statics::Direction;
 use tether_physics::water::WaterSpec;
 use tether_physics::water::morison::HydroSpec;
@@ -74,8 +75,9 @@ pub enum Command {
         body: usize,
         on: bool,
     },
-    /// The seabed's line friction `C_B` set to this (checked), without a restart.
-    SetSeabedFriction(f64),
+    /// The seabed replaced by this one (checked by the scene builder: its line friction `C_B`
+    /// tuned), without a restart.
+    SetSeabed(Seabed),
     /// Every free body placed at the static equilibrium found from where the bodies are, at
     /// rest (PHYSICS.md §7, `tether equilibrium`).
     Equilibrium,

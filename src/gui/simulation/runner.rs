@@ -170,7 +170,7 @@ impl SimulationLoop {
             }
             Command::SetAir { spec, loads } => self.edit_water("the air", |world| world.replace_air(spec, loads)),
             Command::SetPotentialFlow { body, on } => self.set_potential_flow(body, on),
-            Command::SetSeabedFriction(friction) => self.set_seabed_friction(friction),
+            Command::SetSeabed(seabed) => self.set_seabed(seabed),
             Command::Equilibrium => self.equilibrium(),
             Command::OffsetCurve { body, direction, to, steps } => {
                 self.offset_curve(Dof { body, direction }, to, steps)
@@ -432,17 +432,11 @@ impl SimulationLoop {
         }
     }
 
-    /// The seabed's `C_B` replaced (its elevation kept); the lines' energy jump booked.
-    fn set_seabed_friction(&mut self, friction: f64) {
+    /// The seabed replaced (its line friction `C_B` tuned); the lines' energy jump booked.
+    fn set_seabed(&mut self, seabed: Seabed) {
         let Some(run) = &mut self.run else { return };
-        let Some(seabed) = run.world.system().seabed() else {
-            self.report(Report::Error("the scene has no seabed".into()));
-            return;
-        };
-        let applied = Seabed::new(seabed.elevation(), friction)
-            .map_err(|e| e.to_string())
-            .and_then(|seabed| run.world.set_seabed(seabed).map_err(|e| e.to_string()));
-        match applied {
+        let friction = seabed.line_friction();
+        match run.world.set_seabed(seabed) {
             Ok(()) => {
                 let time = run.world.time();
                 self.log_frame();
@@ -452,7 +446,7 @@ impl SimulationLoop {
                     figures::quantity(time, "s", 5)
                 )));
             }
-            Err(error) => self.report(Report::Error(error)),
+            Err(error) => self.report(Report::Error(error.to_string())),
         }
     }
 

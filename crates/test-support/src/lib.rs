@@ -35,12 +35,12 @@ pub fn simpson<T>(f: impl Fn(f64) -> T, a: f64, b: f64, intervals: u32) -> T
 where
     T: Default + std::ops::Add<Output = T> + std::ops::Mul<f64, Output = T>,
 {
-    assert!(intervals >= 2 && intervals % 2 == 0, "Simpson's rule takes an even number of intervals, got {intervals}");
+    assert!(intervals >= 2 && intervals.is_multiple_of(2), "Simpson's rule takes an even number of intervals, got {intervals}");
     let h = (b - a) / f64::from(intervals);
     let weight = |i: u32| match i {
         0 => 1.0,
         i if i == intervals => 1.0,
-        i if i % 2 == 1 => 4.0,
+        i if !i.is_multiple_of(2) => 4.0,
         _ => 2.0,
     };
     (0..=intervals).fold(T::default(), |sum, i| sum + f(a + f64::from(i) * h) * (weight(i) * h / 3.0))

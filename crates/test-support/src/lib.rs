@@ -35,7 +35,10 @@ pub fn simpson<T>(f: impl Fn(f64) -> T, a: f64, b: f64, intervals: u32) -> T
 where
     T: Default + std::ops::Add<Output = T> + std::ops::Mul<f64, Output = T>,
 {
-    assert!(intervals >= 2 && intervals.is_multiple_of(2), "Simpson's rule takes an even number of intervals, got {intervals}");
+    assert!(
+        intervals >= 2 && intervals.is_multiple_of(2),
+        "Simpson's rule takes an even number of intervals, got {intervals}"
+    );
     let h = (b - a) / f64::from(intervals);
     let weight = |i: u32| match i {
         0 => 1.0,

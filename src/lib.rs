@@ -15,6 +15,7 @@ pub mod fit;
 pub mod gui;
 pub mod interrupt;
 pub mod line_hint;
+pub mod parameters;
 pub mod quantity;
 pub mod rao_chart;
 pub mod run_length;

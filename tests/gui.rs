@@ -609,7 +609,7 @@ fn statics_panel_tunes_the_seabed_jumps_to_equilibrium_and_draws_the_offset_curv
     );
     assert_eq!(friction(&world(&harness)), 0.9);
     // A fit can move it as it moves the other knobs.
-    let fittable = tether::gui::fit::fittables(&tuned(&harness));
+    let fittable = tether::parameters::parameters(&tuned(&harness));
     assert!(fittable.iter().any(|f| f.path == "seabed.line_friction" && f.value == 0.9), "{fittable:?}");
 
     // The first line's A_d (three lines show the knob).

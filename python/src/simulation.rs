@@ -124,6 +124,22 @@ impl Simulation {
         guarded(|| parameters::get(py, &self.scene, path))
     }
 
+    /// Every tunable number of the scene (`tether::parameters`, the window's catalogue): its
+    /// path, label, unit and value, one dict each.
+    fn parameters<'py>(&self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyDict>>> {
+        tether::parameters::parameters(&self.scene.file)
+            .into_iter()
+            .map(|parameter| {
+                let entry = PyDict::new(py);
+                entry.set_item("path", parameter.path)?;
+                entry.set_item("label", parameter.label)?;
+                entry.set_item("unit", parameter.unit)?;
+                entry.set_item("value", parameter.value)?;
+                Ok(entry)
+            })
+            .collect()
+    }
+
     /// Sets the value at a sweep parameter path; the scene is built again (t = 0).
     fn set(&mut self, path: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
         guarded(|| {

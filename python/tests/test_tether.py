@@ -58,6 +58,19 @@ def test_a_set_parameter_changes_the_motion_as_its_closed_form_says(repo):
     np.testing.assert_allclose(run.position[:, 0, 0] - 1.0, expected, atol=4e-5)
 
 
+def test_parameters_list_what_can_be_set_with_the_windows_labels(repo):
+    sim = tether.load(repo / SPRING)
+    found = {p.path: p for p in sim.parameters()}
+    stiffness = found["couplings.spring.law.stiffness"]
+    assert (stiffness.label, stiffness.unit, stiffness.value) == ("spring: stiffness k", "N/m", 100.0)
+    assert found["couplings.spring.damping"].unit == "N·s/m"
+    # Every listed path is one get and set reach, with the listed value.
+    for parameter in found.values():
+        assert sim.get(parameter.path) == parameter.value, parameter.path
+    sim.set("couplings.spring.law.stiffness", 250.0)
+    assert {p.path: p.value for p in sim.parameters()}["couplings.spring.law.stiffness"] == 250.0
+
+
 def test_shapes_dtypes_and_sampling(repo):
     sim = tether.load(repo / MOORED)
     run = sim.run(1.0, rate=50)

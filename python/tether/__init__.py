@@ -33,6 +33,7 @@ __all__ = [
     "Simulation",
     "Trajectory",
     "Equilibrium",
+    "Parameter",
     "FitResult",
     "FitSignal",
     "load",
@@ -127,6 +128,21 @@ class Equilibrium:
         raise KeyError(f"no coupling {name!r} (couplings: {', '.join(c['name'] for c in self.couplings)})")
 
 
+@dataclass
+class Parameter:
+    """A tunable number of a scene, as the window's knobs and Fit panel offer it.
+
+    ``path``: its sweep parameter path (for :meth:`Simulation.get`/:meth:`Simulation.set`, sweeps
+    and fits); ``label``: its name in the window (``"spring: stiffness k"``); ``unit``: its SI
+    unit (``"–"`` for a coefficient); ``value``: the scene's value now.
+    """
+
+    path: str
+    label: str
+    unit: str
+    value: float
+
+
 class Simulation:
     """A loaded scene and its world, at simulated time ``time``.
 
@@ -204,6 +220,16 @@ class Simulation:
     def get(self, path: str) -> Union[float, int, str, bool, None]:
         """The value at a sweep parameter path (None: left to the loader's default)."""
         return self._native.get(path)
+
+    def parameters(self) -> List[Parameter]:
+        """Every number the window tunes and a fit can move, with its path, label, unit and value.
+
+        The window's own catalogue (its knobs and Fit panel): a couplings' law, damping and line
+        constants, the water's waves, current and density, each floating body's coefficients, the
+        seabed's line friction, the wind. Counts (a line's segments, a seed) are left out; any
+        other value is still reachable by its path with :meth:`get` and :meth:`set`.
+        """
+        return [Parameter(**entry) for entry in self._native.parameters()]
 
     def set(self, path: str, value: Union[float, int, str, bool]) -> None:
         """Sets the value at a sweep parameter path: the scene is built again (t = 0).

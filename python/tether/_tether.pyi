@@ -41,6 +41,8 @@ class Simulation:
         """World steps since t = 0."""
     def get(self, path: str) -> Union[float, int, str, bool, None]:
         """The value at a sweep parameter path (None: left to the loader's default)."""
+    def parameters(self) -> List[Dict[str, Any]]:
+        """Every tunable number: path, label, unit and value, one dict each."""
     def set(self, path: str, value: Union[float, int, str, bool]) -> None:
         """Sets the value at a sweep parameter path; the scene is built again (t = 0)."""
     def to_ron(self) -> str:

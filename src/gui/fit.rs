@@ -9,7 +9,7 @@
 //! Each scene opened in the window keeps its own fit state ([`SceneFits`]): a record mapped to
 //! one scene's couplings never reaches another's.
 //!
-//! The state ([`FitDraft`]) and what is fittable ([`fittables`], [`signals`]) have no egui in
+//! The state ([`FitDraft`]) and the signals a record's column can be ([`signals`]) have no egui in
 //! them; [`ui`] draws them and returns [`FitAction`]s, which the panel carries out, and the panel
 //! takes the fit's news as [`FitUpdate`]s ([`FitDraft::poll`]).
 //!
@@ -18,7 +18,7 @@
 
 use super::line_plot::{self, Framed};
 use super::number_field::number_field;
-use super::open_scene::{KnobId, OpenScene};
+use super::open_scene::OpenScene;
 use super::simulation::{Curve, Wake};
 use crate::figures;
 use crate::fit::measured::Record;
@@ -26,6 +26,7 @@ use crate::fit::run::{self, Fitted, Outcome, Progress};
 use crate::fit::setup::{Setup, SetupError};
 use crate::fit::solver::Ending;
 use crate::fit::spec::{FitFile, ParameterDef, Scale, SignalDef, Window};
+use crate::parameters::{KnobId, Parameter};
 use crate::quantity::{Axis, End, EnergyPart, Quantity, Turn};
 use crate::runner::{Runner, all_cores};
 use crate::sweep::spec::PathsDef;
@@ -35,195 +36,11 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{self, Receiver, TryRecvError};
-use tether_physics::coupling::InternalDamping;
 use tether_scene::SceneFile;
-use tether_scene::air::{AirDef, GustsDef};
-use tether_scene::file::{CouplingDef, LawDef};
-use tether_scene::line_model::LineModelDef;
-use tether_scene::water::{HydroDef, WaterDef, WavesDef};
+use tether_scene::file::CouplingDef;
 
 /// Points of a model curve sent to the viewer at most (a run's every world step, thinned).
 const CURVE_POINTS: usize = 4000;
-
-/// A value of the scene a fit can move: the knob it is edited in, its value path (the sweep's,
-/// `couplings.spring.law.stiffness`), what the panel calls it, its unit and its value now.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Fittable {
-    pub knob: KnobId,
-    pub path: String,
-    /// `spring: stiffness k`.
-    pub label: String,
-    pub unit: &'static str,
-    pub value: f64,
-}
-
-/// The values of `file` a fit can move: every number the tuning and water panels tune (a
-/// spring's law and damping, a line's λ0, L_eq, D, A_d and a dynamic line's damping, drag and
-/// added mass, a contact's law; the waves, current and density; each floating body's drag,
-/// added mass and linear damping). Counts (a line's segments) are left out.
-pub fn fittables(file: &SceneFile) -> Vec<Fittable> {
-    let mut found = Vec::new();
-    for (index, def) in file.couplings.iter().enumerate() {
-        let mut section = Section::new(&mut found, KnobId::Coupling(index), "couplings", def.name());
-        coupling_values(&mut section, def);
-    }
-    if let Some(water) = &file.water {
-        water_values(
-            &mut Section { found: &mut found, knob: KnobId::Water, path: "water".into(), name: "water" },
-            water,
-        );
-    }
-    for (index, body) in file.bodies.iter().enumerate() {
-        if let Some(hydro) = &body.hydro {
-            hydro_values(&mut Section::new(&mut found, KnobId::Hydro(index), "bodies", &body.name), hydro);
-        }
-    }
-    if let Some(seabed) = &file.seabed {
-        let mut section = Section { found: &mut found, knob: KnobId::Seabed, path: "seabed".into(), name: "seabed" };
-        section.add("line_friction", "line friction C_B", "–", seabed.line_friction);
-    }
-    if let Some(air) = &file.air {
-        air_values(&mut Section { found: &mut found, knob: KnobId::Air, path: "air".into(), name: "air" }, air);
-    }
-    found
-}
-
-/// Where the values found go, and the knob, path and name they are found under.
-struct Section<'a> {
-    found: &'a mut Vec<Fittable>,
-    knob: KnobId,
-    path: String,
-    name: &'a str,
-}
-
-impl<'a> Section<'a> {
-    fn new(found: &'a mut Vec<Fittable>, knob: KnobId, list: &str, name: &'a str) -> Self {
-        Self { found, knob, path: format!("{list}.{name}"), name }
-    }
-
-    fn add(&mut self, field: &str, label: &str, unit: &'static str, value: f64) {
-        self.found.push(Fittable {
-            knob: self.knob,
-            path: format!("{}.{field}", self.path),
-            label: format!("{}: {label}", self.name),
-            unit,
-            value,
-        });
-    }
-}
-
-fn coupling_values(section: &mut Section, def: &CouplingDef) {
-    match def {
-        CouplingDef::SpringDamper { law, damping, .. } => {
-            law_values(section, law);
-            section.add("damping", "damping k_d", "N·s/m", *damping);
-        }
-        CouplingDef::Catenary { mass_per_length, length, stiffness, displaced_area, model, .. } => {
-            section.add("mass_per_length", "mass per length λ0", "kg/m", *mass_per_length);
-            section.add("length", "length L_eq", "m", *length);
-            section.add("stiffness", "stiffness D", "N/m", *stiffness);
-            section.add("displaced_area", "displaced area A_d", "m²", *displaced_area);
-            match model {
-                LineModelDef::QuasiStatic => {}
-                LineModelDef::Dynamic(line) => {
-                    match line.damping {
-                        InternalDamping::Ratio(zeta) => section.add("model.damping", "damping ratio ζ", "–", zeta),
-                        InternalDamping::Coefficient(ba) => section.add("model.damping", "damping BA", "N·s", ba),
-                    }
-                    section.add("model.drag_normal", "drag C_dn", "–", line.drag_normal);
-                    section.add("model.drag_tangential", "drag C_dt", "–", line.drag_tangential);
-                    section.add("model.added_mass_normal", "added mass C_an", "–", line.added_mass_normal);
-                    section.add("model.added_mass_tangential", "added mass C_at", "–", line.added_mass_tangential);
-                }
-            }
-        }
-        CouplingDef::Contact { stiffness, damping, range, friction, friction_sharpness, expected_area, .. } => {
-            section.add("stiffness", "stiffness k1", "N/m³", *stiffness);
-            section.add("damping", "damping k2", "N·s/m³", *damping);
-            section.add("range", "range d0", "m", *range);
-            section.add("friction", "friction μ", "–", *friction);
-            section.add("friction_sharpness", "friction sharpness k_t", "s/m", *friction_sharpness);
-            if let Some(area) = expected_area {
-                section.add("expected_area", "expected area A", "m²", *area);
-            }
-        }
-    }
-}
-
-fn law_values(section: &mut Section, law: &LawDef) {
-    let points = |section: &mut Section, points: &[(f64, f64)], symbol: &str, unit: &'static str| {
-        for (row, (_, y)) in points.iter().enumerate() {
-            section.add(&format!("law.points.{row}.1"), &format!("point {} {symbol}", row + 1), unit, *y);
-        }
-    };
-    match law {
-        LawDef::Linear { stiffness, rest_length } => {
-            section.add("law.stiffness", "stiffness k", "N/m", *stiffness);
-            section.add("law.rest_length", "rest length x0", "m", *rest_length);
-        }
-        LawDef::Polynomial { a, b, c, rest_length } => {
-            section.add("law.a", "a", "N/m", *a);
-            section.add("law.b", "b", "N/m²", *b);
-            section.add("law.c", "c", "N/m³", *c);
-            section.add("law.rest_length", "rest length x0", "m", *rest_length);
-        }
-        LawDef::ForceCurve { points: table } => points(section, table, "f", "N"),
-        LawDef::StiffnessCurve { points: table, rest_length } => {
-            points(section, table, "k", "N/m");
-            section.add("law.rest_length", "rest length x0", "m", *rest_length);
-        }
-        LawDef::ReferenceForce { points: table, reference_length, reference_force, rest_length } => {
-            points(section, table, "k", "N/m");
-            section.add("law.reference_length", "reference length x_r", "m", *reference_length);
-            section.add("law.reference_force", "reference force f_r", "N", *reference_force);
-            section.add("law.rest_length", "rest length x0", "m", *rest_length);
-        }
-    }
-}
-
-fn water_values(section: &mut Section, water: &WaterDef) {
-    match &water.waves {
-        WavesDef::Calm => {}
-        WavesDef::Regular { height, period, heading_deg, .. } => {
-            section.add("waves.height", "wave height H", "m", *height);
-            section.add("waves.period", "wave period T", "s", *period);
-            section.add("waves.heading_deg", "wave heading", "°", *heading_deg);
-        }
-        WavesDef::Jonswap { hs, tp, heading_deg, .. } => {
-            section.add("waves.hs", "significant height Hs", "m", *hs);
-            section.add("waves.tp", "peak period Tp", "s", *tp);
-            section.add("waves.heading_deg", "wave heading", "°", *heading_deg);
-        }
-    }
-    if let Some(current) = &water.current {
-        section.add("current.speed", "current speed", "m/s", current.speed);
-        section.add("current.heading_deg", "current heading", "°", current.heading_deg);
-    }
-    section.add("density", "density ρ", "kg/m³", water.density);
-}
-
-fn air_values(section: &mut Section, air: &AirDef) {
-    section.add("wind.speed", "wind speed U_r", "m/s", air.wind.speed);
-    section.add("wind.heading_deg", "wind heading", "°", air.wind.heading_deg);
-    if let GustsDef::Kaimal { intensity, .. } = air.wind.gusts {
-        section.add("wind.gusts.intensity", "turbulence intensity", "–", intensity);
-    }
-    section.add("density", "air density ρ_a", "kg/m³", air.density);
-}
-
-fn hydro_values(section: &mut Section, hydro: &HydroDef) {
-    section.path += ".hydro";
-    for (axis, name) in ["x", "y", "z"].iter().enumerate() {
-        section.add(&format!("drag.{axis}"), &format!("drag C_d {name}"), "–", hydro.drag[axis]);
-    }
-    for (axis, name) in ["x", "y", "z"].iter().enumerate() {
-        section.add(&format!("added_mass.{axis}"), &format!("added mass C_a {name}"), "–", hydro.added_mass[axis]);
-    }
-    for (axis, name) in ["x", "y", "z"].iter().enumerate() {
-        let label = format!("linear damping {name}");
-        section.add(&format!("linear_damping.{axis}"), &label, "N·s/m", hydro.linear_damping[axis]);
-    }
-}
 
 /// The model signals a measured column can be: each body's position, velocity and roll, pitch,
 /// yaw; each coupling's tension (a contact's normal force), a spring's or line's length, a line's
@@ -370,7 +187,7 @@ impl SceneFits {
         &mut self,
         draft: &mut FitDraft,
         to: &Path,
-        fittables: &[Fittable],
+        fittables: &[Parameter],
         signals: &[Quantity],
     ) -> Vec<String> {
         draft.scene_changed();
@@ -405,7 +222,7 @@ pub struct Summary {
 /// A fit started from the panel: what it fits, where it is, how it ended.
 pub struct Session {
     /// The knobs it fits, in the fit's parameter order (their values at the start).
-    pub targets: Vec<Fittable>,
+    pub targets: Vec<Parameter>,
     worker: Option<Worker>,
     /// `(iteration, cost)` of the start and of every accepted iteration.
     pub costs: Vec<(u32, f64)>,
@@ -475,7 +292,7 @@ impl FitDraft {
     }
 
     /// Ticks knob `fittable` with bounds around its value now, or unticks it.
-    pub fn tick(&mut self, fittable: &Fittable, on: bool) {
+    pub fn tick(&mut self, fittable: &Parameter, on: bool) {
         if on {
             self.ticked.insert(fittable.path.clone(), Bounds::around(fittable.value));
         } else {
@@ -502,7 +319,7 @@ impl FitDraft {
     /// The choices the scene of `fittables` and `signals` cannot take dropped: a column mapped
     /// to a signal it lacks goes back to unused, a knob it lacks is unticked. Returns each, said
     /// as the log says it.
-    pub fn keep_to(&mut self, fittables: &[Fittable], signals: &[Quantity]) -> Vec<String> {
+    pub fn keep_to(&mut self, fittables: &[Parameter], signals: &[Quantity]) -> Vec<String> {
         let mut dropped = Vec::new();
         let columns = self.record.as_ref().map_or(&[][..], |record| record.columns.as_slice());
         for (column, of) in columns.iter().zip(&mut self.mapping) {
@@ -529,9 +346,9 @@ impl FitDraft {
     /// # Errors
     /// No record, no knob ticked, or what the setup refuses (no column mapped, bounds inverted or
     /// refused by the scene loader…).
-    pub fn prepare(&self, open: &OpenScene, fittables: &[Fittable]) -> Result<(Setup, Vec<Fittable>), String> {
+    pub fn prepare(&self, open: &OpenScene, fittables: &[Parameter]) -> Result<(Setup, Vec<Parameter>), String> {
         let record = self.record.as_ref().ok_or("open a record first")?;
-        let targets: Vec<Fittable> = fittables.iter().filter(|f| self.ticked.contains_key(&f.path)).cloned().collect();
+        let targets: Vec<Parameter> = fittables.iter().filter(|f| self.ticked.contains_key(&f.path)).cloned().collect();
         if targets.is_empty() {
             return Err("no knob ticked: tick at least one knob to fit".into());
         }
@@ -583,7 +400,7 @@ impl FitDraft {
     ///
     /// # Errors
     /// The thread cannot be started.
-    pub fn launch(&mut self, setup: Setup, targets: Vec<Fittable>, wake: Wake) -> Result<Vec<Curve>, String> {
+    pub fn launch(&mut self, setup: Setup, targets: Vec<Parameter>, wake: Wake) -> Result<Vec<Curve>, String> {
         let measured = setup
             .model
             .signals
@@ -788,7 +605,7 @@ fn correlated_text(fitted: &Fitted, unit: &str) -> String {
 
 /// Draws the fit panel for a scene whose fittable values are `fittables` and whose signals are
 /// `signals`; returns what it asks for.
-pub fn ui(ui: &mut egui::Ui, draft: &mut FitDraft, fittables: &[Fittable], signals: &[Quantity]) -> Vec<FitAction> {
+pub fn ui(ui: &mut egui::Ui, draft: &mut FitDraft, fittables: &[Parameter], signals: &[Quantity]) -> Vec<FitAction> {
     let mut actions = Vec::new();
     egui::CollapsingHeader::new("Fit to a record").id_salt("fit").default_open(false).show(ui, |ui| {
         let running = draft.running();
@@ -834,7 +651,7 @@ pub fn ui(ui: &mut egui::Ui, draft: &mut FitDraft, fittables: &[Fittable], signa
 fn choices_ui(
     ui: &mut egui::Ui,
     draft: &mut FitDraft,
-    fittables: &[Fittable],
+    fittables: &[Parameter],
     signals: &[Quantity],
     actions: &mut Vec<FitAction>,
 ) {
@@ -1000,7 +817,6 @@ fn cost_plot(ui: &mut egui::Ui, costs: &[(u32, f64)]) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sweep::value_path::ValuePath;
 
     /// A float in waves on a spring, and a dynamic line, with every kind of value fittable.
     const SCENE: &str = r#"Scene(dt: 0.01, water: Water(depth: 30.0, waves: Regular(height: 1.0, period: 6.0), current: Current(speed: 0.5)),
@@ -1013,32 +829,6 @@ mod tests {
                 mass_per_length: 50.0, length: 40.0, stiffness: 1e8,
                 model: Dynamic(segments: 10, damping: Ratio(0.8), drag_normal: 1.2)),
         ])"#;
-
-    /// Every fittable value's path leads to that value in the scene's data, and setting it there
-    /// through the open scene's knobs changes only it.
-    #[test]
-    fn every_fittable_path_leads_to_its_value() {
-        let file = tether_scene::parse(SCENE, Path::new("float.ron")).unwrap().file;
-        let tree = serde_json::to_value(&file).unwrap();
-        let found = fittables(&file);
-        assert!(found.len() > 20, "{} values", found.len());
-        for fittable in &found {
-            let path = ValuePath::find(&tree, &fittable.path).unwrap_or_else(|e| panic!("{}: {e}", fittable.label));
-            // A value the scene leaves to its default (A_d = 0 is not written) has no number.
-            if let Some(value) = path.get(&tree) {
-                assert_eq!(value.as_f64(), Some(fittable.value), "{} at {}", fittable.label, fittable.path);
-            }
-        }
-        let labels: Vec<&str> = found.iter().map(|f| f.label.as_str()).collect();
-        for expected in ["spring: point 2 f", "line: drag C_dn", "line: damping ratio ζ", "water: current speed"] {
-            assert!(labels.contains(&expected), "{expected} in {labels:?}");
-        }
-        let damping = found.iter().find(|f| f.label == "float: linear damping z").unwrap();
-        assert_eq!(
-            (damping.knob, damping.path.as_str(), damping.value),
-            (KnobId::Hydro(0), "bodies.float.hydro.linear_damping.2", 50.0)
-        );
-    }
 
     #[test]
     fn bounds_are_prefilled_around_the_value() {

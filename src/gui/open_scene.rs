@@ -6,6 +6,7 @@
 use super::knobs::{Group, Knobs};
 use super::simulation::{Command, Run, Wake};
 use super::watch::FileWatch;
+pub use crate::parameters::KnobId;
 use crate::sweep::value_path::ValuePath;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -69,18 +70,6 @@ static AIR: Group<AirDef, Refusal> = Group {
         Ok(Command::SetAir { spec, loads })
     },
 };
-
-/// A knob of the open scene, as the panels name it: its group, and which of the group's knobs.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum KnobId {
-    /// Coupling `index`'s parameters.
-    Coupling(usize),
-    Water,
-    /// Body `index`'s coefficients in the water.
-    Hydro(usize),
-    Seabed,
-    Air,
-}
 
 /// Every knob of the scene, read from one scene file: the file's when it is loaded, a sweep
 /// case's when a case is (all groups at once: none can keep another scene's values). A new

@@ -276,7 +276,8 @@ impl ControlPanel {
         self.impact = ImpactDraft::default();
         self.history = EnergyHistory::default();
         self.statics = StaticsDraft::default();
-        let (fittables, signals) = (fit::fittables(&loaded.scene.tuned), fit::signals(&loaded.scene.tuned));
+        let (fittables, signals) =
+            (crate::parameters::parameters(&loaded.scene.tuned), fit::signals(&loaded.scene.tuned));
         for dropped in self.fits.switch(&mut self.fit, &loaded.scene.path, &fittables, &signals) {
             self.note(dropped);
         }
@@ -584,7 +585,7 @@ impl ControlPanel {
     /// done.
     fn fit_ui(&mut self, ui: &mut egui::Ui) {
         let Some(open) = &self.scene else { return };
-        let fittables = fit::fittables(&open.tuned);
+        let fittables = crate::parameters::parameters(&open.tuned);
         let signals = fit::signals(&open.tuned);
         let folder = open.path.parent().map(Path::to_path_buf).unwrap_or_default();
         for action in fit::ui(ui, &mut self.fit, &fittables, &signals) {
@@ -600,7 +601,7 @@ impl ControlPanel {
 
     /// Starts the fit chosen in the fit panel on the scene as it runs, its record drawn in the
     /// viewer; a bad choice is refused there in one line and nothing runs.
-    fn start_fit(&mut self, fittables: &[fit::Fittable]) {
+    fn start_fit(&mut self, fittables: &[crate::parameters::Parameter]) {
         let Some(open) = &self.scene else { return };
         let launched = self
             .fit

@@ -2,7 +2,7 @@
 //! is not there: a module added, moved or removed without its line in the map fails here.
 //!
 //! The map has one section per crate, headed ``### `DIR/` — name``, whose table rows start with
-//! the module's path inside `DIR` in backticks: `water/stage.rs` for a file, `water/` for a
+//! the module's path inside `DIR` in backticks: `water/waves.rs` for a file, `water/` for a
 //! folder's `mod.rs`.
 
 use std::collections::BTreeSet;

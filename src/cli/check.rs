@@ -16,7 +16,7 @@ use tether_physics::stability;
 use tether_physics::water::WaveSpec;
 use tether_physics::water::dispersion::wavelength;
 use tether_physics::water::hydrostatics::floating_equilibrium;
-use tether_physics::water::stage::FloatingPotential;
+use tether_physics::water_stage::FloatingPotential;
 use tether_physics::world::World;
 use tether_scene::Scene;
 
@@ -336,7 +336,7 @@ fn water_report(out: &mut String, world: &World) {
             let _ = writeln!(out, "  kinematic: its motion is prescribed and the water does not act on it");
             continue;
         }
-        match floating_equilibrium(body, floating, water, &world.state(index), pull) {
+        match floating_equilibrium(body, (floating.hull(), floating.hydro()), water, &world.state(index), pull) {
             None => {
                 let _ = writeln!(
                     out,

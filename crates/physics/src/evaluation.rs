@@ -9,7 +9,8 @@ use crate::coupling::contact::ContactForces;
 use crate::coupling::lumped_line::LineRun;
 use crate::coupling::{Coupling, CouplingCache, CouplingForces, CouplingKind, LineModel};
 use crate::potential::RadiationRun;
-use crate::water::{WaterForces, WaterScratch, WaterStage};
+use crate::water::WaterForces;
+use crate::water_stage::{WaterScratch, WaterStage};
 
 /// The buffers of the force evaluation, one entry per body or coupling of a [`System`](crate::system::System).
 #[derive(Debug, Clone)]

@@ -69,4 +69,5 @@ pub mod surroundings;
 pub mod system;
 pub mod table;
 pub mod water;
+pub mod water_stage;
 pub mod world;

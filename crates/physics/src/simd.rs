@@ -1,7 +1,7 @@
 //! Which vector instructions the processor has, and the one dispatch of the stages built more
 //! than once.
 //!
-//! The couplings stage ([`crate::system`]), the water stage ([`crate::water::stage`]) and the
+//! The couplings stage ([`crate::system`]), the water stage ([`crate::water_stage`]) and the
 //! leapfrog step ([`crate::integrator::leapfrog`]) are compiled three times: for AVX-512 (with
 //! AVX2 and FMA: the Ice Lake / Zen 4 feature set), for AVX2 with FMA, and for the SSE2 every
 //! x86-64 has; [`Level::best`] picks one at run time. The arithmetic is the same IEEE arithmetic

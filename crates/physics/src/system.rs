@@ -39,10 +39,11 @@ use crate::potential::{
 use crate::seabed::Seabed;
 use crate::simd::{Level, SupportedLevel};
 use crate::surroundings::Surroundings;
+use crate::water::WaterSpec;
 use crate::water::environment::WaterError;
 use crate::water::morison::HydroSpec;
-use crate::water::stage::{FloatingBody, FloatingError, FloatingPotential, SwitchError, WaterStageInputs};
-use crate::water::{WaterSpec, WaterStage};
+use crate::water_stage::WaterStage;
+use crate::water_stage::{FloatingBody, FloatingError, FloatingPotential, SwitchError, WaterStageInputs};
 
 /// Bodies, couplings and gravity: what a run does not change (live edits aside).
 #[derive(Debug, Clone)]
@@ -606,7 +607,7 @@ impl System {
     /// the previous evaluation) at the kinematics now in its frames: the left end of the
     /// staggered schemes' environment work (see [`crate::integrator::leapfrog`]).
     pub fn environment_power(&self, evaluation: &Evaluation) -> f64 {
-        let power = crate::water::stage::power;
+        let power = crate::water_stage::power;
         let frames = &evaluation.frames;
         let water: f64 = match self.water {
             None => 0.0,

@@ -2,14 +2,6 @@
 //! [`crate::water`]): for each floating body, pressure, Morison loads and added mass, recorded
 //! in its [`WaterForces`] and added to its load; returns their power.
 
-use super::added_mass::AddedMass;
-use super::environment::{Water, WaterError, WaterSpec};
-use super::forces::WaterForces;
-use super::hull::Hull;
-use super::morison::{Hydro, HydroError, HydroSpec};
-use super::pressure::integrate;
-use super::waves::SeaInstant;
-use super::waves::WaveComponent;
 use crate::body::{BodyFrame, Load, RigidBody};
 use crate::math::Vec3;
 use crate::mesh::MeshError;
@@ -18,6 +10,14 @@ use crate::potential::{
     WaveExcitation,
 };
 use crate::simd::SupportedLevel;
+use crate::water::added_mass::AddedMass;
+use crate::water::environment::{Water, WaterError, WaterSpec};
+use crate::water::forces::WaterForces;
+use crate::water::hull::Hull;
+use crate::water::morison::{Hydro, HydroError, HydroSpec};
+use crate::water::pressure::integrate;
+use crate::water::waves::SeaInstant;
+use crate::water::waves::WaveComponent;
 use std::sync::Arc;
 
 /// A body in the water: its index, hull and coefficients, and its potential flow if it has any.

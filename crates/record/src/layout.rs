@@ -160,7 +160,7 @@ struct FloatingPlots {
 
 fn floating_bodies(world: &World) -> Vec<FloatingPlots> {
     let Some(stage) = world.system().water() else { return Vec::new() };
-    let plots = |floating: &tether_physics::water::FloatingBody| {
+    let plots = |floating: &tether_physics::water_stage::FloatingBody| {
         let name = world.bodies()[floating.body()].name.clone();
         let mut plots = vec![
             Plot::new(format!("{name}: elevation, heave [m]"), paths::water_plot(&name, "motion")),
@@ -213,7 +213,7 @@ fn design_load_plots(world: &World) -> Option<(&'static str, Vec<Plot>)> {
 }
 
 /// Whether `floating` feels a wave drift (PHYSICS.md §10): potential flow on, a drift model.
-pub(crate) fn has_drift(floating: &tether_physics::water::FloatingBody) -> bool {
+pub(crate) fn has_drift(floating: &tether_physics::water_stage::FloatingBody) -> bool {
     floating.potential().is_some_and(|p| p.model().drift_model() != tether_physics::potential::DriftModel::Off)
 }
 

@@ -223,7 +223,7 @@ impl AirStage {
             let force = rotor.force(&axis, &relative(exposure.mean, rotor_gust, &arm), density);
             record.rotor = Load { force, moment: arm.cross(&force) };
         }
-        record.power = crate::water::stage::power(&record.total(), frame);
+        record.power = crate::water_stage::power(&record.total(), frame);
         record
     }
 }

@@ -17,7 +17,8 @@ use crate::coupling::{Coupling, CouplingForces, CouplingKind};
 use crate::evaluation::Evaluation;
 use crate::math::{Mat3, Rotation, Vec3};
 use crate::system::System;
-use crate::water::{WaterForces, WaterScratch, WaterStageInputs};
+use crate::water::WaterForces;
+use crate::water_stage::{WaterScratch, WaterStageInputs};
 use nalgebra::DMatrix;
 
 /// The time \[s] of a static evaluation: nothing in the system at rest

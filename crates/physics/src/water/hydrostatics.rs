@@ -19,8 +19,8 @@
 use super::added_mass::AddedMass;
 use super::environment::Water;
 use super::hull::Hull;
+use super::morison::Hydro;
 use super::pressure::wet_parts;
-use super::stage::FloatingBody;
 use crate::body::{BodyState, RigidBody};
 use crate::math::{Mat3, Vec3};
 
@@ -150,25 +150,23 @@ pub struct FloatingEquilibrium {
     pub periods: [Option<f64>; 3],
 }
 
-/// The equilibrium of `floating` (`body`, turned as in `state`) in `water` under its weight
-/// and a vertical pull `pull` \[N] (the couplings' at t = 0, positive up): heave only, the
-/// orientation and horizontal position kept. `None` if it sinks (its hull cannot displace
-/// enough) or is pulled out of the water.
+/// The equilibrium of `body` (its `hull` and coefficients `hydro`, turned as in `state`) in
+/// `water` under its weight and a vertical pull `pull` \[N] (the couplings' at t = 0, positive
+/// up): heave only, the orientation and horizontal position kept. `None` if it sinks (its hull
+/// cannot displace enough) or is pulled out of the water.
 pub fn floating_equilibrium(
     body: &RigidBody,
-    floating: &FloatingBody,
+    (hull, hydro): (&Hull, &Hydro),
     water: &Water,
     state: &BodyState,
     pull: f64,
 ) -> Option<FloatingEquilibrium> {
-    let hull = &floating.hull();
     let rotation = state.rotation_matrix();
     let volume = (body.mass() * water.gravity() - pull) / water.specific_weight();
     let height = equilibrium_height(hull, &rotation, water.level(), state.position.x, state.position.y, volume)?;
     let statics =
         Hydrostatics::at(hull, &Vec3::new(state.position.x, state.position.y, height), &rotation, water.level());
     let metacentric_heights = statics.metacentric_heights(height);
-    let hydro = &floating.hydro();
     let wetted = (statics.displaced_volume / hull.volume()).min(1.0);
     let added = AddedMass::new(
         hydro.axes(),

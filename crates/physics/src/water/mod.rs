@@ -6,7 +6,8 @@
 //! and writes each one's [`WaterForces`] to its own buffer of the evaluation before they are
 //! summed into the loads, so they can be plotted.
 //!
-//! For each floating body, at the time of the evaluation ([`stage`]):
+//! For each floating body, at the time of the evaluation (the water stage, [`crate::water_stage`],
+//! which runs these rooms and [`crate::potential`] together):
 //! 1. *pressure*: the pressure `p = ρ g (z_w − z) + p_d` at each hull vertex, once per vertex
 //!    ([`environment`], [`waves`]); each triangle clipped at `p = 0` and `p` integrated exactly
 //!    over its wet part ([`pressure`]): hydrostatics and Froude–Krylov;
@@ -44,11 +45,9 @@ pub mod hydrostatics;
 pub mod morison;
 pub mod pressure;
 pub mod spectrum;
-pub mod stage;
 pub mod waves;
 
 pub use environment::{CurrentProfile, CurrentSpec, Water, WaterError, WaterField, WaterSpec, WaveSpec};
 pub use forces::WaterForces;
 pub use hull::Hull;
 pub use morison::Hydro;
-pub use stage::{FloatingBody, FloatingPotential, SwitchError, WaterScratch, WaterStage, WaterStageInputs};

@@ -36,8 +36,8 @@ use crate::{RecordError, paths};
 use rerun::RecordingStream;
 use tether_physics::body::Load;
 use tether_physics::math::{Rotation, Vec3};
-use tether_physics::water::WaterStage;
 use tether_physics::water::waves::SeaInstant;
+use tether_physics::water_stage::WaterStage;
 use tether_physics::world::World;
 
 /// Vertices along each side of the surface grid.

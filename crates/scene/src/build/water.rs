@@ -12,8 +12,8 @@ use tether_physics::math::Vec3;
 use tether_physics::potential::{FitSettings, HydrostaticsModel, PotentialSpec};
 use tether_physics::system::{System, SystemError};
 use tether_physics::water::morison::HydroSpec;
-use tether_physics::water::stage::FloatingError;
 use tether_physics::water::{Hull, Hydro, Water, WaterSpec};
+use tether_physics::water_stage::FloatingError;
 
 /// `system` with the water of `file` and its bodies that declare `hydro` in it (unchanged
 /// without water), their potential-flow files read relative to `directory`; warns of a body

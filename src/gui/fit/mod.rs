@@ -9,15 +9,17 @@
 //! Each scene opened in the window keeps its own fit state ([`SceneFits`]): a record mapped to
 //! one scene's couplings never reaches another's.
 //!
-//! The state ([`FitDraft`]) and the signals a record's column can be ([`signals`]) have no egui in
-//! them; [`ui`] draws them and returns [`FitAction`]s, which the panel carries out, and the panel
-//! takes the fit's news as [`FitUpdate`]s ([`FitDraft::poll`]).
-//!
-//! The matches over the scene's coupling kinds, elastic laws, line models, waves and quantities
-//! are exhaustive: a new kind does not compile until it says what can be fitted in it.
+//! Here, with no egui: the state ([`FitDraft`]) and the fit's worker thread, whose news the
+//! panel takes as [`FitUpdate`]s ([`FitDraft::poll`]). In [`signals`], what a record's column
+//! can be; in [`panel`], the egui drawing ([`ui`]), which returns [`FitAction`]s the control
+//! panel carries out. What can be fitted is the scene's catalogue ([`crate::parameters`]).
 
-use super::line_plot::{self, Framed};
-use super::number_field::number_field;
+mod panel;
+mod signals;
+
+pub use panel::ui;
+pub use signals::{signal_label, signals};
+
 use super::open_scene::OpenScene;
 use super::simulation::{Curve, Wake};
 use crate::figures;
@@ -27,93 +29,17 @@ use crate::fit::setup::{Setup, SetupError};
 use crate::fit::solver::Ending;
 use crate::fit::spec::{FitFile, ParameterDef, Scale, SignalDef, Window};
 use crate::parameters::{KnobId, Parameter};
-use crate::quantity::{Axis, End, EnergyPart, Quantity, Turn};
+use crate::quantity::Quantity;
 use crate::runner::{Runner, all_cores};
 use crate::sweep::spec::PathsDef;
-use rerun::external::egui;
 use std::collections::{BTreeMap, HashMap};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{self, Receiver, TryRecvError};
-use tether_scene::SceneFile;
-use tether_scene::file::CouplingDef;
 
 /// Points of a model curve sent to the viewer at most (a run's every world step, thinned).
 const CURVE_POINTS: usize = 4000;
-
-/// The model signals a measured column can be: each body's position, velocity and roll, pitch,
-/// yaw; each coupling's tension (a contact's normal force), a spring's or line's length, a line's
-/// end tensions.
-pub fn signals(file: &SceneFile) -> Vec<Quantity> {
-    let mut signals = Vec::new();
-    for body in &file.bodies {
-        let name = || body.name.clone();
-        signals.extend([Axis::X, Axis::Y, Axis::Z].map(|axis| Quantity::Position(name(), axis)));
-        signals.extend([Axis::X, Axis::Y, Axis::Z].map(|axis| Quantity::Velocity(name(), axis)));
-        signals.extend([Turn::Roll, Turn::Pitch, Turn::Yaw].map(|turn| Quantity::Angle(name(), turn)));
-    }
-    for def in &file.couplings {
-        let name = || def.name().to_string();
-        match def {
-            CouplingDef::SpringDamper { .. } => signals.extend([Quantity::Tension(name()), Quantity::Length(name())]),
-            CouplingDef::Catenary { .. } => signals.extend([
-                Quantity::Tension(name()),
-                Quantity::EndTension(name(), End::End1),
-                Quantity::EndTension(name(), End::End2),
-                Quantity::Length(name()),
-            ]),
-            CouplingDef::Contact { .. } => signals.push(Quantity::Tension(name())),
-        }
-    }
-    signals
-}
-
-/// A signal as the column choice shows it: `m: position x [m]`, `chain: end 2 tension [N]`.
-pub fn signal_label(quantity: &Quantity) -> String {
-    let axis = |axis: &Axis| match axis {
-        Axis::X => "x",
-        Axis::Y => "y",
-        Axis::Z => "z",
-    };
-    let end = |end: &End| match end {
-        End::End1 => "end 1",
-        End::End2 => "end 2",
-    };
-    match quantity {
-        Quantity::Tension(c) => format!("{c}: tension [N]"),
-        Quantity::EndTension(c, e) => format!("{c}: {} tension [N]", end(e)),
-        Quantity::EndForce(c, e, a) => format!("{c}: {} force {} [N]", end(e), axis(a)),
-        Quantity::Length(c) => format!("{c}: length [m]"),
-        Quantity::Position(b, a) => format!("{b}: position {} [m]", axis(a)),
-        Quantity::Velocity(b, a) => format!("{b}: velocity {} [m/s]", axis(a)),
-        Quantity::Angle(b, turn) => {
-            let turn = match turn {
-                Turn::Roll => "roll",
-                Turn::Pitch => "pitch",
-                Turn::Yaw => "yaw",
-            };
-            format!("{b}: {turn} [rad]")
-        }
-        Quantity::AngularVelocity(b, a) => format!("{b}: angular velocity {} [rad/s]", axis(a)),
-        Quantity::Speed(b) => format!("{b}: speed [m/s]"),
-        Quantity::AngularSpeed(b) => format!("{b}: angular speed [rad/s]"),
-        Quantity::Excursion(b) => format!("{b}: excursion [m]"),
-        Quantity::Rotation(b) => format!("{b}: rotation [rad]"),
-        Quantity::Energy(part) => {
-            let part = match part {
-                EnergyPart::Kinetic => "kinetic",
-                EnergyPart::Gravity => "gravity",
-                EnergyPart::Elastic => "elastic",
-                EnergyPart::Dissipated => "dissipated",
-                EnergyPart::ExternalWork => "external work",
-                EnergyPart::Total => "total",
-                EnergyPart::Balance => "balance",
-            };
-            format!("energy: {part} [J]")
-        }
-    }
-}
 
 /// A ticked knob's bounds and scale.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -603,246 +529,14 @@ fn correlated_text(fitted: &Fitted, unit: &str) -> String {
     }
 }
 
-/// Draws the fit panel for a scene whose fittable values are `fittables` and whose signals are
-/// `signals`; returns what it asks for.
-pub fn ui(ui: &mut egui::Ui, draft: &mut FitDraft, fittables: &[Parameter], signals: &[Quantity]) -> Vec<FitAction> {
-    let mut actions = Vec::new();
-    egui::CollapsingHeader::new("Fit to a record").id_salt("fit").default_open(false).show(ui, |ui| {
-        let running = draft.running();
-        ui.add_enabled_ui(!running, |ui| choices_ui(ui, draft, fittables, signals, &mut actions));
-        ui.horizontal_wrapped(|ui| {
-            let why_not =
-                if running { "a fit is running" } else { "open a record first: the fit compares the run with it" };
-            if ui
-                .add_enabled(!running && draft.record.is_some(), egui::Button::new("Fit"))
-                .on_hover_text("Fit the ticked knobs to the record (tether fit), from their values now")
-                .on_disabled_hover_text(why_not)
-                .clicked()
-            {
-                actions.push(FitAction::Start);
-            }
-            if ui
-                .add_enabled(running, egui::Button::new("Stop"))
-                .on_hover_text("End the fit at the best values so far")
-                .clicked()
-            {
-                actions.push(FitAction::Stop);
-            }
-            if draft.record.is_none() {
-                ui.weak("open a record (above) to fit");
-            }
-        });
-        if let Some(refusal) = &draft.refusal {
-            let text = egui::RichText::new(refusal).color(ui.visuals().error_fg_color);
-            let shown = ui.add(egui::Label::new(text).wrap());
-            // Where the eye is: the Fit button may sit at the panel's bottom edge.
-            if std::mem::take(&mut draft.reveal) {
-                shown.scroll_to_me(None);
-            }
-        }
-        if let Some(session) = &draft.session {
-            session_ui(ui, session, &mut actions);
-        }
-    });
-    actions
-}
-
-/// The record, its columns' signals, the knobs and their bounds, the window.
-fn choices_ui(
-    ui: &mut egui::Ui,
-    draft: &mut FitDraft,
-    fittables: &[Parameter],
-    signals: &[Quantity],
-    actions: &mut Vec<FitAction>,
-) {
-    ui.horizontal(|ui| {
-        if ui.button("Open record…").on_hover_text("A measured record: CSV, Parquet or a Tether recording").clicked()
-        {
-            actions.push(FitAction::BrowseRecord);
-        }
-        match &draft.record {
-            Some(record) => {
-                let name = record.path.file_name().map_or_else(String::new, |n| n.to_string_lossy().into_owned());
-                let summary = format!(
-                    "{name}: {} column{}, {} to {}",
-                    record.columns.len(),
-                    if record.columns.len() == 1 { "" } else { "s" },
-                    number(record.span.0),
-                    figures::quantity(record.span.1, "s", 6)
-                );
-                // Wrapped: a long file name must not widen the panel and push the viewer.
-                ui.add(egui::Label::new(summary).wrap()).on_hover_text(record.path.display().to_string());
-            }
-            None => {
-                ui.weak("no record");
-            }
-        }
-    });
-    if let Some(record) = &draft.record {
-        ui.label("Each column is the model signal:");
-        for (index, (column, of)) in record.columns.iter().zip(&mut draft.mapping).enumerate() {
-            let shown = of.as_ref().map_or_else(|| "not used".to_string(), signal_label);
-            // Wrapped: a long column name breaks over lines, its choice goes to the next one.
-            ui.horizontal_wrapped(|ui| {
-                let name = ui.add(egui::Label::new(column).wrap());
-                let choice =
-                    egui::ComboBox::from_id_salt(("fit column", index)).selected_text(shown).show_ui(ui, |ui| {
-                        ui.selectable_value(&mut *of, None, "not used");
-                        for signal in signals {
-                            ui.selectable_value(&mut *of, Some(signal.clone()), signal_label(signal));
-                        }
-                    });
-                choice.response.labelled_by(name.id);
-            });
-        }
-    }
-    ui.label("Knobs to fit (bounds; the fit starts from the value now):");
-    for fittable in fittables {
-        let mut on = draft.ticked.contains_key(&fittable.path);
-        ui.horizontal(|ui| {
-            if ui.checkbox(&mut on, &fittable.label).changed() {
-                draft.tick(fittable, on);
-            }
-            ui.weak(amount(fittable.value, fittable.unit));
-        });
-        if let Some(bounds) = draft.ticked.get_mut(&fittable.path) {
-            ui.horizontal(|ui| {
-                ui.add_space(24.0);
-                bound(ui, &mut bounds.from, "from", &format!("{} from", fittable.label));
-                bound(ui, &mut bounds.to, "to", &format!("{} to", fittable.label));
-                ui.label(fittable.unit);
-                ui.checkbox(&mut bounds.log, "log").on_hover_text("A log scale, for a value that spans decades");
-            });
-        }
-    }
-    ui.horizontal(|ui| {
-        ui.label("window");
-        bound(ui, &mut draft.window.0, "from", "window from");
-        bound(ui, &mut draft.window.1, "to", "window to");
-        ui.label("s");
-    });
-}
-
-/// A bound: a number after `prefix`, named `name` for screen readers (and tests).
-fn bound(ui: &mut egui::Ui, value: &mut f64, prefix: &str, name: &str) {
-    let speed = value.abs().max(1e-3) * 0.01;
-    ui.label(prefix);
-    let response = number_field(ui, value, speed);
-    ui.ctx().accesskit_node_builder(response.id, |node| node.set_label(name));
-}
-
-/// Where the fit is or how it ended; each fitted knob's value and interval; Apply, Revert.
-fn session_ui(ui: &mut egui::Ui, session: &Session, actions: &mut Vec<FitAction>) {
-    ui.separator();
-    match (&session.result, &session.latest) {
-        (None, None) => {
-            ui.label("fitting: the first runs…");
-        }
-        (None, Some(latest)) => {
-            ui.label(format!(
-                "fitting: iteration {}, cost {}, {} runs",
-                latest.iteration,
-                figures::number(latest.cost, 4),
-                latest.runs
-            ));
-        }
-        (Some(Ok(summary)), _) => {
-            ui.label(status(summary));
-        }
-        (Some(Err(message)), _) => {
-            ui.colored_label(ui.visuals().error_fg_color, format!("the fit failed: {message}"));
-        }
-    }
-    let fitted = match &session.result {
-        Some(Ok(summary)) => Some(&summary.parameters),
-        Some(Err(_)) | None => None,
-    };
-    egui::Grid::new("fit results").num_columns(2).show(ui, |ui| {
-        for (index, target) in session.targets.iter().enumerate() {
-            ui.label(&target.label);
-            match fitted.and_then(|parameters| parameters.get(index)) {
-                Some(parameter) => ui
-                    .label(interval_text(parameter, target.unit))
-                    .on_hover_text(correlated_text(parameter, target.unit)),
-                None => {
-                    let now = session.applied.get(index).copied().unwrap_or(target.value);
-                    ui.label(format!("{} (from {})", amount(now, target.unit), amount(target.value, target.unit)))
-                }
-            };
-            ui.end_row();
-        }
-    });
-    if session.costs.len() > 1 {
-        cost_plot(ui, &session.costs);
-    }
-    if session.result.is_some() {
-        match session.decision {
-            None => {
-                ui.horizontal(|ui| {
-                    if ui.button("Apply").on_hover_text("Keep the fitted values (they are running)").clicked() {
-                        actions.push(FitAction::Apply);
-                    }
-                    if ui.button("Revert").on_hover_text("The fitted knobs back to the scene file's values").clicked() {
-                        actions.push(FitAction::Revert);
-                    }
-                });
-            }
-            Some(Decision::Kept) => {
-                ui.weak("kept: the fitted values are the tuned ones (\"Save as…\" writes them)");
-            }
-            Some(Decision::Reverted) => {
-                ui.weak("reverted to the file's values");
-            }
-        }
-    }
-}
-
-/// The cost of each accepted iteration, on a log scale, in a framed box.
-fn cost_plot(ui: &mut egui::Ui, costs: &[(u32, f64)]) {
-    let first = costs.first().map_or(0.0, |c| c.1);
-    let last = costs.last().map_or(0.0, |c| c.1);
-    ui.label(format!("cost per iteration: {} → {} (log scale)", figures::number(first, 4), figures::number(last, 4)));
-    let points: Vec<(f64, f64)> =
-        costs.iter().filter(|c| c.1 > 0.0).map(|&(i, cost)| (f64::from(i), cost.log10())).collect();
-    let Some(Framed { painter, line, .. }) = line_plot::frame(ui, &points, 80.0) else {
-        return;
-    };
-    let stroke = egui::Stroke::new(2.0, ui.visuals().hyperlink_color);
-    for point in &line {
-        painter.circle_filled(*point, 2.5, stroke.color);
-    }
-    painter.add(egui::Shape::line(line, stroke));
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A float in waves on a spring, and a dynamic line, with every kind of value fittable.
-    const SCENE: &str = r#"Scene(dt: 0.01, water: Water(depth: 30.0, waves: Regular(height: 1.0, period: 6.0), current: Current(speed: 0.5)),
-        bodies: [Body(name: "float", master: Node(position: (0.0, 0.0, 0.0), mass: 1025.0, inertia: Inertia(xx: 300.0, yy: 300.0, zz: 300.0)),
-             shape: Box(size: (2.0, 2.0, 1.0)), hydro: Hydro(drag: (1.0, 1.0, 1.0), linear_damping: (0.0, 0.0, 50.0)))],
-        couplings: [
-            SpringDamper(name: "spring", end1: World((0.0, 0.0, -5.0)), end2: Body(body: "float"),
-                law: ForceCurve(points: [(0.0, 0.0), (1.0, 100.0)]), damping: 2.0),
-            Catenary(name: "line", end1: World((20.0, 0.0, -30.0)), end2: Body(body: "float"),
-                mass_per_length: 50.0, length: 40.0, stiffness: 1e8,
-                model: Dynamic(segments: 10, damping: Ratio(0.8), drag_normal: 1.2)),
-        ])"#;
 
     #[test]
     fn bounds_are_prefilled_around_the_value() {
         assert_eq!(Bounds::around(90.0), Bounds { from: 30.0, to: 270.0, log: true });
         assert_eq!(Bounds::around(-3.0), Bounds { from: -9.0, to: -1.0, log: false });
         assert_eq!(Bounds::around(0.0), Bounds { from: -1.0, to: 1.0, log: false });
-    }
-
-    #[test]
-    fn each_body_and_coupling_offers_its_signals() {
-        let file = tether_scene::parse(SCENE, Path::new("float.ron")).unwrap().file;
-        let labels: Vec<String> = signals(&file).iter().map(signal_label).collect();
-        assert_eq!(labels.len(), 9 + 2 + 4);
-        assert_eq!(labels[2], "float: position z [m]");
-        assert!(labels.contains(&"line: end 2 tension [N]".to_string()), "{labels:?}");
     }
 }

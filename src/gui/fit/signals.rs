@@ -1,0 +1,106 @@
+//! What a measured record's column can be in the Fit panel: each body's and coupling's model
+//! signals ([`signals`]), and how the column choice names them ([`signal_label`]).
+
+use crate::quantity::{Axis, End, EnergyPart, Quantity, Turn};
+use tether_scene::SceneFile;
+use tether_scene::file::CouplingDef;
+
+/// The model signals a measured column can be: each body's position, velocity and roll, pitch,
+/// yaw; each coupling's tension (a contact's normal force), a spring's or line's length, a line's
+/// end tensions.
+pub fn signals(file: &SceneFile) -> Vec<Quantity> {
+    let mut signals = Vec::new();
+    for body in &file.bodies {
+        let name = || body.name.clone();
+        signals.extend([Axis::X, Axis::Y, Axis::Z].map(|axis| Quantity::Position(name(), axis)));
+        signals.extend([Axis::X, Axis::Y, Axis::Z].map(|axis| Quantity::Velocity(name(), axis)));
+        signals.extend([Turn::Roll, Turn::Pitch, Turn::Yaw].map(|turn| Quantity::Angle(name(), turn)));
+    }
+    for def in &file.couplings {
+        let name = || def.name().to_string();
+        match def {
+            CouplingDef::SpringDamper { .. } => signals.extend([Quantity::Tension(name()), Quantity::Length(name())]),
+            CouplingDef::Catenary { .. } => signals.extend([
+                Quantity::Tension(name()),
+                Quantity::EndTension(name(), End::End1),
+                Quantity::EndTension(name(), End::End2),
+                Quantity::Length(name()),
+            ]),
+            CouplingDef::Contact { .. } => signals.push(Quantity::Tension(name())),
+        }
+    }
+    signals
+}
+
+/// A signal as the column choice shows it: `m: position x [m]`, `chain: end 2 tension [N]`.
+pub fn signal_label(quantity: &Quantity) -> String {
+    let axis = |axis: &Axis| match axis {
+        Axis::X => "x",
+        Axis::Y => "y",
+        Axis::Z => "z",
+    };
+    let end = |end: &End| match end {
+        End::End1 => "end 1",
+        End::End2 => "end 2",
+    };
+    match quantity {
+        Quantity::Tension(c) => format!("{c}: tension [N]"),
+        Quantity::EndTension(c, e) => format!("{c}: {} tension [N]", end(e)),
+        Quantity::EndForce(c, e, a) => format!("{c}: {} force {} [N]", end(e), axis(a)),
+        Quantity::Length(c) => format!("{c}: length [m]"),
+        Quantity::Position(b, a) => format!("{b}: position {} [m]", axis(a)),
+        Quantity::Velocity(b, a) => format!("{b}: velocity {} [m/s]", axis(a)),
+        Quantity::Angle(b, turn) => {
+            let turn = match turn {
+                Turn::Roll => "roll",
+                Turn::Pitch => "pitch",
+                Turn::Yaw => "yaw",
+            };
+            format!("{b}: {turn} [rad]")
+        }
+        Quantity::AngularVelocity(b, a) => format!("{b}: angular velocity {} [rad/s]", axis(a)),
+        Quantity::Speed(b) => format!("{b}: speed [m/s]"),
+        Quantity::AngularSpeed(b) => format!("{b}: angular speed [rad/s]"),
+        Quantity::Excursion(b) => format!("{b}: excursion [m]"),
+        Quantity::Rotation(b) => format!("{b}: rotation [rad]"),
+        Quantity::Energy(part) => {
+            let part = match part {
+                EnergyPart::Kinetic => "kinetic",
+                EnergyPart::Gravity => "gravity",
+                EnergyPart::Elastic => "elastic",
+                EnergyPart::Dissipated => "dissipated",
+                EnergyPart::ExternalWork => "external work",
+                EnergyPart::Total => "total",
+                EnergyPart::Balance => "balance",
+            };
+            format!("energy: {part} [J]")
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::path::Path;
+
+    /// A float in waves on a spring, and a dynamic line, with every kind of value fittable.
+    const SCENE: &str = r#"Scene(dt: 0.01, water: Water(depth: 30.0, waves: Regular(height: 1.0, period: 6.0), current: Current(speed: 0.5)),
+        bodies: [Body(name: "float", master: Node(position: (0.0, 0.0, 0.0), mass: 1025.0, inertia: Inertia(xx: 300.0, yy: 300.0, zz: 300.0)),
+             shape: Box(size: (2.0, 2.0, 1.0)), hydro: Hydro(drag: (1.0, 1.0, 1.0), linear_damping: (0.0, 0.0, 50.0)))],
+        couplings: [
+            SpringDamper(name: "spring", end1: World((0.0, 0.0, -5.0)), end2: Body(body: "float"),
+                law: ForceCurve(points: [(0.0, 0.0), (1.0, 100.0)]), damping: 2.0),
+            Catenary(name: "line", end1: World((20.0, 0.0, -30.0)), end2: Body(body: "float"),
+                mass_per_length: 50.0, length: 40.0, stiffness: 1e8,
+                model: Dynamic(segments: 10, damping: Ratio(0.8), drag_normal: 1.2)),
+        ])"#;
+
+    #[test]
+    fn each_body_and_coupling_offers_its_signals() {
+        let file = tether_scene::parse(SCENE, Path::new("float.ron")).unwrap().file;
+        let labels: Vec<String> = signals(&file).iter().map(signal_label).collect();
+        assert_eq!(labels.len(), 9 + 2 + 4);
+        assert_eq!(labels[2], "float: position z [m]");
+        assert!(labels.contains(&"line: end 2 tension [N]".to_string()), "{labels:?}");
+    }
+}

@@ -10,7 +10,6 @@ use crate::potential::{
     WaveExcitation,
 };
 use crate::simd::SupportedLevel;
-use crate::water::added_mass::AddedMass;
 use crate::water::environment::{Water, WaterError, WaterSpec};
 use crate::water::forces::WaterForces;
 use crate::water::hull::Hull;
@@ -458,14 +457,7 @@ impl WaterStage {
         if record.wetted_fraction > 0.0 {
             record.drag = hydro.load(frame, &flow, water.density(), record.wetted_fraction);
             if hydro.has_added_mass() && floating.potential().is_none() {
-                let added = AddedMass::new(
-                    hydro.axes(),
-                    &hydro.spec().added_mass,
-                    &hydro.spec().added_inertia,
-                    hull.volume(),
-                    water.density(),
-                    record.wetted_fraction,
-                );
+                let added = hydro.added_mass(hull.volume(), water.density(), record.wetted_fraction);
                 let before = Load {
                     force: load.force + record.pressure.force + record.drag.force,
                     moment: load.moment + record.pressure.moment + record.drag.moment,

@@ -83,16 +83,15 @@ mod tests {
     use super::*;
     use std::path::Path;
 
-    /// A float in waves on a spring, and a dynamic line, with every kind of value fittable.
-    const SCENE: &str = r#"Scene(dt: 0.01, water: Water(depth: 30.0, waves: Regular(height: 1.0, period: 6.0), current: Current(speed: 0.5)),
-        bodies: [Body(name: "float", master: Node(position: (0.0, 0.0, 0.0), mass: 1025.0, inertia: Inertia(xx: 300.0, yy: 300.0, zz: 300.0)),
-             shape: Box(size: (2.0, 2.0, 1.0)), hydro: Hydro(drag: (1.0, 1.0, 1.0), linear_damping: (0.0, 0.0, 50.0)))],
+    /// A float held by a spring and a quasi-static line.
+    const SCENE: &str = r#"Scene(dt: 0.01, bodies: [Body(name: "float",
+            master: Node(position: (0.0, 0.0, 0.0), mass: 1025.0, inertia: Inertia(xx: 300.0, yy: 300.0, zz: 300.0)),
+            shape: Sphere(radius: 0.5))],
         couplings: [
-            SpringDamper(name: "spring", end1: World((0.0, 0.0, -5.0)), end2: Body(body: "float"),
-                law: ForceCurve(points: [(0.0, 0.0), (1.0, 100.0)]), damping: 2.0),
-            Catenary(name: "line", end1: World((20.0, 0.0, -30.0)), end2: Body(body: "float"),
-                mass_per_length: 50.0, length: 40.0, stiffness: 1e8,
-                model: Dynamic(segments: 10, damping: Ratio(0.8), drag_normal: 1.2)),
+            SpringDamper(name: "spring", end1: World((0.0, 0.0, 5.0)), end2: Body(body: "float"),
+                law: Linear(stiffness: 100.0, rest_length: 4.0)),
+            Catenary(name: "line", end1: World((20.0, 0.0, 0.0)), end2: Body(body: "float"),
+                mass_per_length: 50.0, length: 25.0, stiffness: 1e8),
         ])"#;
 
     #[test]

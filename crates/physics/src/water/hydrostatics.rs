@@ -16,7 +16,6 @@
 //! The integrands are polynomials of the corners' coordinates, integrated exactly per wet
 //! triangle: `∫ f g dA = (A/12) [Σ f_i g_i + (Σ f_i)(Σ g_i)]` for linear f, g.
 
-use super::added_mass::AddedMass;
 use super::environment::Water;
 use super::hull::Hull;
 use super::morison::Hydro;
@@ -168,14 +167,7 @@ pub fn floating_equilibrium(
         Hydrostatics::at(hull, &Vec3::new(state.position.x, state.position.y, height), &rotation, water.level());
     let metacentric_heights = statics.metacentric_heights(height);
     let wetted = (statics.displaced_volume / hull.volume()).min(1.0);
-    let added = AddedMass::new(
-        hydro.axes(),
-        &hydro.spec().added_mass,
-        &hydro.spec().added_inertia,
-        hull.volume(),
-        water.density(),
-        wetted,
-    );
+    let added = hydro.added_mass(hull.volume(), water.density(), wetted);
     let world = |principal: &Mat3| rotation * principal * rotation.transpose();
     let (mass, inertia) =
         (world(&added.translational), world(&(Mat3::from_diagonal(&body.principal_moments()) + added.rotational)));

@@ -15,6 +15,7 @@
 //! The drag areas `A_j` default to the hull's projected areas `½ Σ A_f |n_f·b_j|`; the drag
 //! centre to G. The added-mass coefficients are applied by [`super::added_mass`].
 
+use super::added_mass::AddedMass;
 use super::hull::Hull;
 use crate::body::{BodyFrame, Load, RigidBody};
 use crate::math::{Mat3, Vec3};
@@ -118,6 +119,12 @@ impl Hydro {
     /// Whether any added mass or inertia is declared.
     pub fn has_added_mass(&self) -> bool {
         self.spec.added_mass != Vec3::zeros() || self.spec.added_inertia != Vec3::zeros()
+    }
+
+    /// The declared added mass and inertia (§6) on a hull of displaced volume `volume` \[m³] when
+    /// whole, wetted by the fraction `wetted`, in water of density `density` [kg/m³].
+    pub fn added_mass(&self, volume: f64, density: f64, wetted: f64) -> AddedMass {
+        AddedMass::new(&self.axes, &self.spec.added_mass, &self.spec.added_inertia, volume, density, wetted)
     }
 
     /// `r_c` in world axes \[m] for a body turned by `rotation`.

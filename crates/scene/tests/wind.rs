@@ -258,3 +258,22 @@ fn the_air_replaced_live_runs_as_air_built_so() {
     let error = calm.replace_air(spec, loads).expect_err("no air to replace").to_string();
     assert!(error.contains("the system has no air"), "{error}");
 }
+
+/// `scenes/oc3_hywind_rated.ron`'s comment (the spar at the NREL 5 MW's rated wind): its steady
+/// thrust and tower drag push G 20.6 m downwind and pitch it 5.59° (`tether equilibrium`'s
+/// solve, the wind steady, no waves), further than F/K with the lines' stiffness at rest says.
+#[test]
+fn the_rated_spar_settles_where_its_comment_says() {
+    let scene = tether_scene::load(&tether_test_support::repo("scenes/oc3_hywind_rated.ron")).expect("a shipped scene");
+    let system = scene.world.system();
+    let start = system.initial_states();
+    let solved = equilibrium::solve(system, start, &[], &Settings::default()).expect("a solve");
+    let spar = scene.world.bodies().iter().position(|b| b.name == "spar").expect("the spar");
+    let (moved, state) = (solved.states[spar].position - start[spar].position, &solved.states[spar]);
+    // The turn from the start, applied to the vertical.
+    let turned = state.rotation_matrix() * start[spar].rotation_matrix().transpose() * tether_physics::math::Vec3::z();
+    let pitch = turned.x.atan2(turned.z).to_degrees();
+    println!("G moved {:.3} m downwind, pitched {pitch:.3}°", moved.x);
+    assert!((moved.x - 20.6).abs() < 0.05, "{moved:?}");
+    assert!((pitch - 5.59).abs() < 0.01, "{pitch}°");
+}

@@ -42,8 +42,7 @@ use crate::surroundings::Surroundings;
 use crate::water::WaterSpec;
 use crate::water::environment::WaterError;
 use crate::water::morison::HydroSpec;
-use crate::water_stage::WaterStage;
-use crate::water_stage::{FloatingBody, FloatingError, FloatingPotential, SwitchError, WaterStageInputs};
+use crate::water_stage::{FloatingBody, FloatingError, FloatingPotential, SwitchError, WaterStage, WaterStageInputs};
 
 /// Bodies, couplings and gravity: what a run does not change (live edits aside).
 #[derive(Debug, Clone)]
@@ -381,7 +380,7 @@ impl System {
     /// [`WaterStage::set_drift_model`]).
     pub(crate) fn set_drift_model(&mut self, body: usize, drift: DriftModel) -> Result<(), SystemError> {
         let stage = self.water.as_mut().ok_or(SystemError::NoWater)?;
-        stage.set_drift_model(body, drift).map(drop).map_err(|source| SystemError::Drift {
+        stage.set_drift_model(body, drift).map_err(|source| SystemError::Drift {
             body: self.bodies.get(body).map(|b| b.name.clone()).unwrap_or_default(),
             source,
         })

@@ -349,23 +349,22 @@ impl WaterStage {
     }
 
     /// Body `body`'s mean drift loading it as `drift` from now on (a live edit, PHYSICS.md §10),
-    /// its potential flow on or switched off; returns whether it changed.
+    /// its potential flow on or switched off (nothing to do when it already does).
     ///
     /// # Errors
     /// A body that does not float or has no potential-flow data, a drift model without the
     /// file's drift coefficients, or a sea heading they lack; the stage is then unchanged.
-    pub fn set_drift_model(&mut self, body: usize, drift: DriftModel) -> Result<bool, SwitchError> {
+    pub fn set_drift_model(&mut self, body: usize, drift: DriftModel) -> Result<(), SwitchError> {
         let components = self.water.sea().components();
         let floating = self.floating.iter_mut().find(|f| f.body == body).ok_or(SwitchError::NotFloating { body })?;
         let potential = match &mut floating.potential {
             PotentialFlow::On(potential) | PotentialFlow::SwitchedOff(potential) => potential,
             PotentialFlow::Absent => return Err(SwitchError::NoPotentialData),
         };
-        if potential.model.drift_model() == drift {
-            return Ok(false);
+        if potential.model.drift_model() != drift {
+            *potential = potential.with_drift_model(drift, components)?;
         }
-        *potential = potential.with_drift_model(drift, components)?;
-        Ok(true)
+        Ok(())
     }
 
     /// The floating entry of body `body`, if it floats.

@@ -19,11 +19,9 @@ use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender, TryRecvError};
 use std::time::{Duration, Instant};
 use tether_physics::coupling::{Coupling, CouplingKind, LineModel};
 use tether_physics::integrator::Timing;
-use tether_physics::potential::DriftModel;
 use tether_physics::seabed::Seabed;
 use tether_physics::statics::{Dof, Settings, equilibrium, offsets};
-use tether_physics::water::morison::HydroSpec;
-use tether_physics::world::{EditError, World};
+use tether_physics::world::World;
 
 /// Wall time of one tick of the thread, about one display frame [s].
 pub const TICK: Duration = Duration::from_millis(16);
@@ -166,7 +164,10 @@ impl SimulationLoop {
             }
             Command::SetWater(spec) => self.edit_water("the water", |world| world.replace_water(spec)),
             Command::SetHydro { body, spec, drift } => {
-                self.edit_water("the body's coefficients in the water", |world| replace_hydro(world, body, spec, drift))
+                self.edit_water("the body's coefficients in the water", |world| match drift {
+                    Some(drift) => world.replace_hydro_and_drift(body, spec, drift),
+                    None => world.replace_hydro(body, spec),
+                })
             }
             Command::SetAir { spec, loads } => self.edit_water("the air", |world| world.replace_air(spec, loads)),
             Command::SetPotentialFlow { body, on } => self.set_potential_flow(body, on),
@@ -511,20 +512,6 @@ impl SimulationLoop {
         };
         self.report(Report::Status(Box::new(status::status(&run.world, &state))));
     }
-}
-
-/// Body `body`'s coefficients `spec` and, with potential flow, its drift model `drift`, both or
-/// neither: the world as it was if either is refused.
-fn replace_hydro(world: &mut World, body: usize, spec: HydroSpec, drift: Option<DriftModel>) -> Result<(), EditError> {
-    let before = world.clone();
-    let replaced = world.replace_hydro(body, spec).and_then(|()| match drift {
-        Some(drift) => world.set_drift_model(body, drift),
-        None => Ok(()),
-    });
-    if replaced.is_err() {
-        *world = before;
-    }
-    replaced
 }
 
 /// Whether coupling `index` of `world` is a line, and a dynamic one (`None`: not a line).

@@ -159,6 +159,24 @@ impl World {
         self.edit_water(|system, _| system.set_drift_model(body, drift))
     }
 
+    /// Replaces the coefficients of floating body `body` and sets its drift model, in one edit
+    /// ([`World::replace_hydro`], [`World::set_drift_model`]): both apply, or neither and the
+    /// world is unchanged.
+    ///
+    /// # Errors
+    /// As those two.
+    pub fn replace_hydro_and_drift(
+        &mut self,
+        body: usize,
+        spec: HydroSpec,
+        drift: DriftModel,
+    ) -> Result<(), EditError> {
+        self.edit_water(|system, _| {
+            system.replace_hydro(body, spec)?;
+            system.set_drift_model(body, drift)
+        })
+    }
+
     /// Replaces the air (wind speed, height, heading, profile, gusts, density, ramp) and the
     /// loads on its bodies while running (PHYSICS.md §10), as [`World::replace_water`] does the
     /// water: the exposures from the poses at t = 0, as when built; a new gust seed is a new

@@ -6,9 +6,7 @@ use crate::air::wind_load_spec;
 use crate::file::SceneFile;
 use crate::source::ItemKind;
 use tether_physics::air::{Air, AirError, AirSpec, GustError, WindLoadError, WindLoadSpec};
-use tether_physics::math::Vec3;
 use tether_physics::system::{System, SystemError};
-use tether_physics::water::Water;
 
 /// `system` (its water already added) in the air of `file`, loading each body that declares a
 /// windage or a rotor (unchanged without air); warns of a body's windage or rotor without air,
@@ -39,11 +37,7 @@ pub fn air_spec(file: &SceneFile) -> Result<(AirSpec, Vec<(usize, WindLoadSpec)>
         return Err(Problem { place: Place::Top("air"), message: "the scene has no air".into() });
     };
     let water_ramp = match &file.water {
-        Some(_) => {
-            let gravity = Vec3::new(file.gravity[0], file.gravity[1], file.gravity[2]);
-            let water = Water::new(super::water_spec(file)?, &gravity).map_err(|e| placed(SystemError::Water(e)))?;
-            water.ramp_time()
-        }
+        Some(_) => super::water::water(file)?.ramp_time(),
         None => 0.0,
     };
     let spec = def.spec(water_ramp);

@@ -137,13 +137,16 @@ fn placed(error: SystemError) -> Problem {
 /// The water of `file`, checked as loading checks it (live tuning checks an edited water this
 /// way before it reaches a running world).
 pub fn water_spec(file: &SceneFile) -> Result<WaterSpec, Problem> {
+    water(file).map(|water| *water.spec())
+}
+
+/// The water of `file`, built as loading builds it, with the same messages.
+pub(super) fn water(file: &SceneFile) -> Result<Water, Problem> {
     let Some(def) = &file.water else {
         return Err(Problem { place: Place::Top("water"), message: "the scene has no water".into() });
     };
-    let spec = def.spec();
     let gravity = Vec3::new(file.gravity[0], file.gravity[1], file.gravity[2]);
-    Water::new(spec, &gravity).map_err(|error| placed(SystemError::Water(error)))?;
-    Ok(spec)
+    Water::new(def.spec(), &gravity).map_err(|error| placed(SystemError::Water(error)))
 }
 
 /// The coefficients of body `index` of `file` against its built body, checked as loading checks

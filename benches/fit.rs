@@ -17,9 +17,9 @@ use std::fmt::Write as _;
 use std::num::NonZeroUsize;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
-use tether::fit::run;
-use tether::fit::setup::Setup;
-use tether::runner::{Runner, all_cores};
+use tether_analysis::fit::run;
+use tether_analysis::fit::setup::Setup;
+use tether_analysis::runner::{Runner, all_cores};
 
 fn repo(path: &str) -> PathBuf {
     std::path::PathBuf::from(

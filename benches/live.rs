@@ -18,7 +18,7 @@ use std::sync::mpsc;
 use std::time::{Duration, Instant};
 use tether::gui::simulation::{Command, Report, Run, Simulation, Speed};
 use tether::gui::stream::Sinks;
-use tether::runner::{process_cpu_seconds, thread_cpu_seconds};
+use tether_analysis::runner::{process_cpu_seconds, thread_cpu_seconds};
 use tether_physics::world::World;
 
 /// Wall time of each measurement.

@@ -18,8 +18,8 @@
 use std::num::NonZeroUsize;
 use std::path::Path;
 use std::time::Duration;
-use tether::runner::{Runner, all_cores};
-use tether::sweep::{self, Options, Plan, Report};
+use tether_analysis::runner::{Runner, all_cores};
+use tether_analysis::sweep::{self, Options, Plan, Report};
 
 /// Resident set size of this process now [bytes] (`/proc/self/statm`).
 fn resident_bytes() -> u64 {
@@ -34,7 +34,7 @@ fn resident_bytes() -> u64 {
 /// Runs the spec at `spec` into a fresh `out` on `jobs` threads; also the largest resident set
 /// seen as its cases finished.
 fn run(spec: &Path, out: &Path, jobs: NonZeroUsize) -> (Report, u64) {
-    let plan = Plan::load(spec, tether::sweep::design::DEFAULT_MAX_CASES).unwrap_or_else(|e| panic!("{e}"));
+    let plan = Plan::load(spec, tether_analysis::sweep::design::DEFAULT_MAX_CASES).unwrap_or_else(|e| panic!("{e}"));
     let options = Options { runner: Runner::new(jobs), shard: None, resume: false, record: None };
     let mut largest = 0;
     let report =

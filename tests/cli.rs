@@ -542,7 +542,7 @@ fn rao_time_domain_agrees_with_the_frequency_domain_solve() {
 /// there rather than drawn across the chart.
 #[test]
 fn rao_plot_draws_the_responses_and_names_what_it_leaves_out() {
-    use tether::rao_chart::{Responses, polar, unwrapped_pieces};
+    use tether_analysis::rao_chart::{Responses, polar, unwrapped_pieces};
     let dir = tempfile::tempdir().unwrap();
     let png = dir.path().join("rao.png");
     let fixture = "tests/fixtures/rao/cylinder.ron";

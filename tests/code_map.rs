@@ -8,8 +8,15 @@
 use std::collections::BTreeSet;
 use std::path::Path;
 
-const SOURCE_DIRS: [&str; 6] =
-    ["crates/physics/src", "crates/scene/src", "crates/record/src", "crates/test-support/src", "python/src", "src"];
+const SOURCE_DIRS: [&str; 7] = [
+    "crates/physics/src",
+    "crates/scene/src",
+    "crates/record/src",
+    "crates/analysis/src",
+    "crates/test-support/src",
+    "python/src",
+    "src",
+];
 
 /// Every module under `dir`, named as the map names it.
 fn modules(dir: &Path, prefix: &str, found: &mut BTreeSet<String>) {

@@ -10,9 +10,9 @@ use std::fmt::Write as _;
 use std::num::NonZeroUsize;
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use tether::fit::run::{self, Outcome};
-use tether::fit::setup::Setup;
-use tether::runner::Runner;
+use tether_analysis::fit::run::{self, Outcome};
+use tether_analysis::fit::setup::Setup;
+use tether_analysis::runner::Runner;
 
 fn runner() -> Runner {
     Runner::new(NonZeroUsize::new(2).expect("2 > 0"))
@@ -445,7 +445,7 @@ fn the_command_writes_the_report_and_the_fitted_scene() {
         assert!(path.metadata().map(|m| m.len() > 100).unwrap_or(false), "{}", path.display());
     }
     // The recording of the fitted run holds the record beside the model, in a plot of their own.
-    let recording = tether::fit::measured::Record::read(&out.join("fitted.rrd"), None).unwrap();
+    let recording = tether_analysis::fit::measured::Record::read(&out.join("fitted.rrd"), None).unwrap();
     let record = recording.series("plots/fit/x/record/record").unwrap();
     assert_eq!(record.times.len(), 501);
     let model = recording.series("plots/fit/x/model/model").unwrap();

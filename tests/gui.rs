@@ -548,6 +548,49 @@ fn drift_and_air_knobs_tune_the_running_world_and_bad_values_are_refused() {
 /// A body whose scene asks for linear hydrostatics (`hydrostatics: Linear`, PHYSICS.md §9) says
 /// so on its switch, which the plain label does not match, while the running world has them;
 /// switched off, the running world has no potential flow, so its hydrostatics are the mesh's.
+/// The window's knobs are drawn from the parameters catalogue: every number it lists for a scene
+/// with a spring, water, a floating body's coefficients, wind and a seabed has a knob labelled as
+/// the catalogue labels it (less the `name: ` the catalogue puts before it).
+#[test]
+fn every_catalogued_parameter_has_a_knob_with_its_label() {
+    let file = repo("validation/potential-flow/cylinder/cylinder");
+    let fixture = std::fs::read_to_string(repo("tests/fixtures/rao/cylinder.ron")).unwrap();
+    let text = fixture
+        .replace("\"../../../validation/potential-flow/cylinder/cylinder\"", &format!("{file:?}"))
+        .replace(
+            "bodies: [",
+            "air: Air(wind: Wind(speed: 15.0, gusts: Kaimal(intensity: 0.1, seed: 3))),\n    seabed: Seabed(line_friction: 0.8),\n    bodies: [",
+        )
+        // A seabed lies at the water's depth.
+        .replace("water: Water(waves:", "water: Water(depth: 60.0, waves:")
+        .replace(
+            "center: (0.0, 0.0, 2.0)),",
+            "center: (0.0, 0.0, 2.0)),\n windage: Windage(coefficients: (1.0, 1.0, 0.0)),",
+        );
+    assert_eq!(
+        text.matches("windage").count() + text.matches("seabed: Seabed").count() + text.matches("depth: 60").count(),
+        3,
+        "{text}"
+    );
+    let dir = scenes_folder(&[("cylinder.ron", &text), ("spring.ron", &SPRING)]);
+    for scene in ["cylinder.ron", "spring.ron"] {
+        let mut harness = tall_harness(panel(dir.path()));
+        open_from_list(&mut harness, scene);
+        harness.run_steps(2);
+        let tuned = harness.state().scene().expect("a scene").tuned.clone();
+        let catalogue = tether_analysis::parameters::parameters(&tuned);
+        assert!(catalogue.len() >= 3, "{scene}: {catalogue:?}");
+        for parameter in &catalogue {
+            let (_, label) = parameter.label.split_once(": ").expect("the catalogue's `name: label`");
+            assert!(
+                harness.query_all_by_label(label).count() >= 1,
+                "{scene}: no knob labelled {label:?} ({})",
+                parameter.path
+            );
+        }
+    }
+}
+
 #[test]
 fn the_potential_flow_switch_says_when_it_brings_linear_hydrostatics() {
     let file = repo("validation/potential-flow/cylinder/cylinder");
@@ -596,20 +639,20 @@ fn statics_panel_tunes_the_seabed_jumps_to_equilibrium_and_draws_the_offset_curv
     open_from_list(&mut harness, "moored.ron");
     let friction = |world: &World| world.system().seabed().expect("a seabed").line_friction();
 
-    set_knob(&mut harness, "seabed line friction C_B", 0.9);
+    set_knob(&mut harness, "line friction C_B", 0.9);
     until(&mut harness, "C_B applied", |p| {
         p.log().any(|l| l.text.starts_with("seabed line friction C_B = 0.9 applied"))
     });
     assert_eq!(friction(&world(&harness)), 0.9);
     let tuned = |harness: &Harness<'_, ControlPanel>| harness.state().scene().expect("a scene").tuned.clone();
     assert_eq!(tuned(&harness).seabed.expect("a seabed").line_friction, 0.9, "what runs, for Save as");
-    set_knob(&mut harness, "seabed line friction C_B", -0.1);
+    set_knob(&mut harness, "line friction C_B", -0.1);
     harness.get_by_label_contains(
         "Refused: line_friction = -0.1 not applied (the run keeps 0.9): seabed: line_friction must be ≥ 0, got -0.1",
     );
     assert_eq!(friction(&world(&harness)), 0.9);
     // A fit can move it as it moves the other knobs.
-    let fittable = tether::parameters::parameters(&tuned(&harness));
+    let fittable = tether_analysis::parameters::parameters(&tuned(&harness));
     assert!(fittable.iter().any(|f| f.path == "seabed.line_friction" && f.value == 0.9), "{fittable:?}");
 
     // The first line's A_d (three lines show the knob).
@@ -931,7 +974,7 @@ fn a_value_being_typed_applies_nothing_until_enter() {
 }
 
 /// Play refuses a scene whose duration at its time step is past the run limit (the run-length
-/// check of `tether record`, `tether::run_length`): the spring at dt = 1e-12 s for its 10 s
+/// check of `tether record`, `tether_analysis::run_length`): the spring at dt = 1e-12 s for its 10 s
 /// needs 10¹³ steps; the panel says so, names dt, and the run stays at t = 0.
 #[test]
 fn play_refuses_a_run_that_cannot_end() {

@@ -142,7 +142,7 @@ fn a_line_too_stiff_to_step_is_refused_as_it_runs() {
 /// SIGTERM to each long stage of the headless commands, sent once it runs: the process is gone
 /// within a second with exit code 130 and says it was interrupted. The recording's step loop,
 /// the storm's seeds and the fit's iterations stop at the flag (cooperatively); the RAO runs
-/// and the study's runs do not look at it, and the watchdog ends them 0.5 s after it (src/interrupt.rs), as it would
+/// and the study's runs do not look at it, and the watchdog ends them 0.5 s after it (crates/analysis/src/interrupt.rs), as it would
 /// any other stage.
 #[test]
 fn sigterm_stops_every_long_stage_within_a_second() {

@@ -5,7 +5,7 @@
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
-use tether::storm::extremes::{Gumbel, gaussian_most_probable_maximum};
+use tether_analysis::storm::extremes::{Gumbel, gaussian_most_probable_maximum};
 use tether_physics::water::spectrum::Jonswap;
 
 fn tether(args: &[&str]) -> Output {

@@ -3,8 +3,8 @@
 mod common;
 
 use std::process::Command;
-use tether::study::closed_form::Oscillator;
-use tether::study::{self, Outcome, Plan, Reference, Setting, StudyError};
+use tether_analysis::study::closed_form::Oscillator;
+use tether_analysis::study::{self, Outcome, Plan, Reference, Setting, StudyError};
 use tether_physics::integrator::Integrator;
 use tether_scene::file::AdaptiveDef;
 
@@ -256,7 +256,7 @@ fn a_scene_without_a_closed_form_is_refused() {
 #[test]
 fn the_line_model_study_measures_peaks_against_the_finest_line() {
     let scene = tether_scene::load(&common::repo("scenes/chain_forced_surge.ron")).unwrap();
-    let runner = tether::runner::Runner::new(std::num::NonZeroUsize::new(2).unwrap());
+    let runner = tether_analysis::runner::Runner::new(std::num::NonZeroUsize::new(2).unwrap());
     let result = study::lines::run(&runner, &scene, 5.0, |_| {}).unwrap();
     let peak = |setting: study::lines::LineSetting| {
         result.runs.iter().find(|run| run.setting == setting).map(|run| run.lines[0].peak).unwrap()

@@ -6,10 +6,10 @@ mod common;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
-use tether::runner::Runner;
-use tether::sweep::design::DEFAULT_MAX_CASES;
-use tether::sweep::spec::Level;
-use tether::sweep::{self, Options, Plan};
+use tether_analysis::runner::Runner;
+use tether_analysis::sweep::design::DEFAULT_MAX_CASES;
+use tether_analysis::sweep::spec::Level;
+use tether_analysis::sweep::{self, Options, Plan};
 
 /// An undamped oscillator along x (body "m", 1 kg, spring "spring" to the origin, rest length
 /// 1 m, released at rest at x = 1.1 m), leapfrog at dt = 0.1 ms, for three periods of the
@@ -506,7 +506,7 @@ fn sigterm_stops_the_checking_of_a_large_sweep_within_a_second() {
 fn every_stage_stops_at_a_cancelled_runner() {
     use std::sync::Arc;
     use std::sync::atomic::AtomicBool;
-    use tether::sweep::{Stage, SweepError};
+    use tether_analysis::sweep::{Stage, SweepError};
     let dir = nine_cases();
     let plan = plan(dir.path());
     let cancelled = runner(2).with_cancel(Arc::new(AtomicBool::new(true)));

@@ -15,8 +15,8 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 use tether::gui::panel::ControlPanel;
 use tether::gui::stream::Sinks;
-use tether::runner::Runner;
-use tether::sweep::{self, Options, Plan};
+use tether_analysis::runner::Runner;
+use tether_analysis::sweep::{self, Options, Plan};
 use tether_physics::coupling::{CouplingKind, ElasticLaw};
 use tether_physics::water::WaveSpec;
 use tether_physics::world::World;
@@ -40,7 +40,7 @@ fn run_sweep(name: &str, scene: &str, plan_text: &str) -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join(name), scene).unwrap();
     std::fs::write(dir.path().join("sweep.ron"), plan_text).unwrap();
-    let plan = Plan::load(&dir.path().join("sweep.ron"), tether::sweep::design::DEFAULT_MAX_CASES).unwrap();
+    let plan = Plan::load(&dir.path().join("sweep.ron"), tether_analysis::sweep::design::DEFAULT_MAX_CASES).unwrap();
     let options = Options {
         runner: Runner::new(std::num::NonZeroUsize::new(2).unwrap()),
         shard: None,

@@ -19,12 +19,12 @@ use std::num::NonZeroUsize;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
-use tether::fit::output::{self, utc_now};
-use tether::fit::report;
-use tether::fit::run::{self, Outcome, RunError};
-use tether::fit::setup::Setup;
-use tether::fit::solver::SolveError;
-use tether::runner::Runner;
+use tether_analysis::fit::output::{self, utc_now};
+use tether_analysis::fit::report;
+use tether_analysis::fit::run::{self, Outcome, RunError};
+use tether_analysis::fit::setup::Setup;
+use tether_analysis::fit::solver::SolveError;
+use tether_analysis::runner::Runner;
 
 /// Fits the spec at `spec` (or the spec `text`, labelled `spec`, its paths relative to `spec`'s
 /// folder) on `jobs` threads (None: every core). `output`: a folder for the command line's files
@@ -43,7 +43,7 @@ pub fn run_fit<'py>(
     write_scene: Option<PathBuf>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let jobs = match jobs {
-        None => tether::runner::all_cores(),
+        None => tether_analysis::runner::all_cores(),
         Some(jobs) => NonZeroUsize::new(jobs).ok_or_else(|| value_error("`jobs` must be at least 1"))?,
     };
     let setup = py

@@ -8,7 +8,7 @@ use crate::errors::{type_error, value_error};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyFloat, PyString};
 use serde_json::Value;
-use tether::sweep::value_path::{ValuePath, number_value};
+use tether_analysis::value_path::{ValuePath, number_value};
 use tether_scene::{Scene, SceneFile};
 
 /// The scene's data, as the sweep addresses it.

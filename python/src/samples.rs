@@ -3,7 +3,7 @@
 
 use pyo3::prelude::*;
 use pyo3::types::{PyByteArray, PyDict};
-use tether::statics::data::body_quaternion;
+use tether_analysis::statics::data::body_quaternion;
 use tether_physics::world::World;
 
 /// Columns per sample, with the trailing shape of one sample's values.

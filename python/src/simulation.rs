@@ -124,10 +124,10 @@ impl Simulation {
         guarded(|| parameters::get(py, &self.scene, path))
     }
 
-    /// Every tunable number of the scene (`tether::parameters`, the window's catalogue): its
+    /// Every tunable number of the scene (`tether_analysis::parameters`, the window's catalogue): its
     /// path, label, unit and value, one dict each.
     fn parameters<'py>(&self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyDict>>> {
-        tether::parameters::parameters(&self.scene.file)
+        tether_analysis::parameters::parameters(&self.scene.file)
             .into_iter()
             .map(|parameter| {
                 let entry = PyDict::new(py);

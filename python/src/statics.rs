@@ -3,7 +3,7 @@
 
 use crate::errors::{caught, finite, value_error};
 use pyo3::prelude::*;
-use tether::statics::{data, offsets};
+use tether_analysis::statics::{data, offsets};
 use tether_physics::statics::{Direction, Dof, Dofs, Settings, equilibrium, offsets as curve};
 use tether_scene::Scene;
 

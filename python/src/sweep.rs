@@ -21,9 +21,9 @@ use std::path::PathBuf;
 use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
 use std::time::Duration;
-use tether::runner::Runner;
-use tether::sweep::design::DEFAULT_MAX_CASES;
-use tether::sweep::{self, Options, Plan, SweepError};
+use tether_analysis::runner::Runner;
+use tether_analysis::sweep::design::DEFAULT_MAX_CASES;
+use tether_analysis::sweep::{self, Options, Plan, SweepError};
 
 /// Runs the sweep spec `spec` into the directory `output` on `jobs` threads (None: every core);
 /// returns the path of its `results.parquet`.
@@ -38,7 +38,7 @@ pub fn run_sweep(
     case_timeout: f64,
 ) -> PyResult<PathBuf> {
     let jobs = match jobs {
-        None => tether::runner::all_cores(),
+        None => tether_analysis::runner::all_cores(),
         Some(jobs) => NonZeroUsize::new(jobs).ok_or_else(|| value_error("`jobs` must be at least 1"))?,
     };
     if !(case_timeout.is_finite() && case_timeout > 0.0) {

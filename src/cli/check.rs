@@ -394,7 +394,7 @@ fn infinite_added_mass_report(out: &mut String, model: &PotentialBody) {
         return;
     }
     let shifts = consistency.relative_shift(model.coefficients().added_mass_infinite());
-    let per_dof: Vec<String> = tether::rao_chart::DOFS
+    let per_dof: Vec<String> = tether_analysis::rao_chart::DOFS
         .iter()
         .zip(shifts)
         .map(|((name, _), shift)| format!("{name} {:.2} %", 100.0 * shift))

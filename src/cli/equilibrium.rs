@@ -6,7 +6,7 @@ use anyhow::Context as _;
 use clap::Args;
 use std::path::PathBuf;
 use std::time::Instant;
-use tether::statics::{data, report};
+use tether_analysis::statics::{data, report};
 use tether_physics::statics::{Settings, equilibrium};
 use tether_scene as scene;
 

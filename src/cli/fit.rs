@@ -9,11 +9,11 @@ use anyhow::Context as _;
 use clap::Args;
 use std::num::NonZeroUsize;
 use std::path::PathBuf;
-use tether::fit::output::{self, utc_now};
-use tether::fit::report;
-use tether::fit::run::{self, Progress};
-use tether::fit::setup::Setup;
-use tether::runner::Runner;
+use tether_analysis::fit::output::{self, utc_now};
+use tether_analysis::fit::report;
+use tether_analysis::fit::run::{self, Progress};
+use tether_analysis::fit::setup::Setup;
+use tether_analysis::runner::Runner;
 
 #[derive(Debug, Args)]
 pub struct FitArgs {
@@ -47,7 +47,7 @@ pub enum Outcome {
 pub fn run(args: &FitArgs) -> anyhow::Result<Outcome> {
     let cancel = super::cancel_on_ctrl_c()?;
     let setup = Setup::load(&args.spec)?;
-    let runner = Runner::new(args.jobs.unwrap_or_else(tether::runner::all_cores)).with_cancel(cancel);
+    let runner = Runner::new(args.jobs.unwrap_or_else(tether_analysis::runner::all_cores)).with_cancel(cancel);
     let names: Vec<&str> = setup.model.parameters.iter().map(|p| p.name.as_str()).collect();
     let samples: usize = setup.model.signals.iter().map(|s| s.times.len()).sum();
     eprintln!(
@@ -66,9 +66,9 @@ pub fn run(args: &FitArgs) -> anyhow::Result<Outcome> {
             eprintln!("{}", progress_line(p));
         }
     })?;
-    if outcome.ending == tether::fit::solver::Ending::Cancelled {
+    if outcome.ending == tether_analysis::fit::solver::Ending::Cancelled {
         // The best point's report, charts and scene are written below (no further run).
-        tether::interrupt::finishing();
+        tether_analysis::interrupt::finishing();
     }
     let dir = args.output.clone().unwrap_or_else(|| {
         let stem = args.spec.file_stem().map_or_else(|| "fit".into(), |s| s.to_string_lossy().into_owned());
@@ -101,7 +101,11 @@ pub fn run(args: &FitArgs) -> anyhow::Result<Outcome> {
         }
         super::print(&text)?;
     }
-    Ok(if outcome.ending == tether::fit::solver::Ending::Cancelled { Outcome::Interrupted } else { Outcome::Finished })
+    Ok(if outcome.ending == tether_analysis::fit::solver::Ending::Cancelled {
+        Outcome::Interrupted
+    } else {
+        Outcome::Finished
+    })
 }
 
 /// `iteration 3: cost 1.234e-2, k = 100.2, c = 0.99 (4 runs)`, or the refused trial.

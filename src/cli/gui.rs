@@ -39,9 +39,9 @@ pub struct GuiArgs {
 pub fn run(args: GuiArgs) -> anyhow::Result<()> {
     let scene = args.scene.or_else(|| Some(PathBuf::from(DEFAULT_SCENE)).filter(|p| p.is_file()));
     if let Some(dir) = &args.sweep
-        && !dir.join(tether::sweep::store::MANIFEST).is_file()
+        && !dir.join(tether_analysis::sweep::store::MANIFEST).is_file()
     {
-        bail!("{} is not a sweep directory (no {})", dir.display(), tether::sweep::store::MANIFEST);
+        bail!("{} is not a sweep directory (no {})", dir.display(), tether_analysis::sweep::store::MANIFEST);
     }
     let options = GuiOptions {
         scene,

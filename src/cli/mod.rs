@@ -95,7 +95,7 @@ enum Command {
 }
 
 /// Exit code of a run stopped by Ctrl-C or SIGTERM.
-pub const INTERRUPTED: u8 = tether::interrupt::EXIT_CODE;
+pub const INTERRUPTED: u8 = tether_analysis::interrupt::EXIT_CODE;
 
 /// Runs one subcommand; returns the process exit code.
 pub fn run(cli: Cli) -> anyhow::Result<u8> {
@@ -103,7 +103,7 @@ pub fn run(cli: Cli) -> anyhow::Result<u8> {
     if !matches!(command, Command::Gui(_) | Command::View { .. }) {
         // Every headless stage stops within a second of Ctrl-C or SIGTERM (the window closes
         // by its own handler).
-        tether::interrupt::install().context("installing the Ctrl-C / SIGTERM handler")?;
+        tether_analysis::interrupt::install().context("installing the Ctrl-C / SIGTERM handler")?;
     }
     match command {
         Command::Gui(args) => gui::run(args).map(|()| 0),
@@ -136,10 +136,10 @@ pub fn run(cli: Cli) -> anyhow::Result<u8> {
     }
 }
 
-/// The flag Ctrl-C or SIGTERM sets ([`tether::interrupt`]): the long commands (record, sweep,
+/// The flag Ctrl-C or SIGTERM sets ([`tether_analysis::interrupt`]): the long commands (record, sweep,
 /// fit) stop at it and keep what they finished.
 fn cancel_on_ctrl_c() -> anyhow::Result<Arc<AtomicBool>> {
-    tether::interrupt::install().context("installing the Ctrl-C / SIGTERM handler")
+    tether_analysis::interrupt::install().context("installing the Ctrl-C / SIGTERM handler")
 }
 
 /// Loads a scene and prints its warnings to stderr.

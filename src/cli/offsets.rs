@@ -6,7 +6,7 @@
 use anyhow::{Context as _, bail};
 use clap::Args;
 use std::path::PathBuf;
-use tether::statics::{chart, offsets as table};
+use tether_analysis::statics::{chart, offsets as table};
 use tether_physics::statics::{Direction, Dof, Dofs, Settings, equilibrium, offsets};
 
 #[derive(Debug, Args)]

@@ -57,7 +57,7 @@ pub struct RecordArgs {
     #[arg(long)]
     timing: bool,
     /// Refuse a run of more integrator steps than this (duration ÷ dt × sub-steps).
-    #[arg(long, value_name = "N", default_value_t = tether::run_length::DEFAULT_MAX_STEPS)]
+    #[arg(long, value_name = "N", default_value_t = tether_analysis::run_length::DEFAULT_MAX_STEPS)]
     max_steps: u64,
 }
 
@@ -133,7 +133,7 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     }
     let duration = args.duration.unwrap_or(scene.file.duration);
     super::warn_if_unstable(&scene.world);
-    tether::run_length::check(&scene.world, duration, args.max_steps)
+    tether_analysis::run_length::check(&scene.world, duration, args.max_steps)
         .map_err(|long| anyhow::anyhow!("{long} (or --max-steps N)"))?;
     let world = &mut scene.world;
     let dt = world.dt();
@@ -162,7 +162,7 @@ pub fn run(args: &RecordArgs) -> anyhow::Result<Outcome> {
     for step in 1..=total_steps {
         if interrupted.load(Ordering::SeqCst) {
             // The frames so far and the file's footer are written below: not cut by the watchdog.
-            tether::interrupt::finishing();
+            tether_analysis::interrupt::finishing();
             break;
         }
         if let Err(error) = world.step() {

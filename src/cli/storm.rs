@@ -10,13 +10,13 @@ use clap::{Args, Subcommand, ValueEnum};
 use std::num::NonZeroUsize;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
-use tether::runner::Runner;
-use tether::storm::statistics::{self, Code, Measured};
-use tether::storm::{report, spec};
-use tether::sweep::rows::Rows;
-use tether::sweep::shard::{self, ShardArg};
-use tether::sweep::store::Store;
-use tether::sweep::{Options, SweepError};
+use tether_analysis::runner::Runner;
+use tether_analysis::storm::statistics::{self, Code, Measured};
+use tether_analysis::storm::{report, spec};
+use tether_analysis::sweep::rows::Rows;
+use tether_analysis::sweep::shard::{self, ShardArg};
+use tether_analysis::sweep::store::Store;
+use tether_analysis::sweep::{Options, SweepError};
 use tether_physics::body::Support;
 use tether_scene::file::{CouplingDef, SceneFile};
 
@@ -115,7 +115,7 @@ pub fn run(args: &StormArgs) -> anyhow::Result<Outcome> {
         spec::StormRequest { hours: args.hours, warmup: args.warmup, seeds: args.seeds, first_seed: args.first_seed };
     let plan = spec::plan(scene_path, &scene.file, &moving_bodies(&scene), &request)?;
     let shard = shard::resolve(args.shard, &|name| std::env::var(name).ok()).map_err(anyhow::Error::msg)?;
-    let runner = Runner::new(args.jobs.unwrap_or_else(tether::runner::all_cores))
+    let runner = Runner::new(args.jobs.unwrap_or_else(tether_analysis::runner::all_cores))
         .with_case_timeout(Duration::from_secs_f64(args.case_timeout))
         .with_cancel(cancel);
     let jobs = runner.jobs();
@@ -204,8 +204,8 @@ fn write_report(dir: &Path, code: Code) -> anyhow::Result<()> {
 /// The storm's hours: its spec's duration less the warm-up its metrics start after (the spec
 /// [`spec::spec_text`] wrote).
 fn storm_hours(spec_text: &str) -> anyhow::Result<f64> {
-    let text = tether::sweep::spec::SpecText { path: Path::new("storm.ron"), text: spec_text };
-    let spec: tether::sweep::spec::SpecFile = text.parse().context("the storm's spec in its manifest")?;
+    let text = tether_analysis::spec_text::SpecText { path: Path::new("storm.ron"), text: spec_text };
+    let spec: tether_analysis::sweep::spec::SpecFile = text.parse().context("the storm's spec in its manifest")?;
     let warmup = spec.metrics.first().map_or(0.0, |m| m.after);
     Ok((spec.duration.unwrap_or(0.0) - warmup) / 3600.0)
 }

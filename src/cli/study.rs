@@ -7,8 +7,8 @@ use anyhow::Context as _;
 use clap::Args;
 use std::num::NonZeroUsize;
 use std::path::PathBuf;
-use tether::runner::{Runner, all_cores};
-use tether::study::{self, Plan, Reference};
+use tether_analysis::runner::{Runner, all_cores};
+use tether_analysis::study::{self, Plan, Reference};
 use tether_physics::integrator::Integrator;
 
 #[derive(Debug, Args)]

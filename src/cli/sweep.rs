@@ -12,10 +12,10 @@ use indicatif::{ProgressBar, ProgressStyle};
 use std::num::NonZeroUsize;
 use std::path::PathBuf;
 use std::time::Duration;
-use tether::runner::Runner;
-use tether::sweep::design::DEFAULT_MAX_CASES;
-use tether::sweep::shard::{self, ShardArg};
-use tether::sweep::{self, Options, Plan, Progress, Report, Stage, SweepError};
+use tether_analysis::runner::Runner;
+use tether_analysis::sweep::design::DEFAULT_MAX_CASES;
+use tether_analysis::sweep::shard::{self, ShardArg};
+use tether_analysis::sweep::{self, Options, Plan, Progress, Report, Stage, SweepError};
 
 #[derive(Debug, Args)]
 #[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
@@ -77,7 +77,7 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<Outcome> {
     // Installed first: every stage from the planning on stops at the flag.
     let cancel = super::cancel_on_ctrl_c()?;
     if let Some(SweepCommand::Merge { dir, jobs }) = &args.command {
-        let runner = Runner::new(jobs.unwrap_or_else(tether::runner::all_cores)).with_cancel(cancel);
+        let runner = Runner::new(jobs.unwrap_or_else(tether_analysis::runner::all_cores)).with_cancel(cancel);
         let written = match sweep::merge(dir, &runner) {
             Err(SweepError::Interrupted(stage)) => return Ok(interrupted(stage)),
             other => other?,
@@ -95,7 +95,7 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<Outcome> {
     positive("--log-hz", args.log_hz, "Hz")?;
     let shard = shard::resolve(args.shard, &|name| std::env::var(name).ok()).map_err(anyhow::Error::msg)?;
     let plan = Plan::load(spec, args.max_cases)?;
-    let runner = Runner::new(args.jobs.unwrap_or_else(tether::runner::all_cores))
+    let runner = Runner::new(args.jobs.unwrap_or_else(tether_analysis::runner::all_cores))
         .with_case_timeout(Duration::from_secs_f64(args.case_timeout))
         .with_cancel(cancel);
     let jobs = runner.jobs();

@@ -13,7 +13,7 @@
 
 use std::fmt::Write as _;
 use std::time::{Duration, Instant};
-use tether::runner::{process_cpu_seconds, thread_cpu_seconds};
+use tether_analysis::runner::{process_cpu_seconds, thread_cpu_seconds};
 use tether_record::RecordStats;
 
 /// The clocks of a run, started with it.

@@ -5,9 +5,10 @@
 //! sends the simulation what it accepts; a refused value stays in its knob with the reason.
 
 use super::knobs::Knob;
-use super::tuning::knob;
+use super::tuning::field_knob;
 use rerun::external::egui;
 use std::fmt::Display;
+use tether_analysis::parameters::fields;
 use tether_scene::air::{AirDef, GustKind, GustsDef};
 
 /// Draws the air section; true when its draft was edited. Nothing for a scene without air.
@@ -30,11 +31,11 @@ pub fn ui<R: Display>(ui: &mut egui::Ui, knob: Option<&mut Knob<AirDef, R>>) -> 
 /// Wind speed, its height and heading, the gusts and the density; true when one was edited.
 fn air_knobs(ui: &mut egui::Ui, air: &mut AirDef) -> bool {
     let wind = &mut air.wind;
-    knob(ui, "wind speed U_r (at z_r)", &mut wind.speed, "m/s")
-        | knob(ui, "reference height z_r", &mut wind.height, "m")
-        | knob(ui, "wind heading (toward)", &mut wind.heading_deg, "°")
+    field_knob(ui, &fields::WIND_SPEED, &mut wind.speed)
+        | field_knob(ui, &fields::WIND_HEIGHT, &mut wind.height)
+        | field_knob(ui, &fields::WIND_HEADING, &mut wind.heading_deg)
         | gusts_knobs(ui, &mut wind.gusts)
-        | knob(ui, "air density ρ_a", &mut air.density, "kg/m³")
+        | field_knob(ui, &fields::AIR_DENSITY, &mut air.density)
 }
 
 /// The gusts' spectrum, and its seed (and a Kaimal wind's intensity); true when one was edited.
@@ -57,9 +58,10 @@ fn gusts_knobs(ui: &mut egui::Ui, gusts: &mut GustsDef) -> bool {
     }
     match gusts {
         GustsDef::Steady => {}
-        GustsDef::Npd { seed, .. } => edited |= knob(ui, "gust seed", seed, ""),
+        GustsDef::Npd { seed, .. } => edited |= field_knob(ui, &fields::GUST_SEED, seed),
         GustsDef::Kaimal { intensity, seed, .. } => {
-            edited |= knob(ui, "turbulence intensity", intensity, "–") | knob(ui, "gust seed", seed, "");
+            edited |=
+                field_knob(ui, &fields::TURBULENCE_INTENSITY, intensity) | field_knob(ui, &fields::GUST_SEED, seed);
         }
     }
     edited

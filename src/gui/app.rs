@@ -143,7 +143,7 @@ enum Dropped {
 
 impl Dropped {
     fn of(path: &Path) -> Self {
-        let manifest = crate::sweep::store::MANIFEST;
+        let manifest = tether_analysis::sweep::store::MANIFEST;
         if path.is_dir() && path.join(manifest).is_file() {
             return Self::Sweep(path.to_path_buf());
         }
@@ -272,7 +272,7 @@ mod tests {
     fn dropped_sweep_directories_are_told_from_scenes_and_recordings() {
         let dir = tempfile::tempdir().unwrap();
         assert_eq!(Dropped::of(dir.path()), Dropped::Other, "a folder with no sweep in it");
-        let manifest = dir.path().join(crate::sweep::store::MANIFEST);
+        let manifest = dir.path().join(tether_analysis::sweep::store::MANIFEST);
         std::fs::write(&manifest, "{}").unwrap();
         assert_eq!(Dropped::of(dir.path()), Dropped::Sweep(dir.path().to_path_buf()));
         assert_eq!(Dropped::of(&manifest), Dropped::Sweep(dir.path().to_path_buf()));

@@ -6,11 +6,11 @@
 use super::knobs::{Group, Knobs};
 use super::simulation::{Command, Run, Wake};
 use super::watch::FileWatch;
-pub use crate::parameters::KnobId;
-use crate::sweep::value_path::ValuePath;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
+pub use tether_analysis::parameters::KnobId;
+use tether_analysis::value_path::ValuePath;
 use tether_physics::integrator::Timing;
 use tether_scene::air::AirDef;
 use tether_scene::build::{self, Bodies};

@@ -277,7 +277,7 @@ impl ControlPanel {
         self.history = EnergyHistory::default();
         self.statics = StaticsDraft::default();
         let (fittables, signals) =
-            (crate::parameters::parameters(&loaded.scene.tuned), fit::signals(&loaded.scene.tuned));
+            (tether_analysis::parameters::parameters(&loaded.scene.tuned), fit::signals(&loaded.scene.tuned));
         for dropped in self.fits.switch(&mut self.fit, &loaded.scene.path, &fittables, &signals) {
             self.note(dropped);
         }
@@ -585,7 +585,7 @@ impl ControlPanel {
     /// done.
     fn fit_ui(&mut self, ui: &mut egui::Ui) {
         let Some(open) = &self.scene else { return };
-        let fittables = crate::parameters::parameters(&open.tuned);
+        let fittables = tether_analysis::parameters::parameters(&open.tuned);
         let signals = fit::signals(&open.tuned);
         let folder = open.path.parent().map(Path::to_path_buf).unwrap_or_default();
         for action in fit::ui(ui, &mut self.fit, &fittables, &signals) {
@@ -601,7 +601,7 @@ impl ControlPanel {
 
     /// Starts the fit chosen in the fit panel on the scene as it runs, its record drawn in the
     /// viewer; a bad choice is refused there in one line and nothing runs.
-    fn start_fit(&mut self, fittables: &[crate::parameters::Parameter]) {
+    fn start_fit(&mut self, fittables: &[tether_analysis::parameters::Parameter]) {
         let Some(open) = &self.scene else { return };
         let launched = self
             .fit

@@ -8,10 +8,11 @@ use super::knobs::Knob;
 use super::line_plot::{self, Framed};
 use super::number_field::number_field;
 use super::simulation::OffsetCurve;
-use super::tuning::knob;
+use super::tuning::{field_knob, knob};
 use crate::figures;
 use rerun::external::egui;
 use std::fmt::Display;
+use tether_analysis::parameters::fields;
 use tether_physics::statics::Direction;
 use tether_scene::file::SeabedDef;
 
@@ -63,7 +64,7 @@ pub fn ui<R: Display>(
         if let Some(Knob { draft: seabed, refusals }) = seabed {
             let edited = egui::Grid::new("seabed knobs")
                 .num_columns(3)
-                .show(ui, |ui| knob(ui, "seabed line friction C_B", &mut seabed.line_friction, "–"))
+                .show(ui, |ui| field_knob(ui, &fields::LINE_FRICTION, &mut seabed.line_friction))
                 .inner;
             if edited {
                 actions.push(StaticsAction::Seabed);

@@ -5,14 +5,14 @@
 //! watching it diverge is one click. The rows are those written so far, so a sweep still
 //! running can be opened and reloaded (⟳).
 
-use crate::sweep::case::Status;
-use crate::sweep::plan::Plan;
-use crate::sweep::rows::Rows;
-use crate::sweep::store::Store;
-use crate::sweep::table::{Columns, Row, compact};
 use rerun::external::egui;
 use std::cmp::Ordering;
 use std::path::{Path, PathBuf};
+use tether_analysis::sweep::case::Status;
+use tether_analysis::sweep::plan::Plan;
+use tether_analysis::sweep::rows::Rows;
+use tether_analysis::sweep::store::Store;
+use tether_analysis::sweep::table::{Columns, Row, compact};
 use tether_scene::SceneFile;
 
 /// A column of the table, by what it shows.
@@ -291,7 +291,7 @@ impl SweepTable {
 fn cell(ui: &mut egui::Ui, row: &Row, column: Column) {
     let number = |ui: &mut egui::Ui, x: Option<f64>| {
         match x {
-            Some(x) => ui.label(compact(x)).on_hover_text(crate::sweep::table::number(x)),
+            Some(x) => ui.label(compact(x)).on_hover_text(tether_analysis::sweep::table::number(x)),
             None => ui.weak("–"),
         };
     };

@@ -14,6 +14,7 @@ use crate::line_hint::Measures;
 use rerun::external::egui;
 use rerun::external::egui::emath::Numeric;
 use std::fmt::Display;
+use tether_analysis::parameters::fields::{self, Field};
 use tether_physics::coupling::{InternalDamping, LumpedMassSpec};
 use tether_scene::SceneFile;
 use tether_scene::file::{CouplingDef, LawDef};
@@ -97,22 +98,22 @@ fn coupling_knobs(ui: &mut egui::Ui, index: usize, def: &mut CouplingDef) -> boo
         .num_columns(3)
         .show(ui, |ui| match def {
             CouplingDef::SpringDamper { law, damping, .. } => {
-                law_knobs(ui, law) | knob(ui, "damping k_d", damping, "N·s/m")
+                law_knobs(ui, law) | field_knob(ui, &fields::SPRING_DAMPING, damping)
             }
             CouplingDef::Catenary { mass_per_length, length, stiffness, displaced_area, model, .. } => {
-                knob(ui, "mass per length λ0", mass_per_length, "kg/m")
-                    | knob(ui, "length L_eq", length, "m")
-                    | knob(ui, "stiffness D", stiffness, "N/m")
-                    | knob(ui, "displaced area A_d", displaced_area, "m²")
+                field_knob(ui, &fields::MASS_PER_LENGTH, mass_per_length)
+                    | field_knob(ui, &fields::LENGTH, length)
+                    | field_knob(ui, &fields::LINE_STIFFNESS, stiffness)
+                    | field_knob(ui, &fields::DISPLACED_AREA, displaced_area)
                     | line_model_knobs(ui, model)
             }
             CouplingDef::Contact { stiffness, damping, range, friction, friction_sharpness, expected_area, .. } => {
-                let law = knob(ui, "stiffness k1", stiffness, "N/m³")
-                    | knob(ui, "damping k2", damping, "N·s/m³")
-                    | knob(ui, "range d0", range, "m")
-                    | knob(ui, "friction μ", friction, "–")
-                    | knob(ui, "friction sharpness k_t", friction_sharpness, "s/m");
-                law | expected_area.as_mut().is_some_and(|area| knob(ui, "expected area A", area, "m²"))
+                let law = field_knob(ui, &fields::CONTACT_STIFFNESS, stiffness)
+                    | field_knob(ui, &fields::CONTACT_DAMPING, damping)
+                    | field_knob(ui, &fields::RANGE, range)
+                    | field_knob(ui, &fields::FRICTION, friction)
+                    | field_knob(ui, &fields::FRICTION_SHARPNESS, friction_sharpness);
+                law | expected_area.as_mut().is_some_and(|area| field_knob(ui, &fields::EXPECTED_AREA, area))
             }
         })
         .inner
@@ -135,15 +136,15 @@ fn line_model_knobs(ui: &mut egui::Ui, model: &mut LineModelDef) -> bool {
         LineModelDef::QuasiStatic => false,
         LineModelDef::Dynamic(line) => {
             let damping = match &mut line.damping {
-                InternalDamping::Ratio(zeta) => knob(ui, "damping ratio ζ", zeta, "–"),
-                InternalDamping::Coefficient(ba) => knob(ui, "damping BA", ba, "N·s"),
+                InternalDamping::Ratio(zeta) => field_knob(ui, &fields::DAMPING_RATIO, zeta),
+                InternalDamping::Coefficient(ba) => field_knob(ui, &fields::DAMPING_BA, ba),
             };
-            knob(ui, "segments N", &mut line.segments, "–")
+            field_knob(ui, &fields::SEGMENTS, &mut line.segments)
                 | damping
-                | knob(ui, "drag C_dn", &mut line.drag_normal, "–")
-                | knob(ui, "drag C_dt", &mut line.drag_tangential, "–")
-                | knob(ui, "added mass C_an", &mut line.added_mass_normal, "–")
-                | knob(ui, "added mass C_at", &mut line.added_mass_tangential, "–")
+                | field_knob(ui, &fields::DRAG_NORMAL, &mut line.drag_normal)
+                | field_knob(ui, &fields::DRAG_TANGENTIAL, &mut line.drag_tangential)
+                | field_knob(ui, &fields::ADDED_MASS_NORMAL, &mut line.added_mass_normal)
+                | field_knob(ui, &fields::ADDED_MASS_TANGENTIAL, &mut line.added_mass_tangential)
         }
     };
     switched | edited
@@ -153,23 +154,24 @@ fn line_model_knobs(ui: &mut egui::Ui, model: &mut LineModelDef) -> bool {
 fn law_knobs(ui: &mut egui::Ui, law: &mut LawDef) -> bool {
     match law {
         LawDef::Linear { stiffness, rest_length } => {
-            knob(ui, "stiffness k", stiffness, "N/m") | knob(ui, "rest length x0", rest_length, "m")
+            field_knob(ui, &fields::LAW_STIFFNESS, stiffness) | field_knob(ui, &fields::LAW_REST_LENGTH, rest_length)
         }
         LawDef::Polynomial { a, b, c, rest_length } => {
-            knob(ui, "a", a, "N/m")
-                | knob(ui, "b", b, "N/m²")
-                | knob(ui, "c", c, "N/m³")
-                | knob(ui, "rest length x0", rest_length, "m")
+            field_knob(ui, &fields::LAW_A, a)
+                | field_knob(ui, &fields::LAW_B, b)
+                | field_knob(ui, &fields::LAW_C, c)
+                | field_knob(ui, &fields::LAW_REST_LENGTH, rest_length)
         }
-        LawDef::ForceCurve { points } => table_knobs(ui, points, ("x", "m"), ("f", "N")),
+        LawDef::ForceCurve { points } => table_knobs(ui, points, &fields::FORCE_CURVE_X, &fields::FORCE_CURVE_F),
         LawDef::StiffnessCurve { points, rest_length } => {
-            table_knobs(ui, points, ("ξ", "m"), ("k", "N/m")) | knob(ui, "rest length x0", rest_length, "m")
+            table_knobs(ui, points, &fields::STIFFNESS_CURVE_XI, &fields::STIFFNESS_CURVE_K)
+                | field_knob(ui, &fields::LAW_REST_LENGTH, rest_length)
         }
         LawDef::ReferenceForce { points, reference_length, reference_force, rest_length } => {
-            table_knobs(ui, points, ("ξ", "m"), ("k", "N/m"))
-                | knob(ui, "reference length x_r", reference_length, "m")
-                | knob(ui, "reference force f_r", reference_force, "N")
-                | knob(ui, "rest length x0", rest_length, "m")
+            table_knobs(ui, points, &fields::STIFFNESS_CURVE_XI, &fields::STIFFNESS_CURVE_K)
+                | field_knob(ui, &fields::LAW_REFERENCE_LENGTH, reference_length)
+                | field_knob(ui, &fields::LAW_REFERENCE_FORCE, reference_force)
+                | field_knob(ui, &fields::LAW_REST_LENGTH, rest_length)
         }
     }
 }
@@ -186,17 +188,22 @@ pub(super) fn knob(ui: &mut egui::Ui, label: &str, value: &mut impl Numeric, uni
     response.changed()
 }
 
+/// A knob over a catalogued field ([`fields`]): its label and unit as the catalogue lists them.
+pub(super) fn field_knob(ui: &mut egui::Ui, field: &Field, value: &mut impl Numeric) -> bool {
+    knob(ui, field.label, value, field.unit)
+}
+
 /// The points of a table, one grid row each: `x [m] … f [N] …`.
-fn table_knobs(ui: &mut egui::Ui, points: &mut [(f64, f64)], x: (&str, &str), y: (&str, &str)) -> bool {
+fn table_knobs(ui: &mut egui::Ui, points: &mut [(f64, f64)], x: &Field, y: &Field) -> bool {
     let mut edited = false;
     for (row, (px, py)) in points.iter_mut().enumerate() {
         let name = ui.label(format!("point {}", row + 1));
         ui.horizontal(|ui| {
-            for (value, (symbol, unit)) in [(px, x), (py, y)] {
-                ui.label(symbol);
+            for (value, field) in [(px, x), (py, y)] {
+                ui.label(field.label);
                 let speed = value.abs().max(1e-3) * 0.01;
                 edited |= number_field(ui, value, speed).labelled_by(name.id).changed();
-                ui.label(unit);
+                ui.label(field.unit);
             }
         });
         ui.end_row();

@@ -1,14 +1,17 @@
-//! The water panel: the scene's waves, current and density, and each floating body's drag and
-//! added-mass coefficients, all live (PHYSICS.md §6). The knobs edit the open scene's water and
-//! coefficient knobs' drafts (scene-file data, [`WaterDef`] and [`HydroDef`]); the panel checks
-//! an edited draft with the scene builder (the same checks and messages as loading) and sends
-//! the simulation what it accepts; a refused value stays in its knob with the reason. A body with
-//! potential-flow data (PHYSICS.md §9) has a switch for it, which shows what the simulation runs.
+//! The water panel: the scene's waves, current and density, and each floating body's drag,
+//! added-mass and linear damping coefficients, all live (PHYSICS.md §6). The knobs edit the open
+//! scene's water and coefficient knobs' drafts (scene-file data, [`WaterDef`] and [`HydroDef`]);
+//! the panel checks an edited draft with the scene builder (the same checks and messages as
+//! loading) and sends the simulation what it accepts; a refused value stays in its knob with the
+//! reason. A body with potential-flow data (PHYSICS.md §9) has a switch for it, which shows what
+//! the simulation runs. Each knob's label and unit are the parameters catalogue's
+//! (`tether_analysis::parameters::fields`).
 
 use super::knobs::{Knob, Refused};
-use super::tuning::knob;
+use super::tuning::{field_knob, knob};
 use rerun::external::egui;
 use std::fmt::Display;
+use tether_analysis::parameters::fields;
 use tether_physics::potential::{DriftModel, HydrostaticsModel};
 use tether_scene::water::{CurrentDef, HydroDef, WaterDef, WavesDef};
 
@@ -111,24 +114,25 @@ fn water_knobs(ui: &mut egui::Ui, water: &mut WaterDef) -> bool {
             false
         }
         WavesDef::Regular { height, period, heading_deg, .. } => {
-            knob(ui, "wave height H", height, "m")
-                | knob(ui, "wave period T", period, "s")
-                | knob(ui, "wave heading", heading_deg, "°")
+            field_knob(ui, &fields::WAVE_HEIGHT, height)
+                | field_knob(ui, &fields::WAVE_PERIOD, period)
+                | field_knob(ui, &fields::WAVE_HEADING, heading_deg)
         }
         WavesDef::Jonswap { hs, tp, heading_deg, .. } => {
-            knob(ui, "significant height Hs", hs, "m")
-                | knob(ui, "peak period Tp", tp, "s")
-                | knob(ui, "wave heading", heading_deg, "°")
+            field_knob(ui, &fields::SIGNIFICANT_HEIGHT, hs)
+                | field_knob(ui, &fields::PEAK_PERIOD, tp)
+                | field_knob(ui, &fields::WAVE_HEADING, heading_deg)
         }
     };
     let mut current =
         water.current.clone().unwrap_or(CurrentDef { speed: 0.0, heading_deg: 0.0, profile: Default::default() });
-    if knob(ui, "current speed", &mut current.speed, "m/s") | knob(ui, "current heading", &mut current.heading_deg, "°")
+    if field_knob(ui, &fields::CURRENT_SPEED, &mut current.speed)
+        | field_knob(ui, &fields::CURRENT_HEADING, &mut current.heading_deg)
     {
         water.current = Some(current);
         edited = true;
     }
-    edited | knob(ui, "density ρ", &mut water.density, "kg/m³")
+    edited | field_knob(ui, &fields::WATER_DENSITY, &mut water.density)
 }
 
 /// The drift model of body `index`'s potential flow (PHYSICS.md §10), a grid row; true when
@@ -150,14 +154,18 @@ fn drift_choice(ui: &mut egui::Ui, index: usize, hydro: &mut HydroDef) -> bool {
     chosen
 }
 
-/// Drag and added-mass coefficients per body axis; true when one was edited.
+/// Drag, added-mass and linear damping coefficients per body axis; true when one was edited.
 fn hydro_knobs(ui: &mut egui::Ui, hydro: &mut HydroDef) -> bool {
     let mut edited = false;
-    for (axis, name) in ["x", "y", "z"].iter().enumerate() {
-        edited |= knob(ui, &format!("drag C_d {name}"), &mut hydro.drag[axis], "–");
-    }
-    for (axis, name) in ["x", "y", "z"].iter().enumerate() {
-        edited |= knob(ui, &format!("added mass C_a {name}"), &mut hydro.added_mass[axis], "–");
+    for (field, values) in [
+        (&fields::HYDRO_DRAG, &mut hydro.drag),
+        (&fields::HYDRO_ADDED_MASS, &mut hydro.added_mass),
+        (&fields::HYDRO_LINEAR_DAMPING, &mut hydro.linear_damping),
+    ] {
+        for (axis, value) in values.iter_mut().enumerate() {
+            let (_, label) = field.axis(axis);
+            edited |= knob(ui, &label, value, field.unit);
+        }
     }
     edited
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference numbers for the Gumbel fits of src/storm/extremes.rs (its tests quote them): for two
+"""Reference numbers for the Gumbel fits of crates/analysis/src/storm/extremes.rs (its tests quote them): for two
 fixed sets of storm maxima, scipy's maximum-likelihood fit, the moment estimates, the most
 probable maximum (the mode, = the location) and the 90 % quantile, each printed to 17 figures.
 

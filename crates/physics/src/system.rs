@@ -709,8 +709,7 @@ impl CouplingsStage<'_> {
     /// couplings' forces are inlined here, so the contact faces run four to a vector instruction
     /// ([`crate::coupling::contact`]) and what each coupling computes stays in registers from one
     /// stage of its evaluation to the next. AVX-512's 32 vector registers hold the face batch's
-    /// constants and sums that AVX2's 16 cannot (about 160 instructions per batch instead of
-    /// about 190, by the disassembly of the bench binary).
+    /// constants and sums that AVX2's 16 cannot (docs/speed.md, "The contact batch").
     #[inline(always)]
     fn run(self) -> Result<(CouplingPower, f64), (usize, CouplingError)> {
         let (mut power, mut potential) = (CouplingPower::default(), 0.0);

@@ -9,16 +9,9 @@ mod import_graph;
 use import_graph::{Ancestors, code, cycle, expand, named_paths, target};
 use std::collections::{BTreeMap, BTreeSet};
 
-fn root() -> std::path::PathBuf {
-    std::path::PathBuf::from(
-        std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR when it runs a test"),
-    )
-    .join("src/lib.rs")
-}
-
 #[test]
 fn no_module_imports_one_that_imports_it_back() {
-    let graph = import_graph::assert_no_circle(&root(), Ancestors::Edges, 30);
+    let graph = import_graph::assert_no_circle(&import_graph::library_root(), Ancestors::Edges, 30);
     // The root only declares modules: nothing imports from it.
     for (module, edges) in &graph {
         assert!(!edges.contains("crate"), "{module} imports from the crate root");
@@ -55,11 +48,8 @@ fn the_graph_reader_sees_a_planted_circle() {
 fn the_physics_crate_names_no_gui_viewer_or_file_format() {
     import_graph::assert_layered(
         "tether-physics",
-        &std::path::PathBuf::from(
-            std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR when it runs a test"),
-        )
-        .join("Cargo.toml"),
-        &root(),
+        &import_graph::crate_dir().join("Cargo.toml"),
+        &import_graph::library_root(),
         &["rerun", "egui", "eframe", "ron::", "serde", "tobj", "stl_io", "tether_scene"],
     );
 }
@@ -86,7 +76,7 @@ fn the_physics_crate_s_normal_dependencies_have_no_serde() {
 #[test]
 fn every_type_with_a_checking_constructor_has_no_public_field() {
     let (mut checked, mut open) = (BTreeSet::new(), Vec::new());
-    for (module, file) in import_graph::modules(&root()) {
+    for (module, file) in import_graph::modules(&import_graph::library_root()) {
         let text = std::fs::read_to_string(&file).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
         // The whole file without its comments (`code` stops at the first `#[cfg(test)]`, which
         // may stand inside an `impl`).
@@ -169,7 +159,7 @@ fn block_after<'a>(code: &'a str, opening: &str) -> Option<&'a str> {
 /// above both rooms, not inside the one the other imports).
 #[test]
 fn no_room_imports_one_that_imports_it_back() {
-    let graph = import_graph::import_graph(&root(), Ancestors::Edges);
+    let graph = import_graph::import_graph(&import_graph::library_root(), Ancestors::Edges);
     let room = |module: &str| module.split("::").take(2).collect::<Vec<_>>().join("::");
     let mut rooms: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
     for (module, edges) in &graph {

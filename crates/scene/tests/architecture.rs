@@ -8,16 +8,9 @@ mod import_graph;
 
 use import_graph::Ancestors;
 
-fn root() -> std::path::PathBuf {
-    std::path::PathBuf::from(
-        std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR when it runs a test"),
-    )
-    .join("src/lib.rs")
-}
-
 #[test]
 fn no_module_imports_one_that_imports_it_back() {
-    import_graph::assert_no_circle(&root(), Ancestors::InScope, 9);
+    import_graph::assert_no_circle(&import_graph::library_root(), Ancestors::InScope, 9);
 }
 
 #[test]
@@ -25,11 +18,8 @@ fn depends_only_on_the_layers_below() {
     // The scene knows neither the recorder nor the viewer.
     import_graph::assert_layered(
         "tether-scene",
-        &std::path::PathBuf::from(
-            std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR when it runs a test"),
-        )
-        .join("Cargo.toml"),
-        &root(),
+        &import_graph::crate_dir().join("Cargo.toml"),
+        &import_graph::library_root(),
         &["rerun", "egui", "eframe", "tether_record"],
     );
 }

@@ -12,7 +12,7 @@
 //! Here, with no egui: the state ([`FitDraft`]) and the fit's worker thread, whose news the
 //! panel takes as [`FitUpdate`]s ([`FitDraft::poll`]). In [`signals`], what a record's column
 //! can be; in [`panel`], the egui drawing ([`ui`]), which returns [`FitAction`]s the control
-//! panel carries out. What can be fitted is the scene's catalogue ([`crate::parameters`]).
+//! panel carries out. What can be fitted is the scene's catalogue ([`tether_analysis::parameters`]).
 
 mod panel;
 mod signals;
@@ -23,20 +23,20 @@ pub use signals::{signal_label, signals};
 use super::open_scene::OpenScene;
 use super::simulation::{Curve, Wake};
 use crate::figures;
-use crate::fit::measured::Record;
-use crate::fit::run::{self, Fitted, Outcome, Progress};
-use crate::fit::setup::{Setup, SetupError};
-use crate::fit::solver::Ending;
-use crate::fit::spec::{FitFile, ParameterDef, Scale, SignalDef, Window};
-use crate::parameters::{KnobId, Parameter};
-use crate::quantity::Quantity;
-use crate::runner::{Runner, all_cores};
-use crate::sweep::spec::PathsDef;
 use std::collections::{BTreeMap, HashMap};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{self, Receiver, TryRecvError};
+use tether_analysis::fit::measured::Record;
+use tether_analysis::fit::run::{self, Fitted, Outcome, Progress};
+use tether_analysis::fit::setup::{Setup, SetupError};
+use tether_analysis::fit::solver::Ending;
+use tether_analysis::fit::spec::{FitFile, ParameterDef, Scale, SignalDef, Window};
+use tether_analysis::parameters::{KnobId, Parameter};
+use tether_analysis::quantity::Quantity;
+use tether_analysis::runner::{Runner, all_cores};
+use tether_analysis::spec_text::PathsDef;
 
 /// Points of a model curve sent to the viewer at most (a run's every world step, thinned).
 const CURVE_POINTS: usize = 4000;

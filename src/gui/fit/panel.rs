@@ -8,9 +8,9 @@ use super::{
     Decision, FitAction, FitDraft, Session, amount, correlated_text, interval_text, number, signal_label, status,
 };
 use crate::figures;
-use crate::parameters::Parameter;
-use crate::quantity::Quantity;
 use rerun::external::egui;
+use tether_analysis::parameters::Parameter;
+use tether_analysis::quantity::Quantity;
 
 /// Draws the fit panel for a scene whose fittable values are `fittables` and whose signals are
 /// `signals`; returns what it asks for.

@@ -1,7 +1,7 @@
 //! What a measured record's column can be in the Fit panel: each body's and coupling's model
 //! signals ([`signals`]), and how the column choice names them ([`signal_label`]).
 
-use crate::quantity::{Axis, End, EnergyPart, Quantity, Turn};
+use tether_analysis::quantity::{Axis, End, EnergyPart, Quantity, Turn};
 use tether_scene::SceneFile;
 use tether_scene::file::CouplingDef;
 

@@ -24,7 +24,7 @@ pub enum Speed {
 }
 
 /// A scene ready to run: its world, a label for recordings and messages, and the scene's
-/// `duration` \[s], the run whose length Play checks first (`crate::run_length`).
+/// `duration` \[s], the run whose length Play checks first (`tether_analysis::run_length`).
 pub struct Run {
     pub label: String,
     pub world: World,

@@ -14,9 +14,9 @@ use super::recording::Recording;
 use super::status::{self, RunState};
 use crate::figures;
 use crate::gui::stream::Sinks;
-use crate::run_length;
 use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender, TryRecvError};
 use std::time::{Duration, Instant};
+use tether_analysis::run_length;
 use tether_physics::coupling::{Coupling, CouplingKind, LineModel};
 use tether_physics::integrator::Timing;
 use tether_physics::seabed::Seabed;
@@ -350,7 +350,7 @@ impl SimulationLoop {
     }
 
     /// The new time step, sub-steps and integrator; a running scene that the new timing makes
-    /// too long to end (`crate::run_length`) is paused, with Play's message.
+    /// too long to end (`tether_analysis::run_length`) is paused, with Play's message.
     fn set_timing(&mut self, timing: Timing) {
         let Some(run) = &mut self.run else { return };
         let report = match run.world.set_timing(timing) {

@@ -19,13 +19,12 @@
 //!   limit, at the price of rejected steps.
 //! - Cost: six force evaluations per attempted step.
 
+use super::context::StepContext;
 use super::report::{StepFailure, StepReport};
 use super::runge_kutta::{Stages, Tableau};
 use super::settings::Tolerances;
-use crate::body::BodyState;
 use crate::energy::{BodyEnergy, Work};
-use crate::evaluation::Evaluation;
-use crate::system::{EvaluationError, System};
+use crate::system::EvaluationError;
 
 /// The Dormand–Prince tableau; `b` the fifth-order weights.
 const TABLEAU: Tableau = Tableau {
@@ -72,32 +71,21 @@ impl Dopri45 {
     }
 
     /// Evaluates `time`.
-    pub fn start(
-        &mut self,
-        system: &System,
-        states: &mut [BodyState],
-        evaluation: &mut Evaluation,
-        time: f64,
-    ) -> Result<BodyEnergy, EvaluationError> {
+    pub fn start(&mut self, context: StepContext) -> Result<BodyEnergy, EvaluationError> {
         (self.next_step, self.retry) = (0.0, None);
-        self.stages.start(system, states, evaluation, time)
+        self.stages.start(context)
     }
 
-    /// One attempt from `time` \[s] toward the end of the span `remaining` \[s]: accepted (the
+    /// One attempt from the context's `time` \[s] toward the end of the span `h` \[s] left to
+    /// reach: accepted (the
     /// report says whether it reached the end, which it meets exactly) or rejected (the states
     /// are back at `time`, and the next attempt is shorter).
     ///
     /// # Errors
     /// A coupling that cannot give its forces, or a step that had to shrink below round-off of
     /// the time (the scene is too stiff or has blown up).
-    pub fn step(
-        &mut self,
-        system: &System,
-        states: &mut [BodyState],
-        evaluation: &mut Evaluation,
-        time: f64,
-        remaining: f64,
-    ) -> Result<StepReport, StepFailure> {
+    pub fn step(&mut self, context: StepContext) -> Result<StepReport, StepFailure> {
+        let StepContext { system, states, evaluation, time, h: remaining } = context;
         let (rtol, atol) = (self.tolerances.rtol(), self.tolerances.atol());
         let proposal = match self.next_step {
             h if h > 0.0 => h.min(self.max_step),
@@ -112,7 +100,8 @@ impl Dopri45 {
         } else {
             proposal
         });
-        let last = self.stages.attempt(system, states, evaluation, time, h)?;
+        let last =
+            self.stages.attempt(StepContext { system, states: &mut *states, evaluation: &mut *evaluation, time, h })?;
         let error = self.stages.error_norm(system, states, &ERROR, h, rtol, atol);
         let factor =
             if error == 0.0 { GROW_AT_MOST } else { (SAFETY * error.powf(-0.2)).clamp(SHRINK_AT_MOST, GROW_AT_MOST) };

@@ -18,11 +18,13 @@
 //!   the half-step velocity between them, `½ h (F_n + F_{n+1})·v_{n+½}`: second order for a
 //!   position-dependent force such as the buoyancy.
 
+use super::context::StepContext;
+use super::kick_drift;
 use super::report::StepReport;
 use crate::body::kinematics::{drift, kick, turn};
-use crate::body::{Acceleration, BodyState, Support};
+use crate::body::{Acceleration, BodyState};
 use crate::dynamics::accelerations;
-use crate::energy::{BodyEnergy, Powers, Work};
+use crate::energy::{BodyEnergy, Powers};
 use crate::evaluation::Evaluation;
 use crate::system::{EvaluationError, System};
 
@@ -50,14 +52,8 @@ impl Leapfrog {
     }
 
     /// Evaluates `time` and turns the synchronised velocities into `v(t − ½h) = v(t) − ½h γ(t)`.
-    pub fn start(
-        &mut self,
-        system: &System,
-        states: &mut [BodyState],
-        evaluation: &mut Evaluation,
-        time: f64,
-        h: f64,
-    ) -> Result<BodyEnergy, EvaluationError> {
+    pub fn start(&mut self, context: StepContext) -> Result<BodyEnergy, EvaluationError> {
+        let StepContext { system, states, evaluation, time, h } = context;
         system.prescribe(states, time);
         self.powers = system.evaluate(states, evaluation, time)?;
         // The velocities are synchronised: ω(t) is exact for either variant.
@@ -74,14 +70,8 @@ impl Leapfrog {
 
     /// One step of `h` \[s] from `time`.
     #[inline]
-    pub fn step(
-        &mut self,
-        system: &System,
-        states: &mut [BodyState],
-        evaluation: &mut Evaluation,
-        time: f64,
-        h: f64,
-    ) -> Result<StepReport, EvaluationError> {
+    pub fn step(&mut self, context: StepContext) -> Result<StepReport, EvaluationError> {
+        let StepContext { system, states, evaluation, time, h } = context;
         system.supported_level().run(
             #[inline(always)]
             || self.step_built(system, states, evaluation, time, h),
@@ -104,50 +94,30 @@ impl Leapfrog {
         h: f64,
     ) -> Result<StepReport, EvaluationError> {
         let time = time + h;
-        let per_body = system
-            .bodies()
-            .iter()
-            .zip(states.iter_mut())
-            .zip(&self.accelerations)
-            .zip(evaluation.frames.iter_mut())
-            .zip(evaluation.loads.iter_mut())
-            .zip(system.initial_states());
-        for (((((body, state), acceleration), frame), load), initial) in per_body {
-            match &body.support {
-                Support::Kinematic(motion) => {
-                    *state = motion.state_at(initial, time);
-                    *frame = state.frame();
-                }
-                support => {
-                    kick(state, acceleration, support, h);
-                    drift(state, h);
-                    // Velocity-dependent forces see v(t−½dt), as in Radioss.
-                    frame.position = state.position;
-                    frame.velocity = state.velocity;
-                    frame.angular_velocity = state.angular_velocity;
-                }
-            }
-            *load = system.gravity_load(body);
-        }
+        kick_drift::advance_bodies(
+            system,
+            states,
+            &self.accelerations,
+            evaluation,
+            time,
+            |body, state, acceleration, frame| {
+                kick(state, acceleration, &body.support, h);
+                drift(state, h);
+                // Velocity-dependent forces see v(t−½dt), as in Radioss.
+                frame.position = state.position;
+                frame.velocity = state.velocity;
+                frame.angular_velocity = state.angular_velocity;
+            },
+        );
         for ((body, state), frame) in system.bodies().iter().zip(states.iter_mut()).zip(evaluation.frames.iter_mut()) {
             // A body that does not turn keeps its orientation and rotation matrix.
             if !body.is_kinematic() && turn(state, h) {
                 frame.rotation = state.rotation_matrix();
             }
         }
-        system.apply_lines(evaluation, time)?;
-        let couplings = system.apply_couplings(evaluation)?;
-        // The water's and the air's work: the trapezoid of the forces at both ends against the half-step
-        // velocities they straddle (second order; against each end's own lagged velocity it
-        // would drift at first order, ½h ∫ F·a dt).
-        let environment_before = system.environment_power(evaluation);
-        let environment = system.apply_environment(evaluation, time);
+        let forces = kick_drift::end_forces(system, evaluation, time)?;
         let energy = self.accelerate(system, states, evaluation, self.gyroscopic, 0.5 * h);
-        let powers = Powers { couplings, external: system.external_power(evaluation), environment };
-        let mut work = Work::trapezoid(h, &self.powers, &powers);
-        work.external += 0.5 * h * (environment_before + environment);
-        self.powers = powers;
-        Ok(StepReport::accepted(h, work, energy))
+        Ok(forces.report(system, evaluation, h, &mut self.powers, energy))
     }
 
     /// The state of body `index` at the current time, velocities synchronised:

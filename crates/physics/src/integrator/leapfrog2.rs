@@ -13,20 +13,12 @@
 //!   [`super::splitting`] has no such coupling.
 //! - Cost: one force evaluation per step, six more multiply-adds per body.
 
+use super::context::StepContext;
 use super::leapfrog::Leapfrog;
 use super::report::StepReport;
-use crate::body::BodyState;
-use crate::evaluation::Evaluation;
-use crate::system::{EvaluationError, System};
+use crate::system::EvaluationError;
 
 /// One step of `h` \[s] from `time`: the leapfrog's, built with [`super::leapfrog::Gyroscopic::Predicted`].
-pub fn step(
-    scheme: &mut Leapfrog,
-    system: &System,
-    states: &mut [BodyState],
-    evaluation: &mut Evaluation,
-    time: f64,
-    h: f64,
-) -> Result<StepReport, EvaluationError> {
-    scheme.step(system, states, evaluation, time, h)
+pub fn step(scheme: &mut Leapfrog, context: StepContext) -> Result<StepReport, EvaluationError> {
+    scheme.step(context)
 }

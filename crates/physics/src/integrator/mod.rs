@@ -18,7 +18,9 @@
 //! forces did over it and the bodies' energies at its end. It does not touch the clock, the
 //! energy ledger or the health check: the world does.
 
+pub mod context;
 pub mod dopri45;
+pub mod kick_drift;
 pub mod leapfrog;
 pub mod leapfrog2;
 pub mod report;
@@ -29,8 +31,8 @@ pub mod splitting;
 
 use crate::body::BodyState;
 use crate::energy::BodyEnergy;
-use crate::evaluation::Evaluation;
 use crate::system::{EvaluationError, System};
+pub use context::StepContext;
 pub use report::{StepFailure, StepReport};
 pub use settings::{Integrator, MAX_AUTO_SUBSTEPS, Substeps, Timing, Tolerances};
 
@@ -67,48 +69,35 @@ impl Scheme {
         }
     }
 
-    /// Starts at `time` \[s] from synchronised `states` (the staggered schemes move their
-    /// velocities half a step `h` \[s] back): evaluates the forces and returns the bodies'
-    /// energies.
+    /// Starts at the context's `time` \[s] from synchronised `states` (the staggered schemes
+    /// move their velocities half a step `h` \[s] back): evaluates the forces and returns the
+    /// bodies' energies.
     ///
     /// # Errors
     /// A coupling that cannot give its forces.
-    pub fn start(
-        &mut self,
-        system: &System,
-        states: &mut [BodyState],
-        evaluation: &mut Evaluation,
-        time: f64,
-        h: f64,
-    ) -> Result<BodyEnergy, EvaluationError> {
+    pub fn start(&mut self, context: StepContext) -> Result<BodyEnergy, EvaluationError> {
         match self {
-            Self::Leapfrog(scheme) | Self::Leapfrog2(scheme) => scheme.start(system, states, evaluation, time, h),
-            Self::Splitting(scheme) => scheme.start(system, states, evaluation, time),
-            Self::Rk4(stages) => stages.start(system, states, evaluation, time),
-            Self::Dopri45(scheme) => scheme.start(system, states, evaluation, time),
+            Self::Leapfrog(scheme) | Self::Leapfrog2(scheme) => scheme.start(context),
+            Self::Splitting(scheme) => scheme.start(context),
+            Self::Rk4(stages) => stages.start(context),
+            Self::Dopri45(scheme) => scheme.start(context),
         }
     }
 
-    /// One step from `time` \[s]: of `h` \[s] for the fixed-step schemes; for `dopri45` one
-    /// attempt toward the end of the span `h` (accepted or not, and perhaps short of it).
+    /// One step from the context's `time` \[s]: of `h` \[s] for the fixed-step schemes; for
+    /// `dopri45` one attempt toward the end of the span `h` (accepted or not, and perhaps short
+    /// of it).
     ///
     /// # Errors
     /// A coupling that cannot give its forces (the states are then mid-step), or an adaptive
     /// step that stalled.
-    pub fn step(
-        &mut self,
-        system: &System,
-        states: &mut [BodyState],
-        evaluation: &mut Evaluation,
-        time: f64,
-        h: f64,
-    ) -> Result<StepReport, StepFailure> {
+    pub fn step(&mut self, context: StepContext) -> Result<StepReport, StepFailure> {
         Ok(match self {
-            Self::Leapfrog(scheme) => scheme.step(system, states, evaluation, time, h)?,
-            Self::Leapfrog2(scheme) => leapfrog2::step(scheme, system, states, evaluation, time, h)?,
-            Self::Splitting(scheme) => scheme.step(system, states, evaluation, time, h)?,
-            Self::Rk4(stages) => rk4::step(stages, system, states, evaluation, time, h)?,
-            Self::Dopri45(scheme) => return scheme.step(system, states, evaluation, time, h),
+            Self::Leapfrog(scheme) => scheme.step(context)?,
+            Self::Leapfrog2(scheme) => leapfrog2::step(scheme, context)?,
+            Self::Splitting(scheme) => scheme.step(context)?,
+            Self::Rk4(stages) => rk4::step(stages, context)?,
+            Self::Dopri45(scheme) => return scheme.step(context),
         })
     }
 

@@ -15,11 +15,10 @@
 //! - Cost: four force evaluations per step (the fourth at the new state is the next step's
 //!   first), and a normalised quaternion per body and stage.
 
+use super::context::StepContext;
 use super::report::StepReport;
 use super::runge_kutta::{Stages, Tableau};
-use crate::body::BodyState;
-use crate::evaluation::Evaluation;
-use crate::system::{EvaluationError, System};
+use crate::system::EvaluationError;
 
 /// The classical tableau.
 pub const TABLEAU: Tableau = Tableau {
@@ -29,15 +28,9 @@ pub const TABLEAU: Tableau = Tableau {
 };
 
 /// One step of `h` \[s] from `time`.
-pub fn step(
-    stages: &mut Stages,
-    system: &System,
-    states: &mut [BodyState],
-    evaluation: &mut Evaluation,
-    time: f64,
-    h: f64,
-) -> Result<StepReport, EvaluationError> {
-    let last = stages.attempt(system, states, evaluation, time, h)?;
+pub fn step(stages: &mut Stages, context: StepContext) -> Result<StepReport, EvaluationError> {
+    let StepContext { system, states, evaluation, time, h } = context;
+    let last = stages.attempt(StepContext { system, states: &mut *states, evaluation, time, h })?;
     let (work, energy) = stages.accept(system, states, h, last);
     Ok(StepReport::accepted(h, work, energy))
 }

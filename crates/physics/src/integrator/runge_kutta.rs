@@ -16,6 +16,7 @@
 //! `h Σ b_j P_j` with the stage powers `P_j`, the same weights as the state, so the energy
 //! balance keeps the scheme's order.
 
+use super::context::StepContext;
 use crate::body::{BodyFrame, BodyState, Load, RigidBody, Support};
 use crate::dynamics::accelerations;
 use crate::energy::{BodyEnergy, Powers, Work};
@@ -98,13 +99,8 @@ impl Stages {
     }
 
     /// Evaluates the rates at `time` \[s] into slot 0; returns the bodies' energies.
-    pub fn start(
-        &mut self,
-        system: &System,
-        states: &mut [BodyState],
-        evaluation: &mut Evaluation,
-        time: f64,
-    ) -> Result<BodyEnergy, EvaluationError> {
+    pub fn start(&mut self, context: StepContext) -> Result<BodyEnergy, EvaluationError> {
+        let StepContext { system, states, evaluation, time, .. } = context;
         self.evaluate(system, states, evaluation, time, 0)?;
         Ok(BodyEnergy::sum(system.bodies(), states.iter(), system.gravity()))
     }
@@ -113,14 +109,8 @@ impl Stages {
     /// new state (synchronised) in `states`, with the forces evaluated there. Returns the slot
     /// that holds the rates at the new state. [`Stages::accept`] or [`Stages::reject`] must
     /// follow.
-    pub fn attempt(
-        &mut self,
-        system: &System,
-        states: &mut [BodyState],
-        evaluation: &mut Evaluation,
-        time: f64,
-        h: f64,
-    ) -> Result<usize, EvaluationError> {
+    pub fn attempt(&mut self, context: StepContext) -> Result<usize, EvaluationError> {
+        let StepContext { system, states, evaluation, time, h } = context;
         self.start.copy_from_slice(states);
         for ((momentum, state), body) in self.momentum.iter_mut().zip(states.iter()).zip(system.bodies()) {
             *momentum = state.orientation * body.principal_moments().component_mul(&state.angular_velocity);

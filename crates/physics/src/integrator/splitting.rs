@@ -22,11 +22,13 @@
 //! - Work: the trapezoid rule on the powers at consecutive evaluations; the water's as the
 //!   leapfrog's (`½ h (F_n + F_{n+1})·v_{n+½}`).
 
+use super::context::StepContext;
+use super::kick_drift;
 use super::report::StepReport;
 use crate::body::kinematics::{drift, kick, renormalize};
-use crate::body::{Acceleration, BodyState, RigidBody, Support};
+use crate::body::{Acceleration, BodyState, RigidBody};
 use crate::dynamics::accelerations;
-use crate::energy::{BodyEnergy, Powers, Work};
+use crate::energy::{BodyEnergy, Powers};
 use crate::evaluation::Evaluation;
 use crate::math::Vec3;
 use crate::system::{EvaluationError, System};
@@ -47,41 +49,24 @@ impl Splitting {
 
     /// Evaluates `time`: forces, and the accelerations of the first kick (velocities stay
     /// synchronised).
-    pub fn start(
-        &mut self,
-        system: &System,
-        states: &mut [BodyState],
-        evaluation: &mut Evaluation,
-        time: f64,
-    ) -> Result<BodyEnergy, EvaluationError> {
+    pub fn start(&mut self, context: StepContext) -> Result<BodyEnergy, EvaluationError> {
+        let StepContext { system, states, evaluation, time, .. } = context;
         system.prescribe(states, time);
         self.powers = system.evaluate(states, evaluation, time)?;
         Ok(self.kick_and_energies(system, states, evaluation, 0.0))
     }
 
     /// One step of `h` \[s] from `time`: kick, drift (with the rotation sequence), forces, kick.
-    pub fn step(
-        &mut self,
-        system: &System,
-        states: &mut [BodyState],
-        evaluation: &mut Evaluation,
-        time: f64,
-        h: f64,
-    ) -> Result<StepReport, EvaluationError> {
+    pub fn step(&mut self, context: StepContext) -> Result<StepReport, EvaluationError> {
+        let StepContext { system, states, evaluation, time, h } = context;
         let time = time + h;
-        let per_body = system
-            .bodies()
-            .iter()
-            .zip(states.iter_mut())
-            .zip(&self.accelerations)
-            .zip(evaluation.frames.iter_mut())
-            .zip(evaluation.loads.iter_mut())
-            .zip(system.initial_states());
-        for (((((body, state), acceleration), frame), load), initial) in per_body {
-            if let Support::Kinematic(motion) = &body.support {
-                *state = motion.state_at(initial, time);
-                *frame = state.frame();
-            } else {
+        kick_drift::advance_bodies(
+            system,
+            states,
+            &self.accelerations,
+            evaluation,
+            time,
+            |body, state, acceleration, frame| {
                 kick(state, acceleration, &body.support, 0.5 * h);
                 drift(state, h);
                 if rotate_freely(body, state, h) {
@@ -91,22 +76,11 @@ impl Splitting {
                     frame.velocity = state.velocity;
                     frame.angular_velocity = state.angular_velocity;
                 }
-            }
-            *load = system.gravity_load(body);
-        }
-        system.apply_lines(evaluation, time)?;
-        let couplings = system.apply_couplings(evaluation)?;
-        // The water's and the air's work: the trapezoid of the forces at both ends against the half-step
-        // velocities they straddle (second order; against each end's own lagged velocity it
-        // would drift at first order, ½h ∫ F·a dt).
-        let environment_before = system.environment_power(evaluation);
-        let environment = system.apply_environment(evaluation, time);
+            },
+        );
+        let forces = kick_drift::end_forces(system, evaluation, time)?;
         let energy = self.kick_and_energies(system, states, evaluation, 0.5 * h);
-        let powers = Powers { couplings, external: system.external_power(evaluation), environment };
-        let mut work = Work::trapezoid(h, &self.powers, &powers);
-        work.external += 0.5 * h * (environment_before + environment);
-        self.powers = powers;
-        Ok(StepReport::accepted(h, work, energy))
+        Ok(forces.report(system, evaluation, h, &mut self.powers, energy))
     }
 
     /// Accelerations from the loads (the moment's part only: the rotation sequence carries the

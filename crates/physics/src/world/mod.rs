@@ -18,7 +18,9 @@ use crate::coupling::catenary::LineState;
 use crate::coupling::{Coupling, CouplingForces};
 use crate::energy::{BodyEnergy, EnergyLedger, EnergyReport};
 use crate::evaluation::Evaluation;
-use crate::integrator::{Integrator, MAX_AUTO_SUBSTEPS, Scheme, StepFailure, StepReport, Substeps, Timing, Tolerances};
+use crate::integrator::{
+    Integrator, MAX_AUTO_SUBSTEPS, Scheme, StepContext, StepFailure, StepReport, Substeps, Timing, Tolerances,
+};
 use crate::math::Vec3;
 use crate::stability::{self, Limit, Situation};
 use crate::system::{EvaluationError, System};
@@ -104,7 +106,13 @@ impl World {
         let time = self.clock.time;
         self.body_energy = self
             .scheme
-            .start(&self.system, &mut self.states, &mut self.evaluation, time, h)
+            .start(StepContext {
+                system: &self.system,
+                states: &mut self.states,
+                evaluation: &mut self.evaluation,
+                time,
+                h,
+            })
             .map_err(|e| self.coupling_error(e))?;
         self.evaluation.commit_lines();
         self.evaluation.commit_radiation(self.system.water());
@@ -124,7 +132,13 @@ impl World {
             } else {
                 let report = self
                     .scheme
-                    .step(&self.system, &mut self.states, &mut self.evaluation, self.clock.time, h)
+                    .step(StepContext {
+                        system: &self.system,
+                        states: &mut self.states,
+                        evaluation: &mut self.evaluation,
+                        time: self.clock.time,
+                        h,
+                    })
                     .map_err(|e| self.failure(e))?;
                 self.clock.time += h;
                 self.book(&report);
@@ -146,7 +160,13 @@ impl World {
         for _ in 0..MAX_ADAPTIVE_ATTEMPTS {
             let report = self
                 .scheme
-                .step(&self.system, &mut self.states, &mut self.evaluation, self.clock.time, end - self.clock.time)
+                .step(StepContext {
+                    system: &self.system,
+                    states: &mut self.states,
+                    evaluation: &mut self.evaluation,
+                    time: self.clock.time,
+                    h: end - self.clock.time,
+                })
                 .map_err(|e| self.failure(e))?;
             if !report.accepted {
                 self.clock.rejected_steps += 1;

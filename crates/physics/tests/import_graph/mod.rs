@@ -12,7 +12,17 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The workspace's crates from the bottom layer up: each may depend only on those before it.
-pub const LAYERS: [&str; 4] = ["tether-physics", "tether-scene", "tether-record", "tether"];
+pub const LAYERS: [&str; 5] = ["tether-physics", "tether-scene", "tether-record", "tether-analysis", "tether"];
+
+/// The folder of the crate whose test runs (`CARGO_MANIFEST_DIR`, which cargo sets for it).
+pub fn crate_dir() -> PathBuf {
+    PathBuf::from(std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR when it runs a test"))
+}
+
+/// The library root (`src/lib.rs`) of the crate whose test runs.
+pub fn library_root() -> PathBuf {
+    crate_dir().join("src/lib.rs")
+}
 
 /// Module → the modules it names.
 pub type Graph = BTreeMap<String, BTreeSet<String>>;

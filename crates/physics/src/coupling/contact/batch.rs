@@ -8,10 +8,9 @@
 //! [`FaceBatch::contacts`] for display, uses the SSE2 every x86-64 has. A face out of range is
 //! given zero area rather than skipped, and the lane sums keep each component's four lanes side
 //! by side, so that the whole batch, law and sums, runs in vector instructions with no branch
-//! (about 190 instructions per batch in the AVX2 build, down from 324 with lane masks and per-lane
-//! sums, by the disassembly). Lanes are
-//! independent and IEEE arithmetic is the same in vector and scalar form (no fused multiply–add
-//! is introduced), so each face's contact is that of the face-by-face evaluation, bit for bit.
+//! (its instruction count: docs/speed.md, "The contact batch"). Lanes are independent and IEEE
+//! arithmetic is the same in vector and scalar form (no fused multiply–add is introduced), so
+//! each face's contact is that of the face-by-face evaluation, bit for bit.
 
 use super::law::{ContactLaw, FaceContact};
 use crate::math::Vec3;

@@ -13,7 +13,7 @@
 //! mid-interval time (in a harmonic sea by powers of one complex number, [`Water::flow_at`]:
 //! PHYSICS.md §8 "The waves' kinematics at the nodes", the same sums to round-off at a fraction
 //! of the cost; a Runge–Kutta step's two middle stages share their interval, nodes and water, so
-//! the second takes the first's kinematics: the same numbers for fewer instructions, docs/speed.md
+//! the second takes the first's kinematics instead of computing the same numbers again (docs/speed.md
 //! "Dynamic lines in a sea").
 //! The bodies then feel each end node's force at `t`. Evaluating again at the same time or at a
 //! stage of a Runge–Kutta step starts from the same committed nodes, so an integrator may

@@ -23,7 +23,7 @@
 //! ```
 
 use crate::quantity::Quantity;
-use crate::sweep::spec::PathsDef;
+use crate::spec_text::PathsDef;
 use serde::{Deserialize, Serialize};
 
 /// A whole fit spec file.

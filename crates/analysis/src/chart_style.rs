@@ -8,7 +8,7 @@ use plotters::coord::ranged1d::Ranged;
 use plotters::prelude::{BLACK, DrawingBackend, WHITE};
 use plotters::style::{Color, FontStyle, RGBColor, register_font};
 
-static FONT: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
+static FONT: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
 
 /// Colours of successive curves (matplotlib's "tab10").
 pub const COLOURS: [RGBColor; 10] = [

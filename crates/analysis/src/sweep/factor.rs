@@ -2,9 +2,10 @@
 //! a list of levels, a linear or logarithmic ladder of levels, or a range the Latin hypercube
 //! samples.
 
-use super::spec::{FactorDef, Level, LevelKind, SpecError, SpecText, ValuesDef};
+use super::spec::{FactorDef, Level, LevelKind, ValuesDef};
 use super::table::compact;
-use super::value_path::{ValuePath, number_value};
+use crate::spec_text::{SpecError, SpecText};
+use crate::value_path::{ValuePath, number_value};
 use serde_json::Value;
 
 /// A factor, its paths found in the base scene's data.

@@ -3,9 +3,10 @@
 //! finishes.
 //!
 //! The way through:
-//! - [`spec`]: the spec file (RON): the base scene, the factors, the design, the metrics;
-//! - [`value_path`]: a factor's path to a value of the scene file, read against the scene's
-//!   serde data, so any section of a scene can be swept;
+//! - [`spec`]: the spec file (RON): the base scene, the factors, the design, the metrics, read
+//!   and placed by [`crate::spec_text`]; each factor's path to a value of the scene file is a
+//!   [`crate::value_path::ValuePath`], read against the scene's serde data, so any section of a
+//!   scene can be swept;
 //! - [`factor`], [`design`]: the values each factor takes and the cases they make (full grid,
 //!   one at a time, seeded Latin hypercube);
 //! - [`plan`]: all of it checked against the base scene, every case's scene built by the scene
@@ -39,7 +40,6 @@ pub mod spec;
 pub mod store;
 pub mod summary;
 pub mod table;
-pub mod value_path;
 
 pub use error::{Stage, SweepError};
 pub use execute::{Options, Progress, Report, merge, run};

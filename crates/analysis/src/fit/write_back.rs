@@ -11,7 +11,7 @@
 //! tree crate (none kept spans and is maintained); the scanner is the part of RON the scene
 //! files use.
 
-use crate::sweep::value_path::{Step, ValuePath};
+use crate::value_path::{Step, ValuePath};
 
 /// A value in RON text, with its byte span.
 #[derive(Debug, Clone, PartialEq)]

@@ -235,10 +235,7 @@ mod tests {
 
     #[test]
     fn a_recorded_run_reads_back_as_its_positions_and_tensions() {
-        let scene = std::path::PathBuf::from(
-            std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR when it runs a test"),
-        )
-        .join("scenes/spring_mass.ron");
+        let scene = tether_test_support::repo("scenes/spring_mass.ron");
         let mut world = tether_scene::load(&scene).expect("the scene loads").world;
         let body = world.bodies().iter().position(|b| b.name == BODY).expect("the body");
         let coupling = world.couplings().iter().position(|c| c.name == COUPLING).expect("the coupling");

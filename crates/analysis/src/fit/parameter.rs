@@ -8,7 +8,7 @@
 
 use super::spec::{ParameterDef, Scale, ShiftDef};
 use super::uncertainty::Scaling;
-use crate::sweep::value_path::ValuePath;
+use crate::value_path::ValuePath;
 use serde_json::Value;
 
 /// What a parameter sets.
@@ -162,7 +162,7 @@ fn start_value(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sweep::spec::PathsDef;
+    use crate::spec_text::PathsDef;
 
     fn def(from: f64, to: f64, scale: Scale) -> ParameterDef {
         ParameterDef { name: None, path: PathsDef::One("dt".into()), from, to, scale, start: None }

@@ -1,11 +1,15 @@
 //! The catalogue of a scene's tunable numbers (docs/window.md, docs/calibration.md): for each,
 //! the knob group it is edited in ([`KnobId`]), its value path (the sweep's), its label as the
 //! window shows it, its unit and its value. One table serves the window's Fit panel, the sweeps'
-//! and fits' value paths, and Python's `Scene.parameters()`.
+//! and fits' value paths, and Python's `Simulation.parameters()`; each field's path, label and
+//! unit are written once, in [`fields`], which the window's knobs are drawn from too.
 //!
 //! The matches over the scene's coupling kinds, elastic laws, line models and waves are
 //! exhaustive: a new kind does not compile until it says what can be tuned in it.
 
+pub mod fields;
+
+use fields::Field;
 use tether_physics::coupling::InternalDamping;
 use tether_scene::SceneFile;
 use tether_scene::air::{AirDef, GustsDef};
@@ -60,7 +64,7 @@ pub fn parameters(file: &SceneFile) -> Vec<Parameter> {
     }
     if let Some(seabed) = &file.seabed {
         let mut section = Section { found: &mut found, knob: KnobId::Seabed, path: "seabed".into(), name: "seabed" };
-        section.add("line_friction", "line friction C_B", "–", seabed.line_friction);
+        section.add(&fields::LINE_FRICTION, seabed.line_friction);
     }
     if let Some(air) = &file.air {
         air_values(&mut Section { found: &mut found, knob: KnobId::Air, path: "air".into(), name: "air" }, air);
@@ -81,10 +85,19 @@ impl<'a> Section<'a> {
         Self { found, knob, path: format!("{list}.{name}"), name }
     }
 
-    fn add(&mut self, field: &str, label: &str, unit: &'static str, value: f64) {
+    fn add(&mut self, field: &Field, value: f64) {
+        self.push(field.path, field.label, field.unit, value);
+    }
+
+    /// A field indexed below its own path (a body axis, a table's point): `(path, label)`.
+    fn add_indexed(&mut self, (path, label): (String, String), unit: &'static str, value: f64) {
+        self.push(&path, &label, unit, value);
+    }
+
+    fn push(&mut self, path: &str, label: &str, unit: &'static str, value: f64) {
         self.found.push(Parameter {
             knob: self.knob,
-            path: format!("{}.{field}", self.path),
+            path: format!("{}.{path}", self.path),
             label: format!("{}: {label}", self.name),
             unit,
             value,
@@ -96,67 +109,67 @@ fn coupling_values(section: &mut Section, def: &CouplingDef) {
     match def {
         CouplingDef::SpringDamper { law, damping, .. } => {
             law_values(section, law);
-            section.add("damping", "damping k_d", "N·s/m", *damping);
+            section.add(&fields::SPRING_DAMPING, *damping);
         }
         CouplingDef::Catenary { mass_per_length, length, stiffness, displaced_area, model, .. } => {
-            section.add("mass_per_length", "mass per length λ0", "kg/m", *mass_per_length);
-            section.add("length", "length L_eq", "m", *length);
-            section.add("stiffness", "stiffness D", "N/m", *stiffness);
-            section.add("displaced_area", "displaced area A_d", "m²", *displaced_area);
+            section.add(&fields::MASS_PER_LENGTH, *mass_per_length);
+            section.add(&fields::LENGTH, *length);
+            section.add(&fields::LINE_STIFFNESS, *stiffness);
+            section.add(&fields::DISPLACED_AREA, *displaced_area);
             match model {
                 LineModelDef::QuasiStatic => {}
                 LineModelDef::Dynamic(line) => {
                     match line.damping {
-                        InternalDamping::Ratio(zeta) => section.add("model.damping", "damping ratio ζ", "–", zeta),
-                        InternalDamping::Coefficient(ba) => section.add("model.damping", "damping BA", "N·s", ba),
+                        InternalDamping::Ratio(zeta) => section.add(&fields::DAMPING_RATIO, zeta),
+                        InternalDamping::Coefficient(ba) => section.add(&fields::DAMPING_BA, ba),
                     }
-                    section.add("model.drag_normal", "drag C_dn", "–", line.drag_normal);
-                    section.add("model.drag_tangential", "drag C_dt", "–", line.drag_tangential);
-                    section.add("model.added_mass_normal", "added mass C_an", "–", line.added_mass_normal);
-                    section.add("model.added_mass_tangential", "added mass C_at", "–", line.added_mass_tangential);
+                    section.add(&fields::DRAG_NORMAL, line.drag_normal);
+                    section.add(&fields::DRAG_TANGENTIAL, line.drag_tangential);
+                    section.add(&fields::ADDED_MASS_NORMAL, line.added_mass_normal);
+                    section.add(&fields::ADDED_MASS_TANGENTIAL, line.added_mass_tangential);
                 }
             }
         }
         CouplingDef::Contact { stiffness, damping, range, friction, friction_sharpness, expected_area, .. } => {
-            section.add("stiffness", "stiffness k1", "N/m³", *stiffness);
-            section.add("damping", "damping k2", "N·s/m³", *damping);
-            section.add("range", "range d0", "m", *range);
-            section.add("friction", "friction μ", "–", *friction);
-            section.add("friction_sharpness", "friction sharpness k_t", "s/m", *friction_sharpness);
+            section.add(&fields::CONTACT_STIFFNESS, *stiffness);
+            section.add(&fields::CONTACT_DAMPING, *damping);
+            section.add(&fields::RANGE, *range);
+            section.add(&fields::FRICTION, *friction);
+            section.add(&fields::FRICTION_SHARPNESS, *friction_sharpness);
             if let Some(area) = expected_area {
-                section.add("expected_area", "expected area A", "m²", *area);
+                section.add(&fields::EXPECTED_AREA, *area);
             }
         }
     }
 }
 
 fn law_values(section: &mut Section, law: &LawDef) {
-    let points = |section: &mut Section, points: &[(f64, f64)], symbol: &str, unit: &'static str| {
+    let points = |section: &mut Section, points: &[(f64, f64)], field: &Field| {
         for (row, (_, y)) in points.iter().enumerate() {
-            section.add(&format!("law.points.{row}.1"), &format!("point {} {symbol}", row + 1), unit, *y);
+            section.add_indexed(field.point(row), field.unit, *y);
         }
     };
     match law {
         LawDef::Linear { stiffness, rest_length } => {
-            section.add("law.stiffness", "stiffness k", "N/m", *stiffness);
-            section.add("law.rest_length", "rest length x0", "m", *rest_length);
+            section.add(&fields::LAW_STIFFNESS, *stiffness);
+            section.add(&fields::LAW_REST_LENGTH, *rest_length);
         }
         LawDef::Polynomial { a, b, c, rest_length } => {
-            section.add("law.a", "a", "N/m", *a);
-            section.add("law.b", "b", "N/m²", *b);
-            section.add("law.c", "c", "N/m³", *c);
-            section.add("law.rest_length", "rest length x0", "m", *rest_length);
+            section.add(&fields::LAW_A, *a);
+            section.add(&fields::LAW_B, *b);
+            section.add(&fields::LAW_C, *c);
+            section.add(&fields::LAW_REST_LENGTH, *rest_length);
         }
-        LawDef::ForceCurve { points: table } => points(section, table, "f", "N"),
+        LawDef::ForceCurve { points: table } => points(section, table, &fields::FORCE_CURVE_F),
         LawDef::StiffnessCurve { points: table, rest_length } => {
-            points(section, table, "k", "N/m");
-            section.add("law.rest_length", "rest length x0", "m", *rest_length);
+            points(section, table, &fields::STIFFNESS_CURVE_K);
+            section.add(&fields::LAW_REST_LENGTH, *rest_length);
         }
         LawDef::ReferenceForce { points: table, reference_length, reference_force, rest_length } => {
-            points(section, table, "k", "N/m");
-            section.add("law.reference_length", "reference length x_r", "m", *reference_length);
-            section.add("law.reference_force", "reference force f_r", "N", *reference_force);
-            section.add("law.rest_length", "rest length x0", "m", *rest_length);
+            points(section, table, &fields::STIFFNESS_CURVE_K);
+            section.add(&fields::LAW_REFERENCE_LENGTH, *reference_length);
+            section.add(&fields::LAW_REFERENCE_FORCE, *reference_force);
+            section.add(&fields::LAW_REST_LENGTH, *rest_length);
         }
     }
 }
@@ -165,50 +178,50 @@ fn water_values(section: &mut Section, water: &WaterDef) {
     match &water.waves {
         WavesDef::Calm => {}
         WavesDef::Regular { height, period, heading_deg, .. } => {
-            section.add("waves.height", "wave height H", "m", *height);
-            section.add("waves.period", "wave period T", "s", *period);
-            section.add("waves.heading_deg", "wave heading", "°", *heading_deg);
+            section.add(&fields::WAVE_HEIGHT, *height);
+            section.add(&fields::WAVE_PERIOD, *period);
+            section.add(&fields::WAVE_HEADING, *heading_deg);
         }
         WavesDef::Jonswap { hs, tp, heading_deg, .. } => {
-            section.add("waves.hs", "significant height Hs", "m", *hs);
-            section.add("waves.tp", "peak period Tp", "s", *tp);
-            section.add("waves.heading_deg", "wave heading", "°", *heading_deg);
+            section.add(&fields::SIGNIFICANT_HEIGHT, *hs);
+            section.add(&fields::PEAK_PERIOD, *tp);
+            section.add(&fields::WAVE_HEADING, *heading_deg);
         }
     }
     if let Some(current) = &water.current {
-        section.add("current.speed", "current speed", "m/s", current.speed);
-        section.add("current.heading_deg", "current heading", "°", current.heading_deg);
+        section.add(&fields::CURRENT_SPEED, current.speed);
+        section.add(&fields::CURRENT_HEADING, current.heading_deg);
     }
-    section.add("density", "density ρ", "kg/m³", water.density);
+    section.add(&fields::WATER_DENSITY, water.density);
 }
 
 fn air_values(section: &mut Section, air: &AirDef) {
-    section.add("wind.speed", "wind speed U_r", "m/s", air.wind.speed);
-    section.add("wind.heading_deg", "wind heading", "°", air.wind.heading_deg);
+    section.add(&fields::WIND_SPEED, air.wind.speed);
+    section.add(&fields::WIND_HEIGHT, air.wind.height);
+    section.add(&fields::WIND_HEADING, air.wind.heading_deg);
     if let GustsDef::Kaimal { intensity, .. } = air.wind.gusts {
-        section.add("wind.gusts.intensity", "turbulence intensity", "–", intensity);
+        section.add(&fields::TURBULENCE_INTENSITY, intensity);
     }
-    section.add("density", "air density ρ_a", "kg/m³", air.density);
+    section.add(&fields::AIR_DENSITY, air.density);
 }
 
 fn hydro_values(section: &mut Section, hydro: &HydroDef) {
     section.path += ".hydro";
-    for (axis, name) in ["x", "y", "z"].iter().enumerate() {
-        section.add(&format!("drag.{axis}"), &format!("drag C_d {name}"), "–", hydro.drag[axis]);
-    }
-    for (axis, name) in ["x", "y", "z"].iter().enumerate() {
-        section.add(&format!("added_mass.{axis}"), &format!("added mass C_a {name}"), "–", hydro.added_mass[axis]);
-    }
-    for (axis, name) in ["x", "y", "z"].iter().enumerate() {
-        let label = format!("linear damping {name}");
-        section.add(&format!("linear_damping.{axis}"), &label, "N·s/m", hydro.linear_damping[axis]);
+    for (field, values) in [
+        (&fields::HYDRO_DRAG, hydro.drag),
+        (&fields::HYDRO_ADDED_MASS, hydro.added_mass),
+        (&fields::HYDRO_LINEAR_DAMPING, hydro.linear_damping),
+    ] {
+        for (axis, value) in values.iter().enumerate() {
+            section.add_indexed(field.axis(axis), field.unit, *value);
+        }
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sweep::value_path::ValuePath;
+    use crate::value_path::ValuePath;
     use std::path::Path;
 
     /// A float in waves on a spring, and a dynamic line, with every kind of value tunable.

@@ -1,7 +1,7 @@
 //! A sweep's errors, each one line for the user, placed in the spec or scene where it can be.
 
-use super::spec::SpecError;
 use crate::runner::Runner;
+use crate::spec_text::SpecError;
 use tether_scene::SceneError;
 
 /// Why a sweep cannot run or its results cannot be written: one line for the user.

@@ -8,7 +8,7 @@ use super::parameter::{Parameter, Target};
 use super::series::Series;
 use super::spec::{FitFile, Window};
 use crate::quantity::Probe;
-use crate::sweep::spec::{SpecError, SpecText};
+use crate::spec_text::{SpecError, SpecText};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -291,9 +291,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let record = dir.path().join("x.csv");
         std::fs::write(&record, "t,x\n0.0,0.01\n0.5,1e308\n1.0,-0.005\n1.5,0.003\n").unwrap();
-        // Not `env!`: a cached build may have been compiled in a checkout since moved.
-        let root = std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR when it runs a test");
-        let scene = PathBuf::from(root).join("scenes/spring_mass.ron");
+        let scene = tether_test_support::repo("scenes/spring_mass.ron");
         let spec = format!(
             r#"Fit(scene: "{}", record: "x.csv", signals: [Signal(column: "x", of: Position("mass", X))],
                 parameters: [Parameter(path: "couplings.spring.law.stiffness", from: 50.0, to: 200.0)])"#,

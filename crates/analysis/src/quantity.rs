@@ -24,19 +24,19 @@ use tether_physics::world::World;
 /// A quantity of a run at one instant, as a spec names it.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub enum Quantity {
-    /// A coupling's scalar force [N].
+    /// A coupling's scalar force \[N].
     Tension(String),
-    /// The magnitude of the force on one end of a coupling [N].
+    /// The magnitude of the force on one end of a coupling \[N].
     EndTension(String, End),
-    /// A component of the force a coupling exerts on one end, world [N].
+    /// A component of the force a coupling exerts on one end, world \[N].
     EndForce(String, End, Axis),
-    /// The distance between a coupling's ends [m].
+    /// The distance between a coupling's ends \[m].
     Length(String),
-    /// A coordinate of a body's G, world [m].
+    /// A coordinate of a body's G, world \[m].
     Position(String, Axis),
     /// A component of a body's velocity of G, world [m/s].
     Velocity(String, Axis),
-    /// A body's turn since t = 0 as roll, pitch or yaw [rad].
+    /// A body's turn since t = 0 as roll, pitch or yaw \[rad].
     Angle(String, Turn),
     /// A component of a body's angular velocity, world [rad/s].
     AngularVelocity(String, Axis),
@@ -44,12 +44,27 @@ pub enum Quantity {
     Speed(String),
     /// `|ω|` [rad/s].
     AngularSpeed(String),
-    /// `|x_G(t) − x_G(0)|` [m].
+    /// `|x_G(t) − x_G(0)|` \[m].
     Excursion(String),
-    /// The angle of `q(0)⁻¹ q(t)` [rad].
+    /// The angle of `q(0)⁻¹ q(t)` \[rad].
     Rotation(String),
-    /// A part of the energy account, PHYSICS.md §5 [J].
+    /// A part of the energy account, PHYSICS.md §5 \[J].
     Energy(EnergyPart),
+}
+
+impl Quantity {
+    /// Its unit, SI as the recording and the scene use it: what every table, chart and choice
+    /// that shows the quantity writes after it.
+    pub fn unit(&self) -> &'static str {
+        match self {
+            Self::Tension(_) | Self::EndTension(..) | Self::EndForce(..) => "N",
+            Self::Length(_) | Self::Position(..) | Self::Excursion(_) => "m",
+            Self::Velocity(..) | Self::Speed(_) => "m/s",
+            Self::AngularVelocity(..) | Self::AngularSpeed(_) => "rad/s",
+            Self::Angle(..) | Self::Rotation(_) => "rad",
+            Self::Energy(_) => "J",
+        }
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -155,18 +170,6 @@ impl Probe {
             | Self::Excursion(b)
             | Self::Rotation(b) => Some(b),
             Self::Tension(_) | Self::EndTension(..) | Self::EndForce(..) | Self::Length(_) | Self::Energy(_) => None,
-        }
-    }
-
-    /// Its unit.
-    pub fn unit(self) -> &'static str {
-        match self {
-            Self::Tension(_) | Self::EndTension(..) | Self::EndForce(..) => "N",
-            Self::Length(_) | Self::Position(..) | Self::Excursion(_) => "m",
-            Self::Velocity(..) | Self::Speed(_) => "m/s",
-            Self::AngularVelocity(..) | Self::AngularSpeed(_) => "rad/s",
-            Self::Angle(..) | Self::Rotation(_) => "rad",
-            Self::Energy(_) => "J",
         }
     }
 }

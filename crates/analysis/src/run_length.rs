@@ -51,7 +51,7 @@ pub fn integrator_steps(world: &World, duration: f64) -> f64 {
 }
 
 /// `Ok` if `duration` of `world` takes at most `max_steps` integrator steps; else why not, with
-/// the wall time estimated from stepping a copy of the world for [`PROBE`].
+/// the wall time estimated from stepping a copy of the world for `PROBE`.
 ///
 /// # Errors
 /// [`TooLong`] past the limit.

@@ -157,7 +157,7 @@ pub fn all_cores() -> NonZeroUsize {
     std::thread::available_parallelism().unwrap_or(NonZeroUsize::MIN)
 }
 
-/// CPU time of the calling thread [s] (`CLOCK_THREAD_CPUTIME_ID`): unlike wall-clock time it
+/// CPU time of the calling thread \[s] (`CLOCK_THREAD_CPUTIME_ID`): unlike wall-clock time it
 /// does not count the time other processes take the core.
 pub fn thread_cpu_seconds() -> f64 {
     let mut time = libc::timespec { tv_sec: 0, tv_nsec: 0 };
@@ -170,7 +170,7 @@ pub fn thread_cpu_seconds() -> f64 {
     }
 }
 
-/// CPU time of the whole process so far, user and system, every thread [s] (`getrusage`).
+/// CPU time of the whole process so far, user and system, every thread \[s] (`getrusage`).
 pub fn process_cpu_seconds() -> f64 {
     // SAFETY: an all-zero rusage is a valid value of the plain C struct, which the call fills.
     let mut usage: libc::rusage = unsafe { std::mem::zeroed() };

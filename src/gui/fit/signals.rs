@@ -32,7 +32,8 @@ pub fn signals(file: &SceneFile) -> Vec<Quantity> {
     signals
 }
 
-/// A signal as the column choice shows it: `m: position x [m]`, `chain: end 2 tension [N]`.
+/// A signal as the column choice shows it: `m: position x [m]`, `chain: end 2 tension [N]` (the
+/// unit the quantity's own).
 pub fn signal_label(quantity: &Quantity) -> String {
     let axis = |axis: &Axis| match axis {
         Axis::X => "x",
@@ -43,26 +44,26 @@ pub fn signal_label(quantity: &Quantity) -> String {
         End::End1 => "end 1",
         End::End2 => "end 2",
     };
-    match quantity {
-        Quantity::Tension(c) => format!("{c}: tension [N]"),
-        Quantity::EndTension(c, e) => format!("{c}: {} tension [N]", end(e)),
-        Quantity::EndForce(c, e, a) => format!("{c}: {} force {} [N]", end(e), axis(a)),
-        Quantity::Length(c) => format!("{c}: length [m]"),
-        Quantity::Position(b, a) => format!("{b}: position {} [m]", axis(a)),
-        Quantity::Velocity(b, a) => format!("{b}: velocity {} [m/s]", axis(a)),
+    let what = match quantity {
+        Quantity::Tension(c) => format!("{c}: tension"),
+        Quantity::EndTension(c, e) => format!("{c}: {} tension", end(e)),
+        Quantity::EndForce(c, e, a) => format!("{c}: {} force {}", end(e), axis(a)),
+        Quantity::Length(c) => format!("{c}: length"),
+        Quantity::Position(b, a) => format!("{b}: position {}", axis(a)),
+        Quantity::Velocity(b, a) => format!("{b}: velocity {}", axis(a)),
         Quantity::Angle(b, turn) => {
             let turn = match turn {
                 Turn::Roll => "roll",
                 Turn::Pitch => "pitch",
                 Turn::Yaw => "yaw",
             };
-            format!("{b}: {turn} [rad]")
+            format!("{b}: {turn}")
         }
-        Quantity::AngularVelocity(b, a) => format!("{b}: angular velocity {} [rad/s]", axis(a)),
-        Quantity::Speed(b) => format!("{b}: speed [m/s]"),
-        Quantity::AngularSpeed(b) => format!("{b}: angular speed [rad/s]"),
-        Quantity::Excursion(b) => format!("{b}: excursion [m]"),
-        Quantity::Rotation(b) => format!("{b}: rotation [rad]"),
+        Quantity::AngularVelocity(b, a) => format!("{b}: angular velocity {}", axis(a)),
+        Quantity::Speed(b) => format!("{b}: speed"),
+        Quantity::AngularSpeed(b) => format!("{b}: angular speed"),
+        Quantity::Excursion(b) => format!("{b}: excursion"),
+        Quantity::Rotation(b) => format!("{b}: rotation"),
         Quantity::Energy(part) => {
             let part = match part {
                 EnergyPart::Kinetic => "kinetic",
@@ -73,9 +74,10 @@ pub fn signal_label(quantity: &Quantity) -> String {
                 EnergyPart::Total => "total",
                 EnergyPart::Balance => "balance",
             };
-            format!("energy: {part} [J]")
+            format!("energy: {part}")
         }
-    }
+    };
+    format!("{what} [{}]", quantity.unit())
 }
 
 #[cfg(test)]

@@ -1,4 +1,4 @@
-//! A measured record: named series of (time [s], value) pairs, read from a CSV file, a Parquet
+//! A measured record: named series of (time \[s], value) pairs, read from a CSV file, a Parquet
 //! file or a Tether recording (`.rrd`, [`super::recording_input`]).
 //!
 //! CSV: a header row, a time column in seconds (the first, or the one the spec names), one

@@ -39,7 +39,7 @@ pub struct Model {
     pub base: Value,
     pub parameters: Vec<Parameter>,
     pub signals: Vec<Signal>,
-    /// Model time the runs end at [s].
+    /// Model time the runs end at \[s].
     pub end_time: f64,
 }
 

@@ -16,7 +16,7 @@ use serde_json::Value;
 pub enum Target {
     /// Values of the scene file.
     Scene(Vec<ValuePath>),
-    /// The time shift `τ` [s] between the model and the record.
+    /// The time shift `τ` \[s] between the model and the record.
     TimeShift,
 }
 

@@ -68,7 +68,7 @@ pub struct Outcome {
     pub iterations: Vec<Progress>,
     pub signals: Vec<SignalFit>,
     pub ending: Ending,
-    /// Model runs, and the wall time of the whole fit [s].
+    /// Model runs, and the wall time of the whole fit \[s].
     pub runs: usize,
     pub wall_seconds: f64,
     /// The fitted run, every signal at every world step.

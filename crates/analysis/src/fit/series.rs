@@ -5,7 +5,7 @@
 #[derive(Debug, Clone, PartialEq)]
 pub struct Series {
     pub name: String,
-    /// Sample times [s], increasing.
+    /// Sample times \[s], increasing.
     pub times: Vec<f64>,
     pub values: Vec<f64>,
 }

@@ -118,7 +118,8 @@ impl Setup {
             .map_err(|m| spec.error_at("", if file.window.is_some() { "window" } else { "record" }, m))?;
         let mut signals = Vec::new();
         for (def, series) in file.signals.iter().zip(&columns) {
-            let probe = Probe::find(&scene.world, &def.of)
+            // The signal names what the scene has (the model's run finds it again).
+            Probe::find(&scene.world, &def.of)
                 .map_err(|m| spec.error_after(&def.column, "of", format!("signal \"{}\": {m}", def.column)))?;
             let (times, measured): (Vec<f64>, Vec<f64>) = series
                 .times
@@ -144,7 +145,7 @@ impl Setup {
             signals.push(Signal {
                 column: def.column.clone(),
                 quantity: def.of.clone(),
-                unit: probe.unit(),
+                unit: def.of.unit(),
                 weight,
                 times,
                 measured,

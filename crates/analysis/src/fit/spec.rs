@@ -55,7 +55,7 @@ fn default_iterations() -> u32 {
     50
 }
 
-/// The record's times compared [s].
+/// The record's times compared \[s].
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(rename = "Window", deny_unknown_fields)]
 pub struct Window {
@@ -105,7 +105,7 @@ pub enum Scale {
     Log,
 }
 
-/// The bounds of a fitted time shift [s].
+/// The bounds of a fitted time shift \[s].
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(rename = "Shift", deny_unknown_fields)]
 pub struct ShiftDef {

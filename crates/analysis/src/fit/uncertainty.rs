@@ -75,7 +75,7 @@ pub const MAX_BANDWIDTH_FRACTION: f64 = 0.5;
 /// sandwich covariance over the residual's own autocorrelation.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Correlated {
-    /// Each signal's Bartlett bandwidth `L_s` [samples]: lags `|l| < L_s` enter `Ω̂` with the
+    /// Each signal's Bartlett bandwidth `L_s` \[samples]: lags `|l| < L_s` enter `Ω̂` with the
     /// weight `1 − |l|/L_s` (1: the residual taken as white).
     pub bandwidths: Vec<f64>,
     /// Each parameter's standard error in its own units, `None` when undetermined.
@@ -235,7 +235,7 @@ fn lagged(x: &[f64], y: &[f64], l: usize) -> f64 {
     x.iter().zip(&y[l..]).map(|(a, b)| a * b).sum()
 }
 
-/// The Bartlett bandwidth `L` [samples] of one signal's residual series `r` (`m_s` samples):
+/// The Bartlett bandwidth `L` \[samples] of one signal's residual series `r` (`m_s` samples):
 /// the larger of
 /// - Andrews' (1991) automatic bandwidth for the Bartlett kernel from the lag-1
 ///   autocorrelation `ρ` (clamped to ±0.98), `1.1447 (α m_s)^{1/3}`,

@@ -2,7 +2,7 @@
 //! layout kept, each fitted number replaced where it stands, and a comment at the top saying what
 //! was fitted to what, and when (docs/calibration.md, "The fitted scene").
 //!
-//! The text is read by a small RON scanner ([`Node`]: composites with their fields or items, and
+//! The text is read by a small RON scanner (`Node`: composites with their fields or items, and
 //! scalar tokens, each with its byte span; comments and strings skipped) and walked by the
 //! value path's steps — a field, an enum's variant (the composite's name), a list's item. A value
 //! the scene leaves to its default is inserted as the first field of the innermost composite the

@@ -49,12 +49,12 @@ pub struct Oscillator {
 /// The state of the oscillator at one time.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Exact {
-    /// G [m], world.
+    /// G \[m], world.
     pub position: Vec3,
     pub orientation: Rotation,
-    /// Kinetic energy `½ m v²` [J].
+    /// Kinetic energy `½ m v²` \[J].
     pub kinetic: f64,
-    /// The spring's elastic energy `½ k (L − L0)²` [J].
+    /// The spring's elastic energy `½ k (L − L0)²` \[J].
     pub elastic: f64,
 }
 
@@ -170,7 +170,7 @@ impl Oscillator {
         }
     }
 
-    /// The exact state at time `t` [s].
+    /// The exact state at time `t` \[s].
     pub fn at(&self, t: f64) -> Exact {
         let (y, v) = self.offset_and_speed(t);
         let mut position = self.start;

@@ -163,7 +163,7 @@ fn modelled(declared: LineModelDef, setting: LineSetting) -> LineModelDef {
 }
 
 /// The study as a Markdown table: per run and line, the peak and minimum fairlead tension
-/// [kN], their errors against the reference [%], and the CPU per simulated second.
+/// \[kN], their errors against the reference [%], and the CPU per simulated second.
 pub fn markdown(study: &LineStudy) -> String {
     let mut out = format!(
         "Line models of `{}` over {} s (peak and minimum fairlead tension over the second half; reference: dynamic N = {REFERENCE_SEGMENTS})\n\n\

@@ -3,8 +3,8 @@
 //!
 //! Every run is sampled at common times `k·Δs` (Δs a multiple of every time step, so no run is
 //! interpolated). Against the reference, at each sample: the position error, the largest
-//! `|x_G − x_G,ref|` over the bodies [m], and the orientation error, the largest angle of
-//! `q_ref⁻¹ q` [rad]; reported at the end and as the maximum over time. The energy-balance error
+//! `|x_G − x_G,ref|` over the bodies \[m], and the orientation error, the largest angle of
+//! `q_ref⁻¹ q` \[rad]; reported at the end and as the maximum over time. The energy-balance error
 //! is the largest `|B(t) − B(0)|` (`B = total + dissipated − external work`, PHYSICS.md §5)
 //! over the samples, relative to the energy budget: the largest kinetic + elastic energy of the
 //! reference run. The cost is the thread's CPU time per simulated second, and the integrator
@@ -34,13 +34,13 @@ use tether_scene::{Scene, SceneError};
 #[derive(Debug, Clone, PartialEq)]
 pub struct Plan {
     pub integrators: Vec<Integrator>,
-    /// Time steps of the fixed-step schemes [s], each dividing `sample_interval`.
+    /// Time steps of the fixed-step schemes \[s], each dividing `sample_interval`.
     pub dts: Vec<f64>,
     /// Relative tolerances of `dopri45` (its absolute tolerance is 1e-3 of each).
     pub tolerances: Vec<f64>,
-    /// Simulated duration [s], a multiple of `sample_interval`.
+    /// Simulated duration \[s], a multiple of `sample_interval`.
     pub duration: f64,
-    /// Δs [s]: the runs are compared at its multiples.
+    /// Δs \[s]: the runs are compared at its multiples.
     pub sample_interval: f64,
     pub reference: Reference,
 }
@@ -50,7 +50,7 @@ pub struct Plan {
 pub enum Reference {
     /// `dopri45` at relative tolerance `rtol` (absolute 1e-3 of it).
     Adaptive { rtol: f64 },
-    /// A fixed-step scheme at time step `dt` [s] (dividing the sample interval).
+    /// A fixed-step scheme at time step `dt` \[s] (dividing the sample interval).
     Fixed { integrator: Integrator, dt: f64 },
     /// The exact solution of a scene that is a damped linear oscillator ([`closed_form`]).
     ClosedForm,
@@ -70,7 +70,7 @@ impl Reference {
 /// The step setting of one run.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Setting {
-    /// Fixed time step [s].
+    /// Fixed time step \[s].
     Step(f64),
     /// `dopri45`'s relative tolerance.
     Tolerance(f64),
@@ -79,10 +79,10 @@ pub enum Setting {
 /// What one run measured.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Measures {
-    /// Position error at the end and its maximum over time [m].
+    /// Position error at the end and its maximum over time \[m].
     pub position_error_end: f64,
     pub position_error_max: f64,
-    /// Orientation error at the end and its maximum over time [rad].
+    /// Orientation error at the end and its maximum over time \[rad].
     pub orientation_error_end: f64,
     pub orientation_error_max: f64,
     /// Largest energy-balance drift over the energy budget [–].
@@ -98,7 +98,7 @@ pub struct Measures {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Outcome {
     Finished(Measures),
-    /// The run stopped at `time` [s] with `message`.
+    /// The run stopped at `time` \[s] with `message`.
     Failed {
         time: f64,
         message: String,
@@ -121,7 +121,7 @@ pub struct Study {
     pub duration: f64,
     pub sample_interval: f64,
     pub reference: Reference,
-    /// The energy budget [J] the energy errors are relative to.
+    /// The energy budget \[J] the energy errors are relative to.
     pub energy_budget: f64,
     /// Whether any body of the reference run moved its G (otherwise positions carry no error
     /// and the chart shows orientation errors).
@@ -146,7 +146,7 @@ pub enum StudyError {
     Output { path: String, message: String },
 }
 
-/// Whether `step` [s] divides `interval` [s] to round-off.
+/// Whether `step` \[s] divides `interval` \[s] to round-off.
 pub fn divides(step: f64, interval: f64) -> bool {
     let ratio = interval / step;
     step > 0.0 && ratio >= 1.0 - 1e-9 && (ratio - ratio.round()).abs() <= 1e-6 * ratio

@@ -56,12 +56,12 @@ pub struct Ending {
     pub status: Status,
     /// Why it failed (empty when it is ok).
     pub message: String,
-    /// Simulated time reached [s].
+    /// Simulated time reached \[s].
     pub end_time: f64,
     /// Integrator steps accepted, and rejected (`dopri45`).
     pub steps: u64,
     pub rejected_steps: u64,
-    /// CPU time of the run's thread from t = 0 to the end [s] (building the world excluded): a
+    /// CPU time of the run's thread from t = 0 to the end \[s] (building the world excluded): a
     /// measurement, the one column that differs between two runs.
     pub cpu_seconds: f64,
 }
@@ -95,7 +95,7 @@ pub enum CaseError {
     Recording(String),
 }
 
-/// Runs `world` for `duration` [s], measuring `metrics` (settle band `settle_band`).
+/// Runs `world` for `duration` \[s], measuring `metrics` (settle band `settle_band`).
 ///
 /// # Errors
 /// [`CaseError::Cancelled`] when the run is cancelled mid-case; [`CaseError::Recording`] when

@@ -58,9 +58,9 @@ pub struct Report {
     pub checking: Duration,
     pub running: Duration,
     pub writing: Duration,
-    /// CPU time of the cases' simulations (from t = 0 to their end) [s].
+    /// CPU time of the cases' simulations (from t = 0 to their end) \[s].
     pub case_cpu_seconds: f64,
-    /// CPU time of the whole process while it checked and ran the cases [s]: less the
+    /// CPU time of the whole process while it checked and ran the cases \[s]: less the
     /// simulations', what the cases cost beyond them, whatever else the machine runs.
     pub process_cpu_seconds: f64,
     /// The results, when this run completed the sweep.

@@ -4,10 +4,10 @@
 //! per body).
 //!
 //! Standard metrics (units in the column names):
-//! - `<coupling>.tension_max_N`, `<coupling>.tension_min_N`: the coupling's scalar force [N]
+//! - `<coupling>.tension_max_N`, `<coupling>.tension_min_N`: the coupling's scalar force \[N]
 //!   (a spring's `f_e + k_d ẋ`, a catenary's larger end tension, a contact's normal force);
-//! - `<body>.excursion_max_m`: the largest `|x_G(t) − x_G(0)|` [m]; `<body>.rotation_max_rad`:
-//!   the largest angle of `q(0)⁻¹ q(t)` [rad] (bodies that move: not kinematic, not held in
+//! - `<body>.excursion_max_m`: the largest `|x_G(t) − x_G(0)|` \[m]; `<body>.rotation_max_rad`:
+//!   the largest angle of `q(0)⁻¹ q(t)` \[rad] (bodies that move: not kinematic, not held in
 //!   every direction);
 //! - `settle_time_s`: the time after which every moving body's G stays within a band of where
 //!   it ends — `settle_band` (spec, default 2 %) of the largest distance any body's G is from its
@@ -37,7 +37,7 @@ pub struct MetricDef {
     pub name: String,
     pub of: Quantity,
     pub take: Reduction,
-    /// Start of the window it is taken over [s] (default 0: the whole run).
+    /// Start of the window it is taken over \[s] (default 0: the whole run).
     #[serde(default)]
     pub after: f64,
 }
@@ -91,33 +91,16 @@ impl Metric {
     pub fn all(world: &World, standard: bool, declared: &[MetricDef]) -> Result<Vec<Self>, RefusedMetric> {
         let mut metrics = Vec::new();
         if standard {
-            for (index, coupling) in world.couplings().iter().enumerate() {
-                metrics.push(reduced(
-                    format!("{}.tension_max_N", coupling.name),
-                    Probe::Tension(index),
-                    Reduction::Max,
-                    0.0,
-                ));
-                metrics.push(reduced(
-                    format!("{}.tension_min_N", coupling.name),
-                    Probe::Tension(index),
-                    Reduction::Min,
-                    0.0,
-                ));
+            for coupling in world.couplings() {
+                let tension = Quantity::Tension(coupling.name.clone());
+                metrics.push(standard_metric(world, &coupling.name, "tension_max", &tension, Reduction::Max)?);
+                metrics.push(standard_metric(world, &coupling.name, "tension_min", &tension, Reduction::Min)?);
             }
-            for (index, body) in world.bodies().iter().enumerate().filter(|(_, b)| moves(&b.support)) {
-                metrics.push(reduced(
-                    format!("{}.excursion_max_m", body.name),
-                    Probe::Excursion(index),
-                    Reduction::Max,
-                    0.0,
-                ));
-                metrics.push(reduced(
-                    format!("{}.rotation_max_rad", body.name),
-                    Probe::Rotation(index),
-                    Reduction::Max,
-                    0.0,
-                ));
+            for body in world.bodies().iter().filter(|b| moves(&b.support)) {
+                let (excursion, rotation) =
+                    (Quantity::Excursion(body.name.clone()), Quantity::Rotation(body.name.clone()));
+                metrics.push(standard_metric(world, &body.name, "excursion_max", &excursion, Reduction::Max)?);
+                metrics.push(standard_metric(world, &body.name, "rotation_max", &rotation, Reduction::Max)?);
             }
         }
         metrics.push(Self { name: "settle_time_s".into(), unit: "s", measure: Measure::SettleTime });
@@ -128,12 +111,12 @@ impl Metric {
             if !(def.after.is_finite() && def.after >= 0.0) {
                 return Err(fail(format!("`after` must be a time ≥ 0 s, got {}", def.after)));
             }
-            metrics.push(reduced(def.name.clone(), probe, def.take, def.after));
+            metrics.push(reduced(def.name.clone(), probe, def.of.unit(), def.take, def.after));
         }
         Ok(metrics)
     }
 
-    /// The window's start [s] (0 for the whole run).
+    /// The window's start \[s] (0 for the whole run).
     pub fn after(&self) -> f64 {
         match self.measure {
             Measure::Reduced { after, .. } => after,
@@ -142,8 +125,22 @@ impl Metric {
     }
 }
 
-fn reduced(name: String, probe: Probe, reduction: Reduction, after: f64) -> Metric {
-    Metric { name, unit: probe.unit(), measure: Measure::Reduced { probe, reduction, after } }
+fn reduced(name: String, probe: Probe, unit: &'static str, reduction: Reduction, after: f64) -> Metric {
+    Metric { name, unit, measure: Measure::Reduced { probe, reduction, after } }
+}
+
+/// A standard metric of the world's own body or coupling `subject`, over the whole run, named
+/// with its unit: `mooring1.tension_max_N`. (Its probe is found by the name the world gave it.)
+fn standard_metric(
+    world: &World,
+    subject: &str,
+    what: &str,
+    quantity: &Quantity,
+    reduction: Reduction,
+) -> Result<Metric, RefusedMetric> {
+    let name = format!("{subject}.{what}_{}", quantity.unit());
+    let probe = Probe::find(world, quantity).map_err(|message| RefusedMetric { name: name.clone(), message })?;
+    Ok(reduced(name, probe, quantity.unit(), reduction, 0.0))
 }
 
 /// Whether a body with this support can move under forces.

@@ -2,7 +2,7 @@
 //! with the arrow and parquet crates the recorder's dependencies already build. Columns as in
 //! `results.csv`, typed: `case`, `steps`, `rejected_steps` unsigned integers; factors numbers,
 //! flags or strings; metrics nullable doubles (null where a failed case has no value), each
-//! metric's unit in its field's metadata (`unit`). Rows go out in batches of [`BATCH`], so the
+//! metric's unit in its field's metadata (`unit`). Rows go out in batches of `BATCH`, so the
 //! table is never whole in memory.
 
 use super::error::SweepError;

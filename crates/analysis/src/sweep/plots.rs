@@ -9,7 +9,7 @@
 //! does a metric that spans three decades or more of positive values.
 //!
 //! Memory: the factors' values of every case, and the values of as many metrics at a time as
-//! fit in [`VALUES_PER_PASS`] numbers (the rows are read again for each such pass).
+//! fit in `VALUES_PER_PASS` numbers (the rows are read again for each such pass).
 
 use super::case::Status;
 use super::error::{Stage, SweepError, unless_cancelled};

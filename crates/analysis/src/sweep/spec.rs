@@ -32,7 +32,7 @@ pub struct SpecFile {
     pub name: Option<String>,
     /// The base scene, relative to the spec file.
     pub scene: String,
-    /// Simulated duration of every case [s] (default: the scene's; a factor may sweep it).
+    /// Simulated duration of every case \[s] (default: the scene's; a factor may sweep it).
     #[serde(default)]
     pub duration: Option<f64>,
     pub design: Design,

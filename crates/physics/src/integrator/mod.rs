@@ -14,9 +14,10 @@
 //!
 //! The interface is narrow: a [`Scheme`] (an integrator with its own scratch) advances the
 //! bodies' states by one step of a [`System`], evaluating its forces into an
-//! [`Evaluation`](crate::evaluation::Evaluation), and returns a [`StepReport`]: how far it advanced, whether the step was accepted, the work the
-//! forces did over it and the bodies' energies at its end. It does not touch the clock, the
-//! energy ledger or the health check: the world does.
+//! [`Evaluation`](crate::evaluation::Evaluation), and returns a [`StepReport`]: how far it
+//! advanced, whether the step was accepted, the work the forces did over it and the bodies'
+//! energies at its end. It does not touch the clock, the energy ledger or the health check: the
+//! world does.
 
 pub mod context;
 pub mod dopri45;

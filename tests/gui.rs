@@ -26,6 +26,25 @@ const PATIENCE: Duration = Duration::from_secs(20);
 /// The GUI tests' oscillator, body "m".
 static SPRING: LazyLock<String> = LazyLock::new(|| common::spring_scene_text("m"));
 
+/// The floating cylinder of `tests/fixtures/rao/cylinder.ron`, its potential-flow files named
+/// by their path in the repository (the scene is written into a folder of its own).
+fn cylinder_text() -> String {
+    let file = repo("validation/potential-flow/cylinder/cylinder");
+    let fixture = std::fs::read_to_string(repo("tests/fixtures/rao/cylinder.ron")).unwrap();
+    let text = fixture.replace("\"../../../validation/potential-flow/cylinder/cylinder\"", &format!("{file:?}"));
+    assert_ne!(text, fixture, "the fixture's file, found from the folder of scenes");
+    text
+}
+
+/// The cylinder's `text` with `sections` (an `air: Air(…)`, and more) before its bodies and a
+/// windage on the cylinder.
+fn with_wind(text: &str, sections: &str) -> String {
+    text.replace("bodies: [", &format!("{sections}\n    bodies: [")).replace(
+        "center: (0.0, 0.0, 2.0)),",
+        "center: (0.0, 0.0, 2.0)),\n windage: Windage(coefficients: (1.0, 1.0, 0.0)),",
+    )
+}
+
 /// A folder of scenes for the panel's list.
 fn scenes_folder(files: &[(&str, &str)]) -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
@@ -413,10 +432,7 @@ fn ticked(harness: &Harness<'_, ControlPanel>, label: &str) -> bool {
 /// recording has the cylinder's radiation and excitation plots.
 #[test]
 fn the_potential_flow_switch_reaches_the_running_world_and_shows_what_runs() {
-    let file = repo("validation/potential-flow/cylinder/cylinder");
-    let fixture = std::fs::read_to_string(repo("tests/fixtures/rao/cylinder.ron")).unwrap();
-    let text = fixture.replace("\"../../../validation/potential-flow/cylinder/cylinder\"", &format!("{file:?}"));
-    assert_ne!(text, fixture, "the fixture's file, found from the folder of scenes");
+    let text = cylinder_text();
     let dir = scenes_folder(&[("cylinder.ron", &text)]);
     let shown = dir.path().join("shown.rrd");
     let sinks = Sinks::new(vec![Sinks::file(&shown).unwrap()]);
@@ -490,15 +506,7 @@ fn the_potential_flow_switch_reaches_the_running_world_and_shows_what_runs() {
 fn drift_and_air_knobs_tune_the_running_world_and_bad_values_are_refused() {
     use tether_physics::air::GustSpec;
     use tether_physics::potential::DriftModel;
-    let file = repo("validation/potential-flow/cylinder/cylinder");
-    let fixture = std::fs::read_to_string(repo("tests/fixtures/rao/cylinder.ron")).unwrap();
-    let text = fixture
-        .replace("\"../../../validation/potential-flow/cylinder/cylinder\"", &format!("{file:?}"))
-        .replace("bodies: [", "air: Air(wind: Wind(speed: 15.0)),\n    bodies: [")
-        .replace(
-            "center: (0.0, 0.0, 2.0)),",
-            "center: (0.0, 0.0, 2.0)),\n windage: Windage(coefficients: (1.0, 1.0, 0.0)),",
-        );
+    let text = with_wind(&cylinder_text(), "air: Air(wind: Wind(speed: 15.0)),");
     assert_eq!(text.matches("windage").count() + text.matches("air: Air").count(), 2, "{text}");
     let dir = scenes_folder(&[("cylinder.ron", &text)]);
     let mut harness = tall_harness(panel(dir.path()));
@@ -553,20 +561,9 @@ fn drift_and_air_knobs_tune_the_running_world_and_bad_values_are_refused() {
 /// the catalogue labels it (less the `name: ` the catalogue puts before it).
 #[test]
 fn every_catalogued_parameter_has_a_knob_with_its_label() {
-    let file = repo("validation/potential-flow/cylinder/cylinder");
-    let fixture = std::fs::read_to_string(repo("tests/fixtures/rao/cylinder.ron")).unwrap();
-    let text = fixture
-        .replace("\"../../../validation/potential-flow/cylinder/cylinder\"", &format!("{file:?}"))
-        .replace(
-            "bodies: [",
-            "air: Air(wind: Wind(speed: 15.0, gusts: Kaimal(intensity: 0.1, seed: 3))),\n    seabed: Seabed(line_friction: 0.8),\n    bodies: [",
-        )
-        // A seabed lies at the water's depth.
-        .replace("water: Water(waves:", "water: Water(depth: 60.0, waves:")
-        .replace(
-            "center: (0.0, 0.0, 2.0)),",
-            "center: (0.0, 0.0, 2.0)),\n windage: Windage(coefficients: (1.0, 1.0, 0.0)),",
-        );
+    let air = "air: Air(wind: Wind(speed: 15.0, gusts: Kaimal(intensity: 0.1, seed: 3))),\n    seabed: Seabed(line_friction: 0.8),";
+    // A seabed lies at the water's depth.
+    let text = with_wind(&cylinder_text(), air).replace("water: Water(waves:", "water: Water(depth: 60.0, waves:");
     assert_eq!(
         text.matches("windage").count() + text.matches("seabed: Seabed").count() + text.matches("depth: 60").count(),
         3,

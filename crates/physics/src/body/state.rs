@@ -63,6 +63,17 @@ pub struct BodyFrame {
     pub angular_velocity: Vec3,
 }
 
+impl BodyFrame {
+    /// Takes `state`'s position and velocities, keeping the rotation matrix: a body that has
+    /// drifted but not turned (or turns in a later pass).
+    #[inline(always)]
+    pub fn follow_translation(&mut self, state: &BodyState) {
+        self.position = state.position;
+        self.velocity = state.velocity;
+        self.angular_velocity = state.angular_velocity;
+    }
+}
+
 impl Default for BodyFrame {
     fn default() -> Self {
         Self {

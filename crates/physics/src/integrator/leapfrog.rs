@@ -104,9 +104,7 @@ impl Leapfrog {
                 kick(state, acceleration, &body.support, h);
                 drift(state, h);
                 // Velocity-dependent forces see v(t−½dt), as in Radioss.
-                frame.position = state.position;
-                frame.velocity = state.velocity;
-                frame.angular_velocity = state.angular_velocity;
+                frame.follow_translation(state);
             },
         );
         for ((body, state), frame) in system.bodies().iter().zip(states.iter_mut()).zip(evaluation.frames.iter_mut()) {

@@ -72,9 +72,7 @@ impl Splitting {
                 if rotate_freely(body, state, h) {
                     *frame = state.frame();
                 } else {
-                    frame.position = state.position;
-                    frame.velocity = state.velocity;
-                    frame.angular_velocity = state.angular_velocity;
+                    frame.follow_translation(state);
                 }
             },
         );
